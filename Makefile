@@ -1,0 +1,42 @@
+# The README's two commands, and a few more. Each target bootstraps (installs missing Debian packages
+# when run as root, or says how), configures with a CMake preset, and builds what it needs.
+PRESET ?= release
+BUILD  := build/$(PRESET)
+JOBS   ?= $(shell nproc)
+CTEST_ARGS ?=
+
+.PHONY: all bootstrap configure build demo test bench fuzz format clean
+
+all: build
+
+bootstrap:
+	@scripts/bootstrap.sh
+
+configure: bootstrap
+	@test -f $(BUILD)/build.ninja || cmake --preset $(PRESET)
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+# The main job on a built-in default.
+demo: build
+	@scripts/demo.sh $(BUILD)/cli/antkit
+
+# The whole test suite (unit, property, proof, fuzz-regression, slow).
+test: build
+	@echo "rapidcheck seed: $$(grep -m1 '^ANTKIT_RC_SEED' $(BUILD)/CMakeCache.txt | cut -d= -f2)"
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+bench: configure
+	cmake --build $(BUILD) -j $(JOBS) --target antkit_bench
+	$(BUILD)/bench/antkit_bench
+
+fuzz: bootstrap
+	@test -f build/fuzz/build.ninja || cmake --preset fuzz
+	cmake --build build/fuzz -j $(JOBS)
+
+format:
+	git ls-files '*.cpp' '*.hpp' | xargs clang-format -i
+
+clean:
+	rm -rf build

@@ -1,0 +1,119 @@
+#include "output.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <map>
+#include <vector>
+
+namespace antkit::cli {
+
+void add_format_option(CLI::App& sub, Format& format) {
+  const std::map<std::string, Format> names{{"table", Format::Table}, {"json", Format::Json}};
+  sub.add_option("--format", format, "Output: table (for people, the default) or json")
+      ->transform(CLI::CheckedTransformer(names, CLI::ignore_case))
+      ->default_str("table");
+}
+
+namespace {
+
+std::string scalar_text(const nlohmann::json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_number_float()) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.10g", v.get<double>());
+    return buf;
+  }
+  return v.dump();
+}
+
+bool is_scalar(const nlohmann::json& v) {
+  return !v.is_object() && !v.is_array();
+}
+
+// A short array of scalars prints inline; anything longer is summarised.
+std::string inline_text(const nlohmann::json& v) {
+  if (is_scalar(v)) return scalar_text(v);
+  if (v.is_array() && v.size() <= 8 &&
+      std::all_of(v.begin(), v.end(), [](const auto& e) { return is_scalar(e); })) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + scalar_text(v[i]);
+    return s + "]";
+  }
+  if (v.is_array() && v.size() <= 4 && std::all_of(v.begin(), v.end(), [](const auto& e) {
+        return e.is_array() && e.size() <= 4;
+      })) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + inline_text(v[i]);
+    return s + "]";
+  }
+  return v.is_array() ? "(" + std::to_string(v.size()) + " items; use --format json)"
+                      : "(object; use --format json)";
+}
+
+void key_value_rows(const nlohmann::json& obj, const std::string& prefix,
+                    std::vector<std::pair<std::string, std::string>>& rows,
+                    std::vector<std::pair<std::string, const nlohmann::json*>>& tables) {
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    const std::string key = prefix + it.key();
+    const auto& v = it.value();
+    if (v.is_object()) {
+      key_value_rows(v, key + ".", rows, tables);
+    } else if (v.is_array() && !v.empty() &&
+               std::all_of(v.begin(), v.end(), [](const auto& e) { return e.is_object(); })) {
+      tables.emplace_back(key, &v);
+    } else {
+      rows.emplace_back(key, inline_text(v));
+    }
+  }
+}
+
+void print_rows(const std::vector<std::pair<std::string, std::string>>& rows, std::ostream& out) {
+  std::size_t width = 0;
+  for (const auto& [k, _] : rows) width = std::max(width, k.size());
+  for (const auto& [k, v] : rows) out << k << std::string(width - k.size() + 2, ' ') << v << '\n';
+}
+
+// An array of objects prints as a table whose columns are the keys of its first element.
+void print_table(const std::string& title, const nlohmann::json& arr, std::ostream& out) {
+  std::vector<std::string> columns;
+  for (auto it = arr.front().begin(); it != arr.front().end(); ++it) columns.push_back(it.key());
+  std::vector<std::vector<std::string>> cells;
+  std::vector<std::size_t> width;
+  for (const auto& c : columns) width.push_back(c.size());
+  for (const auto& row : arr) {
+    std::vector<std::string> line;
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+      line.push_back(row.contains(columns[i]) ? inline_text(row[columns[i]]) : "");
+      width[i] = std::max(width[i], line.back().size());
+    }
+    cells.push_back(std::move(line));
+  }
+  out << '\n' << title << ":\n";
+  auto print_line = [&](const std::vector<std::string>& line) {
+    for (std::size_t i = 0; i < line.size(); ++i)
+      out << (i ? "  " : "  ") << line[i] << std::string(width[i] - line[i].size(), ' ');
+    out << '\n';
+  };
+  print_line(columns);
+  for (const auto& line : cells) print_line(line);
+}
+
+} // namespace
+
+void emit(const nlohmann::json& result, Format format, std::ostream& out) {
+  if (format == Format::Json) {
+    out << result.dump(2) << '\n';
+    return;
+  }
+  if (!result.is_object()) {
+    out << inline_text(result) << '\n';
+    return;
+  }
+  std::vector<std::pair<std::string, std::string>> rows;
+  std::vector<std::pair<std::string, const nlohmann::json*>> tables;
+  key_value_rows(result, "", rows, tables);
+  print_rows(rows, out);
+  for (const auto& [title, arr] : tables) print_table(title, *arr, out);
+}
+
+} // namespace antkit::cli

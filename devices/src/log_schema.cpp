@@ -1,0 +1,9 @@
+#include <antkit/devices/log_schema.hpp>
+
+namespace antkit::devices {
+
+bool can_replay_schema(std::uint32_t version) noexcept {
+  return version == kLogSchemaVersion;
+}
+
+} // namespace antkit::devices

@@ -1,0 +1,126 @@
+#pragma once
+// Keyed, counter-based random streams (DESIGN.md, determinism rule 2).
+//
+// A stream is named by (seed, experiment, trial, robot, purpose). Its i-th 128-bit block is
+// Philox4x32-10 (Salmon, Moraes, Dror, Shaw, SC'11) applied to the counter
+//     (i mod 2^32, i div 2^32, name mod 2^32, name div 2^32)
+// under the key (seed mod 2^32, seed div 2^32), where `name` is the 64-bit digest of
+// (experiment, trial, robot, purpose) defined by stream_name() below. Philox is a bijection of the
+// counter for a fixed key, so two streams with the same seed and different names never share a
+// block (unless their 64-bit names collide), and a stream's output depends only on its name and on
+// how many numbers were drawn from it, never on threads or on what ran before.
+//
+// Draws take 32-bit words from the block in order (x0, x1, x2, x3), then move to block i+1.
+// next_u64() is (low word) | (next word << 32).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+namespace antkit::kernel {
+
+// SplitMix64's finalizer (Steele, Lea, Flood 2014): a bijection of 64-bit words with full
+// avalanche.
+constexpr std::uint64_t mix64(std::uint64_t z) noexcept {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+// The 64-bit name of a stream: a chain of mix64 over its four key words, each offset by a distinct
+// odd constant so that permuted keys give different names.
+constexpr std::uint64_t stream_name(std::uint64_t experiment, std::uint64_t trial,
+                                    std::uint64_t robot, std::uint64_t purpose) noexcept {
+  std::uint64_t h = mix64(experiment + 0x9E3779B97F4A7C15ULL);
+  h = mix64(h ^ (trial + 0xD1B54A32D192ED03ULL));
+  h = mix64(h ^ (robot + 0xABC98388FB8FAC03ULL));
+  h = mix64(h ^ (purpose + 0x8CB92BA72F3D8DD7ULL));
+  return h;
+}
+
+// Philox4x32 with 10 rounds, the variant with published known-answer tests (Random123).
+constexpr std::array<std::uint32_t, 4> philox4x32_10(std::array<std::uint32_t, 4> ctr,
+                                                     std::array<std::uint32_t, 2> key) noexcept {
+  constexpr std::uint32_t M0 = 0xD2511F53u, M1 = 0xCD9E8D57u;
+  constexpr std::uint32_t W0 = 0x9E3779B9u, W1 = 0xBB67AE85u;
+  for (int round = 0; round < 10; ++round) {
+    const std::uint64_t p0 = std::uint64_t{M0} * ctr[0];
+    const std::uint64_t p1 = std::uint64_t{M1} * ctr[2];
+    const auto hi0 = static_cast<std::uint32_t>(p0 >> 32), lo0 = static_cast<std::uint32_t>(p0);
+    const auto hi1 = static_cast<std::uint32_t>(p1 >> 32), lo1 = static_cast<std::uint32_t>(p1);
+    ctr = {hi1 ^ ctr[1] ^ key[0], lo1, hi0 ^ ctr[3] ^ key[1], lo0};
+    key[0] += W0;
+    key[1] += W1;
+  }
+  return ctr;
+}
+
+// Lemire's multiply-shift map of a uniform 32-bit word x to [0, n), n >= 1. It returns false when x
+// falls in the rejected zone of the low product (low < 2^32 mod n); accepting only the other words
+// makes every value in [0, n) come from exactly floor(2^32 / n) words, so the result is unbiased.
+constexpr bool bounded_u32(std::uint32_t x, std::uint32_t n, std::uint32_t& out) noexcept {
+  const std::uint64_t m = std::uint64_t{x} * n;
+  const auto low = static_cast<std::uint32_t>(m);
+  if (low < n) {
+    const std::uint32_t threshold = static_cast<std::uint32_t>(-n) % n; // 2^32 mod n
+    if (low < threshold) return false;
+  }
+  out = static_cast<std::uint32_t>(m >> 32);
+  return true;
+}
+
+class Stream {
+public:
+  constexpr explicit Stream(std::uint64_t seed, std::uint64_t experiment = 0,
+                            std::uint64_t trial = 0, std::uint64_t robot = 0,
+                            std::uint64_t purpose = 0) noexcept
+      : key_{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)},
+        name_(stream_name(experiment, trial, robot, purpose)) {}
+
+  constexpr std::uint32_t next_u32() noexcept {
+    if (word_ == 4) refill();
+    return block_[word_++];
+  }
+  constexpr std::uint64_t next_u64() noexcept {
+    const std::uint64_t lo = next_u32();
+    return lo | (std::uint64_t{next_u32()} << 32);
+  }
+  // Unbiased integer in [0, n); n must be at least 1 (n == 0 returns 0 and draws nothing).
+  constexpr std::uint32_t below(std::uint32_t n) noexcept {
+    if (n == 0) return 0;
+    std::uint32_t out = 0;
+    while (!bounded_u32(next_u32(), n, out)) {
+    }
+    return out;
+  }
+  // Unbiased integer in [lo, hi], lo <= hi.
+  constexpr std::int32_t between(std::int32_t lo, std::int32_t hi) noexcept {
+    const auto span = static_cast<std::uint32_t>(static_cast<std::int64_t>(hi) - lo);
+    if (span == 0xFFFFFFFFu) return static_cast<std::int32_t>(next_u32());
+    return static_cast<std::int32_t>(static_cast<std::int64_t>(lo) + below(span + 1));
+  }
+  // True with probability num / den (0 <= num <= den, den >= 1), exactly.
+  constexpr bool chance(std::uint32_t num, std::uint32_t den) noexcept { return below(den) < num; }
+
+  // How many 32-bit words have been drawn.
+  [[nodiscard]] constexpr std::uint64_t drawn() const noexcept {
+    return block_index_ == 0 ? 0 : (block_index_ - 1) * 4 + word_;
+  }
+
+private:
+  constexpr void refill() noexcept {
+    block_ = philox4x32_10(
+        {static_cast<std::uint32_t>(block_index_), static_cast<std::uint32_t>(block_index_ >> 32),
+         static_cast<std::uint32_t>(name_), static_cast<std::uint32_t>(name_ >> 32)},
+        key_);
+    ++block_index_;
+    word_ = 0;
+  }
+
+  std::array<std::uint32_t, 2> key_;
+  std::uint64_t name_;
+  std::uint64_t block_index_ = 0;
+  std::array<std::uint32_t, 4> block_{};
+  std::size_t word_ = 4;
+};
+
+} // namespace antkit::kernel

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian packages antkit needs, or says exactly how to.
+#
+# Run by `make demo` and `make test` before they configure. As root it installs whatever is missing
+# with apt-get; as anyone else it prints the one command to run and exits 1. It changes nothing when
+# every package is already there, so it is cheap to run on every build.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config ccache git
+  clang-14 libclang-rt-14-dev clang-format
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
+  catch2 librapidcheck-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
+  libz3-dev coq libcairo2-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
+  [ "$status" = "installed" ] || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+echo "bootstrap: missing Debian packages: ${missing[*]}" >&2
+if [ "$(id -u)" -eq 0 ]; then
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  echo "bootstrap: installed ${#missing[@]} package(s)" >&2
+else
+  echo "bootstrap: run this, then try again:" >&2
+  echo "  sudo apt-get update && sudo apt-get install -y --no-install-recommends ${missing[*]}" >&2
+  exit 1
+fi

@@ -1,0 +1,14 @@
+// The one Catch2 main of the test suite. It prints the rapidcheck configuration first (to stderr,
+// which test discovery does not read), so that any
+// failing property in a CI log can be replayed: RC_PARAMS="seed=<seed>" ./test_xxx "<test name>".
+#define CATCH_CONFIG_RUNNER
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <iostream>
+
+int main(int argc, char* argv[]) {
+  const char* rc = std::getenv("RC_PARAMS");
+  std::cerr << "rapidcheck: RC_PARAMS=\"" << (rc ? rc : "") << "\"" << (rc ? "" : " (random seed)")
+            << '\n';
+  return Catch::Session().run(argc, argv);
+}
