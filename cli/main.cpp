@@ -7,12 +7,20 @@
 #include <exception>
 #include <iostream>
 
+namespace antkit::cli {
+std::map<std::string, Registrar>& registry() {
+  static std::map<std::string, Registrar> commands;
+  return commands;
+}
+} // namespace antkit::cli
+
 int main(int argc, char** argv) {
   CLI::App app{"antkit: deterministic, verified kernels for ant-inspired robots that measure and "
                "cover space with markers",
                "antkit"};
   app.set_version_flag("--version", std::string("antkit ") + ANTKIT_VERSION);
   app.require_subcommand(1);
+  for (const auto& [name, registrar] : antkit::cli::registry()) registrar(app);
 
   try {
     app.parse(argc, argv);
