@@ -1,7 +1,34 @@
 #pragma once
-// Points and segments in fixed-point coordinates. (Shape only; the exact integer predicates are
-// being written in this file next.)
+// Points and segments in fixed-point coordinates, and exact integer predicates on them.
+//
+// All predicates work on the raw integers of the coordinates (Fx::raw(), the value times 2^16):
+// scaling every coordinate by the same positive factor changes no orientation, so the answers are
+// those of the exact real geometry of the fixed-point values, with no rounding anywhere.
+//
+// Exactness and range. orientation() is the sign of the cross product
+//     (b - a) x (c - a) = (bx - ax)(cy - ay) - (by - ay)(cx - ax).
+// In 64-bit arithmetic it is exact when every coordinate difference is at most 2^31 - 1 in
+// magnitude: each product is then below 2^62 and their difference below 2^63. That holds when
+// every raw coordinate lies in [-2^30, 2^30), i.e. every coordinate in [-16384, 16384) units
+// (kExactInt64Raw below): the fast path. Outside that range (the full Fx range reaches 2^31 raw,
+// differences need 33 bits and products 66) the same template is instantiated with a 128-bit
+// integer, so every input gets an exact answer and none reaches undefined behaviour.
+//
+// What the relations mean (closed segments; a segment whose ends coincide is a point):
+//   Disjoint          no common point.
+//   ProperCrossing    exactly one common point, interior to both segments, and the segments are
+//                     not collinear: the interiors cross.
+//   Touching          they share at least one point but neither cross properly nor overlap in a
+//                     stretch of positive length: an endpoint of one lies on the other (a shared
+//                     endpoint, a T-junction), collinear segments that meet end to end at a single
+//                     point, or a point-segment lying on the other.
+//   CollinearOverlap  they share a stretch of positive length (so both are collinear).
+#include <algorithm>
 #include <antkit/kernel/fixed.hpp>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
 
 namespace antkit::kernel {
 
@@ -16,5 +43,247 @@ struct FxSegment {
   FxPoint b;
   friend constexpr bool operator==(FxSegment, FxSegment) = default;
 };
+
+enum class SegmentRelation : std::uint8_t { Disjoint, Touching, ProperCrossing, CollinearOverlap };
+
+// Raw coordinates in [-kExactInt64Raw, kExactInt64Raw) take the 64-bit path (see above).
+inline constexpr std::int32_t kExactInt64Raw = std::int32_t{1} << 30;
+
+namespace detail {
+
+// 128-bit integers are a GCC/Clang extension; __extension__ keeps -Wpedantic quiet.
+__extension__ using segment_wide = __int128;
+
+constexpr bool raw_in_int64_range(std::int32_t v) noexcept {
+  // v in [-2^30, 2^30) <=> v + 2^30 in [0, 2^31), computed without signed overflow.
+  return static_cast<std::uint32_t>(v) + static_cast<std::uint32_t>(kExactInt64Raw) <
+         (std::uint32_t{1} << 31);
+}
+constexpr bool in_int64_range(FxPoint p) noexcept {
+  return raw_in_int64_range(p.x.raw()) && raw_in_int64_range(p.y.raw());
+}
+
+} // namespace detail
+
+// The sign (-1, 0, +1) of (b - a) x (c - a) computed in Int, from raw coordinates. Int must hold
+// every difference of two coordinates and every product of two differences (see the range note at
+// the top); that is the whole overflow argument.
+template <class Int>
+constexpr int orientation_in(Int ax, Int ay, Int bx, Int by, Int cx, Int cy) noexcept {
+  const Int cross = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  return (cross > Int{0}) - (cross < Int{0});
+}
+
+template <class Int>
+constexpr int orientation_in(FxPoint a, FxPoint b, FxPoint c) noexcept {
+  return orientation_in<Int>(Int{a.x.raw()}, Int{a.y.raw()}, Int{b.x.raw()}, Int{b.y.raw()},
+                             Int{c.x.raw()}, Int{c.y.raw()});
+}
+
+// Sign of the cross product (b - a) x (c - a), exact: +1 when c lies to the left of the directed
+// line a -> b (counter-clockwise in a y-up frame; clockwise as drawn with y down), -1 to the right,
+// 0 when a, b, c are collinear (or two of them coincide).
+constexpr int orientation(FxPoint a, FxPoint b, FxPoint c) noexcept {
+  if (detail::in_int64_range(a) && detail::in_int64_range(b) && detail::in_int64_range(c))
+    return orientation_in<std::int64_t>(a, b, c);
+  return orientation_in<detail::segment_wide>(a, b, c);
+}
+
+namespace detail {
+
+// Lexicographic order on (x, y): along any line it is the order of the points on that line, which
+// is all the collinear case needs.
+constexpr bool lex_less(FxPoint p, FxPoint q) noexcept {
+  return p.x.raw() < q.x.raw() || (p.x.raw() == q.x.raw() && p.y.raw() < q.y.raw());
+}
+
+template <class Int>
+constexpr SegmentRelation classify_in(const FxSegment& s, const FxSegment& t) noexcept {
+  const int o1 = orientation_in<Int>(s.a, s.b, t.a);
+  const int o2 = orientation_in<Int>(s.a, s.b, t.b);
+  const int o3 = orientation_in<Int>(t.a, t.b, s.a);
+  const int o4 = orientation_in<Int>(t.a, t.b, s.b);
+  if (o1 == 0 && o2 == 0 && o3 == 0 && o4 == 0) {
+    // All four points on one line (or points coinciding): compare the two intervals along it.
+    const FxPoint s_lo = lex_less(s.b, s.a) ? s.b : s.a, s_hi = lex_less(s.b, s.a) ? s.a : s.b;
+    const FxPoint t_lo = lex_less(t.b, t.a) ? t.b : t.a, t_hi = lex_less(t.b, t.a) ? t.a : t.b;
+    const FxPoint lo = lex_less(s_lo, t_lo) ? t_lo : s_lo; // the later start
+    const FxPoint hi = lex_less(s_hi, t_hi) ? s_hi : t_hi; // the earlier end
+    if (lex_less(hi, lo)) return SegmentRelation::Disjoint;
+    if (hi == lo) return SegmentRelation::Touching;
+    return SegmentRelation::CollinearOverlap;
+  }
+  // Not all on one line: the closed segments meet iff each one's ends are not strictly on the
+  // same side of the other's line, and then in exactly one point. (A point-segment s gives
+  // o1 = o2 = 0 and o3 = o4 != 0 here, hence Disjoint, as it should.)
+  if (o1 * o2 > 0 || o3 * o4 > 0) return SegmentRelation::Disjoint;
+  if (o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0) return SegmentRelation::ProperCrossing;
+  return SegmentRelation::Touching;
+}
+
+template <class Int>
+constexpr bool properly_cross_in(const FxSegment& s, const FxSegment& t) noexcept {
+  const int o1 = orientation_in<Int>(s.a, s.b, t.a);
+  const int o2 = orientation_in<Int>(s.a, s.b, t.b);
+  if (o1 * o2 >= 0) return false;
+  const int o3 = orientation_in<Int>(t.a, t.b, s.a);
+  const int o4 = orientation_in<Int>(t.a, t.b, s.b);
+  return o3 * o4 < 0;
+}
+
+constexpr bool in_int64_range(const FxSegment& s, const FxSegment& t) noexcept {
+  return in_int64_range(s.a) && in_int64_range(s.b) && in_int64_range(t.a) && in_int64_range(t.b);
+}
+
+} // namespace detail
+
+// How two closed segments meet (see the definitions at the top of this file). Symmetric.
+constexpr SegmentRelation classify(const FxSegment& s, const FxSegment& t) noexcept {
+  if (detail::in_int64_range(s, t)) return detail::classify_in<std::int64_t>(s, t);
+  return detail::classify_in<detail::segment_wide>(s, t);
+}
+
+// The interiors cross at exactly one point: classify(s, t) == ProperCrossing, computed with at
+// most four orientations and no collinear case.
+constexpr bool properly_cross(const FxSegment& s, const FxSegment& t) noexcept {
+  if (detail::in_int64_range(s, t)) return detail::properly_cross_in<std::int64_t>(s, t);
+  return detail::properly_cross_in<detail::segment_wide>(s, t);
+}
+
+// The number of pairs (segment i of polyline a, segment j of polyline b) that cross properly. A
+// polyline of n points has n - 1 segments (none when n < 2); consecutive equal points are
+// zero-length segments, which never cross properly. Touching and collinear overlaps are not
+// counted: a crossing is counted only where one trail really passes from one side of the other to
+// the other side at a single point. count_proper_crossings(a, a) counts every crossing of a with
+// itself twice, once per order.
+//
+// Instead of the O(|a| |b|) pair loop, the segments of b are bucketed into a uniform grid over the
+// part of the plane where both polylines' bounding boxes overlap (about one bucket per segment of
+// b); each segment of a is tested only against the segments of b registered in the buckets its
+// bounding box covers. A pair is counted in exactly one bucket: the one holding the lower corner
+// (max of the minima) of the intersection of the two segments' bounding boxes. With short segments
+// (robot trails) this is close to linear; many long segments that span the whole region fall back
+// towards the pair loop. Deterministic: no hashing, no dependence on addresses.
+inline std::uint64_t count_proper_crossings(std::span<const FxPoint> a,
+                                            std::span<const FxPoint> b) {
+  if (a.size() < 2 || b.size() < 2) return 0;
+  const std::size_t na = a.size() - 1, nb = b.size() - 1;
+
+  // The 64-bit path is taken for all pairs at once when every point is in range.
+  bool narrow = true;
+  for (const FxPoint& p : a) narrow = narrow && detail::in_int64_range(p);
+  for (const FxPoint& p : b) narrow = narrow && detail::in_int64_range(p);
+  auto crosses = [narrow](const FxSegment& s, const FxSegment& t) {
+    return narrow ? detail::properly_cross_in<std::int64_t>(s, t)
+                  : detail::properly_cross_in<detail::segment_wide>(s, t);
+  };
+
+  struct Box {
+    std::int64_t x0, y0, x1, y1;
+  };
+  auto box_of = [](FxPoint p, FxPoint q) {
+    return Box{
+        std::min<std::int64_t>(p.x.raw(), q.x.raw()), std::min<std::int64_t>(p.y.raw(), q.y.raw()),
+        std::max<std::int64_t>(p.x.raw(), q.x.raw()), std::max<std::int64_t>(p.y.raw(), q.y.raw())};
+  };
+  auto hull = [&box_of](std::span<const FxPoint> pts) {
+    Box h = box_of(pts[0], pts[0]);
+    for (const FxPoint& p : pts) {
+      h.x0 = std::min<std::int64_t>(h.x0, p.x.raw());
+      h.y0 = std::min<std::int64_t>(h.y0, p.y.raw());
+      h.x1 = std::max<std::int64_t>(h.x1, p.x.raw());
+      h.y1 = std::max<std::int64_t>(h.y1, p.y.raw());
+    }
+    return h;
+  };
+
+  auto pair_loop = [&] {
+    std::uint64_t count = 0;
+    for (std::size_t i = 0; i < na; ++i)
+      for (std::size_t j = 0; j < nb; ++j)
+        count += crosses(FxSegment{a[i], a[i + 1]}, FxSegment{b[j], b[j + 1]}) ? 1u : 0u;
+    return count;
+  };
+  // Small inputs: the pair loop is cheaper than building buckets.
+  if (na <= 16 || nb <= 16) return pair_loop();
+
+  // The region where a crossing can be: the overlap of the two polylines' bounding boxes.
+  const Box ha = hull(a), hb = hull(b);
+  const Box region{std::max(ha.x0, hb.x0), std::max(ha.y0, hb.y0), std::min(ha.x1, hb.x1),
+                   std::min(ha.y1, hb.y1)};
+  if (region.x0 > region.x1 || region.y0 > region.y1) return 0;
+
+  // About nb buckets, G x G with G = ceil(sqrt(nb)) capped at 1024 (a million buckets), each of
+  // side ceil(extent / G) raw units (extent <= 2^32, so everything fits in 64 bits).
+  std::int64_t g = 1;
+  while (g < 1024 && g * g < static_cast<std::int64_t>(nb)) ++g;
+  const std::int64_t side_x = (region.x1 - region.x0 + g) / g; // ceil((extent + 1) / g)
+  const std::int64_t side_y = (region.y1 - region.y0 + g) / g;
+  auto bucket_x = [&](std::int64_t x) {
+    return (std::clamp(x, region.x0, region.x1) - region.x0) / side_x;
+  };
+  auto bucket_y = [&](std::int64_t y) {
+    return (std::clamp(y, region.y0, region.y1) - region.y0) / side_y;
+  };
+  auto overlaps_region = [&region](const Box& bx) {
+    return bx.x0 <= region.x1 && bx.x1 >= region.x0 && bx.y0 <= region.y1 && bx.y1 >= region.y0;
+  };
+
+  // Compressed rows: start[k] .. start[k + 1] index the segments of b in bucket k, in order of j.
+  // A segment of b is registered in every bucket its bounding box covers; when that adds up to
+  // more than 64 registrations per segment (many long segments), the buckets would cost more than
+  // they save, so the pair loop is used instead (also what keeps memory bounded on any input).
+  const auto buckets = static_cast<std::size_t>(g * g);
+  std::vector<Box> boxes_b(nb);
+  std::uint64_t registrations = 0;
+  for (std::size_t j = 0; j < nb; ++j) {
+    boxes_b[j] = box_of(b[j], b[j + 1]);
+    if (!overlaps_region(boxes_b[j])) continue;
+    registrations +=
+        static_cast<std::uint64_t>(bucket_y(boxes_b[j].y1) - bucket_y(boxes_b[j].y0) + 1) *
+        static_cast<std::uint64_t>(bucket_x(boxes_b[j].x1) - bucket_x(boxes_b[j].x0) + 1);
+  }
+  if (registrations > 64 * static_cast<std::uint64_t>(nb) || nb >= (std::size_t{1} << 31))
+    return pair_loop();
+  std::vector<std::size_t> start(buckets + 1, 0);
+  for (std::size_t j = 0; j < nb; ++j) {
+    if (!overlaps_region(boxes_b[j])) continue;
+    for (std::int64_t by = bucket_y(boxes_b[j].y0); by <= bucket_y(boxes_b[j].y1); ++by)
+      for (std::int64_t bx = bucket_x(boxes_b[j].x0); bx <= bucket_x(boxes_b[j].x1); ++bx)
+        ++start[static_cast<std::size_t>(by * g + bx) + 1];
+  }
+  for (std::size_t k = 0; k < buckets; ++k) start[k + 1] += start[k];
+  std::vector<std::uint32_t> members(start[buckets]);
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t j = 0; j < nb; ++j) {
+      if (!overlaps_region(boxes_b[j])) continue;
+      for (std::int64_t by = bucket_y(boxes_b[j].y0); by <= bucket_y(boxes_b[j].y1); ++by)
+        for (std::int64_t bx = bucket_x(boxes_b[j].x0); bx <= bucket_x(boxes_b[j].x1); ++bx)
+          members[fill[static_cast<std::size_t>(by * g + bx)]++] = static_cast<std::uint32_t>(j);
+    }
+  }
+
+  std::uint64_t count = 0;
+  for (std::size_t i = 0; i < na; ++i) {
+    const FxSegment s{a[i], a[i + 1]};
+    const Box bs = box_of(s.a, s.b);
+    if (!overlaps_region(bs)) continue;
+    for (std::int64_t by = bucket_y(bs.y0); by <= bucket_y(bs.y1); ++by)
+      for (std::int64_t bx = bucket_x(bs.x0); bx <= bucket_x(bs.x1); ++bx) {
+        const auto k = static_cast<std::size_t>(by * g + bx);
+        for (std::size_t m = start[k]; m < start[k + 1]; ++m) {
+          const std::uint32_t j = members[m];
+          const Box& bt = boxes_b[j];
+          if (bt.x0 > bs.x1 || bt.x1 < bs.x0 || bt.y0 > bs.y1 || bt.y1 < bs.y0) continue;
+          // Count the pair only in the bucket of the lower corner of the boxes' overlap.
+          if (bucket_x(std::max(bs.x0, bt.x0)) != bx || bucket_y(std::max(bs.y0, bt.y0)) != by)
+            continue;
+          count += crosses(s, FxSegment{b[j], b[j + 1]}) ? 1u : 0u;
+        }
+      }
+  }
+  return count;
+}
 
 } // namespace antkit::kernel

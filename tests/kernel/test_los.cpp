@@ -1,0 +1,143 @@
+// Line of sight on grids: symmetric, and exactly "no blocking cell among those the segment touches
+// other than its two ends", with the touch test an exact oracle written here (not raster.hpp).
+#include <algorithm>
+#include <antkit/kernel/raster.hpp>
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <rapidcheck.h>
+#include <rapidcheck/catch.h>
+#include <vector>
+
+using antkit::kernel::Cell;
+using antkit::kernel::line_of_sight;
+using antkit::kernel::Occupancy;
+using antkit::kernel::OccupancyGrid;
+
+namespace {
+
+// The closed segment between the centres of a and b touches the closed square of c (doubled
+// integer coordinates; separating axes x, y and the segment's normal).
+bool touches(Cell a, Cell b, Cell c) {
+  const std::int64_t px = 2 * std::int64_t{a.x}, py = 2 * std::int64_t{a.y};
+  const std::int64_t qx = 2 * std::int64_t{b.x}, qy = 2 * std::int64_t{b.y};
+  const std::int64_t x0 = 2 * std::int64_t{c.x} - 1, x1 = x0 + 2;
+  const std::int64_t y0 = 2 * std::int64_t{c.y} - 1, y1 = y0 + 2;
+  if (std::max(px, qx) < x0 || std::min(px, qx) > x1) return false;
+  if (std::max(py, qy) < y0 || std::min(py, qy) > y1) return false;
+  int pos = 0, neg = 0;
+  for (std::int64_t x : {x0, x1})
+    for (std::int64_t y : {y0, y1}) {
+      const std::int64_t cross = (qx - px) * (y - py) - (qy - py) * (x - px);
+      pos += cross > 0 ? 1 : 0;
+      neg += cross < 0 ? 1 : 0;
+    }
+  return !(pos == 4 || neg == 4);
+}
+
+// Line of sight by definition: every touched cell other than a and b is on the grid and Free.
+bool oracle_los(const OccupancyGrid& g, Cell a, Cell b) {
+  for (std::int64_t y = std::min(a.y, b.y); y <= std::max(a.y, b.y); ++y)
+    for (std::int64_t x = std::min(a.x, b.x); x <= std::max(a.x, b.x); ++x) {
+      const Cell c{static_cast<std::int32_t>(x), static_cast<std::int32_t>(y)};
+      if (c == a || c == b || !touches(a, b, c)) continue;
+      if (g.get_or(c, Occupancy::Blocked) != Occupancy::Free) return false;
+    }
+  return true;
+}
+
+// A w x h grid, each cell Blocked with probability about density/8 and Unknown about 1/16.
+OccupancyGrid random_grid(std::int32_t w, std::int32_t h, int density) {
+  OccupancyGrid g(w, h);
+  for (auto& v : g.cells()) {
+    const int r = *rc::gen::inRange(0, 16);
+    v = r < 2 * density ? Occupancy::Blocked : r == 15 ? Occupancy::Unknown : Occupancy::Free;
+  }
+  return g;
+}
+
+// A cell in or just around a w x h grid (up to 2 cells off each side).
+Cell near_grid(std::int32_t w, std::int32_t h) {
+  const auto x = *rc::gen::inRange(-2, w + 2);
+  const auto y = *rc::gen::inRange(-2, h + 2);
+  return {x, y};
+}
+
+OccupancyGrid from_ascii(const std::vector<const char*>& rows) {
+  OccupancyGrid g(static_cast<std::int32_t>(std::string(rows[0]).size()),
+                  static_cast<std::int32_t>(rows.size()));
+  for (std::int32_t y = 0; y < g.height(); ++y)
+    for (std::int32_t x = 0; x < g.width(); ++x) {
+      const char ch = rows[static_cast<std::size_t>(y)][x];
+      g[{x, y}] = ch == '#' ? Occupancy::Blocked : ch == '?' ? Occupancy::Unknown : Occupancy::Free;
+    }
+  return g;
+}
+
+} // namespace
+
+TEST_CASE("line of sight worked examples", "[los]") {
+  const OccupancyGrid g = from_ascii({
+      ".....", //
+      ".#...", //
+      "..#..", //
+      "...?.", //
+      ".....", //
+  });
+  CHECK(line_of_sight(g, {0, 0}, {4, 0}));  // along the free top row
+  CHECK(!line_of_sight(g, {0, 0}, {4, 4})); // through the blocked diagonal
+  CHECK(line_of_sight(g, {1, 1}, {2, 2}));  // the ends themselves never block
+  CHECK(line_of_sight(g, {0, 0}, {0, 0}));  // a cell sees itself
+  CHECK(!line_of_sight(g, {4, 2}, {2, 4})); // (3, 3) is Unknown, which blocks
+  CHECK(line_of_sight(g, {4, 1}, {4, 4}));
+  // A diagonal gap between two blocked cells that touch at a corner lets nothing through: the
+  // segment (1,2)-(2,1) passes through their shared corner, so it touches both.
+  const OccupancyGrid gap = from_ascii({
+      "...", //
+      ".#.", //
+      "#..", //
+  });
+  CHECK(!line_of_sight(gap, {0, 1}, {1, 2}));
+  CHECK(!line_of_sight(gap, {2, 0}, {0, 2}));
+  // Off the grid: the cells between are off the grid too, and block; the ends do not.
+  CHECK(!line_of_sight(g, {-2, 0}, {1, 0}));
+  CHECK(line_of_sight(g, {-1, 0}, {1, 0}));
+  CHECK(line_of_sight(g, {-1, 0}, {-1, 0}));
+}
+
+TEST_CASE("line of sight is the oracle's, and symmetric", "[los][property]") {
+  rc::prop("grid LOS equals the definition, both ways", [] {
+    const auto w = *rc::gen::inRange(1, 14);
+    const auto h = *rc::gen::inRange(1, 14);
+    const OccupancyGrid g = random_grid(w, h, *rc::gen::inRange(0, 4));
+    const Cell a = near_grid(w, h), b = near_grid(w, h);
+    const bool los = line_of_sight(g, a, b);
+    RC_ASSERT(los == line_of_sight(g, b, a));
+    RC_ASSERT(los == oracle_los(g, a, b));
+  });
+  rc::prop("the predicate form sees exactly the interior cells, each once", [] {
+    const Cell a{*rc::gen::inRange(-30, 31), *rc::gen::inRange(-30, 31)};
+    const Cell b{*rc::gen::inRange(-30, 31), *rc::gen::inRange(-30, 31)};
+    std::vector<Cell> asked;
+    const bool los = line_of_sight(a, b, [&](Cell c) {
+      asked.push_back(c);
+      return false;
+    });
+    RC_ASSERT(los);
+    std::vector<Cell> want;
+    for (std::int32_t y = std::min(a.y, b.y); y <= std::max(a.y, b.y); ++y)
+      for (std::int32_t x = std::min(a.x, b.x); x <= std::max(a.x, b.x); ++x)
+        if (Cell{x, y} != a && Cell{x, y} != b && touches(a, b, {x, y})) want.push_back({x, y});
+    std::sort(asked.begin(), asked.end());
+    std::sort(want.begin(), want.end());
+    RC_ASSERT(asked.size() == want.size());
+    RC_ASSERT(std::equal(asked.begin(), asked.end(), want.begin()));
+  });
+  rc::prop("the predicate form stops at the first blocking cell", [] {
+    const Cell a{*rc::gen::inRange(-30, 31), *rc::gen::inRange(-30, 31)};
+    const Cell b{*rc::gen::inRange(-30, 31), *rc::gen::inRange(-30, 31)};
+    int calls = 0;
+    const bool los = line_of_sight(a, b, [&](Cell) { return ++calls == 1; });
+    RC_ASSERT(los == (calls == 0));
+    RC_ASSERT(calls <= 1);
+  });
+}
