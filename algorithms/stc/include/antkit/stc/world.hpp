@@ -1,0 +1,145 @@
+#pragma once
+// The simulated body the STC controllers run in (DESIGN.md: a body turns commands into motion and
+// produces the next observation), and one function that runs a variant to the end.
+//
+// The world holds the sub-cell map, the robot's sub-cell, the marks on the floor (sub-cell marks
+// for `ant`, lit edges for `ant-edge`) and how often each sub-cell was entered. Marker noise lives
+// here, on the sensing side: each mark bit the robot reads is misread (a missed mark or a phantom)
+// with probability noise.ppm / 1'000'000, drawn from the keyed stream
+// (seed, kNoiseExperiment, trial, robot 0, kNoisePurpose). The controllers stay deterministic
+// functions of what they read.
+//
+// Trace hash (DESIGN.md rule 5), over the canonical little-endian stream:
+//   u32 width, u32 height (sub-cells), i32 start.x, i32 start.y, then per position of the tour
+//   (the start first) i32 x, i32 y.
+// Only positions enter it, so two variants that produce the same tour have the same hash; that is
+// invariant 5 read off one number.
+#include <antkit/kernel/hash.hpp>
+#include <antkit/kernel/random.hpp>
+#include <antkit/stc/ant.hpp>
+#include <antkit/stc/online.hpp>
+#include <antkit/stc/subcell.hpp>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace antkit::stc {
+
+enum class Variant : std::uint8_t { Offline, Online, Ant, AntEdge, Full };
+
+inline constexpr std::array<Variant, 5> kVariants{Variant::Offline, Variant::Online, Variant::Ant,
+                                                  Variant::AntEdge, Variant::Full};
+[[nodiscard]] std::string_view variant_name(Variant v) noexcept;
+[[nodiscard]] std::optional<Variant> parse_variant(std::string_view name) noexcept;
+// Variants whose tour enters every sub-cell exactly once (all but `full`).
+[[nodiscard]] constexpr bool is_exact(Variant v) noexcept {
+  return v != Variant::Full;
+}
+
+// Keys of the noise stream.
+inline constexpr std::uint64_t kNoiseExperiment = 3;       // issue 3
+inline constexpr std::uint64_t kNoisePurpose = 0x6D61726B; // "mark"
+
+struct NoiseModel {
+  std::uint32_t ppm = 0; // misread probability, parts per million (0 .. 1'000'000)
+  std::uint64_t seed = 0;
+  std::uint64_t trial = 0;
+};
+
+class StcWorld {
+public:
+  StcWorld() = default;
+  StcWorld(const kernel::OccupancyGrid& map, SubCell start, NoiseModel noise = {}) {
+    reset(map, start, noise);
+  }
+  // Starts over on a map (reusing the buffers: the exhaustive tests run millions of tours).
+  // The start must be a free sub-cell inside the cell area (the runners check).
+  void reset(const kernel::OccupancyGrid& map, SubCell start, NoiseModel noise = {});
+
+  [[nodiscard]] CellObservation observe_cells() const noexcept;
+  [[nodiscard]] MarkObservation observe_marks() noexcept;
+  [[nodiscard]] EdgeObservation observe_edges() noexcept;
+
+  // Carries out a command: leaves the mark, then moves. Returns false, without moving, for Stop
+  // and for a move off the cell area or into a sub-cell that is not free.
+  bool apply(const Command& command) noexcept;
+
+  [[nodiscard]] SubCell position() const noexcept { return position_; }
+  // Sub-cells reachable from the robot's position: 4 x the free cells 4-connected to its cell
+  // (whole_cells), or the free sub-cells of the cell area 4-connected to it.
+  [[nodiscard]] std::int64_t reachable_subcells(bool whole_cells);
+  [[nodiscard]] bool sub_free(SubCell s) const noexcept;
+  [[nodiscard]] bool marked(SubCell s) const noexcept { return marks_[index(s)] != 0; }
+  // The 12-bit edge mask of a cell (bits as documented in ant.hpp).
+  [[nodiscard]] std::uint16_t cell_edges(Cell c) const noexcept;
+  // Lights the edge of sub-cell s in direction d (tests use it to light neighbours' edges).
+  void light_edge(SubCell s, int d) noexcept;
+  // Sub-cells entered at least once, and entries into a sub-cell entered before.
+  [[nodiscard]] std::int64_t covered() const noexcept { return covered_; }
+  [[nodiscard]] std::int64_t repeats() const noexcept { return repeats_; }
+  [[nodiscard]] std::int32_t width() const noexcept { return width_; }
+  [[nodiscard]] std::int32_t height() const noexcept { return height_; }
+
+private:
+  [[nodiscard]] std::size_t index(SubCell s) const noexcept {
+    return static_cast<std::size_t>(s.y) * static_cast<std::size_t>(width_) +
+           static_cast<std::size_t>(s.x);
+  }
+  [[nodiscard]] std::size_t edge_index(SubCell s, int d) const noexcept;
+  [[nodiscard]] std::uint8_t cell_marks(Cell c) const noexcept;
+  std::uint32_t misread(std::uint32_t bits, int count) noexcept;
+  void enter(SubCell s) noexcept;
+
+  std::int32_t width_ = 0, height_ = 0;
+  CellGridShape shape_{};
+  std::vector<std::uint8_t> free_;      // per sub-cell, inside the cell area only
+  std::vector<std::uint8_t> cell_free_; // per cell
+  std::vector<std::uint8_t> marks_;     // per sub-cell
+  std::vector<std::uint8_t> edges_;     // vertical edges (W + 1) x H, then horizontal W x (H + 1)
+  std::vector<std::uint8_t> entered_;   // per sub-cell
+  std::vector<std::uint8_t> scratch_;
+  std::vector<Cell> queue_;
+  std::int64_t covered_ = 0, repeats_ = 0;
+  SubCell position_{};
+  NoiseModel noise_{};
+  kernel::Stream stream_{0};
+};
+
+struct RunOptions {
+  NoiseModel noise{};
+  // Moves after which a run is cut off; 0: 16 per sub-cell of the map (an exact tour needs one,
+  // `full` fewer than 4). Only a noisy run can get there.
+  std::int64_t max_moves = 0;
+  bool record_path = true;
+};
+
+struct RunResult {
+  Variant variant = Variant::Offline;
+  std::vector<SubCell> path;           // the start first (empty unless record_path)
+  std::int64_t positions = 0;          // entries in the path, the start included
+  std::int64_t reachable_subcells = 0; // exact variants: 4 x free cells 4-connected to the start
+                                       // cell; full: free sub-cells 4-connected to the start
+  std::int64_t covered = 0;            // reachable sub-cells entered at least once
+  std::int64_t repeats = 0;            // entries into a sub-cell entered before
+  bool returned_to_start = false;      // the last sub-cell is the start or 4-adjacent to it
+  bool closed = false;                 // the controller stopped (rather than being cut off)
+  bool refused = false;                // the controller asked for an impossible move
+  std::uint64_t hash = 0;
+};
+
+// Runs one variant from `start` to the end of its tour. Throws kernel::InputError for a start
+// outside the cell area, in a blocked sub-cell, or (exact variants) in a cell that is not free.
+// Noise applies to the marker variants (`ant`, `ant-edge`); the others read no marks.
+RunResult run_stc(const kernel::OccupancyGrid& map, SubCell start, Variant variant,
+                  const RunOptions& options = {});
+
+// The same, reusing a world's buffers.
+RunResult run_stc(StcWorld& world, const kernel::OccupancyGrid& map, SubCell start, Variant variant,
+                  const RunOptions& options = {});
+
+// Free sub-cells 4-connected to `start` inside the cell area (full), or 4 x the free cells
+// 4-connected to its cell (exact variants).
+std::int64_t reachable_subcells(const kernel::OccupancyGrid& map, SubCell start, Variant variant);
+
+} // namespace antkit::stc

@@ -1,0 +1,71 @@
+// Invariants 1-5 of issue 3 on random maps (rapidcheck).
+#include "stc_checkers.hpp"
+#include "stc_test_maps.hpp"
+
+#include <antkit/stc/world.hpp>
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+using namespace antkit::stc;
+using antkit::stc::testing::random_map;
+
+TEST_CASE("exact variants: invariants 1-4 on random maps, and all four give the same tour",
+          "[stc][property]") {
+  rc::prop("offline, online, ant and ant-edge", [] {
+    const auto [map, start] = *random_map(/*partial_cells=*/true, /*start_in_free_cell=*/true);
+    antkit::test::StcTourChecker checker;
+    const RunResult offline = run_stc(map, start, Variant::Offline);
+    const auto check = checker.check_exact(map, start, offline.path);
+    RC_ASSERT(check.describe() == "ok");
+    RC_ASSERT(offline.closed && offline.returned_to_start && offline.repeats == 0);
+    RC_ASSERT(offline.covered == offline.reachable_subcells);
+    for (Variant v : {Variant::Online, Variant::Ant, Variant::AntEdge}) {
+      const RunResult r = run_stc(map, start, v);
+      const auto same =
+          antkit::test::check_same_tour(offline.path, r.path, std::string(variant_name(v)));
+      RC_ASSERT(same.describe() == "ok");
+      RC_ASSERT(r.hash == offline.hash);
+      RC_ASSERT(r.closed && !r.refused);
+    }
+  });
+}
+
+TEST_CASE("full: every reachable free sub-cell at least once, moves 4-adjacent and free, ends at "
+          "or next to the start, repeats reported right",
+          "[stc][property]") {
+  rc::prop("full", [] {
+    const auto [map, start] = *random_map(/*partial_cells=*/true, /*start_in_free_cell=*/false);
+    antkit::test::StcTourChecker checker;
+    const RunResult r = run_stc(map, start, Variant::Full);
+    const auto check = checker.check_full(map, start, r.path, r.repeats);
+    RC_ASSERT(check.describe() == "ok");
+    RC_ASSERT(r.covered == r.reachable_subcells);
+    RC_ASSERT(r.closed && r.returned_to_start);
+    // Repeats are bounded: each part is crossed into at most once per child plus its own covering
+    // walk, so at most 3 repeats per sub-cell.
+    RC_ASSERT(r.repeats <= 3 * r.covered);
+  });
+}
+
+TEST_CASE("marker noise: a noisy run never leaves the free sub-cells and its counts add up",
+          "[stc][property]") {
+  rc::prop("ant and ant-edge under noise", [] {
+    const auto [map, start] = *random_map(/*partial_cells=*/true, /*start_in_free_cell=*/true);
+    const auto ppm = *rc::gen::inRange<std::uint32_t>(0, 300'001);
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    for (Variant v : {Variant::Ant, Variant::AntEdge}) {
+      RunOptions o;
+      o.noise = {ppm, seed, 0};
+      const RunResult r = run_stc(map, start, v, o);
+      RC_ASSERT(!r.refused);
+      RC_ASSERT(r.covered <= r.reachable_subcells);
+      RC_ASSERT(r.covered + r.repeats == r.positions);
+      for (std::size_t i = 1; i < r.path.size(); ++i) {
+        const auto d = r.path[i] - r.path[i - 1];
+        RC_ASSERT(std::abs(d.x) + std::abs(d.y) == 1);
+        RC_ASSERT(map[r.path[i]] == antkit::kernel::Occupancy::Free);
+      }
+      RC_ASSERT(run_stc(map, start, v, o).hash == r.hash); // reproducible
+    }
+  });
+}
