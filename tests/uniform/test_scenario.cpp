@@ -135,3 +135,25 @@ TEST_CASE("place_robots puts robot 0 on the map's start cell and the others in i
       place_robots(kernel::OccupancyGrid(2, 2, Occupancy::Blocked), 1, std::nullopt, 5, 0),
       kernel::InputError);
 }
+
+TEST_CASE("densities parse exactly, as fractions or percentages", "[uniform]") {
+  CHECK(parse_density_ppm("0") == 0);
+  CHECK(parse_density_ppm("1") == kPpm);
+  CHECK(parse_density_ppm("0.2") == 200'000);
+  CHECK(parse_density_ppm(".25") == 250'000);
+  CHECK(parse_density_ppm("0.000001") == 1);
+  CHECK(parse_density_ppm("20%") == 200'000);
+  CHECK(parse_density_ppm("12.5%") == 125'000);
+  CHECK(parse_density_ppm("100%") == kPpm);
+  for (const char* bad : {"", "%", ".", "-0.1", "1.1", "101%", "0.0000001", "0.2.3", "2e-1", "abc",
+                          "0,2", "1000000000000000000000"})
+    CHECK_THROWS_AS(parse_density_ppm(bad), kernel::InputError);
+}
+
+TEST_CASE("sizes parse as WxH within the bounds", "[uniform]") {
+  CHECK(parse_size("100x80", 4096) == std::pair<std::int32_t, std::int32_t>{100, 80});
+  CHECK(parse_size("1X1", 4096) == std::pair<std::int32_t, std::int32_t>{1, 1});
+  for (const char* bad : {"", "x", "100", "100x", "x100", "0x5", "5x0", "-5x5", "5x5x5", "4097x1",
+                          "99999999999x1", " 5x5"})
+    CHECK_THROWS_AS(parse_size(bad, 4096), kernel::InputError);
+}

@@ -112,4 +112,61 @@ std::vector<Pose> place_robots(const OccupancyGrid& map, std::size_t robots,
   return poses;
 }
 
+std::uint32_t parse_density_ppm(std::string_view text) {
+  const auto bad = [&]() -> kernel::InputError {
+    return kernel::InputError("--density", "expected a fraction in [0, 1] such as 0.2 (at most six "
+                                           "decimals) or a percentage such as 20%, not '" +
+                                               std::string(text) + "'");
+  };
+  const bool percent = !text.empty() && text.back() == '%';
+  if (percent) text.remove_suffix(1);
+  const int max_decimals = percent ? 4 : 6;
+  std::uint64_t whole = 0, frac = 0;
+  int decimals = 0, digits = 0;
+  bool point = false;
+  for (const char ch : text) {
+    if (ch == '.' && !point) {
+      point = true;
+    } else if (ch >= '0' && ch <= '9') {
+      ++digits;
+      if (point) {
+        if (++decimals > max_decimals) throw bad();
+        frac = frac * 10 + static_cast<std::uint64_t>(ch - '0');
+      } else {
+        whole = whole * 10 + static_cast<std::uint64_t>(ch - '0');
+        if (whole > 1000) throw bad();
+      }
+    } else {
+      throw bad();
+    }
+  }
+  if (digits == 0) throw bad();
+  for (; decimals < max_decimals; ++decimals) frac *= 10;
+  // A fraction has 10^6 ppm per unit; a percentage 10^4 ppm per percent.
+  const std::uint64_t ppm = percent ? whole * 10'000 + frac : whole * 1'000'000 + frac;
+  if (ppm > kPpm) throw bad();
+  return static_cast<std::uint32_t>(ppm);
+}
+
+std::pair<std::int32_t, std::int32_t> parse_size(std::string_view text, std::int32_t max_side) {
+  const auto bad = [&]() -> kernel::InputError {
+    return kernel::InputError("--size", "expected WxH with W and H integers in [1, " +
+                                            std::to_string(max_side) + "], such as 100x100, not '" +
+                                            std::string(text) + "'");
+  };
+  const auto x = text.find_first_of("xX");
+  if (x == std::string_view::npos) throw bad();
+  const auto number = [&](std::string_view part) {
+    if (part.empty() || part.size() > 9) throw bad();
+    std::int64_t v = 0;
+    for (const char ch : part) {
+      if (ch < '0' || ch > '9') throw bad();
+      v = v * 10 + (ch - '0');
+    }
+    if (v < 1 || v > max_side) throw bad();
+    return static_cast<std::int32_t>(v);
+  };
+  return {number(text.substr(0, x)), number(text.substr(x + 1))};
+}
+
 } // namespace antkit::uniform

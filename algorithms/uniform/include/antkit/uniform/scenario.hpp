@@ -21,6 +21,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace antkit::uniform {
@@ -69,5 +71,15 @@ struct FreeComponents {
 [[nodiscard]] std::vector<Pose> place_robots(const kernel::OccupancyGrid& map, std::size_t robots,
                                              std::optional<kernel::Cell> start, std::uint64_t seed,
                                              std::uint64_t trial);
+
+// Parses an obstacle density, exactly: a decimal fraction in [0, 1] with at most six decimals
+// ("0.2", "0", "1", ".25") or a percentage in [0, 100] with at most four decimals ("20%",
+// "12.5%"); returns parts per million. Throws kernel::InputError (where "--density") otherwise.
+[[nodiscard]] std::uint32_t parse_density_ppm(std::string_view text);
+
+// Parses "WxH" (or "WXH"): two decimal integers in [1, max_side]; throws kernel::InputError
+// (where "--size") otherwise.
+[[nodiscard]] std::pair<std::int32_t, std::int32_t> parse_size(std::string_view text,
+                                                               std::int32_t max_side);
 
 } // namespace antkit::uniform

@@ -1,0 +1,171 @@
+#pragma once
+// The driver that reproduces Tables 1-4 of paper 004 (Tyler & Hettiarachchi) and sets our numbers
+// beside the paper's. Not part of antkit::algorithms (it uses threads and reports in floating
+// point); the `antkit cover-experiment` command includes it.
+//
+// The experiment (paper: "obstacle density of 0%, 10%, 20% and 30% ... 1 to 4 robots ... averaged
+// over 10 independent runs"). The paper gives neither the environment size, the sensor distance
+// nor the time limit; our choices and why:
+//   * 100 x 100 cells and sensor distance 5: with these, one A* robot on an empty map needs about
+//     1500 ticks and about 2800 at 20 % obstacles, the magnitude of the paper's 1621 and 2227
+//     (Tables 4 and 2), and 100 x 100 is the round size a user of the paper's tool would type.
+//   * Run k (k = 0..runs-1) uses trial k of the keyed streams for every density and robot count:
+//     the obstacle sample is a prefix of one shuffle, so the 10 % map's obstacles are among the
+//     20 % map's (common random numbers: differences between rows are not map noise), and the
+//     first robots' starts are shared between robot counts when they fall in the same component.
+//   * Time limit: 10 * W * H ticks for A* and PM (never reached: A* completes and PM ceases long
+//     before). RW never stops by itself, and the paper's RW movement counts match its A* counts
+//     within 1 % in every row of every table, which says the three ran side by side and stopped
+//     together; so RW's limit in run k is the number of ticks A* took in run k.
+//   * Coordinated A* ("go beyond the paper") runs on the same maps and starts.
+#include <algorithm>
+#include <antkit/kernel/hash.hpp>
+#include <antkit/uniform/coverage.hpp>
+#include <antkit/uniform/scenario.hpp>
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <exception>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace antkit::uniform::experiments {
+
+// The paper's numbers: Tables 1-4 of paper 004, coverage % and movements, RW, PM and A*, 1-4
+// robots.
+struct PaperRow {
+  int table;           // 1..4
+  int density_percent; // 30, 20, 10, 0
+  int robots;          // 1..4
+  double coverage[3];  // RW, PM, A*
+  double movements[3]; // RW, PM, A*
+};
+inline constexpr std::array<PaperRow, 16> kPaperTables{{
+    // Table 1: 30 % obstacle density.
+    {1, 30, 1, {15.30, 34.96, 100.0}, {2760.7, 468.9, 2757.2}},
+    {1, 30, 2, {14.55, 43.40, 100.0}, {1405.5, 394.6, 1395.2}},
+    {1, 30, 3, {26.65, 48.24, 100.0}, {1027.2, 300.8, 1016.4}},
+    {1, 30, 4, {24.49, 56.92, 100.0}, {758.3, 268.8, 701.4}},
+    // Table 2: 20 %.
+    {2, 20, 1, {14.48, 45.67, 100.0}, {2235.1, 583.3, 2227.0}},
+    {2, 20, 2, {20.04, 52.87, 100.0}, {1187.1, 442.2, 1178.4}},
+    {2, 20, 3, {28.24, 60.20, 100.0}, {895.9, 346.6, 888.4}},
+    {2, 20, 4, {26.59, 71.12, 100.0}, {726.0, 303.0, 716.1}},
+    // Table 3: 10 %.
+    {3, 10, 1, {17.47, 52.21, 100.0}, {1888.9, 640.7, 1883.2}},
+    {3, 10, 2, {23.51, 54.64, 100.0}, {1086.3, 456.9, 1081.0}},
+    {3, 10, 3, {28.83, 70.76, 100.0}, {757.2, 398.3, 753.0}},
+    {3, 10, 4, {36.82, 82.82, 100.0}, {684.9, 370.8, 674.3}},
+    // Table 4: 0 %.
+    {4, 0, 1, {15.24, 100.0, 100.0}, {1622.6, 1603.0, 1621.0}},
+    {4, 0, 2, {31.13, 97.53, 100.0}, {958.1, 959.2, 957.0}},
+    {4, 0, 3, {37.38, 100.0, 100.0}, {753.5, 566.0, 749.0}},
+    {4, 0, 4, {38.76, 100.0, 100.0}, {562.9, 421.0, 553.0}},
+}};
+
+inline constexpr std::array<Algorithm, 4> kTableAlgorithms{
+    Algorithm::RandomWanderer, Algorithm::PrimaryMovement, Algorithm::AStar,
+    Algorithm::CoordinatedAStar};
+
+struct TablesConfig {
+  std::int32_t width = 100;
+  std::int32_t height = 100;
+  std::int32_t sensor = 5;
+  std::uint32_t runs = 10;
+  std::uint64_t seed = 1;
+  unsigned jobs = 1; // threads; the results do not depend on it
+};
+
+// One (density, robots) cell of our tables: means over the runs, per algorithm (kTableAlgorithms
+// order).
+struct TablesRow {
+  const PaperRow* paper = nullptr;
+  double coverage[4] = {}; // mean %
+  double coverage_min[4] = {};
+  double movements[4] = {};       // mean ticks
+  double moves[4] = {};           // mean total moves
+  std::uint32_t complete[4] = {}; // runs that reached 100 %
+  std::uint64_t hash = 0;         // a digest of every run's trace hash, in run order
+};
+
+namespace detail {
+struct TrialOut {
+  CoverageResult result[4];
+};
+
+inline TrialOut run_trial(const TablesConfig& c, const PaperRow& row, std::uint32_t run) {
+  TrialOut out;
+  const auto ppm = static_cast<std::uint32_t>(row.density_percent) * (kPpm / 100);
+  const auto map = random_obstacles(c.width, c.height, ppm, c.seed, run);
+  const auto poses =
+      place_robots(map, static_cast<std::size_t>(row.robots), std::nullopt, c.seed, run);
+  const std::uint64_t limit = std::uint64_t{10} * static_cast<std::uint64_t>(c.width) *
+                              static_cast<std::uint64_t>(c.height);
+  // A* first: its ticks are RW's limit.
+  for (const std::size_t k : {std::size_t{2}, std::size_t{3}, std::size_t{1}, std::size_t{0}}) {
+    CoverageWorld world(map, poses, c.sensor);
+    const std::uint64_t lim = k == 0 ? out.result[2].movements : limit;
+    out.result[k] = run_coverage(world, kTableAlgorithms[k], c.seed, run, lim);
+  }
+  return out;
+}
+} // namespace detail
+
+// Runs every (density, robots, run) and reduces in that order.
+inline std::vector<TablesRow> run_tables(const TablesConfig& c) {
+  const std::size_t per_row = c.runs;
+  const std::size_t total = kPaperTables.size() * per_row;
+  std::vector<detail::TrialOut> trials(total);
+  std::vector<std::exception_ptr> errors(total);
+  std::atomic<std::size_t> next{0};
+  const auto worker = [&] {
+    for (std::size_t k; (k = next.fetch_add(1)) < total;) {
+      try {
+        trials[k] = detail::run_trial(c, kPaperTables[k / per_row],
+                                      static_cast<std::uint32_t>(k % per_row));
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned j = 1; j < std::max(1u, c.jobs); ++j) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+
+  std::vector<TablesRow> rows;
+  for (std::size_t r = 0; r < kPaperTables.size(); ++r) {
+    TablesRow row;
+    row.paper = &kPaperTables[r];
+    kernel::TraceHash digest;
+    for (std::size_t a = 0; a < 4; ++a) row.coverage_min[a] = 100.0;
+    for (std::size_t run = 0; run < per_row; ++run) {
+      const auto& t = trials[r * per_row + run];
+      for (std::size_t a = 0; a < 4; ++a) {
+        const auto& res = t.result[a];
+        const double cov = res.viewable == 0 ? 100.0
+                                             : 100.0 * static_cast<double>(res.viewed) /
+                                                   static_cast<double>(res.viewable);
+        row.coverage[a] += cov;
+        row.coverage_min[a] = std::min(row.coverage_min[a], cov);
+        row.movements[a] += static_cast<double>(res.movements);
+        row.moves[a] += static_cast<double>(res.moves);
+        row.complete[a] += res.viewed == res.viewable;
+        digest.add_u64(res.hash);
+      }
+    }
+    for (std::size_t a = 0; a < 4; ++a) {
+      row.coverage[a] /= static_cast<double>(per_row);
+      row.movements[a] /= static_cast<double>(per_row);
+      row.moves[a] /= static_cast<double>(per_row);
+    }
+    row.hash = digest.finish();
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+} // namespace antkit::uniform::experiments

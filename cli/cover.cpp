@@ -1,0 +1,164 @@
+// `antkit cover`: uniform coverage by paper 004's algorithms (issue 6).
+//   antkit cover (--map FILE | --size WxH --density P) [--seed S] --algo rw|pm|astar|astar-coord
+//                [--robots N] [--sensor R] [--limit T] [--trial K] [--format table|json]
+//                [--svg FILE]
+// Prints {"algo", "robots", "coverage", "viewed", "viewable", "movements", "moves", "hash", ...}.
+// Maps: Blocked and Unknown cells both block sight and movement, and only Free cells count for
+// coverage. A map's start cell ('S' in ASCII maps) is robot 0's start.
+#include "commands.hpp"
+#include "output.hpp"
+#include "svg.hpp"
+
+#include <algorithm>
+#include <antkit/kernel/input_error.hpp>
+#include <antkit/maps/map_io.hpp>
+#include <antkit/uniform/coverage.hpp>
+#include <antkit/uniform/scenario.hpp>
+#include <antkit/uniform/world.hpp>
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace {
+
+using antkit::cli::Format;
+using antkit::kernel::InputError;
+namespace uniform = antkit::uniform;
+
+// Generated maps: a side of at most 8192 cells and at most 2^26 cells in all, like map files
+// (antkit/maps/map_io.hpp), so that no option can ask for more memory than a map file could.
+constexpr std::int32_t kMaxSide = 8192;
+constexpr std::int64_t kMaxCells = std::int64_t{1} << 26;
+constexpr std::int64_t kMaxRobots = 1024;
+
+struct CoverOptions {
+  std::string map;
+  std::string size;
+  std::string density;
+  std::uint64_t seed = 1;
+  std::uint64_t trial = 0;
+  std::string algo;
+  std::int64_t robots = 1;
+  std::int64_t sensor = 5;
+  std::int64_t limit = -1; // default: 10 * W * H
+  std::string svg;
+  Format format = Format::Table;
+};
+
+void write_svg(const std::string& path, const uniform::CoverageWorld& world) {
+  const auto& map = world.map();
+  const double side = std::max(map.width(), map.height());
+  const double scale = std::max(1.0, 800.0 / side);
+  antkit::cli::Svg svg(0, 0, map.width(), map.height(), scale, true);
+  svg.rect(0, 0, map.width(), map.height(), "#ffffff");
+  // Unviewed free cells as runs along each row (one rectangle per run keeps big maps small).
+  for (std::int32_t y = 0; y < map.height(); ++y) {
+    for (std::int32_t x = 0; x < map.width();) {
+      const auto unviewed = [&](std::int32_t xx) {
+        return map[{xx, y}] == antkit::kernel::Occupancy::Free && !world.is_viewed({xx, y});
+      };
+      if (!unviewed(x)) {
+        ++x;
+        continue;
+      }
+      std::int32_t end = x;
+      while (end < map.width() && unviewed(end)) ++end;
+      svg.rect(x, y, end - x, 1, "#9e9e9e");
+      x = end;
+    }
+  }
+  svg.grid_cells(map, "#202020", "#606060");
+  for (const auto& p : world.robots())
+    svg.circle(p.cell.x + 0.5, p.cell.y + 0.5, std::max(0.5, 3.0 / scale), "#d62728");
+  svg.save(path);
+}
+
+nlohmann::json run_cover(const CoverOptions& o) {
+  const auto algo = uniform::parse_algorithm(o.algo);
+  if (!algo)
+    throw InputError("--algo",
+                     "unknown algorithm '" + o.algo + "'; expected rw, pm, astar or astar-coord");
+  if (o.map.empty() == o.size.empty())
+    throw InputError("", "give either --map FILE or --size WxH --density P");
+  if (!o.map.empty() && !o.density.empty())
+    throw InputError("--density", "a map file has its own obstacles; --density goes with --size");
+  if (!o.size.empty() && o.density.empty())
+    throw InputError("--density", "--size needs an obstacle density, such as --density 0.2");
+  if (o.robots < 1 || o.robots > kMaxRobots)
+    throw InputError("--robots", "expected 1 to " + std::to_string(kMaxRobots) + " robots, not " +
+                                     std::to_string(o.robots));
+  if (o.sensor < 0 || o.sensor > uniform::kMaxSensorRange)
+    throw InputError("--sensor", "expected a sensor distance in [0, " +
+                                     std::to_string(uniform::kMaxSensorRange) + "] cells, not " +
+                                     std::to_string(o.sensor));
+  if (o.limit < -1) throw InputError("--limit", "expected a number of ticks >= 0");
+
+  antkit::kernel::OccupancyGrid grid;
+  std::optional<antkit::kernel::Cell> start;
+  nlohmann::json source;
+  if (!o.map.empty()) {
+    auto loaded = antkit::maps::load_map(o.map);
+    grid = std::move(loaded.cells);
+    start = loaded.start;
+    source["map"] = o.map;
+  } else {
+    const auto [w, h] = uniform::parse_size(o.size, kMaxSide);
+    if (std::int64_t{w} * h > kMaxCells)
+      throw InputError("--size", "at most " + std::to_string(kMaxCells) + " cells, not " +
+                                     std::to_string(std::int64_t{w} * h));
+    const auto ppm = uniform::parse_density_ppm(o.density);
+    grid = uniform::random_obstacles(w, h, ppm, o.seed, o.trial);
+    source["density_ppm"] = ppm;
+  }
+  const auto poses =
+      uniform::place_robots(grid, static_cast<std::size_t>(o.robots), start, o.seed, o.trial);
+  const std::int64_t cells = std::int64_t{grid.width()} * grid.height();
+  const auto limit = static_cast<std::uint64_t>(o.limit >= 0 ? o.limit : 10 * cells);
+  uniform::CoverageWorld world(std::move(grid), poses, static_cast<std::int32_t>(o.sensor));
+  const auto r = uniform::run_coverage(world, *algo, o.seed, o.trial, limit);
+  if (!o.svg.empty()) write_svg(o.svg, world);
+
+  nlohmann::json j;
+  j["algo"] = std::string(uniform::algorithm_name(r.algorithm));
+  j["robots"] = r.robots;
+  j["coverage"] = 100.0 * static_cast<double>(r.viewed) / static_cast<double>(r.viewable);
+  j["viewed"] = r.viewed;
+  j["viewable"] = r.viewable;
+  j["movements"] = r.movements;
+  j["moves"] = r.moves;
+  j["hash"] = antkit::kernel::hash_hex(r.hash);
+  j["stop"] = std::string(uniform::stop_reason_name(r.stop));
+  j["width"] = world.map().width();
+  j["height"] = world.map().height();
+  j["sensor"] = o.sensor;
+  j["seed"] = o.seed;
+  j["trial"] = o.trial;
+  j["limit"] = limit;
+  for (auto it = source.begin(); it != source.end(); ++it) j[it.key()] = it.value();
+  return j;
+}
+
+void register_cover(CLI::App& app) {
+  auto o = std::make_shared<CoverOptions>();
+  auto* sub = app.add_subcommand(
+      "cover", "Uniform coverage (paper 004): random wanderer, primary movement, A* with spiral "
+               "search, or coordinated A*, by 1-N robots on a shared map");
+  sub->add_option("--map", o->map, "A map file (.map, .yaml, .txt or .ascii)");
+  sub->add_option("--size", o->size, "A generated W x H grid, e.g. 100x100");
+  sub->add_option("--density", o->density,
+                  "Obstacle density of the generated grid: 0.2 or 20% (exactly round(p*W*H) "
+                  "blocked cells)");
+  sub->add_option("--seed", o->seed, "Seed of the keyed random streams (default 1)");
+  sub->add_option("--trial", o->trial, "Trial number of the keyed random streams (default 0)");
+  sub->add_option("--algo", o->algo, "rw, pm, astar or astar-coord")->required();
+  sub->add_option("--robots", o->robots, "Number of robots (default 1)");
+  sub->add_option("--sensor", o->sensor, "Sensor distance in cells (default 5)");
+  sub->add_option("--limit", o->limit, "Time limit in ticks (default 10 * W * H)");
+  sub->add_option("--svg", o->svg, "Write the final state as SVG");
+  antkit::cli::add_format_option(*sub, o->format);
+  sub->callback([o] { antkit::cli::emit(run_cover(*o), o->format, std::cout); });
+}
+
+const antkit::cli::Registration reg{"cover", &register_cover};
+
+} // namespace
