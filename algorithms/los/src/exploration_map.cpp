@@ -1,5 +1,5 @@
+#include <antkit/kernel/raster.hpp>
 #include <antkit/los/exploration_map.hpp>
-#include <antkit/los/temporary_raster.hpp>
 
 namespace antkit::los {
 
@@ -58,7 +58,7 @@ void ExplorationMap::sweep_line(Cell a, Cell b, bool seen) {
   // The interior of the supercover: every cell but a and b (they lie between a and b, so in the
   // grid whenever a and b are).
   Cell prev_end = b;
-  temporary::for_each_supercover_cell(a, b, [&](Cell c) {
+  kernel::for_each_supercover_cell(a, b, [&](Cell c) {
     if (c == a || c == prev_end || !states_.in_bounds(c)) return;
     const CellState s = states_[c];
     if (seen) {

@@ -1,6 +1,6 @@
 #include <algorithm>
+#include <antkit/kernel/raster.hpp>
 #include <antkit/los/fast_wall_follow.hpp>
-#include <antkit/los/temporary_raster.hpp>
 #include <cstdlib>
 
 namespace antkit::los {
@@ -50,10 +50,11 @@ FastWallFollow::FastWallFollow(std::int32_t width, std::int32_t height,
                                FastWallFollowOptions options)
     : width_(width), height_(height), map_(width, height),
       completion_(width, height, options.weights), lost_mark_(width, height, 0),
-      visited_(width, height, 0), b_stamp_(width, height, 0), b_visited_(width, height, 0),
-      wall_stamp_(width, height, 0), circled_(width, height, 0),
+      visited_(width, height, 0),
       progress_limit_(4 * (static_cast<std::uint64_t>(width) + static_cast<std::uint64_t>(height)) +
-                      64) {
+                      64),
+      b_stamp_(width, height, 0), b_visited_(width, height, 0), wall_stamp_(width, height, 0),
+      circled_(width, height, 0) {
   tracer_[0].hand = Hand::Left;
   tracer_[1].hand = Hand::Right;
 }
@@ -85,7 +86,7 @@ std::array<std::int8_t, 2> FastWallFollow::end_wall_stage(Cell a, Cell b) {
 void FastWallFollow::build_seek_path(Cell from, Cell to) {
   // The supercover from B to A is 4-connected; walk it with 8-connected shortcuts, stopping next
   // to A.
-  const std::vector<Cell> chain = temporary::supercover(from, to);
+  const std::vector<Cell> chain = kernel::supercover(from, to);
   seek_path_.clear();
   seek_next_ = 0;
   std::size_t i = 0;
@@ -164,7 +165,7 @@ std::array<std::int8_t, 2> FastWallFollow::wall_step(const TeamObservation& obs)
         lost_mark_.fill(0);
         lost_generation_ = 1;
       }
-      temporary::for_each_supercover_cell(a, b, [&](Cell c) {
+      kernel::for_each_supercover_cell(a, b, [&](Cell c) {
         if (c != a && c != b) lost_mark_[c] = lost_generation_;
       });
       // Both step back (A first; if B has since moved into A's former cell, A waits).

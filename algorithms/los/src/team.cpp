@@ -1,5 +1,5 @@
+#include <antkit/kernel/raster.hpp>
 #include <antkit/los/team.hpp>
-#include <antkit/los/temporary_raster.hpp>
 #include <stdexcept>
 
 namespace antkit::los {
@@ -30,7 +30,7 @@ TeamObservation TwoRobotWorld::observe() const {
       o.robots[r].neighbours[k] = s;
     }
   }
-  o.line_of_sight = temporary::line_of_sight(*truth_, position_[0], position_[1]);
+  o.line_of_sight = kernel::line_of_sight(*truth_, position_[0], position_[1]);
   return o;
 }
 

@@ -49,6 +49,10 @@ public:
   [[nodiscard]] bool is_frontier(kernel::Cell c) const noexcept {
     return slot_.in_bounds(c) && slot_[c] >= 0;
   }
+  // By row-major index (unchecked), for searches that walk the grid by index.
+  [[nodiscard]] bool is_frontier_at(std::size_t index) const noexcept {
+    return slot_.cells()[index] >= 0;
+  }
   [[nodiscard]] std::size_t frontier_count() const noexcept { return list_.size(); }
   // The frontier cells, in an order fixed by the history of set() calls.
   [[nodiscard]] const std::vector<kernel::Cell>& frontiers() const noexcept { return list_; }

@@ -23,9 +23,9 @@
 //     the kernel's fixed order (E, NE, N, NW, W, SW, S, SE): nearer first, then that order.
 //   * Cells in `blocked` (other robots) are never entered, so a plan never collides.
 //   * The search stops early once no deeper cell can beat the best utility found: with w2 > 0,
-//     w1 >= 0 and w3 >= 0 a cell at distance D has g <= w1 * (2r+1)^2 - w2 * D, because I is at
-//     most the size of the sensor footprint and lambda <= 0. This keeps planning local on large
-//     maps without changing the choice.
+//     w1 >= 0 and w3 >= 0 a cell at distance D has g <= w1 * ((2r+1)^2 - 1) - w2 * D, because I
+//     counts unexplored cells of the sensor footprint other than the (free) frontier cell itself,
+//     and lambda <= 0. This keeps planning local on large maps without changing the choice.
 #include <antkit/frontier/frontier_map.hpp>
 #include <antkit/kernel/grid.hpp>
 #include <cstdint>
@@ -82,7 +82,6 @@ private:
   Weights weights_{};
   std::int32_t range_ = 1;
   kernel::Grid<std::uint32_t> stamp_; // == generation_: visited in the current search
-  kernel::Grid<std::int32_t> depth_;
   kernel::Grid<std::uint8_t> parent_; // the neighbour index of the move that reached the cell
   std::uint32_t generation_ = 0;
   std::vector<kernel::Cell> queue_;

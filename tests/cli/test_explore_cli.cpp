@@ -1,0 +1,107 @@
+// `antkit explore` through the real executable: the JSON it promises, determinism, the SVG, and
+// bad input (exit 2, one clear message, no output file).
+#include "run_antkit.hpp"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+using antkit::test::run_antkit;
+
+TEST_CASE("explore: JSON with the promised fields, consistent with each other", "[cli]") {
+  for (const char* algo : {"fast-wall-follow", "frontier"}) {
+    const auto r = run_antkit(std::string("explore --size 25x25 --obstacles 5 --seed 3 --algo ") +
+                              algo + " --format json");
+    REQUIRE(r.status == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["algo"] == algo);
+    CHECK(j["eme"].get<std::uint64_t>() ==
+          j["moves"][0].get<std::uint64_t>() + j["moves"][1].get<std::uint64_t>());
+    CHECK(j["steps"].get<std::uint64_t>() >= j["moves"][0].get<std::uint64_t>());
+    REQUIRE(j["cells"].size() == 25);
+    std::size_t explored = 0;
+    for (const auto& row : j["cells"]) {
+      const auto s = row.get<std::string>();
+      CHECK(s.size() == 25);
+      CHECK(s.find_first_not_of("FSLBNO") == std::string::npos);
+      explored += 25 - static_cast<std::size_t>(std::count(s.begin(), s.end(), 'F')) -
+                  static_cast<std::size_t>(std::count(s.begin(), s.end(), 'N'));
+    }
+    CHECK(j["explored"].get<std::size_t>() == explored);
+    CHECK(j["explored"].get<std::size_t>() + j["unobservable"].get<std::size_t>() == 625);
+    CHECK(j["hash"].get<std::string>().size() == 16);
+    // Same command, same bytes.
+    const auto again =
+        run_antkit(std::string("explore --size 25x25 --obstacles 5 --seed 3 --algo ") + algo +
+                   " --format json");
+    CHECK(again.out == r.out);
+  }
+}
+
+TEST_CASE("explore: the frontier baseline with and without line-of-sight sweeping", "[cli]") {
+  const auto on = run_antkit("explore --size 20x15 --blocks 1 --algo frontier --format json");
+  const auto off =
+      run_antkit("explore --size 20x15 --blocks 1 --algo frontier --los off --format json");
+  REQUIRE(on.status == 0);
+  REQUIRE(off.status == 0);
+  const auto jon = nlohmann::json::parse(on.out), joff = nlohmann::json::parse(off.out);
+  CHECK(jon["hash"] != joff["hash"]);
+  // Without sweeping, no cell is ever LOS, S+LOS or NLOS.
+  for (const auto& row : joff["cells"])
+    CHECK(row.get<std::string>().find_first_of("LBN") == std::string::npos);
+}
+
+TEST_CASE("explore: --start, and a map file with a start cell", "[cli]") {
+  const auto dir = std::filesystem::temp_directory_path() / "antkit-explore-cli";
+  std::filesystem::create_directories(dir);
+  const auto map = dir / "room.txt";
+  std::ofstream(map) << "......\n.#..#.\n......\n..S...\n";
+  const auto r =
+      run_antkit("explore --map " + map.string() + " --algo fast-wall-follow --format json");
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["cells"][1].get<std::string>()[1] == 'O');
+  CHECK(j["unobservable"] == 0);
+  const auto s = run_antkit("explore --size 10x10 --start 5,5 --algo frontier --format json");
+  CHECK(s.status == 0);
+}
+
+TEST_CASE("explore: --svg writes a picture", "[cli]") {
+  const auto path = std::filesystem::temp_directory_path() / "antkit-explore-cli.svg";
+  std::filesystem::remove(path);
+  const auto r = run_antkit("explore --size 12x9 --obstacles 4 --algo fast-wall-follow --svg " +
+                            path.string());
+  REQUIRE(r.status == 0);
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.find("<svg") != std::string::npos);
+  CHECK(text.find("#d81b60") != std::string::npos); // the wall follower's trajectory
+  std::filesystem::remove(path);
+}
+
+TEST_CASE("explore: bad input exits 2 with one clear message and no output file", "[cli]") {
+  const auto svg = std::filesystem::temp_directory_path() / "antkit-explore-bad.svg";
+  std::filesystem::remove(svg);
+  for (const std::string args : {
+           "explore --size 25x25 --algo fast-wall-follow --los off",
+           "explore --size 25 --algo frontier",
+           "explore --size 0x9 --algo frontier",
+           "explore --size 5x5 --obstacles 1 --blocks 1 --algo frontier",
+           "explore --size 5x5 --obstacles 100 --algo frontier",
+           "explore --size 5x5 --blocks 9 --algo frontier",
+           "explore --size 9x9 --start 3 --algo frontier",
+           "explore --size 9x9 --start 20,1 --algo frontier",
+           "explore --size 9x9 --algo wander",
+           "explore --algo frontier",
+           "explore --map /no/such/map.map --algo frontier",
+           "explore --size 9x9 --algo frontier --w2 99999999999",
+       }) {
+    const auto r = run_antkit(args + " --svg " + svg.string());
+    INFO(args << "\n" << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.rfind("antkit: error: ", 0) == 0);
+    CHECK(r.out.empty());
+    CHECK_FALSE(std::filesystem::exists(svg));
+  }
+}
