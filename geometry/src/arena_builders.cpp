@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -121,6 +122,13 @@ void require(bool ok, const std::string& where, const std::string& what) {
   if (!ok) throw kernel::InputError(where, what);
 }
 
+// A parameter in a message: shortest form that shows what the user typed ("0.4", not "0.400000").
+std::string number_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
 void require_vertices(int n, const std::string& where) {
   require(n >= 8 && n <= 4096, where,
           "vertex count " + std::to_string(n) + " is outside [8, 4096]");
@@ -130,8 +138,8 @@ void require_vertices(int n, const std::string& where) {
 void require_range(double v, double lo, double hi, const std::string& name,
                    const std::string& where) {
   require(std::isfinite(v) && v >= lo && v <= hi, where,
-          name + " = " + std::to_string(v) + " is outside [" + std::to_string(lo) + ", " +
-              std::to_string(hi) + "]");
+          name + " = " + number_text(v) + " is outside [" + number_text(lo) + ", " +
+              number_text(hi) + "]");
 }
 
 ExactPolygonWithHoles with_holes(ExactPolygon outer, std::vector<ExactPolygon> holes = {}) {
@@ -179,8 +187,8 @@ Arena make_barrier_arena(Barrier barrier, double length_fraction, double thickne
   const double length = length_fraction * diameter;
   require_range(thickness, 0.01, 10.0, "barrier thickness", where);
   require(thickness < length, where,
-          "barrier thickness " + std::to_string(thickness) + " must be less than its length " +
-              std::to_string(length));
+          "barrier thickness " + number_text(thickness) + " must be less than its length " +
+              number_text(length));
   require_vertices(vertices, where);
   const double r = diameter / 2.0;
   ExactPolygon outer = curved_ring(0, 0, r, r, vertices, where);

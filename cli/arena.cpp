@@ -1,0 +1,119 @@
+// `antkit arena SPEC|FILE.wkt`: build or read an arena, report its exact measures, and optionally
+// write it as WKT or rasterize it into a MovingAI .map file.
+#include "commands.hpp"
+#include "output.hpp"
+
+#include <antkit/geometry/arena.hpp>
+#include <antkit/geometry/arena_raster.hpp>
+#include <antkit/geometry/arena_spec.hpp>
+#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/geometry/wkt.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <cctype>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace {
+
+struct ArenaOptions {
+  std::string source;
+  std::string raster;
+  std::string out;
+  std::string out_wkt;
+  antkit::cli::Format format = antkit::cli::Format::Table;
+};
+
+// An argument that ends in ".wkt" (any case) is a file; anything else is a named spec. The rule is
+// the file name's, not the file system's, so a typo in a spec never silently reads a stray file.
+bool is_wkt_path(const std::string& s) {
+  if (s.size() < 4) return false;
+  std::string tail = s.substr(s.size() - 4);
+  for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return tail == ".wkt";
+}
+
+// MovingAI's map format (movingai.com/benchmarks/formats.html): '.' passable, '@' out of bounds.
+// Kept minimal and local here; the general map writer lives with the maps.
+std::string moving_ai_map(const antkit::kernel::OccupancyGrid& grid) {
+  std::string text = "type octile\nheight " + std::to_string(grid.height()) + "\nwidth " +
+                     std::to_string(grid.width()) + "\nmap\n";
+  text.reserve(text.size() + grid.size() + static_cast<std::size_t>(grid.height()));
+  for (std::int32_t y = 0; y < grid.height(); ++y) {
+    for (std::int32_t x = 0; x < grid.width(); ++x)
+      text += grid[{x, y}] == antkit::kernel::Occupancy::Free ? '.' : '@';
+    text += '\n';
+  }
+  return text;
+}
+
+void run(const ArenaOptions& o) {
+  using namespace antkit::geometry;
+  nlohmann::json result;
+  std::optional<Arena> arena;
+  std::optional<double> ideal;
+  if (is_wkt_path(o.source)) {
+    arena = read_wkt_file(o.source);
+  } else {
+    auto named = build_arena_spec(o.source, "SPEC");
+    arena = std::move(named.arena);
+    ideal = named.ideal_area;
+  }
+  result["area"] = arena->area();
+  result["area_exact"] = arena->area_exact();
+  if (ideal) result["ideal_area"] = *ideal;
+  result["perimeter"] = arena->perimeter();
+  result["vertices"] = arena->vertex_count();
+  result["holes"] = arena->hole_count();
+  const auto box = arena->bbox();
+  result["bbox"] = {box.xmin, box.ymin, box.xmax, box.ymax};
+
+  // Everything that can fail on bad input happens before the first file is written.
+  std::optional<std::string> map_text;
+  if (!o.raster.empty()) {
+    const auto cell = CellSize::parse(o.raster, "--raster");
+    const auto raster = rasterize(*arena, cell);
+    std::size_t free = 0;
+    for (const auto c : raster.grid.cells()) free += c == antkit::kernel::Occupancy::Free ? 1 : 0;
+    result["raster"] = {{"cell", cell.value()},
+                        {"width", raster.grid.width()},
+                        {"height", raster.grid.height()},
+                        {"free_cells", free},
+                        {"origin",
+                         {static_cast<double>(raster.frame.col0) * cell.value(),
+                          static_cast<double>(raster.frame.row0) * cell.value()}}};
+    map_text = moving_ai_map(raster.grid);
+  }
+  std::optional<std::string> wkt_text;
+  if (!o.out_wkt.empty()) wkt_text = write_wkt(*arena) + "\n";
+
+  if (map_text) write_file_atomic(o.out, *map_text);
+  if (wkt_text) write_file_atomic(o.out_wkt, *wkt_text);
+  antkit::cli::emit(result, o.format, std::cout);
+}
+
+void register_arena(CLI::App& app) {
+  auto options = std::make_shared<ArenaOptions>();
+  auto* sub = app.add_subcommand(
+      "arena",
+      "Build a named arena (paper 000, Figure 3) or read a WKT file; print its exact area, "
+      "perimeter, vertices, holes and bounding box; optionally rasterize or save it");
+  sub->add_option("arena", options->source,
+                  "A spec (standard, circle:d=100, square:area=7854, ellipse:area=7854,e=0.968, "
+                  "barrier-i:len=0.4, barrier-plus:len=0.4, ring, plus, obstacles) or a FILE.wkt")
+      ->required();
+  auto* raster = sub->add_option("--raster", options->raster,
+                                 "Rasterize at this cell size (robot diameters, a decimal): a cell "
+                                 "is free iff its centre is strictly inside the arena");
+  auto* out = sub->add_option("--out", options->out, "The MovingAI .map file for --raster");
+  raster->needs(out);
+  out->needs(raster);
+  sub->add_option("--out-wkt", options->out_wkt, "Write the arena as WKT to this file");
+  antkit::cli::add_format_option(*sub, options->format);
+  sub->callback([options] { run(*options); });
+}
+
+const antkit::cli::Registration reg{"arena", &register_arena};
+
+} // namespace
