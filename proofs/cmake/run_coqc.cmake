@@ -1,0 +1,32 @@
+# ctest driver for one Coq file: check it with coqc (outputs into OUT_DIR, never the source tree),
+# require every `Print Assumptions` in it to report no axioms, and, when GOLDEN exists, require the
+# text its `Compute` commands print to equal GOLDEN (whitespace-normalised: Coq's line breaking is
+# not part of the vector). The golden file is what C++ tests read, so a change in the model that
+# moves a vector fails here until the golden file, and then the C++ test, follow.
+#   cmake -DCOQC=... -DSRC=file.v -DOUT_DIR=dir -DGOLDEN=file.out -P run_coqc.cmake
+get_filename_component(name ${SRC} NAME_WE)
+execute_process(COMMAND ${COQC} -q -no-glob -o ${OUT_DIR}/${name}.vo ${SRC}
+                OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+file(WRITE ${OUT_DIR}/${name}.out "${out}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "coqc failed on ${SRC} (${rc}):\n${out}\n${err}")
+endif()
+if(err MATCHES "[A-Za-z]")
+  message(FATAL_ERROR "coqc printed warnings or errors on ${SRC}:\n${err}")
+endif()
+# `Print Assumptions` prints "Axioms:" followed by the list when a theorem rests on any.
+if(out MATCHES "Axioms:")
+  message(FATAL_ERROR "a theorem of ${SRC} rests on axioms:\n${out}")
+endif()
+if(EXISTS ${GOLDEN})
+  file(READ ${GOLDEN} want)
+  string(REGEX REPLACE "[ \t\r\n]+" " " want_n "${want}")
+  string(REGEX REPLACE "[ \t\r\n]+" " " got_n "${out}")
+  string(STRIP "${want_n}" want_n)
+  string(STRIP "${got_n}" got_n)
+  if(NOT want_n STREQUAL got_n)
+    message(FATAL_ERROR "the vectors ${SRC} computes differ from ${GOLDEN}\n"
+                        "--- golden\n${want}\n--- coqc (full output in ${OUT_DIR}/${name}.out)\n${out}")
+  endif()
+endif()
+message(STATUS "${name}: checked by coqc\n${out}")

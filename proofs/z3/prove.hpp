@@ -1,0 +1,101 @@
+#pragma once
+// The shape of every Z3 proof executable: state claims over symbolic inputs, check them, print a
+// counterexample when Z3 finds one, and exit non-zero if any claim failed (so ctest fails).
+//
+//   int main() {
+//     Session s;
+//     Prover p(s);
+//     auto x = U32::var("x");
+//     p.claim("x + 0 == x", (x + 0u == x));
+//     return p.result();
+//   }
+//
+// Each claim is checked under the domain given to `assume` (the function's documented domain), and
+// so is every obligation (no undefined behaviour) recorded since the previous claim: a claim about
+// a computation that may overflow is not proved, whatever the bit-vector says.
+#include "z3_int.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+namespace antkit::proofs {
+
+class Prover {
+public:
+  explicit Prover(Session& s) : s_(s), domain_(s.ctx().bool_val(true)) {}
+
+  // The documented domain of the inputs: every later claim and obligation is checked under it.
+  void assume(const Bool& d) { domain_ = domain_ && d.expr(); }
+  void reset_domain() { domain_ = s_.ctx().bool_val(true); }
+
+  // Checks every pending obligation, then the claim. Prints "proved" or the counterexample.
+  bool claim(const std::string& name, const Bool& c) { return claim(name, c.expr()); }
+  bool claim(const std::string& name, const z3::expr& c) {
+    bool ok = true;
+    for (const auto& ob : s_.obligations()) {
+      ok = check(name + " [no undefined behaviour: " + ob.what + "]", ob.holds) && ok;
+    }
+    s_.clear_obligations();
+    ok = check(name, c) && ok;
+    return ok;
+  }
+
+  // The obligations alone (for a function whose only claim is that it is free of UB).
+  bool no_undefined_behaviour(const std::string& name) {
+    return claim(name, s_.ctx().bool_val(true));
+  }
+
+  int result() const {
+    std::cout << (failures_ == 0 ? "all " : "") << proved_ << " proved, " << failures_
+              << " failed\n";
+    return failures_ == 0 ? 0 : 1;
+  }
+
+private:
+  bool check(const std::string& name, const z3::expr& c) {
+    const auto t0 = std::chrono::steady_clock::now();
+    z3::solver solver(s_.ctx());
+    solver.add(domain_);
+    for (const auto& f : s_.facts()) solver.add(f);
+    solver.add(!c);
+    const z3::check_result r = solver.check();
+    const auto ms =
+        std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - t0)
+            .count();
+    if (r == z3::unsat) {
+      ++proved_;
+      std::cout << "proved   " << name << " (" << ms << " ms)" << std::endl;
+      return true;
+    }
+    ++failures_;
+    if (r == z3::unknown) {
+      std::cout << "UNKNOWN  " << name << ": Z3 gave up (" << solver.reason_unknown() << ")\n";
+      return false;
+    }
+    std::cout << "FAILED   " << name << "\n  counterexample:" << std::endl;
+    const z3::model m = solver.get_model();
+    for (unsigned i = 0; i < m.size(); ++i) {
+      const z3::func_decl d = m[i];
+      if (d.arity() != 0) continue;
+      const z3::expr v = m.get_const_interp(d);
+      std::cout << "    " << d.name().str() << " = " << v;
+      if (v.is_bv()) {
+        // Unsigned and signed readings, since the same bits are both.
+        const z3::expr u = m.eval(z3::expr(s_.ctx(), Z3_mk_bv2int(s_.ctx(), v, false)), true);
+        const z3::expr sg = m.eval(z3::expr(s_.ctx(), Z3_mk_bv2int(s_.ctx(), v, true)), true);
+        std::cout << "  (unsigned " << u << ", signed " << sg << ")";
+      }
+      std::cout << "\n";
+    }
+    return false;
+  }
+
+  Session& s_;
+  z3::expr domain_;
+  int proved_ = 0;
+  int failures_ = 0;
+};
+
+} // namespace antkit::proofs

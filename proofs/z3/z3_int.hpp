@@ -1,0 +1,323 @@
+#pragma once
+// A Z3 bit-vector integer that behaves like a C++ integer of N bits, so that the kernel's
+// arithmetic templates (DESIGN.md rule 6) can be instantiated symbolically and proved with Z3.
+//
+// Why bit-vectors and not Z3's mathematical integers: the kernel's numbers ARE N-bit words;
+// unsigned arithmetic wraps modulo 2^N and that wrap is part of the meaning (Lemire's low word,
+// hashes), so only bit-vectors model the code exactly.
+//
+// Why side conditions: bit-vectors wrap on every operation, but C++ signed overflow, a shift by N
+// or more, a division by zero and INT_MIN / -1 are undefined behaviour. Each such operation records
+// the condition under which it is defined ("obligation") in the current Session; a proof is only
+// valid if every obligation holds for every input in the documented domain, and Session::prove
+// checks that first.
+//
+// Why there is no path condition on obligations: branches in the kernel's templates go through
+// select(c, a, b), and select takes both arms already evaluated, exactly as the machine
+// instantiation does (a plain function call evaluates both arguments). So an obligation of the arm
+// that is not chosen must hold too: the conservative reading is the exact one here.
+//
+// Conversions follow C++20: widening sign- or zero-extends by the SOURCE signedness, narrowing
+// keeps the low bits (defined modulo 2^N since C++20), >> of a negative value is arithmetic, << of
+// a signed value is defined when the result is representable (the obligation we record; C++20 made
+// it modular, but the kernel's documentation promises no wrap, so wrap is flagged).
+//
+// Not modelled: C++'s promotion of types narrower than int (a uint16_t * uint16_t is an int
+// multiplication). The kernel computes in 32- and 64-bit types; I8..U16 here are plain N-bit words.
+#include <cstdint>
+#include <iostream>
+#include <map>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+#include <z3++.h>
+
+namespace antkit::proofs {
+
+// One proof run: the Z3 context, and the obligations recorded by the operations executed so far.
+class Session {
+public:
+  Session() { current_ = this; }
+  ~Session() {
+    if (current_ == this) current_ = nullptr;
+  }
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  static Session& current() {
+    if (current_ == nullptr) {
+      std::cerr << "z3_int: no Session is open\n";
+      std::abort();
+    }
+    return *current_;
+  }
+
+  z3::context& ctx() { return ctx_; }
+
+  struct Obligation {
+    std::string what;
+    z3::expr holds;
+  };
+  void oblige(std::string what, const z3::expr& holds) {
+    obligations_.push_back({std::move(what), holds});
+  }
+  const std::vector<Obligation>& obligations() const { return obligations_; }
+
+  // Facts: theorems of the operations' semantics, stated beside an abstracted result (see unsigned
+  // / and % below). Every check assumes them; they must be TRUE of the operation they describe.
+  void fact(const z3::expr& f) { facts_.push_back(f); }
+  const std::vector<z3::expr>& facts() const { return facts_; }
+  std::string fresh(const char* stem) { return std::string(stem) + "!" + std::to_string(fresh_++); }
+
+  // One abstraction per (dividend, divisor) term, so that the code's a % b and a specification's
+  // a % b are the same unknown (Z3 shares equal terms, so their ids agree).
+  std::map<std::pair<unsigned, unsigned>, std::pair<z3::expr, z3::expr>>& divisions() {
+    return divisions_;
+  }
+  void clear_obligations() { obligations_.clear(); }
+
+private:
+  static inline Session* current_ = nullptr;
+  z3::context ctx_;
+  std::vector<Obligation> obligations_;
+  std::vector<z3::expr> facts_;
+  std::map<std::pair<unsigned, unsigned>, std::pair<z3::expr, z3::expr>> divisions_;
+  int fresh_ = 0;
+};
+
+// A symbolic truth value: what comparisons of Int return.
+// Signed bit-vector division (truncating, like C++); z3++.h spells it only as operator/.
+inline z3::expr sdiv_(const z3::expr& a, const z3::expr& b) {
+  return z3::expr(a.ctx(), Z3_mk_bvsdiv(a.ctx(), a, b));
+}
+
+class Bool {
+public:
+  explicit Bool(const z3::expr& e) : e_(e) {}
+  Bool(bool b) : e_(Session::current().ctx().bool_val(b)) {}
+  static Bool var(const std::string& name) {
+    return Bool(Session::current().ctx().bool_const(name.c_str()));
+  }
+  const z3::expr& expr() const { return e_; }
+  friend Bool operator&&(const Bool& a, const Bool& b) { return Bool(a.e_ && b.e_); }
+  friend Bool operator||(const Bool& a, const Bool& b) { return Bool(a.e_ || b.e_); }
+  friend Bool operator==(const Bool& a, const Bool& b) { return Bool(a.e_ == b.e_); }
+  friend Bool operator!=(const Bool& a, const Bool& b) { return Bool(a.e_ != b.e_); }
+  Bool operator!() const { return Bool(!e_); }
+
+private:
+  z3::expr e_;
+};
+
+template <int N, bool Signed>
+class Int {
+  static_assert(N >= 1 && N <= 128);
+
+public:
+  static constexpr int bits = N;
+  static constexpr bool is_signed = Signed;
+
+  // A fresh unknown of this width.
+  static Int var(const std::string& name) {
+    return Int(Session::current().ctx().bv_const(name.c_str(), N));
+  }
+  explicit Int(const z3::expr& e) : e_(e) {}
+
+  // Constants: implicit from any C++ integer, as `Rep{1}` or `x + 1` in a template need. The value
+  // is taken modulo 2^N, as a conversion to an N-bit type would.
+  template <class T>
+  requires std::is_integral_v<T> Int(T v) : e_(constant(v)) {}
+  Int() : Int(0) {}
+
+  // Conversions between widths and signedness, as static_cast between integer types does.
+  template <int M, bool S>
+  explicit Int(const Int<M, S>& o) : e_(convert<M, S>(o.expr())) {}
+
+  const z3::expr& expr() const { return e_; }
+
+  // --- arithmetic (obligations for signed overflow) ---
+  friend Int operator+(const Int& a, const Int& b) {
+    if constexpr (Signed) a.fits("signed +", wide(a.e_) + wide(b.e_));
+    return Int(a.e_ + b.e_);
+  }
+  friend Int operator-(const Int& a, const Int& b) {
+    if constexpr (Signed) a.fits("signed -", wide(a.e_) - wide(b.e_));
+    return Int(a.e_ - b.e_);
+  }
+  friend Int operator*(const Int& a, const Int& b) {
+    if constexpr (Signed) {
+      a.fits("signed *", z3::sext(a.e_, N) * z3::sext(b.e_, N), N);
+    }
+    return Int(a.e_ * b.e_);
+  }
+  // Division truncates toward zero (C++ and bvsdiv agree); % has the sign of the dividend (srem).
+  //
+  // Unsigned / and % by an unknown divisor are ABSTRACTED: the quotient k and remainder r are fresh
+  // unknowns tied to a and b by Euclid's definition, stated exactly (in 2N bits, so without wrap):
+  //     b != 0  =>  k * b + r == a  and  r < b.
+  // That pair determines k and r uniquely, so nothing is lost; what is gained is that Z3 no longer
+  // bit-blasts a divider circuit (checking a 32-bit divider by a symbolic n against anything did
+  // not finish in minutes), and a claim that needs only r < b is proved at once.
+  friend Int operator/(const Int& a, const Int& b) {
+    a.nonzero("division by zero", b);
+    if constexpr (Signed) {
+      a.fits("signed / (INT_MIN / -1)", sdiv_(wide(a.e_), wide(b.e_)));
+      return Int(sdiv_(a.e_, b.e_));
+    } else {
+      return euclid(a, b).first;
+    }
+  }
+  friend Int operator%(const Int& a, const Int& b) {
+    a.nonzero("remainder by zero", b);
+    if constexpr (Signed) {
+      // INT_MIN % -1 is undefined too (the quotient overflows).
+      a.fits("signed % (INT_MIN % -1)", sdiv_(wide(a.e_), wide(b.e_)));
+      return Int(z3::srem(a.e_, b.e_));
+    } else {
+      return euclid(a, b).second;
+    }
+  }
+  Int operator-() const {
+    if constexpr (Signed) fits("signed unary -", -wide(e_));
+    return Int(-e_);
+  }
+  Int operator~() const { return Int(~e_); }
+  friend Int operator&(const Int& a, const Int& b) { return Int(a.e_ & b.e_); }
+  friend Int operator|(const Int& a, const Int& b) { return Int(a.e_ | b.e_); }
+  friend Int operator^(const Int& a, const Int& b) { return Int(a.e_ ^ b.e_); }
+
+  // Shifts by a C++ int (the kernel shifts by constants) or by a symbolic amount.
+  friend Int operator<<(const Int& a, int s) { return a.shl(Int(s)); }
+  friend Int operator>>(const Int& a, int s) { return a.shr(Int(s)); }
+  template <int M, bool S>
+  friend Int operator<<(const Int& a, const Int<M, S>& s) {
+    return a.shl(Int(s));
+  }
+  template <int M, bool S>
+  friend Int operator>>(const Int& a, const Int<M, S>& s) {
+    return a.shr(Int(s));
+  }
+
+  Int& operator+=(const Int& b) { return *this = *this + b; }
+  Int& operator-=(const Int& b) { return *this = *this - b; }
+  Int& operator*=(const Int& b) { return *this = *this * b; }
+  Int& operator/=(const Int& b) { return *this = *this / b; }
+  Int& operator%=(const Int& b) { return *this = *this % b; }
+  Int& operator&=(const Int& b) { return *this = *this & b; }
+  Int& operator|=(const Int& b) { return *this = *this | b; }
+  Int& operator^=(const Int& b) { return *this = *this ^ b; }
+  Int& operator<<=(int s) { return *this = *this << s; }
+  Int& operator>>=(int s) { return *this = *this >> s; }
+
+  // --- comparisons (Bool is defined below) ---
+  friend Bool operator==(const Int& a, const Int& b) { return Bool(a.e_ == b.e_); }
+  friend Bool operator!=(const Int& a, const Int& b) { return Bool(a.e_ != b.e_); }
+  friend Bool operator<(const Int& a, const Int& b) {
+    return Bool(Signed ? z3::slt(a.e_, b.e_) : z3::ult(a.e_, b.e_));
+  }
+  friend Bool operator<=(const Int& a, const Int& b) {
+    return Bool(Signed ? z3::sle(a.e_, b.e_) : z3::ule(a.e_, b.e_));
+  }
+  friend Bool operator>(const Int& a, const Int& b) {
+    return Bool(Signed ? z3::sgt(a.e_, b.e_) : z3::ugt(a.e_, b.e_));
+  }
+  friend Bool operator>=(const Int& a, const Int& b) {
+    return Bool(Signed ? z3::sge(a.e_, b.e_) : z3::uge(a.e_, b.e_));
+  }
+
+  // The value as a mathematical integer (Z3 Int sort), for stating claims outside the bit-vector.
+  z3::expr to_integer() const { return z3::expr(e_.ctx(), Z3_mk_bv2int(e_.ctx(), e_, Signed)); }
+
+private:
+  template <class T>
+  static z3::expr constant(T v) {
+    auto& c = Session::current().ctx();
+    if constexpr (std::is_signed_v<T>)
+      return c.bv_val(static_cast<std::int64_t>(v), N);
+    else
+      return c.bv_val(static_cast<std::uint64_t>(v), N);
+  }
+  template <int M, bool S>
+  static z3::expr convert(const z3::expr& e) {
+    if constexpr (M == N)
+      return e;
+    else if constexpr (M > N)
+      return e.extract(N - 1, 0);
+    else if constexpr (S)
+      return z3::sext(e, N - M);
+    else
+      return z3::zext(e, N - M);
+  }
+  // One more bit than N, by this type's signedness: enough to hold the exact + or - of two values.
+  static z3::expr wide(const z3::expr& e, int extra = 1) {
+    return Signed ? z3::sext(e, static_cast<unsigned>(extra))
+                  : z3::zext(e, static_cast<unsigned>(extra));
+  }
+  // Records that the exact result `exact` (computed `extra` bits wider) is representable in N bits.
+  void fits(const char* what, const z3::expr& exact, int extra = 1) const {
+    const z3::expr back = wide(exact.extract(N - 1, 0), extra);
+    Session::current().oblige(what, exact == back);
+  }
+  void nonzero(const char* what, const Int& b) const {
+    Session::current().oblige(what, b.e_ != Session::current().ctx().bv_val(0, N));
+  }
+  Int shl(const Int& s) const {
+    Session::current().oblige("shift amount in [0, N)",
+                              z3::ult(s.e_, z3::expr(e_.ctx().bv_val(N, N))));
+    if constexpr (Signed) {
+      // Representable result: shifting back arithmetically gives the value again.
+      const z3::expr r = z3::shl(e_, s.e_);
+      Session::current().oblige("signed << keeps the value", z3::ashr(r, s.e_) == e_);
+      return Int(r);
+    } else {
+      return Int(z3::shl(e_, s.e_));
+    }
+  }
+  Int shr(const Int& s) const {
+    Session::current().oblige("shift amount in [0, N)",
+                              z3::ult(s.e_, z3::expr(e_.ctx().bv_val(N, N))));
+    return Int(Signed ? z3::ashr(e_, s.e_) : z3::lshr(e_, s.e_));
+  }
+
+  static std::pair<Int, Int> euclid(const Int& a, const Int& b) {
+    Session& s = Session::current();
+    if (a.e_.is_numeral() && b.e_.is_numeral()) // constants: no need to abstract
+      return {Int(z3::udiv(a.e_, b.e_)), Int(z3::urem(a.e_, b.e_))};
+    const std::pair<unsigned, unsigned> key{Z3_get_ast_id(s.ctx(), a.e_),
+                                            Z3_get_ast_id(s.ctx(), b.e_)};
+    if (auto it = s.divisions().find(key); it != s.divisions().end())
+      return {Int(it->second.first), Int(it->second.second)};
+    const Int k = var(s.fresh("quotient")), r = var(s.fresh("remainder"));
+    s.divisions().emplace(key, std::pair{k.e_, r.e_});
+    const auto w = [](const z3::expr& e) { return z3::zext(e, N); };
+    s.fact(z3::implies(b.e_ != s.ctx().bv_val(0, N),
+                       w(k.e_) * w(b.e_) + w(r.e_) == w(a.e_) && z3::ult(r.e_, b.e_)));
+    return {k, r};
+  }
+
+  z3::expr e_;
+};
+
+// Branch-free choice: the kernel's templates write `select(c, a, b)` where they would write
+// `c ? a : b`, so that the same source runs on machine integers and on Z3 terms.
+template <int N, bool S>
+Int<N, S> select(const Bool& c, const Int<N, S>& a, const Int<N, S>& b) {
+  return Int<N, S>(z3::ite(c.expr(), a.expr(), b.expr()));
+}
+inline Bool select(const Bool& c, const Bool& a, const Bool& b) {
+  return Bool(z3::ite(c.expr(), a.expr(), b.expr()));
+}
+
+using I8 = Int<8, true>;
+using U8 = Int<8, false>;
+using I16 = Int<16, true>;
+using U16 = Int<16, false>;
+using I32 = Int<32, true>;
+using U32 = Int<32, false>;
+using I64 = Int<64, true>;
+using U64 = Int<64, false>;
+using I128 = Int<128, true>;
+using U128 = Int<128, false>;
+
+} // namespace antkit::proofs
