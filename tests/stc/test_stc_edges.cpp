@@ -60,7 +60,7 @@ TEST_CASE("edge rule: over every pass through a cell and every state of the neig
         for (unsigned outside = 0; outside < 16; ++outside) {
           // A fourth sub-cell is never left by walking on: that would re-enter the first one.
           if (left == 4 && ((crossed >> 3) & 1u) == 0) continue;
-          world.reset(map, subcell_of({1, 1}, entry));
+          world.reset(map, subcell_of({1, 1}, entry), {}, Marker::Edge);
           // The neighbours' own passes may have lit the centre's bits 8..11 (their turn boxes).
           for (int e = 0; e < 4; ++e)
             if ((outside >> e) & 1u) world.light_edge(subcell_of({1, 1}, e), e);
@@ -88,7 +88,7 @@ TEST_CASE("edge rule: over every pass through a cell and every state of the neig
 
 TEST_CASE("edge marker: leaving a sub-cell lights exactly the edge behind the robot", "[stc]") {
   const OccupancyGrid map(4, 4, Occupancy::Free);
-  StcWorld world(map, {1, 1});
+  StcWorld world(map, {1, 1}, {}, Marker::Edge);
   REQUIRE(world.apply({Move::East, true})); // from (1,1) to (2,1): lights (1,1)'s west edge
   // (1,1) is SE of cell (0,0): its west edge is interior, the cross box of SE (bit 0).
   CHECK(world.cell_edges({0, 0}) == 0x001);

@@ -27,54 +27,60 @@ kernel::Grid<std::uint8_t> free_cells(const kernel::OccupancyGrid& map) {
   return out;
 }
 
-namespace {
-
-void check_start(CellGridShape shape, const kernel::Grid<std::uint8_t>& cells, SubCell start) {
-  const Cell c = cell_of(start);
-  if (start.x < 0 || start.y < 0 || !shape.in_bounds(c))
+SpanningTree::SpanningTree(const kernel::OccupancyGrid& map, SubCell start)
+    : shape_(cell_shape(map)),
+      stride_(static_cast<std::size_t>(shape_.cells_x) + 2), offset_{1, 0 - stride_,
+                                                                     0 - std::size_t{1}, stride_},
+      root_(cell_of(start)), q0_(quadrant_of(start)) {
+  if (start.x < 0 || start.y < 0 || !shape_.in_bounds(root_))
     throw kernel::InputError(
         "start", "sub-cell (" + std::to_string(start.x) + ", " + std::to_string(start.y) +
-                     ") is outside the map's cells (" + std::to_string(2 * shape.cells_x) + " x " +
-                     std::to_string(2 * shape.cells_y) + " sub-cells)");
-  if (cells[c] == 0)
+                     ") is outside the map's cells (" + std::to_string(2 * shape_.cells_x) + " x " +
+                     std::to_string(2 * shape_.cells_y) + " sub-cells)");
+  if (!cell_free(map, root_))
     throw kernel::InputError("start", "sub-cell (" + std::to_string(start.x) + ", " +
                                           std::to_string(start.y) + ") lies in cell (" +
-                                          std::to_string(c.x) + ", " + std::to_string(c.y) +
+                                          std::to_string(root_.x) + ", " + std::to_string(root_.y) +
                                           "), which is not free (all four sub-cells must be)");
-}
-
-} // namespace
-
-SpanningTree::SpanningTree(const kernel::OccupancyGrid& map, SubCell start)
-    : SpanningTree(free_cells(map), start) {}
-
-SpanningTree::SpanningTree(kernel::Grid<std::uint8_t> cells, SubCell start)
-    : state_(std::move(cells)), root_(cell_of(start)), q0_(quadrant_of(start)) {
-  check_start(shape(), state_, start);
-  for (auto& b : state_.cells()) b = b ? kFree : std::uint8_t{0};
+  state_.assign(stride_ * (static_cast<std::size_t>(shape_.cells_y) + 2), 0);
+  // Free cells, two map rows at a time so that the map is read sequentially.
+  const auto width = static_cast<std::size_t>(map.width());
+  const auto& sub = map.cells();
+  for (std::int32_t cy = 0; cy < shape_.cells_y; ++cy) {
+    const std::size_t top = static_cast<std::size_t>(2 * cy) * width, bottom = top + width;
+    std::uint8_t* row = state_.data() + index({0, cy});
+    for (std::int32_t cx = 0; cx < shape_.cells_x; ++cx) {
+      const auto x = static_cast<std::size_t>(2 * cx);
+      const bool free = sub[top + x] == kernel::Occupancy::Free &&
+                        sub[top + x + 1] == kernel::Occupancy::Free &&
+                        sub[bottom + x] == kernel::Occupancy::Free &&
+                        sub[bottom + x + 1] == kernel::Occupancy::Free;
+      row[cx] = free ? kFreeCell : std::uint8_t{0};
+    }
+  }
+  root_index_ = index(root_);
   build();
 }
 
 void SpanningTree::build() {
-  const CellGridShape sh = shape();
+  std::uint8_t* s = state_.data();
   // The root's virtual parent is q0 - 1, so that its scan starts at q0 like every other cell's
   // starts after its parent; unlike theirs, the root's scan covers all four directions.
-  state_[root_] = static_cast<std::uint8_t>(kFree | kInTree | kRoot | dir_add(q0_, 3));
+  s[root_index_] = static_cast<std::uint8_t>(kInTree | kRoot | dir_add(q0_, 3));
   tree_cells_ = 1;
-  Cell cur = root_;
+  std::size_t cur = root_index_;
   int k = 0; // the next scan position of `cur`: direction base + 1 + k
   for (;;) {
-    const std::uint8_t here = state_[cur];
+    const std::uint8_t here = s[cur];
     const int base = here & kParentMask;
     const int limit = (here & kRoot) ? 4 : 3;
     bool descended = false;
     for (; k < limit; ++k) {
       const int d = dir_add(base, 1 + k);
-      const Cell nb = step(cur, d);
-      if (!sh.in_bounds(nb)) continue;
-      std::uint8_t& n = state_[nb];
-      if ((n & (kFree | kInTree)) != kFree) continue;
-      n = static_cast<std::uint8_t>(n | kInTree | opposite(d));
+      const std::size_t nb = cur + offset_[static_cast<std::size_t>(d)];
+      if (s[nb] != kFreeCell) continue; // blocked, border, or already in the tree
+      s[nb] = static_cast<std::uint8_t>(kInTree | opposite(d));
+      s[cur] = static_cast<std::uint8_t>(s[cur] | (1u << (kChildShift + d)));
       ++tree_cells_;
       cur = nb;
       k = 0;
@@ -85,8 +91,8 @@ void SpanningTree::build() {
     if (here & kRoot) break;
     // Back to the parent; resume its scan after the direction that led here.
     const int e = opposite(base); // from the parent to cur
-    cur = step(cur, base);
-    const int parent_base = state_[cur] & kParentMask;
+    cur += offset_[static_cast<std::size_t>(base)];
+    const int parent_base = s[cur] & kParentMask;
     k = dir_add(e, -parent_base - 1) + 1;
   }
 }

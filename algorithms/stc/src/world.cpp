@@ -28,7 +28,9 @@ std::optional<Variant> parse_variant(std::string_view name) noexcept {
   return std::nullopt;
 }
 
-void StcWorld::reset(const kernel::OccupancyGrid& map, SubCell start, NoiseModel noise) {
+void StcWorld::reset(const kernel::OccupancyGrid& map, SubCell start, NoiseModel noise,
+                     Marker marker) {
+  marker_ = marker;
   width_ = map.width();
   height_ = map.height();
   shape_ = cell_shape(map);
@@ -37,20 +39,20 @@ void StcWorld::reset(const kernel::OccupancyGrid& map, SubCell start, NoiseModel
   for (std::int32_t y = 0; y < 2 * shape_.cells_y; ++y)
     for (std::int32_t x = 0; x < 2 * shape_.cells_x; ++x)
       free_[index({x, y})] = map[{x, y}] == kernel::Occupancy::Free ? 1 : 0;
-  cell_free_.assign(
-      static_cast<std::size_t>(shape_.cells_x) * static_cast<std::size_t>(shape_.cells_y), 0);
+  // Cell arrays carry a border of one blocked cell, so that the neighbours of any cell of the map
+  // can be read without a bounds check.
+  stride_ = static_cast<std::size_t>(shape_.cells_x) + 2;
+  offset_ = {1, 0 - stride_, 0 - std::size_t{1}, stride_};
+  cell_free_.assign(stride_ * (static_cast<std::size_t>(shape_.cells_y) + 2), 0);
   for (std::int32_t cy = 0; cy < shape_.cells_y; ++cy)
     for (std::int32_t cx = 0; cx < shape_.cells_x; ++cx) {
       bool all = true;
       for (int q = 0; q < 4; ++q) all = all && free_[index(subcell_of({cx, cy}, q))] != 0;
-      cell_free_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(shape_.cells_x) +
-                 static_cast<std::size_t>(cx)] = all ? 1 : 0;
+      cell_free_[cell_index({cx, cy})] = all ? 1 : 0;
     }
-  marks_.assign(n, 0);
+  marks_.assign(cell_free_.size(), 0);
+  edges_.assign(cell_free_.size(), 0);
   entered_.assign(n, 0);
-  edges_.assign(static_cast<std::size_t>(width_ + 1) * static_cast<std::size_t>(height_) +
-                    static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_ + 1),
-                0);
   position_ = start;
   noise_ = noise;
   stream_ = kernel::Stream(noise.seed, kNoiseExperiment, noise.trial, 0, kNoisePurpose);
@@ -77,10 +79,7 @@ std::int64_t StcWorld::reachable_subcells(bool whole_cells) {
   queue_.clear();
   if (whole_cells) {
     scratch_.assign(cell_free_.size(), 0);
-    const auto cw = static_cast<std::size_t>(shape_.cells_x);
-    auto at = [&](Cell c) {
-      return static_cast<std::size_t>(c.y) * cw + static_cast<std::size_t>(c.x);
-    };
+    auto at = [&](Cell c) { return cell_index(c); };
     const Cell root = cell_of(position_);
     scratch_[at(root)] = 1;
     queue_.push_back(root);
@@ -108,94 +107,74 @@ std::int64_t StcWorld::reachable_subcells(bool whole_cells) {
   return static_cast<std::int64_t>(queue_.size());
 }
 
-std::size_t StcWorld::edge_index(SubCell s, int d) const noexcept {
-  const auto w = static_cast<std::size_t>(width_);
-  const auto x = static_cast<std::size_t>(s.x), y = static_cast<std::size_t>(s.y);
-  const std::size_t horizontal = (w + 1) * static_cast<std::size_t>(height_);
-  switch (d) {
-  case 0:
-    return y * (w + 1) + x + 1; // east: the vertical edge right of s
-  case 1:
-    return horizontal + y * w + x; // north: the horizontal edge above s
-  case 2:
-    return y * (w + 1) + x; // west
-  default:
-    return horizontal + (y + 1) * w + x; // south
+void StcWorld::light_edge(SubCell s, int d) noexcept {
+  // The edge is kept in the 12-bit masks of the cells it belongs to (ant.hpp): an interior edge in
+  // its cell only, an exterior edge in both cells it separates.
+  d &= 3;
+  const Cell c = cell_of(s);
+  const int e = quadrant_of(s);
+  if (!shape_.in_bounds(c)) return;
+  auto light = [&](Cell cell, int bit) {
+    if (shape_.in_bounds(cell)) edges_[cell_index(cell)] |= static_cast<std::uint16_t>(1u << bit);
+  };
+  if (d == dir_add(e, 2)) {
+    light(c, e); // the cross box of e: interior, between e and e - 1
+  } else if (d == dir_add(e, 1)) {
+    light(c, dir_add(e, 1)); // interior, between e + 1 and e: the cross box of e + 1
+  } else if (d == dir_add(e, 3)) {
+    light(c, 4 + e);                      // the turn box of e...
+    light(step(c, d), 8 + dir_add(e, 1)); // ...the own exterior edge of the sub-cell across
+  } else {
+    light(c, 8 + e);                      // e's own exterior edge (direction e)...
+    light(step(c, d), 4 + dir_add(e, 3)); // ...the turn box of the sub-cell across
   }
 }
 
-void StcWorld::light_edge(SubCell s, int d) noexcept {
-  edges_[edge_index(s, d & 3)] = 1;
-}
-
 std::uint16_t StcWorld::cell_edges(Cell c) const noexcept {
-  if (!shape_.in_bounds(c)) return 0;
-  // The twelve edges of the cell, straight from the two edge arrays (edge_index() written out per
-  // bit, because this runs for five cells every step of ant-edge). v(x, y): the vertical edge at
-  // the west side of sub-cell (x, y); h(x, y): the horizontal edge at its north side.
-  const auto w = static_cast<std::size_t>(width_);
-  const auto x0 = static_cast<std::size_t>(2 * c.x), x1 = x0 + 1, x2 = x0 + 2;
-  const auto y0 = static_cast<std::size_t>(2 * c.y);
-  const std::size_t v0 = y0 * (w + 1), v1 = v0 + w + 1;
-  const std::size_t h0 = (w + 1) * static_cast<std::size_t>(height_) + y0 * w, h1 = h0 + w,
-                    h2 = h1 + w;
-  const std::uint8_t* e = edges_.data();
-  const unsigned bits =
-      // cross boxes: SE's west, NE's south, NW's east, SW's north edge
-      (e[v1 + x1] << 0) | (e[h1 + x1] << 1) | (e[v0 + x1] << 2) | (e[h1 + x0] << 3) |
-      // turn boxes: SE's south, NE's east, NW's north, SW's west edge
-      (e[h2 + x1] << 4) | (e[v0 + x2] << 5) | (e[h0 + x0] << 6) | (e[v1 + x0] << 7) |
-      // the neighbours' turn boxes: SE's east, NE's north, NW's west, SW's south edge
-      (e[v1 + x2] << 8) | (e[h0 + x1] << 9) | (e[v0 + x0] << 10) | (e[h2 + x0] << 11);
-  return static_cast<std::uint16_t>(bits);
+  return shape_.in_bounds(c) ? edges_[cell_index(c)] : std::uint16_t{0};
 }
 
 std::uint8_t StcWorld::cell_marks(Cell c) const noexcept {
-  if (!shape_.in_bounds(c)) return 0;
-  unsigned bits = 0;
-  for (int q = 0; q < 4; ++q) bits |= static_cast<unsigned>(marks_[index(subcell_of(c, q))]) << q;
-  return static_cast<std::uint8_t>(bits);
+  return shape_.in_bounds(c) ? marks_[cell_index(c)] : std::uint8_t{0};
 }
 
 std::uint32_t StcWorld::misread(std::uint32_t bits, int count) noexcept {
-  if (noise_.ppm == 0) return bits;
   for (int i = 0; i < count; ++i)
     if (stream_.chance(noise_.ppm, 1'000'000)) bits ^= 1u << i;
   return bits;
 }
 
 CellObservation StcWorld::observe_cells() const noexcept {
-  const Cell c = cell_of(position_);
+  const std::size_t i = cell_index(cell_of(position_));
   unsigned bits = 0;
-  for (int d = 0; d < 4; ++d) {
-    const Cell n = step(c, d);
-    if (shape_.in_bounds(n) &&
-        cell_free_[static_cast<std::size_t>(n.y) * static_cast<std::size_t>(shape_.cells_x) +
-                   static_cast<std::size_t>(n.x)] != 0)
-      bits |= 1u << d;
-  }
+  for (std::size_t d = 0; d < 4; ++d)
+    bits |= static_cast<unsigned>(cell_free_[i + offset_[d]]) << d;
   return {static_cast<std::uint8_t>(bits)};
 }
 
 MarkObservation StcWorld::observe_marks() noexcept {
-  const Cell c = cell_of(position_);
+  const std::size_t i = cell_index(cell_of(position_));
   MarkObservation o;
   o.free_neighbours = observe_cells().free_neighbours;
-  o.here = static_cast<std::uint8_t>(misread(cell_marks(c), 4));
-  for (int d = 0; d < 4; ++d)
-    o.neighbour[static_cast<std::size_t>(d)] =
-        static_cast<std::uint8_t>(misread(cell_marks(step(c, d)), 4));
+  o.here = marks_[i];
+  for (std::size_t d = 0; d < 4; ++d) o.neighbour[d] = marks_[i + offset_[d]];
+  if (noise_.ppm != 0) {
+    o.here = static_cast<std::uint8_t>(misread(o.here, 4));
+    for (auto& m : o.neighbour) m = static_cast<std::uint8_t>(misread(m, 4));
+  }
   return o;
 }
 
 EdgeObservation StcWorld::observe_edges() noexcept {
-  const Cell c = cell_of(position_);
+  const std::size_t i = cell_index(cell_of(position_));
   EdgeObservation o;
   o.free_neighbours = observe_cells().free_neighbours;
-  o.here = static_cast<std::uint16_t>(misread(cell_edges(c), 12));
-  for (int d = 0; d < 4; ++d)
-    o.neighbour[static_cast<std::size_t>(d)] =
-        static_cast<std::uint16_t>(misread(cell_edges(step(c, d)), 12));
+  o.here = edges_[i];
+  for (std::size_t d = 0; d < 4; ++d) o.neighbour[d] = edges_[i + offset_[d]];
+  if (noise_.ppm != 0) {
+    o.here = static_cast<std::uint16_t>(misread(o.here, 12));
+    for (auto& m : o.neighbour) m = static_cast<std::uint16_t>(misread(m, 12));
+  }
   return o;
 }
 
@@ -205,9 +184,11 @@ bool StcWorld::apply(const Command& command) noexcept {
   const SubCell target = step(position_, d);
   if (!sub_free(target)) return false;
   if (command.mark) {
-    // Both markers are recorded; each marker variant reads only its own kind.
-    marks_[index(position_)] = 1;
-    light_edge(position_, opposite(d)); // the LEDs at the robot's back
+    if (marker_ == Marker::Edge)
+      light_edge(position_, opposite(d)); // the LEDs at the robot's back
+    else
+      marks_[cell_index(cell_of(position_))] |=
+          static_cast<std::uint8_t>(1u << quadrant_of(position_));
   }
   position_ = target;
   enter(target);
@@ -315,7 +296,8 @@ RunResult run_stc(StcWorld& world, const kernel::OccupancyGrid& map, SubCell sta
                   const RunOptions& options) {
   check_start(map, start, variant);
   const bool marker = variant == Variant::Ant || variant == Variant::AntEdge;
-  world.reset(map, start, marker ? options.noise : NoiseModel{});
+  world.reset(map, start, marker ? options.noise : NoiseModel{},
+              variant == Variant::AntEdge ? Marker::Edge : Marker::SubCell);
   RunResult r;
   r.variant = variant;
   r.reachable_subcells = world.reachable_subcells(is_exact(variant));

@@ -9,11 +9,14 @@
 // (issue 3, invariant 5). Any spanning tree would give a valid tour; this one is chosen so that
 // they agree.
 //
-// Memory: one byte per cell (a quarter of a byte per sub-cell) holds everything, the free flag, the
-// tree membership and the direction of the parent. The depth-first search keeps no stack: it
-// backtracks through the parent directions it stored, and on coming back from a child in direction
-// e it resumes its scan at e + 1. Nothing recurses, so no map can overflow the call stack.
+// Memory: one byte per cell (a quarter of a byte per sub-cell) holds everything: the free flag, the
+// tree membership, the direction of the parent and the child directions. The depth-first search
+// keeps no stack: it backtracks through the parent directions it stored, and on coming back from a
+// child in direction e it resumes its scan at e + 1. Nothing recurses, so no map can overflow the
+// call stack.
 #include <antkit/stc/subcell.hpp>
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -21,72 +24,91 @@ namespace antkit::stc {
 
 class SpanningTree {
 public:
-  // Byte layout of a cell's state.
-  static constexpr std::uint8_t kParentMask = 0x03; // direction to the parent (root: q0 - 1)
+  // Byte layout of a cell's state. Not in the tree: 0 (blocked, or the one-cell border that spares
+  // every bounds check) or kFreeCell. In the tree: kInTree, the direction of the parent in the low
+  // two bits (the root: q0 - 1, its virtual parent), kRoot, and one bit per child direction, so
+  // that the tour reads one byte per cell it walks through.
+  static constexpr std::uint8_t kFreeCell = 0x01;
+  static constexpr std::uint8_t kParentMask = 0x03;
   static constexpr std::uint8_t kInTree = 0x04;
-  static constexpr std::uint8_t kFree = 0x08;
-  static constexpr std::uint8_t kRoot = 0x10;
+  static constexpr std::uint8_t kRoot = 0x08;
+  static constexpr int kChildShift = 4;
 
   // The tree of `map` from `start` (a sub-cell). Throws kernel::InputError when the start
   // sub-cell is outside the cell area or its cell is not free.
   SpanningTree(const kernel::OccupancyGrid& map, SubCell start);
 
-  // The same from a grid of free cells (non-zero = free), one byte per cell; the grid is taken
-  // over as the tree's storage, so no memory beyond it is used. For maps too large to hold twice.
-  SpanningTree(kernel::Grid<std::uint8_t> free_cells, SubCell start);
-
-  [[nodiscard]] CellGridShape shape() const noexcept { return {state_.width(), state_.height()}; }
+  [[nodiscard]] CellGridShape shape() const noexcept { return shape_; }
   [[nodiscard]] Cell root() const noexcept { return root_; }
   [[nodiscard]] SubCell start() const noexcept { return subcell_of(root_, q0_); }
   [[nodiscard]] std::int64_t cells() const noexcept { return tree_cells_; }
+  // Bytes this tree holds: (cells_x + 2) x (cells_y + 2), a quarter byte per sub-cell and a border.
+  [[nodiscard]] std::size_t bytes() const noexcept { return state_.size(); }
   [[nodiscard]] bool in_tree(Cell c) const noexcept {
-    return shape().in_bounds(c) && (state_[c] & kInTree) != 0;
+    return shape_.in_bounds(c) && (state_[index(c)] & kInTree) != 0;
   }
   // The direction from c to its parent; for the root, q0 - 1 (its virtual parent).
-  [[nodiscard]] int parent_direction(Cell c) const noexcept { return state_[c] & kParentMask; }
+  [[nodiscard]] int parent_direction(Cell c) const noexcept {
+    return state_[index(c)] & kParentMask;
+  }
+  // Bit d: the neighbour in direction d is a child of c.
+  [[nodiscard]] unsigned children(Cell c) const noexcept {
+    return static_cast<unsigned>(state_[index(c)]) >> kChildShift;
+  }
   [[nodiscard]] bool is_root(Cell c) const noexcept { return c == root_; }
 
-  // One move of the circumnavigation from sub-cell q of cell `cur`: updates (cur, q) and returns
-  // the direction moved, or -1 when the next move would enter the start sub-cell again (the tour
-  // is closed).
-  int advance(Cell& cur, int& q) const noexcept {
-    const int d = q;
-    const Cell nb = step(cur, d);
-    if (shape().in_bounds(nb)) {
-      const std::uint8_t n = state_[nb];
-      // nb is a child of cur when its parent direction points back at cur.
-      if ((n & (kInTree | kRoot)) == kInTree && (n & kParentMask) == opposite(d))
-        return cross(cur, q, nb, d);
+  // A place on the tour: cell, its index in the state array, and the quadrant.
+  struct Cursor {
+    Cell cell;
+    std::size_t index;
+    int q;
+  };
+  [[nodiscard]] Cursor begin() const noexcept { return {root_, index(root_), q0_}; }
+
+  // One move of the circumnavigation: updates the cursor and returns the direction moved, or -1
+  // when the next move would enter the start sub-cell again (the tour is closed).
+  int advance(Cursor& at) const noexcept {
+    const std::uint8_t here = state_[at.index];
+    const int d = at.q;
+    if ((here >> (kChildShift + d)) & 1) return cross(at, d);
+    if ((here & kRoot) == 0 && (here & kParentMask) == d) {
+      // Back to the parent; the only crossing that can lead into the start sub-cell.
+      if (at.index + offset_[static_cast<std::size_t>(d)] == root_index_ && dir_add(d, 3) == q0_)
+        return -1;
+      return cross(at, d);
     }
-    const std::uint8_t here = state_[cur];
-    if ((here & kRoot) == 0 && (here & kParentMask) == d) return cross(cur, q, nb, d);
-    q = dir_add(q, 1);
-    if (cur == root_ && q == q0_) return -1;
-    return q; // moving to quadrant q + 1 is a move in direction q + 1
+    at.q = dir_add(d, 1);
+    if (at.q == q0_ && at.index == root_index_) return -1;
+    return at.q; // moving to quadrant q + 1 is a move in direction q + 1
   }
 
   // Calls visit(SubCell) for every position of the tour, the start first; 4 * cells() calls.
   template <class Visit>
   void tour(Visit&& visit) const {
-    Cell cur = root_;
-    int q = q0_;
-    visit(subcell_of(cur, q));
-    while (advance(cur, q) >= 0) visit(subcell_of(cur, q));
+    Cursor at = begin();
+    visit(subcell_of(at.cell, at.q));
+    while (advance(at) >= 0) visit(subcell_of(at.cell, at.q));
   }
   [[nodiscard]] std::vector<SubCell> tour() const;
 
 private:
-  int cross(Cell& cur, int& q, Cell nb, int d) const noexcept {
-    const int arrive = dir_add(d, 3);
-    if (nb == root_ && arrive == q0_) return -1;
-    cur = nb;
-    q = arrive;
+  [[nodiscard]] std::size_t index(Cell c) const noexcept {
+    return static_cast<std::size_t>(c.y + 1) * stride_ + static_cast<std::size_t>(c.x + 1);
+  }
+  int cross(Cursor& at, int d) const noexcept {
+    at.index += offset_[static_cast<std::size_t>(d)]; // unsigned wrap-around adds a negative
+    at.cell = step(at.cell, d);
+    at.q = dir_add(d, 3);
     return d;
   }
   void build();
 
-  kernel::Grid<std::uint8_t> state_;
+  CellGridShape shape_;
+  std::size_t stride_;
+  std::array<std::size_t, 4> offset_; // index steps E, N, W, S (N and W wrap around)
+  std::vector<std::uint8_t> state_;
   Cell root_{};
+  std::size_t root_index_ = 0;
   int q0_ = 0;
   std::int64_t tree_cells_ = 0;
 };
@@ -99,11 +121,11 @@ public:
   using Command = stc::Command;
 
   OfflineStc(const kernel::OccupancyGrid& map, SubCell start)
-      : tree_(map, start), cur_(tree_.root()), q_(quadrant_of(start)) {}
+      : tree_(map, start), at_(tree_.begin()) {}
 
   Command step(const Observation&) {
     if (done_) return {};
-    const int d = tree_.advance(cur_, q_);
+    const int d = tree_.advance(at_);
     if (d < 0) {
       done_ = true;
       return {};
@@ -114,8 +136,7 @@ public:
 
 private:
   SpanningTree tree_;
-  Cell cur_;
-  int q_;
+  SpanningTree::Cursor at_;
   bool done_ = false;
 };
 

@@ -47,15 +47,21 @@ struct NoiseModel {
   std::uint64_t trial = 0;
 };
 
+// What the robot leaves when a command says `mark`: a mark on the sub-cell it leaves (`ant`), or
+// the lit edge behind it (`ant-edge`, the paper's real robot).
+enum class Marker : std::uint8_t { SubCell, Edge };
+
 class StcWorld {
 public:
   StcWorld() = default;
-  StcWorld(const kernel::OccupancyGrid& map, SubCell start, NoiseModel noise = {}) {
-    reset(map, start, noise);
+  StcWorld(const kernel::OccupancyGrid& map, SubCell start, NoiseModel noise = {},
+           Marker marker = Marker::SubCell) {
+    reset(map, start, noise, marker);
   }
   // Starts over on a map (reusing the buffers: the exhaustive tests run millions of tours).
   // The start must be a free sub-cell inside the cell area (the runners check).
-  void reset(const kernel::OccupancyGrid& map, SubCell start, NoiseModel noise = {});
+  void reset(const kernel::OccupancyGrid& map, SubCell start, NoiseModel noise = {},
+             Marker marker = Marker::SubCell);
 
   [[nodiscard]] CellObservation observe_cells() const noexcept;
   [[nodiscard]] MarkObservation observe_marks() noexcept;
@@ -70,10 +76,12 @@ public:
   // (whole_cells), or the free sub-cells of the cell area 4-connected to it.
   [[nodiscard]] std::int64_t reachable_subcells(bool whole_cells);
   [[nodiscard]] bool sub_free(SubCell s) const noexcept;
-  [[nodiscard]] bool marked(SubCell s) const noexcept { return marks_[index(s)] != 0; }
+  [[nodiscard]] bool marked(SubCell s) const noexcept {
+    return ((cell_marks(cell_of(s)) >> quadrant_of(s)) & 1) != 0;
+  }
   // The 12-bit edge mask of a cell (bits as documented in ant.hpp).
   [[nodiscard]] std::uint16_t cell_edges(Cell c) const noexcept;
-  // Lights the edge of sub-cell s in direction d (tests use it to light neighbours' edges).
+  // Lights the edge of sub-cell s (inside the cell area) in direction d.
   void light_edge(SubCell s, int d) noexcept;
   // Sub-cells entered at least once, and entries into a sub-cell entered before.
   [[nodiscard]] std::int64_t covered() const noexcept { return covered_; }
@@ -86,18 +94,27 @@ private:
     return static_cast<std::size_t>(s.y) * static_cast<std::size_t>(width_) +
            static_cast<std::size_t>(s.x);
   }
-  [[nodiscard]] std::size_t edge_index(SubCell s, int d) const noexcept;
+  // Index into the cell arrays, which have a one-cell border.
+  [[nodiscard]] std::size_t cell_index(Cell c) const noexcept {
+    return static_cast<std::size_t>(c.y + 1) * stride_ + static_cast<std::size_t>(c.x + 1);
+  }
   [[nodiscard]] std::uint8_t cell_marks(Cell c) const noexcept;
   std::uint32_t misread(std::uint32_t bits, int count) noexcept;
   void enter(SubCell s) noexcept;
 
   std::int32_t width_ = 0, height_ = 0;
   CellGridShape shape_{};
+  std::size_t stride_ = 2;
+  std::array<std::size_t, 4> offset_{}; // cell index steps E, N, W, S
+  Marker marker_ = Marker::SubCell;
   std::vector<std::uint8_t> free_;      // per sub-cell, inside the cell area only
-  std::vector<std::uint8_t> cell_free_; // per cell
-  std::vector<std::uint8_t> marks_;     // per sub-cell
-  std::vector<std::uint8_t> edges_;     // vertical edges (W + 1) x H, then horizontal W x (H + 1)
-  std::vector<std::uint8_t> entered_;   // per sub-cell
+  std::vector<std::uint8_t> cell_free_; // per cell, 0 on the border
+  // The floor, per cell (so that one observation reads five bytes, not twenty): bit q of marks_
+  // is sub-cell q's mark; edges_ holds each cell's twelve edges as documented in ant.hpp (an
+  // exterior edge is stored in both cells it separates).
+  std::vector<std::uint8_t> marks_;
+  std::vector<std::uint16_t> edges_;
+  std::vector<std::uint8_t> entered_; // per sub-cell
   std::vector<std::uint8_t> scratch_;
   std::vector<Cell> queue_;
   std::int64_t covered_ = 0, repeats_ = 0;
