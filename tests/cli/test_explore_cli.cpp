@@ -105,3 +105,28 @@ TEST_CASE("explore: bad input exits 2 with one clear message and no output file"
     CHECK_FALSE(std::filesystem::exists(svg));
   }
 }
+
+TEST_CASE("explore-tables: Tables 2 and 3 as CSV and Markdown, ours beside the paper's", "[cli]") {
+  const auto dir = std::filesystem::temp_directory_path() / "antkit-explore-tables";
+  std::filesystem::remove_all(dir);
+  const auto r = run_antkit("explore-tables --format json --out " + dir.string());
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j["table3"].size() == 7);
+  // The empty room: every repetition is the same run, and the paper's numbers sit beside ours.
+  CHECK(j["table3"][0]["paper_fwf_steps"] == 47);
+  CHECK(j["table3"][0]["paper_sheng_steps"] == 158.7);
+  for (const char* name : {"table2.csv", "table2.md", "table3.csv", "table3.md"})
+    CHECK(std::filesystem::exists(dir / name));
+  std::ifstream csv(dir / "table2.csv");
+  std::size_t lines = 0;
+  for (std::string line; std::getline(csv, line);) ++lines;
+  CHECK(lines == 1 + 4 * 10 + 2 * 5); // header, four columns of 10, two of 5
+  // Same seed, same tables.
+  const auto again = run_antkit("explore-tables --format json --out " + dir.string());
+  CHECK(again.out == r.out);
+  std::filesystem::remove_all(dir);
+  const auto bad = run_antkit("explore-tables --out /proc/no-such-dir/x");
+  CHECK(bad.status == 2);
+  CHECK(bad.err.rfind("antkit: error: ", 0) == 0);
+}
