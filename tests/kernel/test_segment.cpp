@@ -3,6 +3,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 #include <antkit/kernel/segment.hpp>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <limits>
@@ -221,4 +222,40 @@ TEST_CASE("count_proper_crossings, worked example", "[segment]") {
     on_line.push_back(raw_point(-80 + 4 * k, k % 2 == 0 ? 0 : 5));
   CHECK(count_proper_crossings(on_line, line) == 0u);
   CHECK(count_proper_crossings(std::vector<FxPoint>{}, line) == 0u);
+}
+
+TEST_CASE("every pair of segments on a 4x4 lattice: classify equals CGAL", "[segment][proof]") {
+  // Exhaustive small scope: all 16 x 16 ordered segments with ends on {0, 1, 2, 3}^2 (raw units),
+  // every ordered pair of them, 65536 pairs. The lattice holds every kind of contact: crossings at
+  // lattice and non-lattice points, T-junctions, shared ends, collinear overlaps and end-to-end
+  // contacts, parallel and degenerate segments. Degenerate ones go through has_on.
+  std::vector<FxSegment> all;
+  for (std::int32_t p = 0; p < 16; ++p)
+    for (std::int32_t q = 0; q < 16; ++q)
+      all.push_back({raw_point(p % 4, p / 4), raw_point(q % 4, q / 4)});
+  std::int64_t pairs = 0, mismatches = 0;
+  std::array<std::int64_t, 4> seen{};
+  for (const FxSegment& s : all)
+    for (const FxSegment& t : all) {
+      SegmentRelation want;
+      if (degenerate(s) && degenerate(t))
+        want = s.a == t.a ? SegmentRelation::Touching : SegmentRelation::Disjoint;
+      else if (degenerate(s) || degenerate(t)) {
+        const FxPoint p = degenerate(s) ? s.a : t.a;
+        const FxSegment& seg = degenerate(s) ? t : s;
+        want =
+            to_cgal(seg).has_on(to_cgal(p)) ? SegmentRelation::Touching : SegmentRelation::Disjoint;
+      } else {
+        want = cgal_relation(s, t);
+      }
+      const SegmentRelation got = classify(s, t);
+      mismatches +=
+          got != want || properly_cross(s, t) != (want == SegmentRelation::ProperCrossing) ? 1 : 0;
+      ++seen[static_cast<std::size_t>(want)];
+      ++pairs;
+    }
+  CHECK(pairs == 65536);
+  CHECK(mismatches == 0);
+  // The scope really contains every relation.
+  for (std::int64_t n : seen) CHECK(n > 0);
 }
