@@ -181,10 +181,10 @@ ArenaRaster rasterize(const Arena& arena, CellSize cell, std::size_t max_cells,
         crossings.push_back(lo.x() + (y - lo.y()) * (hi.x() - lo.x()) / (hi.y() - lo.y()));
     }
     std::sort(crossings.begin(), crossings.end());
-    const auto row = static_cast<std::int32_t>(j);
+    const auto row_begin = out.grid.cells().begin() + static_cast<std::ptrdiff_t>(j * width);
     auto set = [&](std::int64_t from, std::int64_t to, kernel::Occupancy value) {
-      for (std::int64_t i = clamp(from); i < clamp(to); ++i)
-        out.grid[{static_cast<std::int32_t>(i), row}] = value;
+      const auto a = clamp(from), b = clamp(to);
+      if (a < b) std::fill(row_begin + a, row_begin + b, value);
     };
     for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
       // Free: a < centre < b, i.e. floor(column_of(a)) + 1 <= i <= ceil(column_of(b)) - 1.

@@ -27,7 +27,10 @@
 namespace antkit::geometry {
 
 // The paper's sizes (section 4.1): circles of diameter 10, 20, ..., 100 robot diameters; the
-// standard arena is the circle of diameter 100; three ellipses of the standard area.
+// standard arena is the circle of diameter 100; three ellipses of the standard area. (Section 6.1
+// calls the two smallest arenas "348 and 1392 unit^2", the areas of diameters 21 and 42, which
+// disagrees with "approximately ten times the body length"; the 10, 20, ..., 100 wins, and
+// circle:d=21 builds the other reading.)
 inline constexpr double kStandardDiameter = 100.0;
 inline constexpr std::array<double, 10> kPaperCircleDiameters{10, 20, 30, 40, 50,
                                                               60, 70, 80, 90, 100};
