@@ -102,7 +102,8 @@ GridMap parse_movingai(std::string_view text, const std::string& name) {
   if (!problem.empty()) fail(name, size_line, 1, problem);
 
   const auto map_line = header_line("map");
-  if (map_line.text != "map")
+  const auto map_words = words(map_line);
+  if (map_words.size() != 1 || map_words[0].text != "map")
     fail(name, map_line.number, 1,
          "expected `map` after the height and width lines, found " + detail::quoted(map_line.text));
 

@@ -35,7 +35,8 @@ TEST_CASE("MovingAI: CRLF, width before height, blank lines at the end are all a
   const auto crlf =
       parse_movingai("type octile\r\nheight 2\r\nwidth 3\r\nmap\r\n..@\r\n@O.\r\n\r\n", "crlf.map");
   const auto swapped = parse_movingai("type octile\nwidth 3\nheight 2\nmap\n..@\n@O.", "sw.map");
-  const auto spaced = parse_movingai("type  octile\nheight\t2\nwidth 3 \nmap\n..@\n@O.\n\n\n", "s");
+  const auto spaced =
+      parse_movingai("type  octile\nheight\t2\nwidth 3 \nmap \n..@\n@O.\n\n\n", "s");
   CHECK(crlf == lf);
   CHECK(swapped == lf);
   CHECK(spaced == lf);
@@ -72,6 +73,7 @@ TEST_CASE("MovingAI: every malformed file is an InputError at its line and colum
       {"type octile\nheight 99999999999999999999999\nwidth 1\nmap\n", 2, 8, "bad height"},
       {"type octile\nheight 10000\nwidth 10000\nmap\n", 3, 1, "over the cap"},
       {"type octile\nheight 1\nwidth 1\nmaps\n.\n", 4, 1, "expected `map`"},
+      {"type octile\nheight 1\nwidth 1\nmap x\n.\n", 4, 1, "expected `map`"},
       {kHeader3x2 + "...\n", 6, 1, "ends after 1 rows"},
       {kHeader3x2 + "...\n..\n", 6, 3, "has 2 cells; expected 3"},
       {kHeader3x2 + "...\n....\n", 6, 4, "has 4 cells; expected 3"},

@@ -23,7 +23,8 @@
 //   `type octile`, `height H`, `width W`, `map`, then H rows of exactly W cells. Keywords are lower
 //   case; `height` and `width` are accepted in either order (both orders occur in the wild), each
 //   exactly once; the type must be `octile` (the only type the benchmarks define). Runs of spaces
-//   or tabs separate a keyword from its value. A '\r' before each '\n' is tolerated (CRLF copies
+//   or tabs separate a keyword from its value, and header lines may carry blanks at either end
+//   (map rows may not: a row is exactly W cells). A '\r' before each '\n' is tolerated (CRLF copies
 //   exist), as are blank lines after the last row; anything else after the H rows is an error.
 //   Cells: `.` `G` `S` free ('S' is swamp, passable: it is NOT a start cell in this format);
 //   `@` `O` `T` blocked; `W` (water: traversable, but not from regular terrain) is read as
