@@ -54,7 +54,7 @@ FastWallFollow::FastWallFollow(std::int32_t width, std::int32_t height,
       progress_limit_(4 * (static_cast<std::uint64_t>(width) + static_cast<std::uint64_t>(height)) +
                       64),
       b_stamp_(width, height, 0), b_visited_(width, height, 0), wall_stamp_(width, height, 0),
-      circled_(width, height, 0) {
+      circled_(width, height, 0), b_traced_(width, height, 0) {
   tracer_[0].hand = Hand::Left;
   tracer_[1].hand = Hand::Right;
 }
@@ -128,6 +128,7 @@ std::array<std::int8_t, 2> FastWallFollow::wall_step(const TeamObservation& obs)
   if (mode_ == TroubleShooter::FollowWalls && tracer_[1].wall < 0) {
     tracer_[1].position = b;
     tracer_[1].wall = static_cast<std::int8_t>(initial_wall(map_, b, Hand::Right));
+    if (tracer_[1].wall >= 0) b_traced_[b] = 1;
   }
   const bool b_ready = mode_ != TroubleShooter::FollowWalls || tracer_[1].wall >= 0;
   if (tracer_[0].wall < 0 || !b_ready) {
@@ -238,6 +239,11 @@ std::array<std::int8_t, 2> FastWallFollow::wall_step(const TeamObservation& obs)
     WallTracer next;
     const int k = trace_step(map_, tracer_[0], next);
     if (k >= 0) {
+      if (b_traced_[next.position]) {
+        // A reaches the outer walls B traced before it left them (step 2): every wall of this
+        // boundary has now been followed by one robot or the other (step 6).
+        return end_wall_stage(a, b);
+      }
       if (next.position == b) {
         // B stands on A's way: two ticks running means they met head-on (step 6).
         if (++blocked_ticks_ >= 2) return end_wall_stage(a, b);
@@ -265,6 +271,7 @@ std::array<std::int8_t, 2> FastWallFollow::wall_step(const TeamObservation& obs)
       previous_tracer_[1] = tracer_[1];
       tracer_[1] = next;
       moves[1] = static_cast<std::int8_t>(k);
+      if (mode_ == TroubleShooter::FollowWalls) b_traced_[next.position] = 1;
       if (mode_ == TroubleShooter::FollowCause) {
         // B has gone once around the cause when its tracing state repeats: it has detected that
         // obstacle, and stays (then relays as in step 5).

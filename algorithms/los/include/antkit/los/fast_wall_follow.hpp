@@ -46,8 +46,10 @@
 //     When a tracing state repeats with steps back in between, that is still once around.
 //   * Step 5: B "meets" A when they are neighbours, or when the walk ends.
 //   * Step 6: A has detected all the walls when its tracing state (cell, wall) repeats (the trace
-//     has closed its loop), or when B stands on A's next cell for two ticks running (they have met
-//     head-on, each having traced the walls from the other end). As a guard against a
+//     has closed its loop), when its next cell is one B walked while following the walls
+//     counter-clockwise in step 2 (the rest of the boundary was followed by B already), or when B
+//     stands on A's next cell for two ticks running (they have met head-on, each having traced
+//     the walls from the other end). As a guard against a
 //     back-and-forth that never ends, the stage also ends when A's trace has not advanced past its
 //     furthest point for 4 (W + H) + 64 ticks. Then step 7.
 //   * The whole run stops, in any stage, as soon as no frontier cell is left (rule 6 as the issue
@@ -154,6 +156,8 @@ private:
   kernel::Grid<std::uint32_t> wall_stamp_;
   kernel::Grid<std::uint8_t> circled_;
   std::vector<kernel::Cell> loop_walls_;
+  // The cells B walked while following the walls counter-clockwise (step 2).
+  kernel::Grid<std::uint8_t> b_traced_;
 
   std::uint32_t losses_ = 0, causes_ = 0, meetings_ = 0;
 };
