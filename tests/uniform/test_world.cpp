@@ -5,6 +5,7 @@
 #include <antkit/kernel/raster.hpp>
 #include <antkit/uniform/world.hpp>
 #include <catch2/catch.hpp>
+#include <climits>
 #include <rapidcheck.h>
 #include <rapidcheck/catch.h>
 
@@ -131,4 +132,8 @@ TEST_CASE("the world refuses robots off free cells or on one cell", "[uniform]")
   CHECK(ok.robot(1).bearing == 4);
   CHECK(ok.turn(1, -1));
   CHECK(ok.robot(1).bearing == 3);
+  // Cells far off the map are simply not in view (and their difference is never formed).
+  CHECK_FALSE(ok.in_view({INT32_MIN, 0}, {INT32_MAX, 0}));
+  CHECK_FALSE(ok.in_view({0, 0}, {INT32_MAX, INT32_MIN}));
+  CHECK_FALSE(ok.would_view_new({INT32_MAX, 0}));
 }

@@ -89,9 +89,10 @@ bool CoverageWorld::clear_ray(Cell from, const SensorFootprint::Ray& ray) const 
 }
 
 bool CoverageWorld::in_view(Cell from, Cell target) const noexcept {
+  // Bounds first: only then is the difference of the two cells free of overflow.
+  if (!map_.in_bounds(from) || !map_.in_bounds(target)) return false;
   const Cell d = target - from;
-  if (!map_.in_bounds(from) || !map_.in_bounds(target) || !footprint_.in_range(d)) return false;
-  return clear_ray(from, footprint_.ray(d));
+  return footprint_.in_range(d) && clear_ray(from, footprint_.ray(d));
 }
 
 bool CoverageWorld::would_view_new(Cell from) const noexcept {
