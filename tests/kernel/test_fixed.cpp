@@ -1,6 +1,7 @@
 // Fixed-point numbers against exact integer oracles (__int128 rationals): every result is the
 // documented rounding of the exact value, hence within its stated error.
 #include <antkit/geometry/fixed_convert.hpp>
+#include <antkit/kernel/angle.hpp>
 #include <antkit/kernel/fixed.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
@@ -315,4 +316,122 @@ TEST_CASE("conversions for reporting", "[fixed][property]") {
   CHECK_THROWS_AS(fixed_from_double<Fx>(40000.0, "--width"), antkit::kernel::InputError);
   CHECK_THROWS_AS(fixed_from_double<Fx>(std::numeric_limits<double>::quiet_NaN(), "--width"),
                   antkit::kernel::InputError);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The kernels are written once over an integer policy (int_ops.hpp). This stand-in for the Z3
+// bit-vector integer is a C++-like integer type that is not a machine integer: it goes through the
+// policy's generic path, wraps like a bit-vector and counts, instead of proving, the obligations
+// (signed overflow, division by zero, narrowing that loses the value, domain preconditions). The
+// kernels must compute the machine results with no obligation violated inside their documented
+// domains, and must violate one outside -- what the Z3 proofs will establish for all inputs.
+namespace policy_test {
+
+int violations = 0;
+
+struct Bool {
+  bool b;
+  friend Bool operator&&(Bool x, Bool y) { return {x.b && y.b}; }
+  friend Bool operator==(Bool x, Bool y) { return {x.b == y.b}; }
+  friend Bool operator!=(Bool x, Bool y) { return {x.b != y.b}; }
+};
+inline void require(Bool c, const char*) {
+  if (!c.b) ++violations;
+}
+
+template <int N, bool Signed>
+struct Int {
+  static constexpr int bits = N;
+  using M = std::conditional_t<
+      N == 128, std::conditional_t<Signed, antkit::kernel::int128, antkit::kernel::uint128>,
+      std::conditional_t<N == 64, std::conditional_t<Signed, std::int64_t, std::uint64_t>,
+                         std::conditional_t<Signed, std::int32_t, std::uint32_t>>>;
+  M v{};
+  Int() = default;
+  template <class T>
+  requires std::is_integral_v<T> Int(T x) : v(static_cast<M>(x)) {}
+  template <int K, bool S>
+  explicit Int(Int<K, S> o) : v(static_cast<M>(o.v)) {}
+
+  friend Int operator+(Int a, Int b) { return checked(__builtin_add_overflow(a.v, b.v, &a.v), a); }
+  friend Int operator-(Int a, Int b) { return checked(__builtin_sub_overflow(a.v, b.v, &a.v), a); }
+  friend Int operator*(Int a, Int b) { return checked(__builtin_mul_overflow(a.v, b.v, &a.v), a); }
+  friend Int operator/(Int a, Int b) {
+    return b.v == 0 || (Signed && b.v == M(-1)) ? bad() : wrap(a.v / b.v);
+  }
+  friend Int operator%(Int a, Int b) {
+    return b.v == 0 || (Signed && b.v == M(-1)) ? bad() : wrap(a.v % b.v);
+  }
+  friend Int operator&(Int a, Int b) { return wrap(a.v & b.v); }
+  friend Int operator|(Int a, Int b) { return wrap(a.v | b.v); }
+  friend Int operator<<(Int a, int k) {
+    const Int r = wrap(static_cast<M>(a.v << k));
+    if (Signed && (r.v >> k) != a.v) ++violations;
+    return r;
+  }
+  friend Int operator>>(Int a, int k) { return wrap(static_cast<M>(a.v >> k)); }
+  friend Bool operator==(Int a, Int b) { return {a.v == b.v}; }
+  friend Bool operator!=(Int a, Int b) { return {a.v != b.v}; }
+  friend Bool operator<(Int a, Int b) { return {a.v < b.v}; }
+  friend Bool operator<=(Int a, Int b) { return {a.v <= b.v}; }
+  friend Bool operator>(Int a, Int b) { return {a.v > b.v}; }
+  friend Bool operator>=(Int a, Int b) { return {a.v >= b.v}; }
+  friend Int select(Bool c, Int a, Int b) { return c.b ? a : b; }
+
+private:
+  static Int wrap(M m) {
+    Int r;
+    r.v = m;
+    return r;
+  }
+  static Int bad() {
+    ++violations;
+    return wrap(0);
+  }
+  static Int checked(bool overflowed, Int r) {
+    if (overflowed && Signed) ++violations;
+    return r;
+  }
+};
+using I32 = Int<32, true>;
+using U32 = Int<32, false>;
+using I64 = Int<64, true>;
+
+} // namespace policy_test
+
+TEST_CASE("the kernels run unchanged on a non-machine integer policy", "[fixed][property]") {
+  using namespace antkit::kernel;
+  using policy_test::I32;
+  using policy_test::I64;
+  using policy_test::U32;
+  using policy_test::violations;
+  rc::prop("mul, div, sqrt: same results, obligations exactly outside the domain", [] {
+    const std::int32_t a = any_scale_raw<std::int32_t>(), b = any_scale_raw<std::int32_t>();
+    violations = 0;
+    const I32 m = fx_mul_raw<I32, I64, 16>(I32(a), I32(b));
+    const bool mul_in = fits<std::int32_t>(exact_mul<std::int32_t, 16>(a, b));
+    RC_ASSERT((violations == 0) == mul_in);
+    if (mul_in) RC_ASSERT((m.v == fx_mul_raw<std::int32_t, std::int64_t, 16>(a, b)));
+    violations = 0;
+    const I32 q = fx_div_raw<I32, I64, 16>(I32(a), I32(b));
+    const bool div_in = b != 0 && fits<std::int32_t>(exact_div<std::int32_t, 16>(a, b));
+    RC_ASSERT((violations == 0) == div_in);
+    if (div_in) RC_ASSERT((q.v == fx_div_raw<std::int32_t, std::int64_t, 16>(a, b)));
+    violations = 0;
+    const I32 r = fx_sqrt_raw<I32, I64, 16, 32>(I32(a));
+    RC_ASSERT((violations == 0) == (a >= 0));
+    if (a >= 0) RC_ASSERT((r.v == fx_sqrt_raw<std::int32_t, std::int64_t, 16, 32>(a)));
+  });
+  rc::prop("sin, cos, atan2, bearings: same results, no obligation",
+           [](std::uint32_t angle, std::int32_t y, std::int32_t x) {
+             violations = 0;
+             RC_ASSERT((sin_raw<I32, I64, 16>(U32(angle)).v ==
+                        sin_raw<std::int32_t, std::int64_t, 16>(angle)));
+             RC_ASSERT((cos_raw<I32, I64, 16>(U32(angle)).v ==
+                        cos_raw<std::int32_t, std::int64_t, 16>(angle)));
+             RC_ASSERT((atan2_raw<I32, I64, U32>(I32(y), I32(x)).v ==
+                        atan2_raw<std::int32_t, std::int64_t, std::uint32_t>(y, x)));
+             RC_ASSERT(nearest_bearing_raw(U32(angle)).v == nearest_bearing_raw(angle));
+             RC_ASSERT(violations == 0);
+           });
 }

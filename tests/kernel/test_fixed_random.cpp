@@ -18,7 +18,7 @@ using antkit::kernel::uniform_angle;
 using F64 = Fixed<std::int64_t, 32>;
 } // namespace
 
-TEST_CASE("Lemire's map hits every value of [0, n) equally often, for every 8-bit word and n",
+TEST_CASE("Lemire's map hits every value below n equally often, for every 8-bit word and n",
           "[fixed_random][proof]") {
   int wrong = 0;
   for (unsigned n = 1; n <= 255; ++n) {
@@ -59,7 +59,7 @@ TEST_CASE("the 32-bit map is Stream::between's, so Fx uniforms agree with it",
            });
 }
 
-TEST_CASE("64-bit uniforms stay in [a, b] and depend only on the stream",
+TEST_CASE("64-bit uniforms stay between a and b and depend only on the stream",
           "[fixed_random][property]") {
   rc::prop("Q31.32", [](std::uint64_t seed, std::int64_t a, std::int64_t b) {
     if (b < a) std::swap(a, b);

@@ -114,8 +114,7 @@ constexpr I fx_div_raw(I a, I b) {
   const W n = shl(widen<W>(a), F);
   const W d = widen<W>(select(by_zero, I{1}, b));
   const W q = div_round_half_up(n, d);
-  const I saturated =
-      select(a < I{0}, std::numeric_limits<I>::min(), std::numeric_limits<I>::max());
+  const I saturated = select(a < I{0}, ops::min_value<I>(), ops::max_value<I>());
   // In the zero case q is a*2^F, whose narrowing is not needed; pick the saturated value instead.
   return select(by_zero, saturated, narrow<I>(select(by_zero, W{0}, q)));
 }

@@ -10,36 +10,36 @@
 //   * with ANTKIT_CHECKED_ARITHMETIC=1 (the `debug` preset) throws ArithmeticRangeError when the
 //     exact result does not fit, so that leaving a documented range is detected instead of wrapped.
 //
-// How a symbolic integer plugs in (for the Z3 proofs of issue 7). A symbolic type S -- a wrapper
-// around a z3::expr bit-vector of fixed width and signedness, with a boolean partner B wrapping a
-// z3 boolean -- provides, in its own namespace so that argument-dependent lookup finds them:
-//   add, sub, mul, neg, shl, div, rem      the bit-vector operation (bvadd, bvmul, bvsdiv, ...),
-//   and
-//                                          it records the operation's no-overflow side condition
-//                                          (e.g. bvadd_no_overflow / bvadd_no_underflow) as a proof
-//                                          obligation, exactly where the machine policy checks;
-//   shr, band, bor, bxor                   bvashr / bvlshr, bvand, ... (these never overflow);
-//   == != < <= > >=                        returning B;
-//   select(B, S, S)                        z3::ite -- every branch in a kernel goes through select,
-//                                          so both arms are evaluated and no control flow depends
-//                                          on data;
-//   widen<To>(S), narrow<To>(S)            sign/zero extension, and extraction with the obligation
-//                                          that the value fits;
-//   truncate<To>(S)                        extraction without an obligation (wrapping intended);
-//   wrap_add, wrap_sub, wrap_mul           modular arithmetic where wrapping is the meaning (binary
-//                                          angles), with no obligation;
-//   as_unsigned(S), as_signed(S)           the same bits, other signedness;
-//   lookup(table, S)                       a table read: an ite chain or a z3 array constant;
-//   require(B, what)                       a precondition of the operation's documented domain,
-//                                          recorded as an obligation.
-// S must also be constructible from an integer constant (W{1}, U{0} in the kernels) and, where a
-// kernel saturates, have std::numeric_limits<S>::min()/max(); kernels hold intermediate results in
-// `auto`/S variables, never in bool or in constexpr variables, so that a symbolic boolean can flow
-// through them.
-// Then proving "no overflow inside the domain" is: assert the domain, instantiate the kernel
-// template with S, and ask Z3 for a model of (domain and not all obligations); rounding claims are
-// asserted over the result the same way. Loops in the kernels have trip counts fixed by the type
-// (never by data), so the symbolic instantiation unrolls them.
+// How a symbolic integer plugs in (for the Z3 proofs of issue 7). The kernels call the operations
+// unqualified (after `using ops::add, ...`), so for a type S that is not a machine integer two
+// routes exist, and they can be mixed:
+//   1. Nothing to write but S itself: the generic definitions at the end of this header map each
+//      operation onto S's own C++ operators and conversions (add -> a + b, shl -> a << k,
+//      widen<To> / narrow<To> / truncate<To> -> To(v), lookup -> a chain of select). A type written
+//      like a C++ integer whose operators record C++'s undefined-behaviour conditions -- signed
+//      overflow, division by zero, min / -1, a left shift that loses the value -- as obligations,
+//      as antkit::proofs::Int<N, Signed> (proofs/z3/z3_int.hpp) does, then carries exactly the
+//      obligations that the checked machine build checks. S must provide, in its namespace:
+//        == != < <= > >=     returning its boolean type B (a z3 boolean);
+//        select(B, S, S)     z3::ite -- every branch in a kernel goes through select, so both arms
+//                            are evaluated and no control flow depends on data;
+//        require(B, what)    records B as an obligation: a precondition of the documented domain
+//                            (division by zero, a negative square root) or, from narrow, "the
+//                            value fits the narrower type";
+//        S(integer constant), explicit S(other width/signedness) with C++ conversion semantics
+//        (sign- or zero-extension by the source's signedness, low bits when narrowing), and a
+//        static `bits` (used for the extreme values in max_value/min_value).
+//   2. Overloads of any operation in S's namespace, found by argument-dependent lookup and
+//      preferred to the generic ones (they are templates constrained to non-machine types): e.g. a
+//      lookup that reads a z3 array instead of building a 1026-way ite chain.
+// wrap_add / wrap_sub / wrap_mul are used only on unsigned angle types, where C++ (and a
+// bit-vector) wraps without an obligation. Kernels hold intermediate results in `auto` or S
+// variables, never in bool or constexpr variables, so that a symbolic boolean flows through them.
+// Proving "no overflow inside the domain" is then: assert the domain, run the kernel template on S,
+// and ask Z3 for a model of (domain and not every obligation); rounding claims are asserted over
+// the result the same way. Loops in the kernels have trip counts fixed by the type (never by data),
+// so the symbolic run unrolls them. tests/kernel/test_fixed.cpp runs the kernels through route 1
+// with a counting stand-in for S and checks that obligations fail exactly outside the domains.
 //
 // Helper functions are written so that a kernel never calls a machine-only facility: no
 // __builtin_clz, no std::bit_width, no early return on a data value.
@@ -311,6 +311,115 @@ constexpr auto lookup(const Table& table, I index) {
   require(index >= I{0} && static_cast<std::size_t>(index) < table.size(),
           "table index out of range");
   return table[static_cast<std::size_t>(index)];
+}
+
+// ---------------------------------------------------------------------------------------------
+// Every other integer-like type: the policy operations map onto the type's own operators and
+// conversions, so a symbolic type written like a C++ integer -- antkit::proofs::Int<N, Signed> of
+// proofs/z3/z3_int.hpp, whose operators record C++'s undefined-behaviour conditions as obligations
+// -- instantiates the kernels without an adapter. Such a type must provide, in its namespace:
+// select(B, S, S) and require(B, const char*) (the latter records a domain precondition or a
+// narrowing's "the value fits" as an obligation); lookup() below builds an ite chain through
+// select, which a type may replace with its own overload (e.g. a z3 array).
+
+template <class T>
+concept PolicyInt = !MachineInt<T>;
+
+template <PolicyInt T>
+T add(const T& a, const T& b) {
+  return a + b;
+}
+template <PolicyInt T>
+T sub(const T& a, const T& b) {
+  return a - b;
+}
+template <PolicyInt T>
+T mul(const T& a, const T& b) {
+  return a * b;
+}
+template <PolicyInt T>
+T neg(const T& a) {
+  return T(0) - a;
+}
+template <PolicyInt T>
+T wrap_add(const T& a, const T& b) {
+  return a + b;
+}
+template <PolicyInt T>
+T wrap_sub(const T& a, const T& b) {
+  return a - b;
+}
+template <PolicyInt T>
+T wrap_mul(const T& a, const T& b) {
+  return a * b;
+}
+template <PolicyInt T>
+T shl(const T& a, int k) {
+  return a << k;
+}
+template <PolicyInt T>
+T shr(const T& a, int k) {
+  return a >> k;
+}
+template <PolicyInt T>
+T band(const T& a, const T& b) {
+  return a & b;
+}
+template <PolicyInt T>
+T bor(const T& a, const T& b) {
+  return a | b;
+}
+template <PolicyInt T>
+T div(const T& a, const T& b) {
+  return a / b;
+}
+template <PolicyInt T>
+T rem(const T& a, const T& b) {
+  return a % b;
+}
+template <class To, PolicyInt From>
+To widen(const From& v) {
+  return To(v);
+}
+template <class To, PolicyInt From>
+To truncate(const From& v) {
+  return To(v);
+}
+template <class To, PolicyInt From>
+To narrow(const From& v) {
+  const To r(v);
+  // Found by argument-dependent lookup in the type's namespace.
+  require(From(r) == v && ((r < To(0)) == (v < From(0))), "integer narrowing loses the value");
+  return r;
+}
+// A table read as a chain of selects; the entries must be representable in the index type (the
+// kernel's tables hold non-negative values below 2^31).
+template <class Table, PolicyInt I>
+I lookup(const Table& table, const I& index) {
+  I result(table[0]);
+  for (std::size_t i = 1; i < table.size(); ++i)
+    result = select(index == I(i), I(table[i]), result);
+  return result;
+}
+
+// The extreme values of a signed type, written with operations that cannot overflow so that they
+// also exist for a policy type (whose std::numeric_limits would silently be zero).
+template <class T>
+constexpr T max_value() {
+  if constexpr (MachineInt<T>) {
+    return std::numeric_limits<T>::max();
+  } else {
+    const T quarter = shl(T(1), T::bits - 2);
+    return add(sub(quarter, T(1)), quarter); // 2^(N-1) - 1
+  }
+}
+template <class T>
+constexpr T min_value() {
+  if constexpr (MachineInt<T>) {
+    return std::numeric_limits<T>::min();
+  } else {
+    return sub(neg(max_value<T>()), T(1));
+  }
 }
 
 } // namespace ops
