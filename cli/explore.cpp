@@ -9,7 +9,8 @@
 // JSON: {"algo", "steps", "eme", "moves": [a, b], "explored", "unobservable",
 //        "cells": [one string per row of F S L B N O, B for S+LOS], "hash"}.
 //
-// Choices: --size without --obstacles or --blocks is an empty room; the environments are drawn
+// Choices: a map or room may have at most 2048 x 2048 cells (memory, see kMaxCells); --size
+// without --obstacles or --blocks is an empty room; the environments are drawn
 // from the keyed stream (seed, experiment 5, trial, 0, purpose) so that `--trial` reproduces one
 // row of the tables driver (`antkit explore-tables`); fast wall-follow always sweeps the line of
 // sight, so `--algo fast-wall-follow --los off` is rejected as bad input.
@@ -73,6 +74,11 @@ std::pair<std::int64_t, std::int64_t> parse_pair(const std::string& option, cons
   }
 }
 
+// The exploration keeps about 30 bytes per cell (states, frontier set, planner and tracing
+// scratch), so the command caps a map at 2048 x 2048 cells (about 120 MiB); the maps are
+// at most about 1000 x 1000.
+constexpr std::size_t kMaxCells = std::size_t{2048} * 2048;
+
 struct Environment {
   OccupancyGrid grid;
   Cell start{};
@@ -91,13 +97,17 @@ Environment build_environment(const ExploreCommand& c) {
     if (!c.size.empty() || c.obstacles >= 0 || c.blocks >= 0)
       throw InputError("--map", "give either --map or --size with --obstacles/--blocks, not both");
     auto map = antkit::maps::load_map(c.map);
+    if (map.cells.size() > kMaxCells)
+      throw InputError(c.map, std::to_string(map.cells.width()) + "x" +
+                                  std::to_string(map.cells.height()) +
+                                  " cells is more than this command explores (2048 x 2048)");
     env.grid = std::move(map.cells);
     if (!start && map.start) start = map.start;
   } else {
     if (c.size.empty()) throw InputError("explore", "give --map FILE or --size WxH");
     const auto [w, h] = parse_pair("--size", c.size, 'x', "WxH (two integers)");
-    if (w < 2 || h < 2 || w > 4096 || h > 4096)
-      throw InputError("--size", "'" + c.size + "': each side must be in [2, 4096]");
+    if (w < 2 || h < 2 || w > 2048 || h > 2048)
+      throw InputError("--size", "'" + c.size + "': each side must be in [2, 2048]");
     if (c.obstacles >= 0 && c.blocks >= 0)
       throw InputError("--blocks", "give --obstacles or --blocks, not both");
     const auto width = static_cast<std::int32_t>(w), height = static_cast<std::int32_t>(h);
