@@ -50,7 +50,7 @@ const std::vector<std::string> kSharedMaps{"movingai/Berlin_1_256.map",
 
 } // namespace
 
-TEST_CASE("antkit stc covers every shared map with every variant, invariants checked on the "
+TEST_CASE("antkit stc covers every shared map with every variant - invariants checked on the "
           "printed path",
           "[cli][stc]") {
   antkit::test::StcTourChecker checker;
@@ -95,7 +95,7 @@ TEST_CASE("antkit stc: golden hash of a shared map and the default start", "[cli
   CHECK(j.at("reachable_subcells") == 1920);
 }
 
-TEST_CASE("antkit stc: the start comes from --start, or from the map's S", "[cli][stc]") {
+TEST_CASE("antkit stc: the start comes from --start - or from the map's S", "[cli][stc]") {
   const auto file = temp_file("start.txt", "......\n......\n..S...\n......\n");
   auto r = run_antkit("stc --map " + file.string() + " --variant online --format json");
   REQUIRE(r.status == 0);
@@ -147,7 +147,7 @@ TEST_CASE("antkit stc: bad input exits 2 with one clear message and no output", 
   CHECK(run_antkit("stc --map " + partial.string() + " --variant full --start 0,0").status == 0);
 }
 
-TEST_CASE("antkit stc --svg draws obstacles, tree and tour", "[cli][stc]") {
+TEST_CASE("antkit stc --svg draws obstacles - tree and tour", "[cli][stc]") {
   const auto map = temp_file("svg.txt", "........\n........\n..##....\n..##....\n");
   const auto svg = std::filesystem::temp_directory_path() /
                    ("antkit-stc-cli-" + std::to_string(::getpid())) / "tour.svg";
@@ -161,7 +161,7 @@ TEST_CASE("antkit stc --svg draws obstacles, tree and tour", "[cli][stc]") {
   CHECK(text.find("#333333") != std::string::npos);   // obstacles
 }
 
-TEST_CASE("antkit stc --noise is reproducible by seed; stc-noise reports a curve", "[cli][stc]") {
+TEST_CASE("antkit stc --noise is reproducible by seed - stc-noise reports a curve", "[cli][stc]") {
   const std::string map = shared_map("movingai/random-32-32-10.map");
   const auto a =
       run_antkit("stc --map " + map + " --variant ant --noise 0.05 --seed 3 --format json");

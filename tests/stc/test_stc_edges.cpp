@@ -48,7 +48,7 @@ unsigned drive(StcWorld& world, const Pass& p) {
 
 } // namespace
 
-TEST_CASE("edge rule: over every pass through a cell and every state of the neighbours' edges, "
+TEST_CASE("edge rule: over every pass through a cell and every state of the neighbours' edges - "
           "the lit boxes say exactly which sub-cells were left",
           "[stc][proof]") {
   const OccupancyGrid map(6, 6, Occupancy::Free);

@@ -37,7 +37,7 @@ TEST_CASE("one free cell: the tour is its four sub-cells counter-clockwise from 
   }
 }
 
-TEST_CASE("two cells side by side: into the east child from SE, back into NE", "[stc]") {
+TEST_CASE("two cells side by side: into the east child from SE - back into NE", "[stc]") {
   const OccupancyGrid map(4, 2, Occupancy::Free);
   const std::vector<Cell> expected{{0, 0}, {0, 1}, {1, 1}, {2, 1}, {3, 1}, {3, 0}, {2, 0}, {1, 0}};
   for (Variant v : kExact) {
@@ -46,7 +46,7 @@ TEST_CASE("two cells side by side: into the east child from SE, back into NE", "
   }
 }
 
-TEST_CASE("a child in the start's last direction: the tour ends outside the start cell, next to "
+TEST_CASE("a child in the start's last direction: the tour ends outside the start cell - next to "
           "the start sub-cell",
           "[stc]") {
   // Start SE (1,1) of the west cell: q0 = SE = 0, its virtual parent is q0 - 1 = S... the east
@@ -126,7 +126,7 @@ TEST_CASE("full on a map without partial cells is the exact tour (plus the step 
   }
 }
 
-TEST_CASE("online memory grows with the cells seen, not with the map", "[stc]") {
+TEST_CASE("online memory grows with the cells seen - not with the map", "[stc]") {
   // A 2-cell corridor in a huge map: the robot sees a handful of cells.
   OccupancyGrid map(4096, 4096, Occupancy::Blocked);
   for (std::int32_t x = 0; x < 8; ++x)
@@ -169,7 +169,7 @@ TEST_CASE("a deep spanning tree does not recurse: a serpentine of 128 x 128 cell
   CHECK(ant.path == path);
 }
 
-TEST_CASE("golden trace hashes: a fixed map, every exact variant the same tour and hash",
+TEST_CASE("golden trace hashes: a fixed map - every exact variant the same tour and hash",
           "[stc][golden]") {
   // Changing a golden value is a deliberate, explained commit (DESIGN.md rule 5).
   const OccupancyGrid map = from_rows({
@@ -194,7 +194,7 @@ TEST_CASE("golden trace hashes: a fixed map, every exact variant the same tour a
   CHECK(antkit::kernel::hash_hex(run_stc(map, start, Variant::Full).hash) == "53591074493a58c0");
 }
 
-TEST_CASE("marker noise is reproducible: the same seed gives the same run, noise 0 the exact tour",
+TEST_CASE("marker noise is reproducible: the same seed gives the same run - noise 0 the exact tour",
           "[stc][noise]") {
   const OccupancyGrid map = from_rows({
       "........",

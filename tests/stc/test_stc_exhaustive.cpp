@@ -54,7 +54,7 @@ std::int64_t exhaust(int cw, int ch, const std::vector<Variant>& others) {
 
 } // namespace
 
-TEST_CASE("every cell map up to 4 x 3 cells, every start: invariants 1-5 for all exact variants",
+TEST_CASE("every cell map up to 4 x 3 cells - every start: invariants 1-5 for all exact variants",
           "[stc][proof]") {
   std::int64_t pairs = 0;
   for (int cw = 1; cw <= 4; ++cw)
@@ -73,13 +73,13 @@ TEST_CASE("every cell map up to 4 x 3 cells, every start: invariants 1-5 for all
 
 // The largest part (2^16 maps, 2.1 million map-start pairs, 8.4 million tours): about 15 s of one
 // core in the release build, so it is tagged [slow] as well (still run by `make test`).
-TEST_CASE("every 4 x 4 cell map, every start: invariants 1-5 for all exact variants",
+TEST_CASE("every 4 x 4 cell map - every start: invariants 1-5 for all exact variants",
           "[stc][proof][slow]") {
   const std::int64_t pairs = exhaust(4, 4, {Variant::Online, Variant::Ant, Variant::AntEdge});
   CHECK(pairs == std::int64_t{16} * (std::int64_t{1} << 15) * 4);
 }
 
-TEST_CASE("full: every sub-cell map of 2 x 2 cells (4 x 4 sub-cells), every free start",
+TEST_CASE("full: every sub-cell map of 2 x 2 cells (4 x 4 sub-cells) - every free start",
           "[stc][proof]") {
   OccupancyGrid map(4, 4, Occupancy::Free);
   antkit::test::StcTourChecker checker;

@@ -9,7 +9,7 @@
 using namespace antkit::stc;
 using antkit::stc::testing::random_map;
 
-TEST_CASE("exact variants: invariants 1-4 on random maps, and all four give the same tour",
+TEST_CASE("exact variants: invariants 1-4 on random maps - and all four give the same tour",
           "[stc][property]") {
   rc::prop("offline, online, ant and ant-edge", [] {
     const auto [map, start] = *random_map(/*partial_cells=*/true, /*start_in_free_cell=*/true);
@@ -30,8 +30,8 @@ TEST_CASE("exact variants: invariants 1-4 on random maps, and all four give the 
   });
 }
 
-TEST_CASE("full: every reachable free sub-cell at least once, moves 4-adjacent and free, ends at "
-          "or next to the start, repeats reported right",
+TEST_CASE("full: every reachable free sub-cell at least once - moves 4-adjacent and free - ends at "
+          "or next to the start - repeats reported right",
           "[stc][property]") {
   rc::prop("full", [] {
     const auto [map, start] = *random_map(/*partial_cells=*/true, /*start_in_free_cell=*/false);
