@@ -29,7 +29,7 @@ std::string slurp(const std::filesystem::path& p) {
 }
 } // namespace
 
-TEST_CASE("antkit cover --format json reports the issue's fields; A* views everything",
+TEST_CASE("antkit cover --format json reports the issue's fields, and A* views everything",
           "[cli][uniform]") {
   const auto r = run_antkit("cover --size 40x30 --density 0.2 --seed 7 --algo astar --robots 3 "
                             "--sensor 4 --format json");

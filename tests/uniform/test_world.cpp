@@ -85,7 +85,7 @@ TEST_CASE("every 3x3 map: a step is allowed iff the target is free and no corner
   }
 }
 
-TEST_CASE("the first views are the union of brute-force views; viewable is the robots' "
+TEST_CASE("the first views are the union of brute-force views, and viewable is the robots' "
           "components",
           "[uniform][property]") {
   rc::prop("initial view", [] {
