@@ -23,7 +23,7 @@ TEST_CASE("the state order is a partial order with F at the bottom", "[proof]") 
   }
 }
 
-TEST_CASE("the issue's chains are chains of the order; explored states never become unexplored",
+TEST_CASE("the issue's chains are chains of the order and explored states stay explored",
           "[proof]") {
   CHECK(at_or_below(CellState::F, CellState::NLOS));
   CHECK(at_or_below(CellState::NLOS, CellState::LOS));
