@@ -49,7 +49,7 @@ CellSize CellSize::parse(std::string_view text, const std::string& where) {
     if (i < text.size() && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
     const auto* first = text.data() + i;
     const auto result = std::from_chars(first, text.data() + text.size(), exponent);
-    if (result.ec != std::errc() || result.ptr == first || exponent > 30)
+    if (result.ec != std::errc() || result.ptr == first || exponent < 0 || exponent > 30)
       throw bad("has a bad exponent; expected a positive decimal such as 1, 0.25 or 1e-2");
     i = static_cast<std::size_t>(result.ptr - text.data());
     if (negative) exponent = -exponent;

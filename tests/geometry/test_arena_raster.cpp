@@ -62,8 +62,8 @@ TEST_CASE("cell sizes are read exactly", "[raster]") {
   CHECK(CellSize::parse("2.5", "t").den() == 2);
   CHECK(CellSize::parse("1e-2", "t").den() == 100);
   CHECK(CellSize::parse("300", "t").num() == 300);
-  for (const char* bad :
-       {"", "0", "0.0", "-1", "abc", "1x", "1e-9", "1e7", "1e", ".", "nan", "1234567890123456789"})
+  for (const char* bad : {"", "0", "0.0", "-1", "abc", "1x", "1e-9", "1e7", "1e", ".", "nan",
+                          "1234567890123456789", "1e--5", "1e+-5", "0x10", " 1"})
     CHECK_THROWS_AS(CellSize::parse(bad, "t"), InputError);
 }
 

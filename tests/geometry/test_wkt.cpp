@@ -55,7 +55,7 @@ TEST_CASE("numbers are read exactly, in every accepted spelling", "[wkt]") {
   CHECK(write_wkt(a) == "POLYGON ((0.1 0, 1 0, 1 3, -0.05 3, 0.1 0))");
 }
 
-TEST_CASE("layout: any case, any whitespace; MULTIPOLYGON with one polygon", "[wkt]") {
+TEST_CASE("layout: any case, any whitespace, and a MULTIPOLYGON of one polygon", "[wkt]") {
   const Arena a = read_wkt("POLYGON ((0 0, 4 0, 4 4, 0 0))");
   CHECK(read_wkt("  Polygon\n(\t( 0 0 ,4 0,\r\n4 4 , 0 0 ) )\n") == a);
   CHECK(read_wkt("MULTIPOLYGON (((0 0, 4 0, 4 4, 0 0)))") == a);
