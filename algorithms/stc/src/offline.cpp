@@ -29,8 +29,7 @@ kernel::Grid<std::uint8_t> free_cells(const kernel::OccupancyGrid& map) {
 
 SpanningTree::SpanningTree(const kernel::OccupancyGrid& map, SubCell start)
     : shape_(cell_shape(map)),
-      stride_(static_cast<std::size_t>(shape_.cells_x) + 2), offset_{1, 0 - stride_,
-                                                                     0 - std::size_t{1}, stride_},
+      tiles_x_((static_cast<std::size_t>(shape_.cells_x) + 2 + 63) >> kTileBits),
       root_(cell_of(start)), q0_(quadrant_of(start)) {
   if (start.x < 0 || start.y < 0 || !shape_.in_bounds(root_))
     throw kernel::InputError(
@@ -42,23 +41,22 @@ SpanningTree::SpanningTree(const kernel::OccupancyGrid& map, SubCell start)
                                           std::to_string(start.y) + ") lies in cell (" +
                                           std::to_string(root_.x) + ", " + std::to_string(root_.y) +
                                           "), which is not free (all four sub-cells must be)");
-  state_.assign(stride_ * (static_cast<std::size_t>(shape_.cells_y) + 2), 0);
+  const std::size_t tiles_y = (static_cast<std::size_t>(shape_.cells_y) + 2 + 63) >> kTileBits;
+  state_.assign((tiles_x_ * tiles_y) << (2 * kTileBits), 0);
   // Free cells, two map rows at a time so that the map is read sequentially.
   const auto width = static_cast<std::size_t>(map.width());
   const auto& sub = map.cells();
   for (std::int32_t cy = 0; cy < shape_.cells_y; ++cy) {
     const std::size_t top = static_cast<std::size_t>(2 * cy) * width, bottom = top + width;
-    std::uint8_t* row = state_.data() + index({0, cy});
     for (std::int32_t cx = 0; cx < shape_.cells_x; ++cx) {
       const auto x = static_cast<std::size_t>(2 * cx);
       const bool free = sub[top + x] == kernel::Occupancy::Free &&
                         sub[top + x + 1] == kernel::Occupancy::Free &&
                         sub[bottom + x] == kernel::Occupancy::Free &&
                         sub[bottom + x + 1] == kernel::Occupancy::Free;
-      row[cx] = free ? kFreeCell : std::uint8_t{0};
+      state_[index({cx, cy})] = free ? kFreeCell : std::uint8_t{0};
     }
   }
-  root_index_ = index(root_);
   build();
 }
 
@@ -66,23 +64,26 @@ void SpanningTree::build() {
   std::uint8_t* s = state_.data();
   // The root's virtual parent is q0 - 1, so that its scan starts at q0 like every other cell's
   // starts after its parent; unlike theirs, the root's scan covers all four directions.
-  s[root_index_] = static_cast<std::uint8_t>(kInTree | kRoot | dir_add(q0_, 3));
+  Cell cur = root_;
+  std::size_t at = index(cur);
+  s[at] = static_cast<std::uint8_t>(kInTree | kRoot | dir_add(q0_, 3));
   tree_cells_ = 1;
-  std::size_t cur = root_index_;
   int k = 0; // the next scan position of `cur`: direction base + 1 + k
   for (;;) {
-    const std::uint8_t here = s[cur];
+    const std::uint8_t here = s[at];
     const int base = here & kParentMask;
     const int limit = (here & kRoot) ? 4 : 3;
     bool descended = false;
     for (; k < limit; ++k) {
       const int d = dir_add(base, 1 + k);
-      const std::size_t nb = cur + offset_[static_cast<std::size_t>(d)];
-      if (s[nb] != kFreeCell) continue; // blocked, border, or already in the tree
-      s[nb] = static_cast<std::uint8_t>(kInTree | opposite(d));
-      s[cur] = static_cast<std::uint8_t>(s[cur] | (1u << (kChildShift + d)));
+      const Cell nb = step(cur, d);
+      const std::size_t n = index(nb);
+      if (s[n] != kFreeCell) continue; // blocked, border, or already in the tree
+      s[n] = static_cast<std::uint8_t>(kInTree | opposite(d));
+      s[at] = static_cast<std::uint8_t>(s[at] | (1u << (kChildShift + d)));
       ++tree_cells_;
       cur = nb;
+      at = n;
       k = 0;
       descended = true;
       break;
@@ -91,8 +92,9 @@ void SpanningTree::build() {
     if (here & kRoot) break;
     // Back to the parent; resume its scan after the direction that led here.
     const int e = opposite(base); // from the parent to cur
-    cur += offset_[static_cast<std::size_t>(base)];
-    const int parent_base = s[cur] & kParentMask;
+    cur = step(cur, base);
+    at = index(cur);
+    const int parent_base = s[at] & kParentMask;
     k = dir_add(e, -parent_base - 1) + 1;
   }
 }

@@ -42,7 +42,7 @@ public:
   [[nodiscard]] Cell root() const noexcept { return root_; }
   [[nodiscard]] SubCell start() const noexcept { return subcell_of(root_, q0_); }
   [[nodiscard]] std::int64_t cells() const noexcept { return tree_cells_; }
-  // Bytes this tree holds: (cells_x + 2) x (cells_y + 2), a quarter byte per sub-cell and a border.
+  // Bytes this tree holds: a quarter byte per sub-cell, plus the border and the tiles' rounding.
   [[nodiscard]] std::size_t bytes() const noexcept { return state_.size(); }
   [[nodiscard]] bool in_tree(Cell c) const noexcept {
     return shape_.in_bounds(c) && (state_[index(c)] & kInTree) != 0;
@@ -73,12 +73,11 @@ public:
     if ((here >> (kChildShift + d)) & 1) return cross(at, d);
     if ((here & kRoot) == 0 && (here & kParentMask) == d) {
       // Back to the parent; the only crossing that can lead into the start sub-cell.
-      if (at.index + offset_[static_cast<std::size_t>(d)] == root_index_ && dir_add(d, 3) == q0_)
-        return -1;
+      if (dir_add(d, 3) == q0_ && step(at.cell, d) == root_) return -1;
       return cross(at, d);
     }
     at.q = dir_add(d, 1);
-    if (at.q == q0_ && at.index == root_index_) return -1;
+    if (at.q == q0_ && at.cell == root_) return -1;
     return at.q; // moving to quadrant q + 1 is a move in direction q + 1
   }
 
@@ -92,23 +91,29 @@ public:
   [[nodiscard]] std::vector<SubCell> tour() const;
 
 private:
+  // The state is stored in 64 x 64-cell tiles of 4 KiB, row-major inside a tile and tiles
+  // row-major: the depth-first search and the tour move up and down as often as sideways, and in a
+  // plain row-major array of a large map every vertical move would touch another page. Cell
+  // (x, y) is stored at (x + 1, y + 1): a border of blocked cells spares every bounds check.
+  static constexpr int kTileBits = 6;
   [[nodiscard]] std::size_t index(Cell c) const noexcept {
-    return static_cast<std::size_t>(c.y + 1) * stride_ + static_cast<std::size_t>(c.x + 1);
+    const auto x = static_cast<std::size_t>(c.x + 1), y = static_cast<std::size_t>(c.y + 1);
+    constexpr std::size_t mask = (std::size_t{1} << kTileBits) - 1;
+    return ((((y >> kTileBits) * tiles_x_ + (x >> kTileBits)) << (2 * kTileBits)) |
+            ((y & mask) << kTileBits) | (x & mask));
   }
   int cross(Cursor& at, int d) const noexcept {
-    at.index += offset_[static_cast<std::size_t>(d)]; // unsigned wrap-around adds a negative
     at.cell = step(at.cell, d);
+    at.index = index(at.cell);
     at.q = dir_add(d, 3);
     return d;
   }
   void build();
 
   CellGridShape shape_;
-  std::size_t stride_;
-  std::array<std::size_t, 4> offset_; // index steps E, N, W, S (N and W wrap around)
+  std::size_t tiles_x_;
   std::vector<std::uint8_t> state_;
   Cell root_{};
-  std::size_t root_index_ = 0;
   int q0_ = 0;
   std::int64_t tree_cells_ = 0;
 };
