@@ -9,7 +9,7 @@
 
 using antkit::test::run_antkit;
 
-TEST_CASE("explore: JSON with the promised fields, consistent with each other", "[cli]") {
+TEST_CASE("explore: JSON with the promised fields consistent with each other", "[cli]") {
   for (const char* algo : {"fast-wall-follow", "frontier"}) {
     const auto r = run_antkit(std::string("explore --size 25x25 --obstacles 5 --seed 3 --algo ") +
                               algo + " --format json");
@@ -52,7 +52,7 @@ TEST_CASE("explore: the frontier baseline with and without line-of-sight sweepin
     CHECK(row.get<std::string>().find_first_of("LBN") == std::string::npos);
 }
 
-TEST_CASE("explore: --start, and a map file with a start cell", "[cli]") {
+TEST_CASE("explore: --start and a map file with a start cell", "[cli]") {
   const auto dir = std::filesystem::temp_directory_path() / "antkit-explore-cli";
   std::filesystem::create_directories(dir);
   const auto map = dir / "room.txt";
@@ -106,7 +106,8 @@ TEST_CASE("explore: bad input exits 2 with one clear message and no output file"
   }
 }
 
-TEST_CASE("explore-tables: Tables 2 and 3 as CSV and Markdown, ours beside the paper's", "[cli]") {
+TEST_CASE("explore-tables: Tables 2 and 3 as CSV and Markdown with ours beside the paper's",
+          "[cli]") {
   const auto dir = std::filesystem::temp_directory_path() / "antkit-explore-tables";
   std::filesystem::remove_all(dir);
   const auto r = run_antkit("explore-tables --format json --out " + dir.string());

@@ -55,7 +55,7 @@ Grid<std::int32_t> distances(const FrontierMap& m, Cell from, Cell blocked) {
 
 } // namespace
 
-TEST_CASE("frontier set: every 3x3 knowledge grid, built cell by cell, matches the definition",
+TEST_CASE("frontier set: every 3x3 knowledge grid built cell by cell matches the definition",
           "[proof]") {
   // 3^9 grids; each is built by set() in row order from all-unexplored, and checked after every
   // set() so that every intermediate grid is checked too.
@@ -98,7 +98,7 @@ TEST_CASE("frontier set: the grid's edge is not unexplored", "[frontier]") {
   CHECK(m.frontier_count() == 0); // only off-grid cells around: no frontier
 }
 
-TEST_CASE("planner: the chosen frontier has the highest utility, reached by a shortest path",
+TEST_CASE("planner: the chosen frontier has the highest utility and is reached by a shortest path",
           "[property]") {
   rc::prop("plan == brute force", [] {
     const auto w = *rc::gen::inRange(2, 16);

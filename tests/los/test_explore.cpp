@@ -37,7 +37,7 @@ OccupancyGrid random_grid(std::int32_t w, std::int32_t h, std::uint64_t seed, st
 
 } // namespace
 
-TEST_CASE("every 4x3 map, every start: sound, monotone, complete, for all three variants",
+TEST_CASE("every 4x3 map and every start: sound and monotone and complete for all three variants",
           "[proof]") {
   // 2^12 maps x every free start cell with a free neighbour x 3 variants: each tick is checked
   // (soundness, states only up, NLOS only from F, the frontier set, robots apart on free cells,
@@ -68,7 +68,7 @@ TEST_CASE("every 4x3 map, every start: sound, monotone, complete, for all three 
   CHECK(runs > 50000);
 }
 
-TEST_CASE("random maps up to 40x40: sound, monotone, complete", "[property]") {
+TEST_CASE("random maps up to 40x40: sound and monotone and complete", "[property]") {
   rc::prop("every variant completes soundly", [] {
     const auto w = *rc::gen::inRange(2, 41);
     const auto h = *rc::gen::inRange(2, 41);
@@ -89,7 +89,8 @@ TEST_CASE("random maps up to 40x40: sound, monotone, complete", "[property]") {
   });
 }
 
-TEST_CASE("a run is a function of its inputs: same map, same start, same hash", "[property]") {
+TEST_CASE("a run is a function of its inputs: same map and start give the same hash",
+          "[property]") {
   rc::prop("deterministic", [] {
     const auto seed = *rc::gen::arbitrary<std::uint32_t>();
     const auto variant = *rc::gen::inRange(0, 3);
@@ -124,7 +125,7 @@ TEST_CASE("empty 25x25 room: fast wall-follow sweeps it while tracing the walls"
   CHECK(r.trajectories[1][1] == Cell{2, 24});
 }
 
-TEST_CASE("fast wall-follow: a loss of sight makes both step back, then B looks for the cause",
+TEST_CASE("fast wall-follow: a loss of sight makes both step back and then B looks for the cause",
           "[los]") {
   // One obstacle at (1, 5): A, going up the west wall, loses sight of B at (0, 5) and steps back.
   OccupancyGrid g(25, 25, Occupancy::Free);
@@ -155,7 +156,7 @@ TEST_CASE("fast wall-follow: a loss of sight makes both step back, then B looks 
   CHECK(ctrl.stage() == los::FastWallFollow::Stage::Finished);
 }
 
-TEST_CASE("environments: scattered obstacles and blocks of six, from the seed", "[los]") {
+TEST_CASE("environments: scattered obstacles and blocks of six drawn from the seed", "[los]") {
   const Cell keep{0, 24};
   for (std::uint64_t trial = 1; trial <= 10; ++trial) {
     for (const int k : {1, 2, 5, 10}) {
@@ -180,8 +181,9 @@ TEST_CASE("environments: scattered obstacles and blocks of six, from the seed", 
   CHECK_THROWS_AS(los::scattered_obstacles(3, 3, 1, 7, 1, {1, 1}), std::invalid_argument);
 }
 
-TEST_CASE("start: nearest free cell to the lower-left corner, partner on its nearest neighbour",
-          "[los]") {
+TEST_CASE(
+    "start: nearest free cell to the lower-left corner and the partner on its nearest neighbour",
+    "[los]") {
   OccupancyGrid g(4, 3, Occupancy::Free);
   g[{0, 2}] = Occupancy::Blocked;
   CHECK(los::default_start(g) == Cell{1, 2}); // distance 1; (0, 1) is as near but higher up
