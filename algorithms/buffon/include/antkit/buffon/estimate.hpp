@@ -1,0 +1,54 @@
+#pragma once
+// Reporting-side statistics of the Buffon measurement (after the deterministic run, so floating
+// point is allowed here: DESIGN.md, rule 1).
+//
+// Closed-form estimate (Buffon-Crofton): two independent isotropic curves of lengths L1, L2 in a
+// region of area A cross on average E[N] = 2 L1 L2 / (pi A) times, so A_hat = 2 L1 L2 / (pi N).
+// Confidence interval: N is treated as Poisson (many nearly independent chances to cross); its
+// 95 % interval comes from the variance-stabilising square root, sqrt(N) +/- 1.96 / 2, i.e.
+// N in [(sqrt(N) - 0.98)^2, (sqrt(N) + 0.98)^2], and A's interval is the image of that. When
+// N = 0 there is no estimate (the area is unbounded above given the data): estimate and upper
+// bound are absent, and the lower bound is 2 L1 L2 / (pi 0.98^2) from N's upper bound 0.98^2.
+// The curves are the robot's centre lines, which never come within 0.5 of a wall, so A_hat
+// estimates the area the centre can reach (the arena eroded by the body radius and somewhat more,
+// since the behaviour keeps a sensing distance from walls), not the arena's area.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace antkit::buffon {
+
+struct ClosedForm {
+  std::optional<double> area;  // absent when N = 0
+  double lower = 0;            // 95 % interval
+  std::optional<double> upper; // absent when N's lower bound is 0
+};
+
+inline ClosedForm closed_form_area(double length1, double length2, std::uint64_t crossings) {
+  constexpr double pi = 3.14159265358979323846;
+  const double n = static_cast<double>(crossings);
+  const double k = 2.0 * length1 * length2 / pi;
+  const double root = std::sqrt(n);
+  const double n_hi = (root + 0.98) * (root + 0.98);
+  const double n_lo = root > 0.98 ? (root - 0.98) * (root - 0.98) : 0.0;
+  ClosedForm out;
+  if (crossings > 0) out.area = k / n;
+  out.lower = k / n_hi;
+  if (n_lo > 0) out.upper = k / n_lo;
+  return out;
+}
+
+// Quantile q of `v` by linear interpolation between order statistics (type 7, the default of R
+// and numpy); `v` need not be sorted. Empty input gives 0.
+inline double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const double pos = q * static_cast<double>(v.size() - 1);
+  const auto i = static_cast<std::size_t>(std::floor(pos));
+  const std::size_t j = std::min(i + 1, v.size() - 1);
+  return v[i] + (pos - static_cast<double>(i)) * (v[j] - v[i]);
+}
+
+} // namespace antkit::buffon

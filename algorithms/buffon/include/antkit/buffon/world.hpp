@@ -1,0 +1,96 @@
+#pragma once
+// The simulated Khepera and its world: a disk of diameter 1 (the Khepera's 5.34 cm is the unit of
+// length) driven by two wheels, eight IR sensors of which the six front ones are read, and walls
+// given as fixed-point segments (the arena's boundary and holes, from the geometry layer).
+//
+// Model (choices where the paper is silent; it used Webots' Khepera model, sampled from a real
+// robot):
+//  * Sensors at the Khepera's angles from the heading, counter-clockwise positive: I_0 +90,
+//    I_1 +45, I_2 +10, I_3 -10, I_4 -45, I_5 -90 (the rear pair at +/-165 is not used). Each sits
+//    on the body's edge and looks outward along its angle.
+//  * Reading versus distance: I = 1 - d / kSensorRange for the distance d from the sensor to the
+//    nearest wall along its ray, 0 beyond kSensorRange = 0.75 (4 cm, the Khepera's useful IR
+//    range). Linear, so "I_0 > 0.95" means a side wall within 0.0375 units (2 mm) and the front
+//    sum 2.7 is reached about 0.25 units from a wall met head on. Optional noise: a uniform
+//    offset in [-noise, noise] from the trial's keyed stream, clamped to [0, 1].
+//  * Differential drive, wheel base 1: per step the robot turns by speed * (m_r - m_l) radians
+//    and moves speed * (m_l + m_r) / 2 along the mean of the old and new headings. speed is the
+//    distance per step at wheel speed 1; kDefaultSpeed = 0.1683 makes a 50 000-step visit about
+//    1680 units long, the paper's mean (measured: see the tests and the report).
+//  * Collisions: a step whose end position would bring the body's disk within 0.5 of a wall
+//    (closed distance < 0.5) is not taken: the robot turns in place but does not move, and the
+//    step is counted as blocked. Steps are at most 0.043 units (0.25 x speed), far shorter than any
+//    wall is thick, so checking the end position is enough: no step ever overlaps a wall.
+//
+// Everything that feeds a decision is integer or Q15.16; the world is immutable after
+// construction and safe to share between threads.
+#include <antkit/buffon/exploration.hpp>
+#include <antkit/kernel/angle.hpp>
+#include <antkit/kernel/fixed.hpp>
+#include <antkit/kernel/random.hpp>
+#include <antkit/kernel/segment.hpp>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace antkit::buffon {
+
+using kernel::Angle;
+using kernel::FxPoint;
+using kernel::FxSegment;
+
+inline constexpr Fx kBodyRadius = Fx::from_raw(32768);   // 0.5: the body is the unit diameter
+inline constexpr Fx kSensorRange = Fx::from_raw(49152);  // 0.75
+inline constexpr Fx kDefaultSpeed = Fx::from_raw(11031); // 0.1683 (11031 / 65536)
+// Start (Section 4.1): the centre 0.83 units above the wall below the arena's central bottom.
+inline constexpr Fx kStartClearance = Fx::from_raw(54395); // 0.83
+
+struct Pose {
+  FxPoint position;
+  Angle heading; // counter-clockwise from +x, y up
+};
+
+struct BodyParams {
+  Fx speed = kDefaultSpeed; // distance per step at wheel speed 1
+  Fx noise{};               // IR noise amplitude (0: none)
+};
+
+class World {
+public:
+  // Throws kernel::InputError (where = "arena") when there are no walls or the arena is too large
+  // for the fixed-point format (coordinates beyond +/-16000 units).
+  World(std::vector<FxSegment> walls, BodyParams body = {});
+
+  [[nodiscard]] std::span<const FxSegment> walls() const noexcept { return walls_; }
+  [[nodiscard]] const BodyParams& body() const noexcept { return body_; }
+  // Bounding box of the walls, raw Q15.16.
+  [[nodiscard]] FxPoint lower() const noexcept { return lo_; }
+  [[nodiscard]] FxPoint upper() const noexcept { return hi_; }
+
+  // The six front readings at `pose`; `noise` may be null when body().noise is 0.
+  [[nodiscard]] Observation sense(const Pose& pose, kernel::Stream* noise) const;
+  // Does the body's disk centred at p keep at least 0.5 from every wall (exact)?
+  [[nodiscard]] bool clear(FxPoint p) const;
+  // Carries out one command; returns false when the translation was blocked (pose turned only).
+  bool move(Pose& pose, const Command& cmd) const;
+
+  // Section 4.1: the bottom-most wall point on the vertical line through the walls' horizontal
+  // centre, the robot's centre 0.83 above it, heading up (into the arena) +/- 15 degrees drawn
+  // from `stream`. Reading of "within +/-15 degrees of the wall": the heading is perpendicular to
+  // the wall it starts at, give or take 15 degrees. Throws InputError when that point is not clear.
+  [[nodiscard]] Pose start_pose(kernel::Stream& stream) const;
+
+private:
+  template <class F>
+  void for_nearby(FxPoint p, F&& f) const;
+
+  std::vector<FxSegment> walls_;
+  BodyParams body_;
+  FxPoint lo_{}, hi_{};
+  // Uniform grid of 1-unit buckets; bucket k lists the walls within kMargin of any point in it.
+  std::int64_t grid_x0_ = 0, grid_y0_ = 0, grid_w_ = 0, grid_h_ = 0;
+  std::vector<std::uint32_t> start_;
+  std::vector<std::uint32_t> members_;
+};
+
+} // namespace antkit::buffon
