@@ -55,7 +55,8 @@ void Svg::grid_cells(const kernel::OccupancyGrid& grid, const std::string& block
 void Svg::rect(double x, double y, double w, double h, const std::string& fill, double opacity) {
   const double top = y_down_ ? py(y) : py(y + h);
   body_ << "<rect x=\"" << px(x) << "\" y=\"" << top << "\" width=\"" << w * scale_
-        << "\" height=\"" << h * scale_ << "\" fill=\"" << fill << "\"";
+        << "\" height=\"" << h * scale_ << "\" fill=\"" << fill
+        << "\" shape-rendering=\"crispEdges\"";
   if (opacity < 1.0) body_ << " fill-opacity=\"" << opacity << "\"";
   body_ << "/>\n";
 }

@@ -12,6 +12,11 @@ if(ANTKIT_SANITIZE)
                                                   -fno-sanitize-recover=all)
   target_link_options(antkit_options INTERFACE -fsanitize=${_antkit_san})
 endif()
+if(ANTKIT_LIBFUZZER)
+  # Coverage instrumentation for every antkit library, so that libFuzzer sees inside the parsers (the
+  # fuzz targets themselves add -fsanitize=fuzzer, which also links the fuzzer's main).
+  target_compile_options(antkit_options INTERFACE -fsanitize=fuzzer-no-link)
+endif()
 if(ANTKIT_CHECKED_ARITHMETIC)
   target_compile_definitions(antkit_options INTERFACE ANTKIT_CHECKED_ARITHMETIC=1)
 endif()
