@@ -97,10 +97,12 @@ private:
 // N-gon's area equals the ideal curve's. The cosines and sines are computed by a Taylor series in
 // IEEE double arithmetic (no libm transcendental calls), so the vertices are the same bits on every
 // platform. What remains between area() and the ideal area is the lattice rounding: every vertex
-// moves by at most 2^-17 per coordinate, which bounds
+// moves by at most 2^-17 per coordinate (2^-16.5 in distance), and moving the vertices of a polygon
+// by at most delta changes its area by at most about perimeter * delta, so the stated bound is
 //     |area() - ideal| <= perimeter() * 2^-16
-// (tests/geometry check this bound for every family at the paper's sizes; the observed errors are
-// a few hundred times smaller).
+// (tests/geometry and the arena_spec fuzzer check it for every family; at the paper's sizes the
+// observed errors are 2.5 to 400 times smaller than the bound, relative errors at most 1.1e-6, for
+// the smallest square; the standard circle is off by 2.9e-4 unit^2, relative 3.7e-8).
 //
 // Parameters outside their documented range throw kernel::InputError (where = `where`).
 
