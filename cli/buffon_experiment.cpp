@@ -1,5 +1,5 @@
-// `antkit buffon-experiment --figure 5|6|7|8|9 --out DIR [--trials N] [--steps N] [--seed S]
-//                           [--threads T]`: the paper's (000) Figures 5-9 as CSV and SVG.
+// `antkit buffon-experiment --figure 5|6|7|8|9|14 --out DIR [--trials N] [--steps N] [--seed S]
+//                           [--threads T]`: the paper's (000) Figures 5-9 and 14 as CSV and SVG.
 //
 // Each figure is a list of (series, x, arena spec, trail width); every arena gets `trials` default
 // trials (Section 5: 50 000 steps per visit, w = 0.1) and one CSV row with the median and
@@ -13,12 +13,13 @@
 // the D circle); Figure 6's ellipses have the standard area and e = 0.968, 0.994, 0.998, drawn
 // against compactness r1/r2 = 1/sqrt(1 - e^2) (1 for the circle); Figure 7's barrier lengths are
 // 10..80 % of the diameter in steps of 10; Figure 9's widths are 0.05, 0.1, 0.2, 0.4 over the ten
-// circles. Figure 14 (RS and calibrated estimates) is not implemented yet: it is rejected as bad
-// input with a message saying so.
+// circles. Figure 14: see run_figure14. The plot's colours cycle after eight series.
+#include "../algorithms/buffon/experiments/calibration.hpp"
 #include "commands.hpp"
 #include "output.hpp"
 #include "svg.hpp"
 
+#include <antkit/buffon/checkpoints.hpp>
 #include <antkit/buffon/estimate.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/geometry/arena_spec.hpp>
@@ -102,7 +103,8 @@ struct Row {
   double area = 0, nbc_median = 0, nbc_q1 = 0, nbc_q3 = 0, closed_form_median = 0, blocked = 0;
 };
 
-void write_plot(const std::filesystem::path& path, int figure, const std::vector<Row>& rows) {
+void write_plot(const std::filesystem::path& path, const std::string& title,
+                const std::vector<Row>& rows) {
   double xmin = 1e300, xmax = -1e300, ymax = 0;
   for (const auto& r : rows) {
     xmin = std::min(xmin, r.p.x);
@@ -122,14 +124,15 @@ void write_plot(const std::filesystem::path& path, int figure, const std::vector
     svg.text(-11, Y(ymax * k / 4), num(std::round(ymax * k / 4 * 1000) / 1000), 10);
     svg.text(X(xmin + (xmax - xmin) * k / 4) - 2, -4, num(xmin + (xmax - xmin) * k / 4), 10);
   }
-  svg.text(30, H + 3, "Figure " + std::to_string(figure) + ": median nBC, IQR bars", 14);
-  const char* colours[] = {"#1e5bd8", "#d81e1e", "#1b9e3a", "#e08a00", "#7b3fb5"};
+  svg.text(20, H + 3, title, 14);
+  const char* colours[] = {"#1e5bd8", "#d81e1e", "#1b9e3a", "#e08a00",
+                           "#7b3fb5", "#00a0a0", "#a0a000", "#606060"};
   std::vector<std::string> series;
   for (const auto& r : rows)
     if (std::find(series.begin(), series.end(), r.p.series) == series.end())
       series.push_back(r.p.series);
   for (std::size_t s = 0; s < series.size(); ++s) {
-    const std::string colour = colours[s % 5];
+    const std::string colour = colours[s % 8];
     std::vector<std::pair<double, double>> line;
     for (const auto& r : rows) {
       if (r.p.series != series[s]) continue;
@@ -145,11 +148,84 @@ void write_plot(const std::filesystem::path& path, int figure, const std::vector
   svg.save(path);
 }
 
+// Figure 14 (Section 8.1): calibrated Buffon estimates and RS estimates against total trail length
+// for the circles of diameter 40, 60, 80, 100, calibrated on 30, 50, 70, 90. Checkpoints every 168
+// units of each visit (total 336 k, k = 1..10). The fit uses the calibration arenas' median nBC at
+// the same checkpoint; each trial of a test arena then gives one estimate. CSV columns: diameter,
+// total_length, area, buffon_median/q1/q3, rs_median/q1/q3, fit_a, fit_b, fit_c. The SVG shows
+// estimate / true area (1 is exact): Buffon and RS medians with IQR bars.
+void run_figure14(const ExperimentCommand& c) {
+  constexpr int K = 10;
+  const std::int64_t step_raw = std::int64_t{168} * 65536;
+  struct Arena {
+    double d, area;
+    std::vector<std::vector<double>> nbc, rs; // [k][trial]
+  };
+  std::vector<Arena> arenas;
+  for (int d = 30; d <= 100; d += 10) {
+    const auto arena = geometry::build_arena_spec("circle:d=" + std::to_string(d), "figure").arena;
+    const buffon::World world(arena.walls_fx());
+    buffon::TrialParams params;
+    params.seed = c.seed;
+    params.experiment = 4000 + 100 * 14 + static_cast<std::uint64_t>(d);
+    params.steps = c.steps;
+    std::vector<buffon::CheckpointResult> results(static_cast<std::size_t>(c.trials));
+    buffon::parallel_for(results.size(), static_cast<unsigned>(c.threads), [&](std::uint64_t t) {
+      results[t] = buffon::run_checkpoints(world, params, t, step_raw, K);
+    });
+    Arena a{static_cast<double>(d), arena.area(), std::vector<std::vector<double>>(K),
+            std::vector<std::vector<double>>(K)};
+    for (const auto& r : results)
+      for (std::size_t k = 0; k < K; ++k) {
+        const double l2 = static_cast<double>(r.length2_raw[k]) / 65536.0;
+        a.nbc[k].push_back(l2 > 0 ? static_cast<double>(r.bc[k]) / l2 : 0.0);
+        const double cell = static_cast<double>(r.rs_cell_raw) / 65536.0;
+        a.rs[k].push_back(static_cast<double>(r.rs_cells[k]) * cell * cell);
+      }
+    arenas.push_back(std::move(a));
+    std::cerr << "figure 14: circle d=" << d << " done\n";
+  }
+  std::ostringstream csv;
+  csv << "diameter,total_length,area,buffon_median,buffon_q1,buffon_q3,rs_median,rs_q1,rs_q3,"
+         "fit_a,fit_b,fit_c\n";
+  std::vector<Row> plot;
+  for (std::size_t k = 0; k < K; ++k) {
+    std::vector<double> xs, ys;
+    for (const auto& a : arenas)
+      if (static_cast<int>(a.d) % 20 == 10) {
+        xs.push_back(buffon::quantile(a.nbc[k], 0.5));
+        ys.push_back(a.area);
+      }
+    const auto fit = buffon::fit_power_law(xs, ys);
+    const double total = 2.0 * 168.0 * static_cast<double>(k + 1);
+    for (const auto& a : arenas) {
+      if (static_cast<int>(a.d) % 20 != 0) continue;
+      std::vector<double> est;
+      for (double x : a.nbc[k]) est.push_back(x > 0 ? fit(x) : 0.0);
+      const double bm = buffon::quantile(est, 0.5), b1 = buffon::quantile(est, 0.25),
+                   b3 = buffon::quantile(est, 0.75);
+      const double rm = buffon::quantile(a.rs[k], 0.5), r1 = buffon::quantile(a.rs[k], 0.25),
+                   r3 = buffon::quantile(a.rs[k], 0.75);
+      csv << num(a.d) << ',' << num(total) << ',' << num(a.area) << ',' << num(bm) << ',' << num(b1)
+          << ',' << num(b3) << ',' << num(rm) << ',' << num(r1) << ',' << num(r3) << ','
+          << num(fit.a) << ',' << num(fit.b) << ',' << num(fit.c) << '\n';
+      const std::string d = num(a.d);
+      plot.push_back(Row{Point{"buffon d=" + d, total, "", 0.1}, a.area, bm / a.area, b1 / a.area,
+                         b3 / a.area, 0, 0});
+      plot.push_back(Row{Point{"rs d=" + d, total, "", 0.1}, a.area, rm / a.area, r1 / a.area,
+                         r3 / a.area, 0, 0});
+    }
+  }
+  const std::filesystem::path dir(c.out);
+  geometry::write_file_atomic(dir / "figure14.csv", csv.str());
+  write_plot(dir / "figure14.svg", "Figure 14: estimate / area against total trail length", plot);
+  std::cout << (dir / "figure14.csv").string() << '\n' << (dir / "figure14.svg").string() << '\n';
+}
+
 void run(const ExperimentCommand& c) {
-  if (c.figure == 14)
-    throw InputError("--figure", "figure 14 (RS and calibrated estimates) is not implemented yet");
   const auto points = figure_points(c.figure);
-  if (points.empty()) throw InputError("--figure", "the figure must be 5, 6, 7, 8 or 9");
+  if (points.empty() && c.figure != 14)
+    throw InputError("--figure", "the figure must be 5, 6, 7, 8, 9 or 14");
   if (c.trials < 1 || c.trials > 100000)
     throw InputError("--trials", "the number of trials must be in [1, 100000]");
   if (c.steps < 1 || c.steps > 10000000)
@@ -158,6 +234,7 @@ void run(const ExperimentCommand& c) {
     throw InputError("--threads", "the number of threads must be in [1, 256]");
   if (c.out.empty()) throw InputError("--out", "give an output directory");
   std::filesystem::create_directories(c.out);
+  if (c.figure == 14) return run_figure14(c);
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<Row> rows;
@@ -201,7 +278,8 @@ void run(const ExperimentCommand& c) {
   const std::filesystem::path dir(c.out);
   const std::string stem = "figure" + std::to_string(c.figure);
   geometry::write_file_atomic(dir / (stem + ".csv"), csv.str());
-  write_plot(dir / (stem + ".svg"), c.figure, rows);
+  write_plot(dir / (stem + ".svg"), "Figure " + std::to_string(c.figure) + ": median nBC, IQR bars",
+             rows);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cerr << "figure " << c.figure << ": " << rows.size() << " arenas x " << c.trials
@@ -211,10 +289,9 @@ void run(const ExperimentCommand& c) {
 
 void register_buffon_experiment(CLI::App& app) {
   auto options = std::make_shared<ExperimentCommand>();
-  auto* sub = app.add_subcommand("buffon-experiment",
-                                 "Paper 000's Figures 5-9 (nBC against size, shape, barriers, "
-                                 "trail width) as CSV and SVG");
-  sub->add_option("--figure", options->figure, "5, 6, 7, 8 or 9")->required();
+  auto* sub =
+      app.add_subcommand("buffon-experiment", "Paper 000's Figures 5-9 and 14 as CSV and SVG");
+  sub->add_option("--figure", options->figure, "5, 6, 7, 8, 9 or 14")->required();
   sub->add_option("--out", options->out, "Output directory")->required();
   sub->add_option("--trials", options->trials, "Trials per arena (default 100)");
   sub->add_option("--steps", options->steps, "Steps per visit (default 50000)");

@@ -1,0 +1,36 @@
+#pragma once
+// Section 8.1 of paper 000: Buffon counts at growing trail lengths, and the Randomized Search (RS)
+// area-coverage baseline, for Figure 14.
+//
+// Buffon at checkpoints: one pair of visits serves every checkpoint k = 1..K of trail length
+// k * step per visit. Each raster cell remembers the first checkpoint whose prefix of visit 1
+// marked it (one byte), so visit 2 runs once with K detectors; detector k sees cell c as marked
+// iff first_checkpoint(c) <= k and counts only while visit 2's length is within k * step.
+// Total trail length at checkpoint k is 2 k * step (both visits).
+//
+// RS (Section 8.1: "the robot can sense and mark the whole region underneath its body ... mark
+// only the unmarked areas ... the amount of marker used is the area estimate"): the same
+// behaviour (visit 3 of the trial's streams) runs for the total length of both visits; every step
+// marks the raster cells (side 0.1, a choice: 1/10 of the body) whose centre lies under the body
+// (within 0.5 of the centre); the estimate at checkpoint k is the marked cell count times the
+// cell's area after a trail of length 2 k * step.
+#include <antkit/buffon/measurement.hpp>
+#include <cstdint>
+#include <vector>
+
+namespace antkit::buffon {
+
+struct CheckpointResult {
+  std::vector<std::uint64_t> bc;         // per checkpoint
+  std::vector<std::int64_t> length2_raw; // visit 2's length at each checkpoint (raw Q15.16)
+  std::vector<std::uint64_t> rs_cells;   // RS: marked cells at each total length 2 k * step
+  std::int64_t rs_cell_raw = 0;          // RS cell side, raw Q15.16
+};
+
+// `step_raw` is the checkpoint spacing per visit (raw Q15.16; 168 units in the paper), `count` the
+// number of checkpoints (at most 250). Visits run until their length reaches count * step_raw
+// or 1.3 times the steps that takes at the default mean step, whichever is first.
+CheckpointResult run_checkpoints(const World& world, const TrialParams& params, std::uint64_t trial,
+                                 std::int64_t step_raw, int count);
+
+} // namespace antkit::buffon
