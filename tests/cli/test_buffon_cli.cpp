@@ -2,6 +2,8 @@
 #include "run_antkit.hpp"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 using antkit::test::run_antkit;
@@ -47,4 +49,25 @@ TEST_CASE("antkit buffon rejects bad arenas and parameters with exit 2") {
     CHECK(r.err.rfind("antkit: error: ", 0) == 0);
     CHECK(r.out.empty());
   }
+}
+
+TEST_CASE("antkit buffon-experiment writes the figure's CSV and SVG") {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("antkit-buffon-exp-" + std::to_string(::getpid()));
+  const auto r =
+      run_antkit("buffon-experiment --figure 8 --trials 2 --steps 1500 --out " + dir.string());
+  REQUIRE(r.status == 0);
+  std::ifstream csv(dir / "figure8.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  CHECK(header.rfind("series,x,arena,width,area,trials,nbc_median,nbc_q1,nbc_q3", 0) == 0);
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  CHECK(rows == 4); // standard, ring, plus, obstacles
+  CHECK(std::filesystem::file_size(dir / "figure8.svg") > 100);
+  std::filesystem::remove_all(dir);
+
+  const auto bad = run_antkit("buffon-experiment --figure 3 --out " + dir.string());
+  CHECK(bad.status == 2);
+  CHECK(bad.err.rfind("antkit: error: ", 0) == 0);
 }
