@@ -17,7 +17,7 @@ void BM_ParseMovingAI(benchmark::State& state) {
   if (!std::filesystem::exists(path)) return state.SkipWithError("../shared/maps is missing");
   const auto text = antkit::maps::read_map_file(path);
   for (auto _ : state) benchmark::DoNotOptimize(antkit::maps::parse_movingai(text, "brc202d"));
-  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(text.size()));
 }
 BENCHMARK(BM_ParseMovingAI)->Unit(benchmark::kMillisecond);
 
@@ -43,7 +43,7 @@ void BM_FreeComponents(benchmark::State& state) {
   if (!std::filesystem::exists(path)) return state.SkipWithError("../shared/maps is missing");
   const auto map = antkit::maps::load_map(path);
   for (auto _ : state) benchmark::DoNotOptimize(antkit::maps::free_components(map.cells));
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * map.cells.size()));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(map.cells.size()));
 }
 // 0: brc202d (one component of 43151 cells), 1: willow (187 components, 109207 free cells).
 BENCHMARK(BM_FreeComponents)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);

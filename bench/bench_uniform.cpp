@@ -21,7 +21,9 @@ void BM_UniformRun(benchmark::State& state) {
   for (auto _ : state) {
     const auto map = random_obstacles(side, side, 200'000, 1, 0);
     CoverageWorld world(map, place_robots(map, robots, std::nullopt, 1, 0), 5);
-    const auto r = run_coverage(world, algo, 1, 0, std::uint64_t{100} * side * side);
+    const auto r = run_coverage(world, algo, 1, 0,
+                                std::uint64_t{100} * static_cast<std::uint64_t>(side) *
+                                    static_cast<std::uint64_t>(side));
     ticks = r.movements;
     viewable = r.viewable;
     viewed = r.viewed;

@@ -107,8 +107,8 @@ TEST_CASE("the exact count is the pair loop over the two trails", "[property]") 
       for (std::size_t j = 0; j + 1 < r.trail2.size(); ++j)
         pairs += antkit::kernel::properly_cross({r.trail1[i], r.trail1[i + 1]},
                                                 {r.trail2[j], r.trail2[j + 1]})
-                     ? 1
-                     : 0;
+                     ? 1u
+                     : 0u;
     RC_ASSERT(r.crossings_exact == pairs);
   });
 }
@@ -141,8 +141,9 @@ TEST_CASE("closed-form estimate on a circle lies in the stated band", "[slow]") 
   buffon::TrialParams p;
   std::vector<double> estimates;
   for (const auto& r : buffon::run_trials(w, p, 8, 2)) {
-    const auto cf = buffon::closed_form_area(r.length1_raw / 65536.0, r.length2_raw / 65536.0,
-                                             r.crossings_exact);
+    const auto cf =
+        buffon::closed_form_area(static_cast<double>(r.length1_raw) / 65536.0,
+                                 static_cast<double>(r.length2_raw) / 65536.0, r.crossings_exact);
     REQUIRE(cf.area.has_value());
     CHECK(cf.lower <= *cf.area);
     estimates.push_back(*cf.area);
@@ -169,14 +170,14 @@ TEST_CASE("a visit spreads over the arena: neither bands nor wall-hugging") {
   std::size_t reachable = 0, entered = 0;
   for (long i = -15; i < 15; ++i)
     for (long j = -15; j < 15; ++j)
-      if (std::hypot(i + 0.5, j + 0.5) < 14) {
+      if (std::hypot(static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5) < 14) {
         ++reachable;
         entered += seen.count({i, j});
       }
   CHECK(static_cast<double>(entered) >= 0.9 * static_cast<double>(reachable));
   CHECK(near_wall * 2 < log.trail.size());
   // Trail length near the paper's mean (1680 for 50 000 steps).
-  CHECK(std::abs(log.length_raw / 65536.0 - 1680) < 50);
+  CHECK(std::abs(static_cast<double>(log.length_raw) / 65536.0 - 1680) < 50);
 }
 
 TEST_CASE("crossing detector: leaky integrator with hysteresis") {

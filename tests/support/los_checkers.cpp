@@ -51,7 +51,7 @@ std::string check_frontier_set(const frontier::FrontierMap& map) {
         return "cell " + at(c) +
                (map.is_frontier(c) ? " is in the frontier set but is not one"
                                    : " is a frontier but not in the set");
-      count += map.is_frontier(c) ? 1 : 0;
+      count += map.is_frontier(c) ? 1u : 0u;
     }
   if (count != map.frontier_count()) return "the frontier count does not match the cells";
   auto list = map.frontiers();

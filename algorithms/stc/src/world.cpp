@@ -297,7 +297,7 @@ RunResult run_stc(StcWorld& world, const kernel::OccupancyGrid& map, SubCell sta
   check_start(map, start, variant);
   const bool marker = variant == Variant::Ant || variant == Variant::AntEdge;
   world.reset(map, start, marker ? options.noise : NoiseModel{},
-              variant == Variant::AntEdge ? Marker::Edge : Marker::SubCell);
+              variant == Variant::AntEdge ? Marker::Edge : Marker::WholeSubCell);
   RunResult r;
   r.variant = variant;
   r.reachable_subcells = world.reachable_subcells(is_exact(variant));

@@ -49,19 +49,19 @@ struct NoiseModel {
 
 // What the robot leaves when a command says `mark`: a mark on the sub-cell it leaves (`ant`), or
 // the lit edge behind it (`ant-edge`, the paper's real robot).
-enum class Marker : std::uint8_t { SubCell, Edge };
+enum class Marker : std::uint8_t { WholeSubCell, Edge };
 
 class StcWorld {
 public:
   StcWorld() = default;
   StcWorld(const kernel::OccupancyGrid& map, SubCell start, NoiseModel noise = {},
-           Marker marker = Marker::SubCell) {
+           Marker marker = Marker::WholeSubCell) {
     reset(map, start, noise, marker);
   }
   // Starts over on a map (reusing the buffers: the exhaustive tests run millions of tours).
   // The start must be a free sub-cell inside the cell area (the runners check).
   void reset(const kernel::OccupancyGrid& map, SubCell start, NoiseModel noise = {},
-             Marker marker = Marker::SubCell);
+             Marker marker = Marker::WholeSubCell);
 
   [[nodiscard]] CellObservation observe_cells() const noexcept;
   [[nodiscard]] MarkObservation observe_marks() noexcept;
@@ -106,7 +106,7 @@ private:
   CellGridShape shape_{};
   std::size_t stride_ = 2;
   std::array<std::size_t, 4> offset_{}; // cell index steps E, N, W, S
-  Marker marker_ = Marker::SubCell;
+  Marker marker_ = Marker::WholeSubCell;
   std::vector<std::uint8_t> free_;      // per sub-cell, inside the cell area only
   std::vector<std::uint8_t> cell_free_; // per cell, 0 on the border
   // The floor, per cell (so that one observation reads five bytes, not twenty): bit q of marks_
