@@ -34,7 +34,8 @@ TEST_CASE("checkpoints: RS marks grow with the trail and stay within the arena")
     }
     CHECK(static_cast<double>(r.rs_cells[k]) * cell * cell <= arena.area());
     // Visit 2's length at checkpoint k is within one step of (k + 1) * 50.
-    CHECK(static_cast<double>(r.length2_raw[k]) / 65536.0 == Approx(50.0 * (k + 1)).margin(0.05));
+    CHECK(static_cast<double>(r.length2_raw[k]) / 65536.0 ==
+          Approx(50.0 * static_cast<double>(k + 1)).margin(0.05));
   }
   // After 600 units of RS trail in a 314 unit^2 arena most of the reachable area is marked.
   CHECK(static_cast<double>(r.rs_cells[5]) * cell * cell > 0.5 * arena.area());
