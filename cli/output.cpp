@@ -8,9 +8,13 @@
 namespace antkit::cli {
 
 void add_format_option(CLI::App& sub, Format& format) {
-  const std::map<std::string, Format> names{{"table", Format::Table}, {"json", Format::Json}};
-  sub.add_option("--format", format, "Output: table (for people, the default) or json")
-      ->transform(CLI::CheckedTransformer(names, CLI::ignore_case))
+  sub.add_option_function<std::string>(
+         "--format",
+         [&format](const std::string& name) {
+           format = name == "json" ? Format::Json : Format::Table;
+         },
+         "Output: table (for people, the default) or json")
+      ->check(CLI::IsMember({"table", "json"}))
       ->default_str("table");
 }
 
