@@ -22,6 +22,19 @@
 
 namespace antkit::proofs {
 
+// Runs `body` once per path through the branches it takes on symbolic values (Session::decide),
+// depth-first; returns how many paths were run. Claims made inside are checked under the path's
+// condition.
+template <class Body>
+int for_each_path(Session& s, Body&& body) {
+  int paths = 0;
+  for (bool first = true; s.next_path(first); first = false) {
+    body();
+    ++paths;
+  }
+  return paths;
+}
+
 class Prover {
 public:
   explicit Prover(Session& s) : s_(s), domain_(s.ctx().bool_val(true)) {}
@@ -42,6 +55,14 @@ public:
     return ok;
   }
 
+  // A claim over Z3's mathematical integers (no bit-vectors), for the default solver.
+  bool claim_over_integers(const std::string& name, const z3::expr& c) {
+    integers_ = true;
+    const bool ok = claim(name, c);
+    integers_ = false;
+    return ok;
+  }
+
   // The obligations alone (for a function whose only claim is that it is free of UB).
   bool no_undefined_behaviour(const std::string& name) {
     return claim(name, s_.ctx().bool_val(true));
@@ -56,8 +77,12 @@ public:
 private:
   bool check(const std::string& name, const z3::expr& c) {
     const auto t0 = std::chrono::steady_clock::now();
-    z3::solver solver(s_.ctx());
+    // Bit-vector claims go to Z3's QF_BV solver (simplify, then bit-blast to SAT), which is much
+    // faster on them than the default portfolio; claims over mathematical integers (a few
+    // nonlinear lemmas) to the default solver.
+    z3::solver solver = integers_ ? z3::solver(s_.ctx()) : z3::solver(s_.ctx(), "QF_BV");
     solver.add(domain_);
+    for (const auto& c : s_.path()) solver.add(c);
     for (const auto& f : s_.facts()) solver.add(f);
     solver.add(!c);
     const z3::check_result r = solver.check();
@@ -94,6 +119,7 @@ private:
 
   Session& s_;
   z3::expr domain_;
+  bool integers_ = false;
   int proved_ = 0;
   int failures_ = 0;
 };

@@ -24,6 +24,7 @@
 //
 // Not modelled: C++'s promotion of types narrower than int (a uint16_t * uint16_t is an int
 // multiplication). The kernel computes in 32- and 64-bit types; I8..U16 here are plain N-bit words.
+#include <cstddef>
 #include <cstdint>
 #include <iostream>
 #include <map>
@@ -60,14 +61,53 @@ public:
     z3::expr holds;
   };
   void oblige(std::string what, const z3::expr& holds) {
-    obligations_.push_back({std::move(what), holds});
+    if (suspended_ == 0) obligations_.push_back({std::move(what), holds});
   }
+  // While one of these lives, operations record no obligations: for a claim's own arithmetic (the
+  // specification, not the code), whose range its author states beside it.
+  class Specification {
+  public:
+    Specification() { ++Session::current().suspended_; }
+    ~Specification() { --Session::current().suspended_; }
+    Specification(const Specification&) = delete;
+    Specification& operator=(const Specification&) = delete;
+  };
   const std::vector<Obligation>& obligations() const { return obligations_; }
 
   // Facts: theorems of the operations' semantics, stated beside an abstracted result (see unsigned
   // / and % below). Every check assumes them; they must be TRUE of the operation they describe.
   void fact(const z3::expr& f) { facts_.push_back(f); }
   const std::vector<z3::expr>& facts() const { return facts_; }
+  // Branching on a symbolic truth value (`if (e < 0)` in a kernel template) forks the run: the
+  // driver for_each_path (prove.hpp) re-runs the code once per combination of branch outcomes, and
+  // each decision taken is added to the path condition under which that run's claims are checked.
+  // A path that cannot happen makes its path condition unsatisfiable, so its claims hold vacuously.
+  bool decide(const z3::expr& c) {
+    bool taken = true;
+    if (decision_ < script_.size())
+      taken = script_[decision_];
+    else
+      script_.push_back(true);
+    ++decision_;
+    path_.push_back(taken ? c : !c);
+    return taken;
+  }
+  const std::vector<z3::expr>& path() const { return path_; }
+  // Starts a run; returns false when every path has been run.
+  bool next_path(bool first) {
+    path_.clear();
+    if (!first) {
+      // The next script: the last `true` decision of the previous run turns `false`, later ones
+      // are forgotten (depth-first, true before false).
+      script_.resize(decision_);
+      while (!script_.empty() && !script_.back()) script_.pop_back();
+      if (script_.empty()) return false;
+      script_.back() = false;
+    }
+    decision_ = 0;
+    return true;
+  }
+
   std::string fresh(const char* stem) { return std::string(stem) + "!" + std::to_string(fresh_++); }
 
   // One abstraction per (dividend, divisor) term, so that the code's a % b and a specification's
@@ -82,6 +122,10 @@ private:
   z3::context ctx_;
   std::vector<Obligation> obligations_;
   std::vector<z3::expr> facts_;
+  int suspended_ = 0;
+  std::vector<bool> script_;
+  std::size_t decision_ = 0;
+  std::vector<z3::expr> path_;
   std::map<std::pair<unsigned, unsigned>, std::pair<z3::expr, z3::expr>> divisions_;
   int fresh_ = 0;
 };
@@ -100,6 +144,8 @@ public:
     return Bool(Session::current().ctx().bool_const(name.c_str()));
   }
   const z3::expr& expr() const { return e_; }
+  // `if (c)` on a symbolic c: forks the run (Session::decide).
+  explicit operator bool() const { return Session::current().decide(e_); }
   friend Bool operator&&(const Bool& a, const Bool& b) { return Bool(a.e_ && b.e_); }
   friend Bool operator||(const Bool& a, const Bool& b) { return Bool(a.e_ || b.e_); }
   friend Bool operator==(const Bool& a, const Bool& b) { return Bool(a.e_ == b.e_); }
