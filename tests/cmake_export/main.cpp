@@ -1,8 +1,11 @@
 // Uses each installed layer once and checks an answer, so that a broken package fails here.
 #include <antkit/algorithms/controller.hpp>
+#include <antkit/geometry/arena.hpp>
 #include <antkit/kernel/grid.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/random.hpp>
+#include <antkit/kernel/raster.hpp>
+#include <cmath>
 #include <cstdio>
 
 int main() {
@@ -12,8 +15,17 @@ int main() {
   const auto draw = stream.below(10);
   antkit::kernel::TraceHash hash;
   hash.add_u32(draw).add_u8(grid[{1, 2}]);
-  const bool ok = grid.size() == 12 && draw < 10 && antkit::algorithms::version_number() >= 100;
-  std::printf("consumer: grid %zu cells, draw %u, hash %s: %s\n", grid.size(), draw,
-              antkit::kernel::hash_hex(hash.finish()).c_str(), ok ? "ok" : "FAILED");
+  // The supercover of a 3-cell horizontal segment is those 3 cells.
+  const auto cells = antkit::kernel::supercover({0, 0}, {2, 0});
+  // The geometry layer (CGAL behind it): the standard arena has the area of the circle of diameter
+  // 100.
+  const auto arena = antkit::geometry::make_circle(100.0);
+  const bool ok = grid.size() == 12 && draw < 10 && cells.size() == 3 &&
+                  std::abs(arena.area() - antkit::geometry::standard_area()) < 1e-2 &&
+                  antkit::algorithms::version_number() >= 100;
+  std::printf(
+      "consumer: grid %zu cells, draw %u, supercover %zu cells, arena area %.4f, hash %s: %s\n",
+      grid.size(), draw, cells.size(), arena.area(),
+      antkit::kernel::hash_hex(hash.finish()).c_str(), ok ? "ok" : "FAILED");
   return ok ? 0 : 1;
 }
