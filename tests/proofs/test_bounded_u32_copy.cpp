@@ -49,8 +49,8 @@ TEST_CASE("the copy equals the shipped function on every edge word for chosen bo
   for (const std::uint32_t n : bounds) {
     std::uint64_t mismatches = 0;
     for (std::uint32_t x = 0; x < (1u << 20); ++x) {
-      mismatches += agree(x, n) ? 0 : 1;
-      mismatches += agree(0xFFFFFFFFu - x, n) ? 0 : 1;
+      mismatches += agree(x, n) ? 0u : 1u;
+      mismatches += agree(0xFFFFFFFFu - x, n) ? 0u : 1u;
     }
     INFO("n = " << n);
     CHECK(mismatches == 0);
