@@ -1,5 +1,6 @@
 #include <antkit/uniform/controllers.hpp>
 #include <antkit/uniform/coverage.hpp>
+#include <antkit/uniform/frontier_coverage.hpp>
 
 namespace antkit::uniform {
 
@@ -13,13 +14,15 @@ std::string_view algorithm_name(Algorithm a) noexcept {
     return "astar";
   case Algorithm::CoordinatedAStar:
     return "astar-coord";
+  case Algorithm::Frontier:
+    return "frontier";
   }
   return "?";
 }
 
 std::optional<Algorithm> parse_algorithm(std::string_view name) noexcept {
   for (const Algorithm a : {Algorithm::RandomWanderer, Algorithm::PrimaryMovement, Algorithm::AStar,
-                            Algorithm::CoordinatedAStar})
+                            Algorithm::CoordinatedAStar, Algorithm::Frontier})
     if (algorithm_name(a) == name) return a;
   return std::nullopt;
 }
@@ -111,6 +114,10 @@ CoverageResult run_coverage(CoverageWorld& world, Algorithm algorithm, std::uint
   case Algorithm::AStar:
   case Algorithm::CoordinatedAStar: {
     AStarCoverage team(seed, trial, world.robot_count(), algorithm == Algorithm::CoordinatedAStar);
+    return run_team(world, team, algorithm, limit);
+  }
+  case Algorithm::Frontier: {
+    FrontierCoverage team(seed, trial, world);
     return run_team(world, team, algorithm, limit);
   }
   }

@@ -9,8 +9,8 @@
 //   * TimeLimit: `limit` ticks have run.
 // Metrics (issue 6): `movements` is the number of ticks (the paper's "movements", time in the
 // environment); `moves` is the total over robots of actions carried out: rotations and forward
-// moves for RW and PM (a rotation counts as a move), steps for A*; a blocked forward or a wait is
-// not a move.
+// moves for RW and PM (a rotation counts as a move), steps for A* and frontier; a blocked forward
+// or a wait is not a move.
 //
 // Trace hash: TraceHash(0) over the algorithm's number, the robot count, then the world's
 // canonical state (CoverageWorld::hash_state) before the first tick and after every tick.
@@ -26,9 +26,10 @@ enum class Algorithm : std::uint8_t {
   PrimaryMovement = 1,
   AStar = 2,
   CoordinatedAStar = 3,
+  Frontier = 4, // frontier_coverage.hpp: beyond the paper, after Sheng et al. (paper 001)
 };
 
-// "rw", "pm", "astar", "astar-coord".
+// "rw", "pm", "astar", "astar-coord", "frontier".
 [[nodiscard]] std::string_view algorithm_name(Algorithm a) noexcept;
 [[nodiscard]] std::optional<Algorithm> parse_algorithm(std::string_view name) noexcept;
 

@@ -35,7 +35,7 @@ enum class StreamPurpose : std::uint64_t {
   Obstacles = 1,      // obstacle placement (robot word 0)
   Starts = 2,         // start cells and bearings (robot word 0)
   RandomWanderer = 3, // the random wanderer's 0/1/2 draws (robot word = robot index)
-  Unstick = 4,        // A*'s way out of a standoff between robots (robot word = robot index)
+  Unstick = 4,        // A*'s and frontier's way out of a standoff (robot word = robot index)
 };
 
 inline constexpr std::uint32_t kPpm = 1'000'000; // density 1.0 in parts per million
