@@ -1,5 +1,6 @@
 // `antkit cover`: uniform coverage by paper 004's algorithms (issue 6).
-//   antkit cover (--map FILE | --size WxH --density P) [--seed S] --algo rw|pm|astar|astar-coord
+//   antkit cover (--map FILE | --size WxH --density P) [--seed S]
+//                --algo rw|pm|astar|astar-coord|frontier
 //                [--robots N] [--sensor R] [--limit T] [--trial K] [--format table|json]
 //                [--svg FILE]
 // Prints {"algo", "robots", "coverage", "viewed", "viewable", "movements", "moves", "hash", ...}.
@@ -76,8 +77,8 @@ void write_svg(const std::string& path, const uniform::CoverageWorld& world) {
 nlohmann::json run_cover(const CoverOptions& o) {
   const auto algo = uniform::parse_algorithm(o.algo);
   if (!algo)
-    throw InputError("--algo",
-                     "unknown algorithm '" + o.algo + "'; expected rw, pm, astar or astar-coord");
+    throw InputError("--algo", "unknown algorithm '" + o.algo +
+                                   "'; expected rw, pm, astar, astar-coord or frontier");
   if (o.map.empty() == o.size.empty())
     throw InputError("", "give either --map FILE or --size WxH --density P");
   if (!o.map.empty() && !o.density.empty())
@@ -142,7 +143,8 @@ void register_cover(CLI::App& app) {
   auto o = std::make_shared<CoverOptions>();
   auto* sub = app.add_subcommand(
       "cover", "Uniform coverage (paper 004): random wanderer, primary movement, A* with spiral "
-               "search, or coordinated A*, by 1-N robots on a shared map");
+               "search, coordinated A*, or frontier (Sheng et al.'s utility), by 1-N robots on a "
+               "shared map");
   sub->add_option("--map", o->map, "A map file (.map, .yaml, .txt or .ascii)");
   sub->add_option("--size", o->size, "A generated W x H grid, e.g. 100x100");
   sub->add_option("--density", o->density,
@@ -150,7 +152,7 @@ void register_cover(CLI::App& app) {
                   "blocked cells)");
   sub->add_option("--seed", o->seed, "Seed of the keyed random streams (default 1)");
   sub->add_option("--trial", o->trial, "Trial number of the keyed random streams (default 0)");
-  sub->add_option("--algo", o->algo, "rw, pm, astar or astar-coord")->required();
+  sub->add_option("--algo", o->algo, "rw, pm, astar, astar-coord or frontier")->required();
   sub->add_option("--robots", o->robots, "Number of robots (default 1)");
   sub->add_option("--sensor", o->sensor, "Sensor distance in cells (default 5)");
   sub->add_option("--limit", o->limit, "Time limit in ticks (default 10 * W * H)");

@@ -112,6 +112,26 @@ TEST_CASE("antkit cover: bad input exits 2 with one clear message and no output"
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("antkit cover --algo frontier views everything, reproducibly; sensor 0 is refused",
+          "[cli][uniform]") {
+  const std::string args = "cover --size 40x30 --density 0.2 --seed 7 --algo frontier --robots 3 "
+                           "--sensor 4 --format json";
+  const auto r = run_antkit(args);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["algo"] == "frontier");
+  CHECK(j["robots"] == 3);
+  CHECK(j["viewed"] == j["viewable"]);
+  CHECK(j["stop"] == "complete");
+  CHECK(j["moves"].get<std::uint64_t>() <= 3 * j["movements"].get<std::uint64_t>());
+  const auto again = run_antkit(args);
+  CHECK(nlohmann::json::parse(again.out)["hash"] == j["hash"]);
+  const auto zero = run_antkit("cover --size 10x10 --density 0.1 --algo frontier --sensor 0");
+  CHECK(zero.status == 2);
+  CHECK(zero.err.find("--sensor") != std::string::npos);
+  CHECK(zero.out.empty());
+}
+
 TEST_CASE("antkit cover-experiment (smoke): writes the tables beside the paper's",
           "[cli][uniform]") {
   const auto dir = scratch_dir("tables");
@@ -126,9 +146,11 @@ TEST_CASE("antkit cover-experiment (smoke): writes the tables beside the paper's
   std::size_t count = 0, astar_rows = 0;
   while (std::getline(lines, line)) {
     ++count;
-    // A* and coordinated A* complete every run: complete_runs (column 8) == runs (column 5).
+    // A*, coordinated A* and frontier complete every run: complete_runs (column 8) == runs (column
+    // 5).
     if (line.find(",astar,") != std::string::npos ||
-        line.find(",astar-coord,") != std::string::npos) {
+        line.find(",astar-coord,") != std::string::npos ||
+        line.find(",frontier,") != std::string::npos) {
       ++astar_rows;
       std::vector<std::string> cols;
       std::istringstream fields(line);
@@ -138,10 +160,11 @@ TEST_CASE("antkit cover-experiment (smoke): writes the tables beside the paper's
       CHECK(cols[7] == "2");
     }
   }
-  CHECK(count == 1 + 16 * 4);
-  CHECK(astar_rows == 32);
+  CHECK(count == 1 + 16 * 5);
+  CHECK(astar_rows == 48);
   const auto md = slurp(dir / "uniform_tables.md");
-  for (const char* title : {"Table 1", "Table 2", "Table 3", "Table 4", "Coordinated A*"})
+  for (const char* title : {"Table 1", "Table 2", "Table 3", "Table 4", "Coordinated A*",
+                            "Frontier against A* and coordinated A*"})
     CHECK(md.find(title) != std::string::npos);
   CHECK(md.find("2757.2") != std::string::npos); // the paper's Table 1, A*, one robot
   // One thread or two: the same numbers.

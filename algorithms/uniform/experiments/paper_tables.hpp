@@ -17,7 +17,8 @@
 //     before). RW never stops by itself, and the paper's RW movement counts match its A* counts
 //     within 1 % in every row of every table, which says the three ran side by side and stopped
 //     together; so RW's limit in run k is the number of ticks A* took in run k.
-//   * Coordinated A* ("go beyond the paper") runs on the same maps and starts.
+//   * Coordinated A* and frontier coverage ("go beyond the paper") run on the same maps and
+//     starts, with the same 10 * W * H limit.
 #include <algorithm>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/uniform/coverage.hpp>
@@ -64,9 +65,10 @@ inline constexpr std::array<PaperRow, 16> kPaperTables{{
     {4, 0, 4, {38.76, 100.0, 100.0}, {562.9, 421.0, 553.0}},
 }};
 
-inline constexpr std::array<Algorithm, 4> kTableAlgorithms{
+inline constexpr std::array<Algorithm, 5> kTableAlgorithms{
     Algorithm::RandomWanderer, Algorithm::PrimaryMovement, Algorithm::AStar,
-    Algorithm::CoordinatedAStar};
+    Algorithm::CoordinatedAStar, Algorithm::Frontier};
+inline constexpr std::size_t kTableColumns = kTableAlgorithms.size();
 
 struct TablesConfig {
   std::int32_t width = 100;
@@ -81,17 +83,17 @@ struct TablesConfig {
 // order).
 struct TablesRow {
   const PaperRow* paper = nullptr;
-  double coverage[4] = {}; // mean %
-  double coverage_min[4] = {};
-  double movements[4] = {};       // mean ticks
-  double moves[4] = {};           // mean total moves
-  std::uint32_t complete[4] = {}; // runs that reached 100 %
-  std::uint64_t hash = 0;         // a digest of every run's trace hash, in run order
+  double coverage[kTableColumns] = {}; // mean %
+  double coverage_min[kTableColumns] = {};
+  double movements[kTableColumns] = {};       // mean ticks
+  double moves[kTableColumns] = {};           // mean total moves
+  std::uint32_t complete[kTableColumns] = {}; // runs that reached 100 %
+  std::uint64_t hash = 0;                     // a digest of every run's trace hash, in run order
 };
 
 namespace detail {
 struct TrialOut {
-  CoverageResult result[4];
+  CoverageResult result[kTableColumns];
 };
 
 inline TrialOut run_trial(const TablesConfig& c, const PaperRow& row, std::uint32_t run) {
@@ -103,7 +105,8 @@ inline TrialOut run_trial(const TablesConfig& c, const PaperRow& row, std::uint3
   const std::uint64_t limit = std::uint64_t{10} * static_cast<std::uint64_t>(c.width) *
                               static_cast<std::uint64_t>(c.height);
   // A* first: its ticks are RW's limit.
-  for (const std::size_t k : {std::size_t{2}, std::size_t{3}, std::size_t{1}, std::size_t{0}}) {
+  for (const std::size_t k :
+       {std::size_t{2}, std::size_t{3}, std::size_t{4}, std::size_t{1}, std::size_t{0}}) {
     CoverageWorld world(map, poses, c.sensor);
     const std::uint64_t lim = k == 0 ? out.result[2].movements : limit;
     out.result[k] = run_coverage(world, kTableAlgorithms[k], c.seed, run, lim);
@@ -141,10 +144,10 @@ inline std::vector<TablesRow> run_tables(const TablesConfig& c) {
     TablesRow row;
     row.paper = &kPaperTables[r];
     kernel::TraceHash digest;
-    for (std::size_t a = 0; a < 4; ++a) row.coverage_min[a] = 100.0;
+    for (std::size_t a = 0; a < kTableColumns; ++a) row.coverage_min[a] = 100.0;
     for (std::size_t run = 0; run < per_row; ++run) {
       const auto& t = trials[r * per_row + run];
-      for (std::size_t a = 0; a < 4; ++a) {
+      for (std::size_t a = 0; a < kTableColumns; ++a) {
         const auto& res = t.result[a];
         const double cov = res.viewable == 0 ? 100.0
                                              : 100.0 * static_cast<double>(res.viewed) /
@@ -157,7 +160,7 @@ inline std::vector<TablesRow> run_tables(const TablesConfig& c) {
         digest.add_u64(res.hash);
       }
     }
-    for (std::size_t a = 0; a < 4; ++a) {
+    for (std::size_t a = 0; a < kTableColumns; ++a) {
       row.coverage[a] /= static_cast<double>(per_row);
       row.movements[a] /= static_cast<double>(per_row);
       row.moves[a] /= static_cast<double>(per_row);
