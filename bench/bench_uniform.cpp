@@ -1,5 +1,6 @@
 // Uniform coverage (paper 004): the scale target (A* with 8 robots to 100 % on a
-// 1024 x 1024 map with 20 % obstacles, under 5 s on one core) and the pieces it is made of.
+// 1024 x 1024 map with 20 % obstacles, under 5 s on one core) and the pieces it is made of;
+// frontier coverage and coordinated A* beside A* on 256 x 256.
 #include <antkit/uniform/controllers.hpp>
 #include <antkit/uniform/coverage.hpp>
 #include <antkit/uniform/planner.hpp>
@@ -38,6 +39,8 @@ BENCHMARK(BM_UniformRun)
     ->Args({1024, 8, static_cast<int>(Algorithm::CoordinatedAStar)})
     ->Args({256, 4, static_cast<int>(Algorithm::AStar)})
     ->Args({256, 4, static_cast<int>(Algorithm::PrimaryMovement)})
+    ->Args({256, 4, static_cast<int>(Algorithm::CoordinatedAStar)})
+    ->Args({256, 4, static_cast<int>(Algorithm::Frontier)})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
