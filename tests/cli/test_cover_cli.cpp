@@ -112,7 +112,7 @@ TEST_CASE("antkit cover: bad input exits 2 with one clear message and no output"
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("antkit cover --algo frontier views everything, reproducibly; sensor 0 is refused",
+TEST_CASE("antkit cover --algo frontier views everything reproducibly and refuses sensor 0",
           "[cli][uniform]") {
   const std::string args = "cover --size 40x30 --density 0.2 --seed 7 --algo frontier --robots 3 "
                            "--sensor 4 --format json";
