@@ -52,9 +52,7 @@ std::int32_t FrontierCoverage::information(const CoverageWorld& world, std::size
   std::int32_t count = 0;
   for (const auto& ray : fp.rays()) {
     const Cell u = candidate + ray.offset;
-    if (!world.map().in_bounds(u) || world.is_viewed(u) || !world.is_viewable(u) ||
-        !world.in_view(candidate, u))
-      continue;
+    if (!world.map().in_bounds(u) || world.is_viewed(u) || !world.is_viewable(u)) continue;
     bool claimed = false;
     if (claims)
       for (std::size_t j = 0; j < robots_.size() && !claimed; ++j) {
@@ -62,7 +60,8 @@ std::int32_t FrontierCoverage::information(const CoverageWorld& world, std::size
         claimed = fp.in_range(u - world.robot(j).cell) ||
                   (robots_[j].target && fp.in_range(u - *robots_[j].target));
       }
-    if (!claimed) ++count;
+    // Line of sight last: it is the dearest test (a scan of the ray's cells).
+    if (!claimed && world.in_view(candidate, u)) ++count;
   }
   return count;
 }
@@ -104,7 +103,9 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
         bool taken = false;
         for (std::size_t j = 0; j < robots_.size(); ++j)
           if (j != i && robots_[j].target == c) taken = true;
-        const std::int32_t info = taken ? 0 : information(world, i, c, claims);
+        // A cell that cannot beat the best even with the largest I is not worth evaluating.
+        const bool hopeless = found && can_stop && w1 * max_info - w2 * depth <= best_g;
+        const std::int32_t info = taken || hopeless ? 0 : information(world, i, c, claims);
         if (info > 0) {
           const std::int64_t g =
               w1 * info - w2 * depth + w3 * frontier::FrontierPlanner::nearness(c, partners);
