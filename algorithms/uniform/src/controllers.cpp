@@ -61,7 +61,7 @@ AStarCoverage::AStarCoverage(std::uint64_t seed, std::uint64_t trial, std::size_
   robots_.reserve(robots);
   for (std::size_t i = 0; i < robots; ++i)
     robots_.push_back(
-        {std::nullopt, {}, 0, 0, robot_stream(seed, trial, i, StreamPurpose::Unstick)});
+        {std::nullopt, {}, 0, 0, robot_stream(seed, trial, i, StreamPurpose::Unstick), {}, 0});
 }
 
 bool AStarCoverage::choose_goal(std::size_t i, const CoverageWorld& world) {
