@@ -2,6 +2,7 @@
 
 #include <antkit/kernel/raster.hpp>
 #include <antkit/uniform/controllers.hpp>
+#include <antkit/uniform/frontier_coverage.hpp>
 #include <sstream>
 #include <vector>
 
@@ -169,6 +170,10 @@ UniformRunCheck check_uniform_run(CoverageWorld& world, Algorithm algorithm, std
   case Algorithm::AStar:
   case Algorithm::CoordinatedAStar: {
     AStarCoverage team(seed, trial, world.robot_count(), algorithm == Algorithm::CoordinatedAStar);
+    return check_team(world, team, algorithm, limit);
+  }
+  case Algorithm::Frontier: {
+    FrontierCoverage team(seed, trial, world);
     return check_team(world, team, algorithm, limit);
   }
   }
