@@ -132,7 +132,8 @@ void check_ring(ExactPolygon& ring, std::size_t index, const std::string& where)
 // CGAL::box_intersection_d over conservative boxes of the edges (interval bounds of the exact
 // coordinates), each pair then decided by the exact do_intersect.
 void check_rings_apart(const std::vector<const ExactPolygon*>& rings, const std::string& where) {
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::pair<std::size_t, std::size_t>>;
+  using Box =
+      CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::pair<std::size_t, std::size_t>>;
   std::vector<Box> boxes;
   using EdgeId = std::pair<std::size_t, std::size_t>;
   for (std::size_t r = 0; r < rings.size(); ++r) {

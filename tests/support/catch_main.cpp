@@ -1,5 +1,5 @@
-// The one Catch2 main of the test suite. Before the tests run it prints the rapidcheck configuration
-// to stderr, so that any failing property in a CI log can be replayed:
+// The one Catch2 main of the test suite. Before the tests run it prints the rapidcheck
+// configuration to stderr, so that any failing property in a CI log can be replayed:
 //   RC_PARAMS="seed=<seed>" ./test_xxx "<test name>"
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
