@@ -115,7 +115,7 @@ public:
   // ignored): see Movement above.
   // Precondition: `from` is on the map.
   [[nodiscard]] bool passable_step(kernel::Cell from, std::uint8_t bearing) const noexcept {
-    return ((exits_[from] >> (bearing & 7u)) & 1u) != 0;
+    return ((static_cast<unsigned>(exits_[from]) >> (bearing & 7u)) & 1u) != 0;
   }
   // passable_step and the target holds no robot.
   [[nodiscard]] bool can_step(kernel::Cell from, std::uint8_t bearing) const noexcept {
