@@ -1,5 +1,8 @@
 // Line of sight on grids: symmetric, and exactly "no blocking cell among those the segment touches
-// other than its two ends", with the touch test an exact oracle written here (not raster.hpp).
+// other than its two ends", with the touch test an exact oracle in tests/support/raster_oracle.hpp
+// (not raster.hpp).
+#include "raster_oracle.hpp"
+
 #include <algorithm>
 #include <antkit/kernel/raster.hpp>
 #include <catch2/catch.hpp>
@@ -12,34 +15,16 @@ using antkit::kernel::Cell;
 using antkit::kernel::line_of_sight;
 using antkit::kernel::Occupancy;
 using antkit::kernel::OccupancyGrid;
+using antkit::test::oracle_touches;
 
 namespace {
-
-// The closed segment between the centres of a and b touches the closed square of c (doubled
-// integer coordinates; separating axes x, y and the segment's normal).
-bool touches(Cell a, Cell b, Cell c) {
-  const std::int64_t px = 2 * std::int64_t{a.x}, py = 2 * std::int64_t{a.y};
-  const std::int64_t qx = 2 * std::int64_t{b.x}, qy = 2 * std::int64_t{b.y};
-  const std::int64_t x0 = 2 * std::int64_t{c.x} - 1, x1 = x0 + 2;
-  const std::int64_t y0 = 2 * std::int64_t{c.y} - 1, y1 = y0 + 2;
-  if (std::max(px, qx) < x0 || std::min(px, qx) > x1) return false;
-  if (std::max(py, qy) < y0 || std::min(py, qy) > y1) return false;
-  int pos = 0, neg = 0;
-  for (std::int64_t x : {x0, x1})
-    for (std::int64_t y : {y0, y1}) {
-      const std::int64_t cross = (qx - px) * (y - py) - (qy - py) * (x - px);
-      pos += cross > 0 ? 1 : 0;
-      neg += cross < 0 ? 1 : 0;
-    }
-  return !(pos == 4 || neg == 4);
-}
 
 // Line of sight by definition: every touched cell other than a and b is on the grid and Free.
 bool oracle_los(const OccupancyGrid& g, Cell a, Cell b) {
   for (std::int64_t y = std::min(a.y, b.y); y <= std::max(a.y, b.y); ++y)
     for (std::int64_t x = std::min(a.x, b.x); x <= std::max(a.x, b.x); ++x) {
       const Cell c{static_cast<std::int32_t>(x), static_cast<std::int32_t>(y)};
-      if (c == a || c == b || !touches(a, b, c)) continue;
+      if (c == a || c == b || !oracle_touches(a, b, c)) continue;
       if (g.get_or(c, Occupancy::Blocked) != Occupancy::Free) return false;
     }
   return true;
@@ -126,7 +111,8 @@ TEST_CASE("line of sight is the oracle's, and symmetric", "[los][property]") {
     std::vector<Cell> want;
     for (std::int32_t y = std::min(a.y, b.y); y <= std::max(a.y, b.y); ++y)
       for (std::int32_t x = std::min(a.x, b.x); x <= std::max(a.x, b.x); ++x)
-        if (Cell{x, y} != a && Cell{x, y} != b && touches(a, b, {x, y})) want.push_back({x, y});
+        if (Cell{x, y} != a && Cell{x, y} != b && oracle_touches(a, b, {x, y}))
+          want.push_back({x, y});
     std::sort(asked.begin(), asked.end());
     std::sort(want.begin(), want.end());
     RC_ASSERT(asked.size() == want.size());
