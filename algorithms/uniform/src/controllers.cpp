@@ -53,6 +53,16 @@ Command PrimaryMovement::step(const Observation& obs) {
   return {Action::TurnLeft};
 }
 
+std::optional<std::uint8_t> random_step_aside(const CoverageWorld& world, Cell at,
+                                              kernel::Stream& stream) {
+  std::uint8_t options[8];
+  std::uint32_t count = 0;
+  for (std::uint8_t b = 0; b < 8; ++b)
+    if (world.can_step(at, b)) options[count++] = b;
+  if (count == 0) return std::nullopt;
+  return options[stream.below(count)];
+}
+
 // ---- A* with spiral iteration ----
 
 AStarCoverage::AStarCoverage(std::uint64_t seed, std::uint64_t trial, std::size_t robots,
@@ -176,13 +186,10 @@ Command AStarCoverage::step(const Observation& obs) {
   if (++r.waited < kPatience) return {Action::Wait};
   // A standoff: step aside at random and replan next tick.
   r.waited = 0;
-  std::uint8_t options[8];
-  std::uint32_t count = 0;
-  for (std::uint8_t b = 0; b < 8; ++b)
-    if (world.can_step(at, b)) options[count++] = b;
-  if (count == 0) return {Action::Wait};
+  const auto aside = random_step_aside(world, at, r.unstick);
+  if (!aside) return {Action::Wait};
   ++unsticks_;
-  return {Action::Step, options[r.unstick.below(count)]};
+  return {Action::Step, *aside};
 }
 
 } // namespace antkit::uniform

@@ -161,13 +161,10 @@ Command FrontierCoverage::step(const Observation& obs) {
   if (++r.waited < kPatience) return {Action::Wait};
   // Boxed in by the others: step aside at random and search again next tick.
   r.waited = 0;
-  std::uint8_t options[8];
-  std::uint32_t count = 0;
-  for (std::uint8_t b = 0; b < 8; ++b)
-    if (world.can_step(at, b)) options[count++] = b;
-  if (count == 0) return {Action::Wait};
+  const auto aside = random_step_aside(world, at, r.unstick);
+  if (!aside) return {Action::Wait};
   ++unsticks_;
-  return {Action::Step, options[r.unstick.below(count)]};
+  return {Action::Step, *aside};
 }
 
 } // namespace antkit::uniform

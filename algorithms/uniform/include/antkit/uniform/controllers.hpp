@@ -84,6 +84,11 @@ private:
   std::vector<std::uint8_t> turns_; // left turns since the last forward move; 9 = ceased
 };
 
+// Breaking a standoff (A* and frontier): a step to a random enterable neighbour of `at`, drawn from
+// the robot's own keyed stream, or no step when every neighbour is closed.
+std::optional<std::uint8_t> random_step_aside(const CoverageWorld& world, kernel::Cell at,
+                                              kernel::Stream& stream);
+
 class AStarCoverage {
 public:
   using Observation = uniform::Observation;
