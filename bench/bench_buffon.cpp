@@ -21,8 +21,10 @@ void BM_BuffonVisitSteps(benchmark::State& state) {
   std::uint64_t trial = 0;
   for (auto _ : state) {
     antkit::kernel::TraceHash h;
-    auto log = buffon::run_visit(
-        w, p, trial++, 1, h, [&raster](const buffon::Pose& pose) { raster.lay(pose.position); });
+    auto log = buffon::run_visit(w, p, trial++, 1, h, [&raster](const buffon::Pose& pose) {
+      raster.lay(pose.position);
+      return true;
+    });
     benchmark::DoNotOptimize(log.length_raw);
   }
   state.SetItemsProcessed(state.iterations() * p.steps);

@@ -38,7 +38,7 @@ buffon::VisitLog visit(const buffon::World& w, std::uint64_t seed, std::int64_t 
   p.seed = seed;
   p.steps = steps;
   antkit::kernel::TraceHash h;
-  return buffon::run_visit(w, p, 0, 1, h, [](const buffon::Pose&) {});
+  return buffon::run_visit(w, p, 0, 1, h, [](const buffon::Pose&) { return true; });
 }
 
 } // namespace

@@ -54,7 +54,7 @@ void walk(const World& world, const TrialParams& params, std::uint64_t trial, in
           std::int64_t limit_raw, F&& f) {
   TrialParams p = params;
   // Enough steps for the limit at 1.3 times the default mean step (1680 / 50 000 units, so
-  // 0.0336 = 2202 raw): run_visit has no early stop, so a tight cap saves most of the tail.
+  // 0.0336 = 2202 raw): the visit stops once the limit is passed.
   p.steps = limit_raw * 13 / (10 * 2202) + 1000;
   kernel::TraceHash unused;
   std::int64_t length = 0;
@@ -63,7 +63,7 @@ void walk(const World& world, const TrialParams& params, std::uint64_t trial, in
   // The callback ignores everything past the limit; a visit that falls short of it (a robot stuck
   // for long) leaves the last checkpoints at its final length.
   run_visit(world, p, trial, visit, unused, [&](const Pose& pose) {
-    if (done) return;
+    if (done) return false;
     if (!first) {
       const std::int64_t dx = std::int64_t{pose.position.x.raw()} - prev.x.raw();
       const std::int64_t dy = std::int64_t{pose.position.y.raw()} - prev.y.raw();
@@ -73,9 +73,10 @@ void walk(const World& world, const TrialParams& params, std::uint64_t trial, in
     prev = pose.position;
     if (length > limit_raw) {
       done = true;
-      return;
+      return false;
     }
     f(pose, length);
+    return true;
   });
 }
 

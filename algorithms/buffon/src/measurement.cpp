@@ -92,7 +92,7 @@ bool CrossingDetector::update(bool bit) noexcept {
 }
 
 VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t trial, int visit,
-                   kernel::TraceHash& hash, const std::function<void(const Pose&)>& on_step) {
+                   kernel::TraceHash& hash, const std::function<bool(const Pose&)>& on_step) {
   if (params.steps < 0 || params.steps > 100000000)
     throw kernel::InputError("--steps", "the steps per visit must be in [0, 100000000]");
   const auto v = static_cast<std::uint64_t>(visit);
@@ -103,12 +103,12 @@ VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t 
   VisitLog log;
   log.trail.reserve(static_cast<std::size_t>(params.steps) + 1);
   log.trail.push_back(pose.position);
-  on_step(pose);
+  bool more = on_step(pose);
   auto word = [](std::int32_t lo, std::int32_t hi) {
     return static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) |
            (static_cast<std::uint64_t>(static_cast<std::uint32_t>(hi)) << 32);
   };
-  for (std::int64_t s = 0; s < params.steps; ++s) {
+  for (std::int64_t s = 0; more && s < params.steps; ++s) {
     const Observation obs = world.sense(pose, &noise);
     const Command cmd = behaviour.step(obs);
     const FxPoint before = pose.position;
@@ -127,7 +127,7 @@ VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t 
     }
     log.length_raw += static_cast<std::int64_t>(root);
     log.trail.push_back(pose.position);
-    on_step(pose);
+    more = on_step(pose);
     hash.add_u64(word(pose.position.x.raw(), pose.position.y.raw()));
     hash.add_u64(word(static_cast<std::int32_t>(pose.heading.raw()), behaviour.r().raw()));
     hash.add_u64(word(behaviour.w_left().raw(), behaviour.w_right().raw()));
@@ -141,12 +141,15 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
   kernel::TraceHash hash(params.seed);
   hash.add_u64(trial);
   PheromoneRaster raster(world.lower(), world.upper(), params.width);
-  VisitLog first = run_visit(world, params, trial, 1, hash,
-                             [&raster](const Pose& p) { raster.lay(p.position); });
+  VisitLog first = run_visit(world, params, trial, 1, hash, [&raster](const Pose& p) {
+    raster.lay(p.position);
+    return true;
+  });
   CrossingDetector detector;
   std::uint64_t bc = 0;
   VisitLog second = run_visit(world, params, trial, 2, hash, [&](const Pose& p) {
     if (detector.update(raster.at(p.position))) ++bc;
+    return params.stop_bc == 0 || bc < params.stop_bc;
   });
   result.bc = bc;
   result.length1_raw = first.length_raw;

@@ -66,6 +66,9 @@ struct TrialParams {
   std::int64_t steps = kDefaultSteps; // per visit
   Fx width = kDefaultWidth;
   bool keep_trails = false; // keep both trails' points in the result (figures, tests)
+  // Online stopping (issue 8): when non-zero, visit 2 ends after the step at which BC reaches
+  // stop_bc (or after `steps` steps, whichever comes first). 0: visit 2 runs all its steps.
+  std::uint64_t stop_bc = 0;
 };
 
 struct TrialResult {
@@ -79,15 +82,16 @@ struct TrialResult {
   std::vector<FxPoint> trail1, trail2; // only with keep_trails
 };
 
-// One visit: `steps` steps from the start pose; calls on_step(position) after every step (and once
-// for the start). Returns the number of blocked steps. Exposed for the RS baseline and the tests.
+// One visit: up to `steps` steps from the start pose; calls on_step(pose) after every step (and
+// once for the start); the visit ends early, after that call, when on_step returns false. Exposed
+// for the RS baseline and the tests.
 struct VisitLog {
   std::vector<FxPoint> trail; // start and every step's position
   std::int64_t length_raw = 0;
   std::uint64_t blocked = 0;
 };
 VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t trial, int visit,
-                   kernel::TraceHash& hash, const std::function<void(const Pose&)>& on_step);
+                   kernel::TraceHash& hash, const std::function<bool(const Pose&)>& on_step);
 
 TrialResult run_trial(const World& world, const TrialParams& params, std::uint64_t trial);
 
