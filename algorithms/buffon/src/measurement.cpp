@@ -80,17 +80,6 @@ std::uint64_t PheromoneRaster::marked() const {
   return n;
 }
 
-bool CrossingDetector::update(bool bit) noexcept {
-  // y <- (y + b) / 2, exactly: y stays a dyadic fraction in [0, 1].
-  y_ = Fx::from_raw((y_.raw() + (bit ? Fx::one_raw : 0)) / 2);
-  const bool was = high_;
-  if (!high_ && y_.raw() >= Fx::one_raw / 2)
-    high_ = true;
-  else if (high_ && y_.raw() < Fx::one_raw / 4)
-    high_ = false;
-  return high_ && !was;
-}
-
 VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t trial, int visit,
                    kernel::TraceHash& hash, const std::function<bool(const Pose&)>& on_step) {
   if (params.steps < 0 || params.steps > 100000000)

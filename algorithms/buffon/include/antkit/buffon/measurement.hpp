@@ -19,6 +19,7 @@
 //    thread runs a trial.
 //  * Trace hash: per step (visit, x, y, heading, r, w_l, w_r, thresholded detector) as aligned
 //    64-bit words, then BC, the blocked-step counts and the exact crossing count.
+#include <antkit/buffon/detector.hpp>
 #include <antkit/buffon/world.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <cstdint>
@@ -46,18 +47,6 @@ public:
 private:
   std::int64_t x0_, y0_, cell_, half_width_, cols_, rows_;
   std::vector<std::uint64_t> bits_;
-};
-
-// The leaky integrator and threshold of the pheromone detector (see above).
-class CrossingDetector {
-public:
-  // Feeds one raster bit; true on a low-to-high transition of the thresholded value.
-  bool update(bool bit) noexcept;
-  [[nodiscard]] bool high() const noexcept { return high_; }
-
-private:
-  Fx y_{};
-  bool high_ = false;
 };
 
 struct TrialParams {
