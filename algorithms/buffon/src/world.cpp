@@ -3,6 +3,7 @@
 #include <antkit/buffon/world.hpp>
 #include <antkit/kernel/fixed_random.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <array>
 
 namespace antkit::buffon {
 
@@ -30,8 +31,8 @@ std::int64_t floor_div(std::int64_t a, std::int64_t b) {
 
 // Squared distance from p to the closed segment s, compared exactly with rho^2: true when the
 // distance is below rho.
-bool closer_than(FxPoint p, const FxSegment& s, std::int64_t rho) {
-  const i128 ax = s.a.x.raw(), ay = s.a.y.raw(), bx = s.b.x.raw(), by = s.b.y.raw();
+bool closer_than(FxPoint p, const World::BucketWall& s, std::int64_t rho) {
+  const i128 ax = s.ax, ay = s.ay, bx = s.bx, by = s.by;
   const i128 px = p.x.raw(), py = p.y.raw();
   const i128 abx = bx - ax, aby = by - ay, apx = px - ax, apy = py - ay;
   const i128 rho2 = i128{rho} * rho;
@@ -44,6 +45,35 @@ bool closer_than(FxPoint p, const FxSegment& s, std::int64_t rho) {
   }
   const i128 cross = apx * aby - apy * abx;
   return cross * cross < rho2 * len2;
+}
+
+// The nearest hit of the ray S + t D (t in [0, 1]) with wall w, folded into the running minimum
+// best_num / best_den. Exact in 64 bits: the constructor keeps the arena within 4097 units (2^28.01
+// raw) and a queried point lies within 4 units of the walls' bounding box, so every coordinate
+// difference q is below 2^28.1 raw, |D| <= 49152 < 2^15.6 and a wall's extent e below 2^28.01:
+// den = D x e and sn2 = q x D stay below 2^44.7, tn = q x e below 2^57.2, and once tn <= den the
+// products tn * best_den and best_num * den (best_den, best_num <= 2^16 den) stay below 2^61
+// (the same values as the 128-bit arithmetic this replaced, which the golden hashes confirm).
+//
+// The result does not depend on the order of the walls: the minimum is kept as
+// floor(2^16 t) / 2^16, and a later wall replaces it only when its exact t is smaller, so the
+// final value is floor(2^16 t_min) whatever the order (or 1 when no wall is hit with t < 1). That
+// is why the queries may skip walls that cannot be hit.
+inline void ray_hit(const World::BucketWall& w, std::int64_t sx, std::int64_t sy, std::int64_t dx,
+                    std::int64_t dy, std::int64_t& best_num, std::int64_t& best_den) {
+  const std::int64_t ex = std::int64_t{w.bx} - w.ax, ey = std::int64_t{w.by} - w.ay;
+  const std::int64_t qx = std::int64_t{w.ax} - sx, qy = std::int64_t{w.ay} - sy;
+  std::int64_t den = dx * ey - dy * ex;
+  std::int64_t tn = qx * ey - qy * ex;
+  std::int64_t sn2 = qx * dy - qy * dx;
+  if (den == 0) return; // parallel: a wall along the ray is seen through its ends
+  if (den < 0) den = -den, tn = -tn, sn2 = -sn2;
+  if (tn < 0 || tn > den || sn2 < 0 || sn2 > den) return;
+  if (tn * best_den < best_num * den) {
+    // Keep the fraction small: t as a Q16 fraction is all the reading needs.
+    best_num = (tn << 16) / den;
+    best_den = 65536;
+  }
 }
 
 } // namespace
@@ -93,70 +123,94 @@ World::World(std::vector<FxSegment> walls, BodyParams body)
   for (std::size_t k = 0; k < buckets; ++k) start_[k + 1] += start_[k];
   members_.resize(start_[buckets]);
   std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-  for (std::size_t i = 0; i < walls_.size(); ++i)
-    for_buckets(walls_[i],
-                [&](std::size_t k) { members_[fill[k]++] = static_cast<std::uint32_t>(i); });
+  for (const auto& w : walls_) {
+    const BucketWall entry{w.a.x.raw(),
+                           w.a.y.raw(),
+                           w.b.x.raw(),
+                           w.b.y.raw(),
+                           std::min(w.a.x.raw(), w.b.x.raw()),
+                           std::min(w.a.y.raw(), w.b.y.raw()),
+                           std::max(w.a.x.raw(), w.b.x.raw()),
+                           std::max(w.a.y.raw(), w.b.y.raw())};
+    for_buckets(w, [&](std::size_t k) { members_[fill[k]++] = entry; });
+  }
 }
 
-template <class F>
-void World::for_nearby(FxPoint p, F&& f) const {
-  const std::int64_t bx = floor_div(p.x.raw(), kBucket) - grid_x0_;
-  const std::int64_t by = floor_div(p.y.raw(), kBucket) - grid_y0_;
-  if (bx < 0 || by < 0 || bx >= grid_w_ || by >= grid_h_) return; // far from every wall
+std::span<const World::BucketWall> World::nearby(FxPoint p) const noexcept {
+  // kBucket is 2^16 raw: an arithmetic shift is the floor division (C++20 defines >> on negatives).
+  static_assert(kBucket == std::int64_t{1} << 16);
+  const std::int64_t bx = (std::int64_t{p.x.raw()} >> 16) - grid_x0_;
+  const std::int64_t by = (std::int64_t{p.y.raw()} >> 16) - grid_y0_;
+  if (bx < 0 || by < 0 || bx >= grid_w_ || by >= grid_h_) return {}; // far from every wall
   const auto k = static_cast<std::size_t>(by * grid_w_ + bx);
-  for (std::uint32_t m = start_[k]; m < start_[k + 1]; ++m) f(walls_[members_[m]]);
+  return {members_.data() + start_[k], members_.data() + start_[k + 1]};
 }
 
 Observation World::sense(const Pose& pose, kernel::Stream* noise) const {
   Observation obs;
   const FxPoint c = pose.position;
-  bool any = false;
-  for_nearby(c, [&any](const FxSegment&) { any = true; });
-  for (std::size_t i = 0; i < 6 && any; ++i) {
-    const Angle dir = pose.heading + kSensorAngles[i];
-    const Fx cs = kernel::cos(dir), sn = kernel::sin(dir);
-    const std::int64_t sx = c.x.raw() + (kBodyRadius * cs).raw();
-    const std::int64_t sy = c.y.raw() + (kBodyRadius * sn).raw();
-    const std::int64_t dx = (kSensorRange * cs).raw(), dy = (kSensorRange * sn).raw();
-    // Nearest hit along the ray S + t D, t in [0, 1], as the smallest t = num / den.
-    std::int64_t best_num = 1, best_den = 1;
-    for_nearby(c, [&](const FxSegment& s) {
-      const std::int64_t ex = std::int64_t{s.b.x.raw()} - s.a.x.raw();
-      const std::int64_t ey = std::int64_t{s.b.y.raw()} - s.a.y.raw();
-      const std::int64_t qx = std::int64_t{s.a.x.raw()} - sx, qy = std::int64_t{s.a.y.raw()} - sy;
-      i128 den = i128{dx} * ey - i128{dy} * ex;
-      i128 tn = i128{qx} * ey - i128{qy} * ex;
-      i128 sn2 = i128{qx} * dy - i128{qy} * dx;
-      if (den == 0) return; // parallel: a wall along the ray is seen through its ends
-      if (den < 0) den = -den, tn = -tn, sn2 = -sn2;
-      if (tn < 0 || tn > den || sn2 < 0 || sn2 > den) return;
-      if (tn * best_den < i128{best_num} * den) {
-        // Keep the fraction small: t as a Q16 fraction is all the reading needs.
-        best_num = static_cast<std::int64_t>((tn << 16) / den);
-        best_den = 65536;
+  const std::int64_t cx = c.x.raw(), cy = c.y.raw();
+  // Every ray lies within kReach of c (the body's edge plus the range, each product rounded by at
+  // most half a raw unit): walls whose bounding box is farther cannot be hit. They are dropped
+  // once here, and each ray then tests only the walls whose box meets its own box.
+  constexpr std::int64_t kReach = kBodyRadius.raw() + kSensorRange.raw() + 2;
+  const auto bucket = nearby(c);
+  constexpr std::size_t kMaxNear = 128;
+  std::array<const BucketWall*, kMaxNear> near; // NOLINT: filled below up to `count`
+  std::size_t count = 0;
+  bool overflow = false; // more candidates than kMaxNear: test the whole bucket (same answer)
+  for (const auto& w : bucket) {
+    if (w.x1 < cx - kReach || w.x0 > cx + kReach || w.y1 < cy - kReach || w.y0 > cy + kReach)
+      continue;
+    if (count == kMaxNear) {
+      overflow = true;
+      break;
+    }
+    near[count++] = &w;
+  }
+  if (count > 0) {
+    for (std::size_t i = 0; i < 6; ++i) {
+      const Angle dir = pose.heading + kSensorAngles[i];
+      const Fx cs = kernel::cos(dir), sn = kernel::sin(dir);
+      const std::int64_t sx = cx + (kBodyRadius * cs).raw();
+      const std::int64_t sy = cy + (kBodyRadius * sn).raw();
+      const std::int64_t dx = (kSensorRange * cs).raw(), dy = (kSensorRange * sn).raw();
+      const std::int64_t rx0 = std::min(sx, sx + dx), rx1 = std::max(sx, sx + dx);
+      const std::int64_t ry0 = std::min(sy, sy + dy), ry1 = std::max(sy, sy + dy);
+      // Nearest hit along the ray S + t D, t in [0, 1], as the smallest t = num / den.
+      std::int64_t best_num = 1, best_den = 1;
+      auto test = [&](const BucketWall& w) {
+        if (w.x1 < rx0 || w.x0 > rx1 || w.y1 < ry0 || w.y0 > ry1) return;
+        ray_hit(w, sx, sy, dx, dy, best_num, best_den);
+      };
+      if (overflow) {
+        for (const auto& w : bucket) test(w);
+      } else {
+        for (std::size_t k = 0; k < count; ++k) test(*near[k]);
       }
-    });
-    Fx reading = Fx::one() - Fx::from_raw(static_cast<std::int32_t>(best_num * 65536 / best_den));
-    if (noise != nullptr && body_.noise > Fx{}) {
+      obs.ir[i] = Fx::one() - Fx::from_raw(static_cast<std::int32_t>(best_num * 65536 / best_den));
+    }
+  }
+  if (noise != nullptr && body_.noise > Fx{}) {
+    // Noise is drawn every step whether or not a wall is near, so that the stream stays aligned.
+    // A reading with no wall in range is 0, and 0 + v clamped to [0, 1] is max(v, 0) as noise
+    // is at most 1.
+    for (auto& reading : obs.ir) {
       reading = reading + kernel::uniform(*noise, -body_.noise, body_.noise);
       reading = reading < Fx{} ? Fx{} : (reading > Fx::one() ? Fx::one() : reading);
-    }
-    obs.ir[i] = reading;
-  }
-  if (!any && noise != nullptr && body_.noise > Fx{}) {
-    // Noise is drawn every step whether or not a wall is near, so that the stream stays aligned.
-    for (auto& reading : obs.ir) {
-      const Fx v = kernel::uniform(*noise, -body_.noise, body_.noise);
-      reading = v < Fx{} ? Fx{} : v;
     }
   }
   return obs;
 }
 
 bool World::clear(FxPoint p) const {
-  bool ok = true;
-  for_nearby(p, [&](const FxSegment& s) { ok = ok && !closer_than(p, s, kBodyRadius.raw()); });
-  return ok;
+  const std::int64_t px = p.x.raw(), py = p.y.raw(), rho = kBodyRadius.raw();
+  for (const auto& w : nearby(p)) {
+    // A wall whose bounding box keeps rho away in x or y is at least rho away.
+    if (w.x1 <= px - rho || w.x0 >= px + rho || w.y1 <= py - rho || w.y0 >= py + rho) continue;
+    if (closer_than(p, w, rho)) return false;
+  }
+  return true;
 }
 
 bool World::move(Pose& pose, const Command& cmd) const {

@@ -80,17 +80,27 @@ public:
   // the wall it starts at, give or take 15 degrees. Throws InputError when that point is not clear.
   [[nodiscard]] Pose start_pose(kernel::Stream& stream) const;
 
+  // A wall as a bucket stores it: its ends and its bounding box in raw units, so that the queries
+  // can reject it with four comparisons before any product (a wall whose box is out of reach
+  // cannot change a reading or a collision, so the answers are those of the full loop).
+  struct BucketWall {
+    std::int32_t ax, ay, bx, by;
+    std::int32_t x0, y0, x1, y1; // bounding box
+  };
+
 private:
-  template <class F>
-  void for_nearby(FxPoint p, F&& f) const;
+  // The walls registered in the bucket holding p (empty when p is far from every wall).
+  [[nodiscard]] std::span<const BucketWall> nearby(FxPoint p) const noexcept;
 
   std::vector<FxSegment> walls_;
   BodyParams body_;
   FxPoint lo_{}, hi_{};
-  // Uniform grid of 1-unit buckets; bucket k lists the walls within kMargin of any point in it.
+  // Uniform grid of 1-unit buckets; bucket k lists the walls within kMargin of any point in it,
+  // copied into the bucket (members_[start_[k] .. start_[k + 1])) so that a query reads one
+  // contiguous run.
   std::int64_t grid_x0_ = 0, grid_y0_ = 0, grid_w_ = 0, grid_h_ = 0;
   std::vector<std::uint32_t> start_;
-  std::vector<std::uint32_t> members_;
+  std::vector<BucketWall> members_;
 };
 
 } // namespace antkit::buffon
