@@ -57,15 +57,36 @@ constexpr std::array<std::uint32_t, 4> philox4x32_10(std::array<std::uint32_t, 4
 // Lemire's multiply-shift map of a uniform 32-bit word x to [0, n), n >= 1. It returns false when x
 // falls in the rejected zone of the low product (low < 2^32 mod n); accepting only the other words
 // makes every value in [0, n) come from exactly floor(2^32 / n) words, so the result is unbiased.
-constexpr bool bounded_u32(std::uint32_t x, std::uint32_t n, std::uint32_t& out) noexcept {
-  const std::uint64_t m = std::uint64_t{x} * n;
-  const auto low = static_cast<std::uint32_t>(m);
+//
+// Written once over an integer policy W (DESIGN.md rule 6): W::u32 and W::u64 are the 32- and
+// 64-bit unsigned words. bounded_u32 below instantiates it with the machine words (MachineWords);
+// proofs/z3/bounded_u32.cpp instantiates the same source with Z3 bit-vectors and proves the
+// rejection exact. The two `if`s stay branches rather than selects: on machine words the remainder
+// (a division) is then computed only when low < n, which is rare for small n; on Z3 words each
+// `if` forks the proof run (z3_int.hpp, Session::decide), so the three paths are checked apart.
+// Only unsigned arithmetic is used, so nothing can overflow; the one precondition is n != 0.
+template <class W>
+constexpr bool bounded_u32_t(typename W::u32 x, typename W::u32 n, typename W::u32& out) {
+  using u32 = typename W::u32;
+  using u64 = typename W::u64;
+  const u64 m = static_cast<u64>(x) * static_cast<u64>(n);
+  const auto low = static_cast<u32>(m);
   if (low < n) {
-    const std::uint32_t threshold = static_cast<std::uint32_t>(-n) % n; // 2^32 mod n
+    const u32 threshold = static_cast<u32>(u32{0} - n) % n; // 2^32 mod n
     if (low < threshold) return false;
   }
-  out = static_cast<std::uint32_t>(m >> 32);
+  out = static_cast<u32>(m >> 32);
   return true;
+}
+
+// The machine instantiation's policy.
+struct MachineWords {
+  using u32 = std::uint32_t;
+  using u64 = std::uint64_t;
+};
+
+constexpr bool bounded_u32(std::uint32_t x, std::uint32_t n, std::uint32_t& out) noexcept {
+  return bounded_u32_t<MachineWords>(x, n, out);
 }
 
 class Stream {
