@@ -13,23 +13,75 @@ const buffon::World& standard_world() {
   return w;
 }
 
-// One visit of 50 000 steps laying pheromone: items = robot steps.
+// The trail of one default visit in the standard circle, recorded once.
+const std::vector<antkit::kernel::FxPoint>& standard_trail() {
+  static const std::vector<antkit::kernel::FxPoint> trail = [] {
+    antkit::kernel::TraceHash h;
+    return buffon::run_visit(standard_world(), buffon::TrialParams{}, 0, 1, h,
+                             [](const buffon::Pose&) { return true; })
+        .trail;
+  }();
+  return trail;
+}
+
+// Laying the pheromone along a recorded trail, alone: items = lay() calls. Argument 0: the fast
+// path (lay), 1: the reference loop it replaced (lay_exact), for before/after ratios in one run.
+void BM_BuffonLay(benchmark::State& state) {
+  const auto& w = standard_world();
+  const auto& trail = standard_trail();
+  buffon::PheromoneRaster raster(w.lower(), w.upper(), buffon::kDefaultWidth);
+  const bool exact = state.range(0) == 1;
+  for (auto _ : state) {
+    if (exact)
+      for (const auto& p : trail) raster.lay_exact(p);
+    else
+      for (const auto& p : trail) raster.lay(p);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(trail.size()));
+}
+BENCHMARK(BM_BuffonLay)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// Reading the pheromone under a recorded trail (visit 2's sensing): items = at() calls.
+// Argument 0: at(), 1: at_exact().
+void BM_BuffonAt(benchmark::State& state) {
+  const auto& w = standard_world();
+  const auto& trail = standard_trail();
+  buffon::PheromoneRaster raster(w.lower(), w.upper(), buffon::kDefaultWidth);
+  for (std::size_t k = 0; k < trail.size(); k += 2) raster.lay(trail[k]);
+  const bool exact = state.range(0) == 1;
+  for (auto _ : state) {
+    std::uint64_t n = 0;
+    if (exact)
+      for (const auto& p : trail) n += raster.at_exact(p) ? 1u : 0u;
+    else
+      for (const auto& p : trail) n += raster.at(p) ? 1u : 0u;
+    benchmark::DoNotOptimize(n);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(trail.size()));
+}
+BENCHMARK(BM_BuffonAt)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// One visit of 50 000 steps in the standard circle: items = robot steps. Argument 0 lays the
+// pheromone at every step (the target: >= 10 M steps/s with sensing and pheromone),
+// argument 1 does not (the robot alone: sensing, behaviour, motion, trace hash).
 void BM_BuffonVisitSteps(benchmark::State& state) {
   const auto& w = standard_world();
   buffon::TrialParams p;
   buffon::PheromoneRaster raster(w.lower(), w.upper(), p.width);
+  const bool lay = state.range(0) == 0;
   std::uint64_t trial = 0;
   for (auto _ : state) {
     antkit::kernel::TraceHash h;
-    auto log = buffon::run_visit(w, p, trial++, 1, h, [&raster](const buffon::Pose& pose) {
-      raster.lay(pose.position);
+    auto log = buffon::run_visit(w, p, trial++, 1, h, [&](const buffon::Pose& pose) {
+      if (lay) raster.lay(pose.position);
       return true;
     });
     benchmark::DoNotOptimize(log.length_raw);
   }
   state.SetItemsProcessed(state.iterations() * p.steps);
 }
-BENCHMARK(BM_BuffonVisitSteps)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BuffonVisitSteps)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // A whole default trial (two visits, BC, exact crossings, hash): items = robot steps.
 void BM_BuffonTrial(benchmark::State& state) {

@@ -184,6 +184,67 @@ TEST_CASE("sensing and collisions equal the loop over every wall", "[property]")
   });
 }
 
+TEST_CASE("the pheromone raster's fast paths equal the reference loops", "[property]") {
+  // lay() stamps a precomputed 5 x 5 pattern of row masks and at() divides by multiplication;
+  // lay_exact() and at_exact() are the plain loops with floor divisions. Two rasters fed the same
+  // random centres (anywhere in and around the raster, so that the edge fallbacks are exercised
+  // too) must hold the same cells, and both readers must agree everywhere probed.
+  rc::prop("lay == lay_exact and at == at_exact", [] {
+    const auto w = world_of("circle:d=" + std::to_string(*rc::gen::inRange(2, 12)));
+    const auto width = antkit::kernel::Fx::from_raw(*rc::gen::inRange(655, 655361));
+    buffon::PheromoneRaster fast(w.lower(), w.upper(), width), exact(w.lower(), w.upper(), width);
+    const std::int64_t margin = 2 * width.raw();
+    auto point = [&] {
+      return FxPoint{
+          antkit::kernel::Fx::from_raw(static_cast<std::int32_t>(*rc::gen::inRange<std::int64_t>(
+              w.lower().x.raw() - margin, w.upper().x.raw() + margin))),
+          antkit::kernel::Fx::from_raw(static_cast<std::int32_t>(*rc::gen::inRange<std::int64_t>(
+              w.lower().y.raw() - margin, w.upper().y.raw() + margin)))};
+    };
+    const FxPoint middle{}; // the circles are centred on the origin
+    fast.lay(middle);
+    exact.lay_exact(middle);
+    for (int k = 0; k < 40; ++k) {
+      const FxPoint c = point();
+      fast.lay(c);
+      exact.lay_exact(c);
+    }
+    RC_ASSERT(fast.marked() == exact.marked());
+    RC_ASSERT(fast.marked() > 0u);
+    for (int k = 0; k < 400; ++k) {
+      const FxPoint q = point();
+      RC_LOG() << "width raw " << width.raw() << " probe " << q.x.raw() << ',' << q.y.raw() << '\n';
+      RC_ASSERT(fast.at(q) == exact.at_exact(q));
+      RC_ASSERT(fast.at(q) == exact.at(q));
+    }
+  });
+}
+
+TEST_CASE("lay() equals lay_exact() at every sub-cell offset of the default width", "[proof]") {
+  // Exhaustive over the 1638 x 1638 offsets of a centre inside its cell (w = 0.1, cell = w / 4 =
+  // 1638 raw): the disk's cells depend only on that offset, so this covers every centre of the
+  // default raster, including the ties (a cell centre exactly w / 2 away, e.g. offset (818, 819)).
+  const auto width = buffon::kDefaultWidth;
+  const std::int32_t cell = width.raw() / 4;
+  const FxPoint lower{},
+      upper{antkit::kernel::Fx::from_raw(8 * cell), antkit::kernel::Fx::from_raw(8 * cell)};
+  const buffon::PheromoneRaster empty(lower, upper, width);
+  std::int64_t mismatches = 0, first_ox = -1, first_oy = -1;
+  for (std::int32_t oy = 0; oy < cell; ++oy)
+    for (std::int32_t ox = 0; ox < cell; ++ox) {
+      const FxPoint c{antkit::kernel::Fx::from_raw(4 * cell + ox),
+                      antkit::kernel::Fx::from_raw(4 * cell + oy)};
+      buffon::PheromoneRaster fast = empty, exact = empty;
+      fast.lay(c);
+      exact.lay_exact(c);
+      if (!(fast == exact)) {
+        if (mismatches++ == 0) first_ox = ox, first_oy = oy;
+      }
+    }
+  INFO("first mismatch at offset (" << first_ox << ", " << first_oy << ")");
+  CHECK(mismatches == 0);
+}
+
 TEST_CASE("golden trace hash of one short trial") {
   // A moved golden hash needs a commit message that says why (CONTRIBUTING.md).
   const auto w = world_of("circle:d=20");

@@ -44,29 +44,31 @@ PheromoneRaster::PheromoneRaster(FxPoint lower, FxPoint upper, Fx width) {
   if (cols_ * rows_ > (std::int64_t{1} << 33))
     throw kernel::InputError("--width", "the pheromone raster would exceed 2^33 cells (1 GiB); "
                                         "use a wider trail or a smaller arena");
-  bits_.assign(static_cast<std::size_t>((cols_ * rows_ + 63) / 64), 0);
+  r2_ = half_width_ * half_width_;
+  reciprocal_ = (std::uint64_t{1} << 32) / static_cast<std::uint64_t>(cell_);
+  fast_ = 2 * half_width_ < 5 * cell_; // holds for every width in range (cell >= 163 raw)
+  bits_.assign(static_cast<std::size_t>((cols_ * rows_ + 63) / 64) + 1, 0);
 }
 
-void PheromoneRaster::lay(FxPoint c) {
+void PheromoneRaster::lay_exact(FxPoint c) noexcept {
   const std::int64_t cx = c.x.raw() - x0_, cy = c.y.raw() - y0_;
   const std::int64_t i0 = std::max<std::int64_t>(0, floor_div(cx - half_width_, cell_));
   const std::int64_t i1 = std::min<std::int64_t>(cols_ - 1, floor_div(cx + half_width_, cell_));
   const std::int64_t j0 = std::max<std::int64_t>(0, floor_div(cy - half_width_, cell_));
   const std::int64_t j1 = std::min<std::int64_t>(rows_ - 1, floor_div(cy + half_width_, cell_));
-  const std::int64_t r2 = half_width_ * half_width_;
   for (std::int64_t j = j0; j <= j1; ++j) {
     // Cell centres in doubled raw units avoid halves: centre = (2 j + 1) cell / 2.
     const std::int64_t dy2 = (2 * j + 1) * cell_ - 2 * cy;
     for (std::int64_t i = i0; i <= i1; ++i) {
       const std::int64_t dx2 = (2 * i + 1) * cell_ - 2 * cx;
-      if (dx2 * dx2 + dy2 * dy2 > 4 * r2) continue;
+      if (dx2 * dx2 + dy2 * dy2 > 4 * r2_) continue;
       const auto k = static_cast<std::uint64_t>(j * cols_ + i);
       bits_[k >> 6] |= std::uint64_t{1} << (k & 63);
     }
   }
 }
 
-bool PheromoneRaster::at(FxPoint c) const {
+bool PheromoneRaster::at_exact(FxPoint c) const noexcept {
   const std::int64_t i = floor_div(c.x.raw() - x0_, cell_);
   const std::int64_t j = floor_div(c.y.raw() - y0_, cell_);
   if (i < 0 || j < 0 || i >= cols_ || j >= rows_) return false;
@@ -80,48 +82,9 @@ std::uint64_t PheromoneRaster::marked() const {
   return n;
 }
 
-VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t trial, int visit,
-                   kernel::TraceHash& hash, const std::function<bool(const Pose&)>& on_step) {
-  if (params.steps < 0 || params.steps > 100000000)
+void detail::check_visit_steps(std::int64_t steps) {
+  if (steps < 0 || steps > 100000000)
     throw kernel::InputError("--steps", "the steps per visit must be in [0, 100000000]");
-  const auto v = static_cast<std::uint64_t>(visit);
-  kernel::Stream start_stream(params.seed, params.experiment, trial, v, 1);
-  kernel::Stream noise(params.seed, params.experiment, trial, v, 2);
-  ExplorationBehaviour behaviour(kernel::Stream(params.seed, params.experiment, trial, v, 0));
-  Pose pose = world.start_pose(start_stream);
-  VisitLog log;
-  log.trail.reserve(static_cast<std::size_t>(params.steps) + 1);
-  log.trail.push_back(pose.position);
-  bool more = on_step(pose);
-  auto word = [](std::int32_t lo, std::int32_t hi) {
-    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) |
-           (static_cast<std::uint64_t>(static_cast<std::uint32_t>(hi)) << 32);
-  };
-  for (std::int64_t s = 0; more && s < params.steps; ++s) {
-    const Observation obs = world.sense(pose, &noise);
-    const Command cmd = behaviour.step(obs);
-    const FxPoint before = pose.position;
-    if (!world.move(pose, cmd)) ++log.blocked;
-    const std::int64_t dx = std::int64_t{pose.position.x.raw()} - before.x.raw();
-    const std::int64_t dy = std::int64_t{pose.position.y.raw()} - before.y.raw();
-    // The step's length is within a few raw units of the commanded forward distance, so the exact
-    // floor square root starts there and corrects by +/- 1 (isqrt64 was 15 % of a step's time).
-    const auto n2 = static_cast<std::uint64_t>(dx * dx + dy * dy);
-    std::uint64_t root = 0;
-    if (n2 != 0) {
-      const Fx forward = world.body().speed * (cmd.left + cmd.right) * Fx::from_ratio(1, 2);
-      root = static_cast<std::uint64_t>(kernel::abs(forward).raw());
-      while (root * root > n2) --root;
-      while ((root + 1) * (root + 1) <= n2) ++root;
-    }
-    log.length_raw += static_cast<std::int64_t>(root);
-    log.trail.push_back(pose.position);
-    more = on_step(pose);
-    hash.add_u64(word(pose.position.x.raw(), pose.position.y.raw()));
-    hash.add_u64(word(static_cast<std::int32_t>(pose.heading.raw()), behaviour.r().raw()));
-    hash.add_u64(word(behaviour.w_left().raw(), behaviour.w_right().raw()));
-  }
-  return log;
 }
 
 TrialResult run_trial(const World& world, const TrialParams& params, std::uint64_t trial) {

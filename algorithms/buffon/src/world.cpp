@@ -19,10 +19,10 @@ constexpr std::int64_t kBucket = kUnit;
 // Coordinates beyond this are rejected: keeps every difference and product in range below.
 constexpr std::int64_t kMaxCoordinate = 16000 * kUnit;
 
-// The six front sensors' directions (Khepera: +90, +45, +10, -10, -45, -90 degrees).
-const std::array<Angle, 6> kSensorAngles{Angle::from_degrees(90),  Angle::from_degrees(45),
-                                         Angle::from_degrees(10),  Angle::from_degrees(-10),
-                                         Angle::from_degrees(-45), Angle::from_degrees(-90)};
+// The front sensors at +/-10 degrees (Khepera: +90, +45, +10, -10, -45, -90; the others are
+// derived from the heading's and +45's sine and cosine in sense()).
+constexpr Angle kPlus10 = Angle::from_degrees(10);
+constexpr Angle kMinus10 = Angle::from_degrees(-10);
 
 std::int64_t floor_div(std::int64_t a, std::int64_t b) {
   const std::int64_t q = a / b;
@@ -155,23 +155,40 @@ Observation World::sense(const Pose& pose, kernel::Stream* noise) const {
   // once here, and each ray then tests only the walls whose box meets its own box.
   constexpr std::int64_t kReach = kBodyRadius.raw() + kSensorRange.raw() + 2;
   const auto bucket = nearby(c);
+  // The candidates are copied next to each other; the filters below are written without branches
+  // (a comparison's outcome is added, not branched on) because which walls pass is close to
+  // random from one step to the next and mispredicted branches were most of sense()'s time.
   constexpr std::size_t kMaxNear = 128;
-  std::array<const BucketWall*, kMaxNear> near; // NOLINT: filled below up to `count`
+  std::array<BucketWall, kMaxNear> near; // NOLINT: filled below up to `count`
   std::size_t count = 0;
-  bool overflow = false; // more candidates than kMaxNear: test the whole bucket (same answer)
   for (const auto& w : bucket) {
-    if (w.x1 < cx - kReach || w.x0 > cx + kReach || w.y1 < cy - kReach || w.y0 > cy + kReach)
-      continue;
-    if (count == kMaxNear) {
-      overflow = true;
-      break;
-    }
-    near[count++] = &w;
+    const bool in = (w.x1 >= cx - kReach) & (w.x0 <= cx + kReach) & (w.y1 >= cy - kReach) &
+                    (w.y0 <= cy + kReach);
+    near[std::min(count, kMaxNear - 1)] = w;
+    count += in ? 1u : 0u;
   }
-  if (count > 0) {
+  // More candidates than kMaxNear (not met in the paper's arenas): test the whole bucket, which
+  // gives the same answer.
+  const bool overflow = count > kMaxNear;
+  if (count == 0) {
+    // No wall within reach: every reading is 0 (what the rays would find).
+  } else {
+    // The sensors' directions share table lookups: +/-90 and +/-45 degrees are exact binary
+    // angles (2^30 and 2^29 units), and sin_raw(x + half turn) = -sin_raw(x) exactly (the same
+    // table entry, negated), so cos(h + 90) = -sin(h), sin(h + 90) = cos(h), cos(h - 90) = sin(h),
+    // sin(h - 90) = -cos(h), cos(h - 45) = sin(h + 45) and sin(h - 45) = -cos(h + 45): eight
+    // lookups instead of twelve, bit for bit the same values.
+    static_assert(Angle::from_degrees(90).raw() == std::uint32_t{1} << 30);
+    static_assert(Angle::from_degrees(45).raw() == std::uint32_t{1} << 29);
+    const Angle h = pose.heading;
+    const Fx ch = kernel::cos(h), sh = kernel::sin(h);
+    const Angle h45 = h + Angle::from_degrees(45);
+    const Fx c45 = kernel::cos(h45), s45 = kernel::sin(h45);
+    const Angle h10 = h + kPlus10, hm10 = h + kMinus10;
+    const std::array<Fx, 6> cosines{-sh, c45, kernel::cos(h10), kernel::cos(hm10), s45, sh};
+    const std::array<Fx, 6> sines{ch, s45, kernel::sin(h10), kernel::sin(hm10), -c45, -ch};
     for (std::size_t i = 0; i < 6; ++i) {
-      const Angle dir = pose.heading + kSensorAngles[i];
-      const Fx cs = kernel::cos(dir), sn = kernel::sin(dir);
+      const Fx cs = cosines[i], sn = sines[i];
       const std::int64_t sx = cx + (kBodyRadius * cs).raw();
       const std::int64_t sy = cy + (kBodyRadius * sn).raw();
       const std::int64_t dx = (kSensorRange * cs).raw(), dy = (kSensorRange * sn).raw();
@@ -179,14 +196,21 @@ Observation World::sense(const Pose& pose, kernel::Stream* noise) const {
       const std::int64_t ry0 = std::min(sy, sy + dy), ry1 = std::max(sy, sy + dy);
       // Nearest hit along the ray S + t D, t in [0, 1], as the smallest t = num / den.
       std::int64_t best_num = 1, best_den = 1;
-      auto test = [&](const BucketWall& w) {
-        if (w.x1 < rx0 || w.x0 > rx1 || w.y1 < ry0 || w.y0 > ry1) return;
-        ray_hit(w, sx, sy, dx, dy, best_num, best_den);
+      auto box_meets_ray = [&](const BucketWall& w) {
+        return (w.x1 >= rx0) & (w.x0 <= rx1) & (w.y1 >= ry0) & (w.y0 <= ry1);
       };
       if (overflow) {
-        for (const auto& w : bucket) test(w);
+        for (const auto& w : bucket)
+          if (box_meets_ray(w)) ray_hit(w, sx, sy, dx, dy, best_num, best_den);
       } else {
-        for (std::size_t k = 0; k < count; ++k) test(*near[k]);
+        std::array<std::uint8_t, kMaxNear> hits; // NOLINT: filled below up to `n`
+        std::size_t n = 0;
+        for (std::size_t k = 0; k < count; ++k) {
+          hits[n] = static_cast<std::uint8_t>(k);
+          n += box_meets_ray(near[k]) ? 1u : 0u;
+        }
+        for (std::size_t m = 0; m < n; ++m)
+          ray_hit(near[hits[m]], sx, sy, dx, dy, best_num, best_den);
       }
       obs.ir[i] = Fx::one() - Fx::from_raw(static_cast<std::int32_t>(best_num * 65536 / best_den));
     }

@@ -22,8 +22,10 @@
 #include <antkit/buffon/detector.hpp>
 #include <antkit/buffon/world.hpp>
 #include <antkit/kernel/hash.hpp>
+#include <antkit/kernel/random.hpp>
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace antkit::buffon {
@@ -37,16 +39,85 @@ class PheromoneRaster {
 public:
   // Throws InputError("--width") when w is not in [0.01, 10] units.
   PheromoneRaster(FxPoint lower, FxPoint upper, Fx width);
-  void lay(FxPoint centre);
-  [[nodiscard]] bool at(FxPoint centre) const;
+  // Marks every cell whose centre is within w / 2 of `centre` (exact integer test).
+  void lay(FxPoint centre) noexcept {
+    Cell c;
+    if (!locate(centre, c) || c.i < 2 || c.j < 2 || c.i + 2 >= cols_ || c.j + 2 >= rows_) {
+      lay_exact(
+          centre); // near the raster's edge (never in a closed arena) or w out of the fast range
+      return;
+    }
+    // The disk lies in the 5 x 5 cells around the centre's cell (the constructor checks
+    // 2 (w / 2) < 5 cell, so a cell three away has its centre beyond w / 2 in that axis). Cell
+    // centres in doubled raw units avoid halves: the centre of cell i + d is at
+    // 2 (i cell) + (2 d + 1) cell, so its doubled offset from the robot is (2 d + 1) cell - 2 o.
+    std::int64_t sq[5], room[5];
+    for (int d = 0; d < 5; ++d) {
+      const std::int64_t dx2 = (2 * (d - 2) + 1) * cell_ - 2 * c.ox;
+      const std::int64_t dy2 = (2 * (d - 2) + 1) * cell_ - 2 * c.oy;
+      sq[d] = dx2 * dx2;
+      room[d] = 4 * r2_ - dy2 * dy2; // a column is in row d's chord when sq <= room[d]
+    }
+    for (int e = 0; e < 5; ++e) {
+      std::uint64_t mask = 0;
+      for (int d = 0; d < 5; ++d) mask |= std::uint64_t{sq[d] <= room[e]} << d;
+      // Row j + e - 2, columns i - 2 .. i + 2: bits k .. k + 4 of the row-major bit array, which
+      // may straddle two words (the array has a spare word at its end for that).
+      const auto k = static_cast<std::uint64_t>((c.j + e - 2) * cols_ + c.i - 2);
+      const unsigned shift = k & 63;
+      bits_[k >> 6] |= mask << shift;
+      bits_[(k >> 6) + 1] |= (mask >> 1) >> (63 - shift); // mask >> (64 - shift), 0 at shift 0
+    }
+  }
+  [[nodiscard]] bool at(FxPoint centre) const noexcept {
+    Cell c;
+    if (!locate(centre, c)) return at_exact(centre);
+    if (c.i >= cols_ || c.j >= rows_) return false;
+    const auto k = static_cast<std::uint64_t>(c.j * cols_ + c.i);
+    return ((bits_[k >> 6] >> (k & 63)) & 1u) != 0;
+  }
   [[nodiscard]] Fx cell() const noexcept { return Fx::from_raw(static_cast<std::int32_t>(cell_)); }
   [[nodiscard]] std::int64_t columns() const noexcept { return cols_; }
   [[nodiscard]] std::int64_t rows() const noexcept { return rows_; }
   [[nodiscard]] std::uint64_t marked() const;
+  // Same geometry and the same marked cells.
+  friend bool operator==(const PheromoneRaster&, const PheromoneRaster&) = default;
+
+  // The reference forms of lay() and at(): the plain loop over the disk's bounding cells with one
+  // exact test each, and floor divisions. The fast paths fall back to them near the raster's edge
+  // and the tests hold the fast paths against them.
+  void lay_exact(FxPoint centre) noexcept;
+  [[nodiscard]] bool at_exact(FxPoint centre) const noexcept;
 
 private:
+  struct Cell {
+    std::int64_t i, j;   // the cell holding the point
+    std::int64_t ox, oy; // the point's offset inside it, in [0, cell)
+  };
+  // Cell and offset of p when p is at or right of and above the raster's lower corner and less
+  // than 2^32 raw from it; false otherwise (then the exact forms decide). Division by the cell
+  // side by multiplication with floor(2^32 / cell): for n < 2^32 the product's high half is
+  // floor(n / cell) or one less, and one comparison corrects it (exact; no division per step).
+  bool locate(FxPoint p, Cell& out) const noexcept {
+    const std::int64_t cx = std::int64_t{p.x.raw()} - x0_, cy = std::int64_t{p.y.raw()} - y0_;
+    if (!fast_ || cx < 0 || cy < 0 || cx >= (std::int64_t{1} << 32) ||
+        cy >= (std::int64_t{1} << 32))
+      return false;
+    auto divide = [this](std::int64_t n, std::int64_t& q, std::int64_t& rest) {
+      q = static_cast<std::int64_t>((static_cast<std::uint64_t>(n) * reciprocal_) >> 32);
+      rest = n - q * cell_;
+      if (rest >= cell_) ++q, rest -= cell_;
+    };
+    divide(cx, out.i, out.ox);
+    divide(cy, out.j, out.oy);
+    return true;
+  }
+
   std::int64_t x0_, y0_, cell_, half_width_, cols_, rows_;
-  std::vector<std::uint64_t> bits_;
+  std::int64_t r2_;                 // half_width_ squared
+  std::uint64_t reciprocal_;        // floor(2^32 / cell_)
+  bool fast_;                       // 2 half_width_ < 5 cell_: the 5 x 5 fast path of lay() applies
+  std::vector<std::uint64_t> bits_; // row-major bits, plus one spare word (always 0)
 };
 
 struct TrialParams {
@@ -73,14 +144,17 @@ struct TrialResult {
 
 // One visit: up to `steps` steps from the start pose; calls on_step(pose) after every step (and
 // once for the start); the visit ends early, after that call, when on_step returns false. Exposed
-// for the RS baseline and the tests.
+// for the RS baseline and the tests. on_step is any callable taking const Pose& and returning
+// bool (a template parameter rather than std::function, so that laying or sensing the pheromone
+// is inlined into the step loop).
 struct VisitLog {
   std::vector<FxPoint> trail; // start and every step's position
   std::int64_t length_raw = 0;
   std::uint64_t blocked = 0;
 };
+template <class OnStep>
 VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t trial, int visit,
-                   kernel::TraceHash& hash, const std::function<bool(const Pose&)>& on_step);
+                   kernel::TraceHash& hash, OnStep&& on_step);
 
 TrialResult run_trial(const World& world, const TrialParams& params, std::uint64_t trial);
 
@@ -95,5 +169,61 @@ void parallel_for(std::uint64_t count, unsigned threads,
 
 // Integer square root (floor) of a 64-bit value.
 std::uint64_t isqrt64(std::uint64_t n) noexcept;
+
+// ---------------------------------------------------------------------------------------------
+
+namespace detail {
+// Throws InputError("--steps") unless 0 <= steps <= 100000000.
+void check_visit_steps(std::int64_t steps);
+
+// The exact floor square root of a step's squared length n2, started from the commanded forward
+// distance (the step's length is within a few raw units of it) and corrected by +/- 1 per
+// iteration (isqrt64 was 15 % of a step's time).
+inline std::uint64_t step_length_raw(std::uint64_t n2, Fx forward) noexcept {
+  if (n2 == 0) return 0;
+  auto root = static_cast<std::uint64_t>(kernel::abs(forward).raw());
+  while (root * root > n2) --root;
+  while ((root + 1) * (root + 1) <= n2) ++root;
+  return root;
+}
+
+inline std::uint64_t hash_word(std::int32_t lo, std::int32_t hi) noexcept {
+  return static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) |
+         (static_cast<std::uint64_t>(static_cast<std::uint32_t>(hi)) << 32);
+}
+} // namespace detail
+
+template <class OnStep>
+VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t trial, int visit,
+                   kernel::TraceHash& hash, OnStep&& on_step) {
+  detail::check_visit_steps(params.steps);
+  const auto v = static_cast<std::uint64_t>(visit);
+  kernel::Stream start_stream(params.seed, params.experiment, trial, v, 1);
+  kernel::Stream noise(params.seed, params.experiment, trial, v, 2);
+  ExplorationBehaviour behaviour(kernel::Stream(params.seed, params.experiment, trial, v, 0));
+  Pose pose = world.start_pose(start_stream);
+  VisitLog log;
+  log.trail.reserve(static_cast<std::size_t>(params.steps) + 1);
+  log.trail.push_back(pose.position);
+  bool more = on_step(std::as_const(pose));
+  for (std::int64_t s = 0; more && s < params.steps; ++s) {
+    const Observation obs = world.sense(pose, &noise);
+    const Command cmd = behaviour.step(obs);
+    const FxPoint before = pose.position;
+    if (!world.move(pose, cmd)) ++log.blocked;
+    const std::int64_t dx = std::int64_t{pose.position.x.raw()} - before.x.raw();
+    const std::int64_t dy = std::int64_t{pose.position.y.raw()} - before.y.raw();
+    const Fx forward = world.body().speed * (cmd.left + cmd.right) * Fx::from_ratio(1, 2);
+    log.length_raw += static_cast<std::int64_t>(
+        detail::step_length_raw(static_cast<std::uint64_t>(dx * dx + dy * dy), forward));
+    log.trail.push_back(pose.position);
+    more = on_step(std::as_const(pose));
+    hash.add_u64(detail::hash_word(pose.position.x.raw(), pose.position.y.raw()));
+    hash.add_u64(
+        detail::hash_word(static_cast<std::int32_t>(pose.heading.raw()), behaviour.r().raw()));
+    hash.add_u64(detail::hash_word(behaviour.w_left().raw(), behaviour.w_right().raw()));
+  }
+  return log;
+}
 
 } // namespace antkit::buffon
