@@ -49,6 +49,8 @@ PheromoneRaster::PheromoneRaster(FxPoint lower, FxPoint upper, Fx width,
   r2_ = half_width_ * half_width_;
   reciprocal_ = (std::uint64_t{1} << 32) / static_cast<std::uint64_t>(cell_);
   fast_ = 2 * half_width_ < 5 * cell_; // holds for every width in range (cell >= 163 raw)
+  // w up to about 0.56 units (every width of the paper's figures).
+  narrow_ = 25 * cell_ * cell_ < (std::int64_t{1} << 31) && 4 * r2_ < (std::int64_t{1} << 31);
   bits_.assign(static_cast<std::size_t>((cols_ * rows_ + 63) / 64) + 1, 0);
 }
 

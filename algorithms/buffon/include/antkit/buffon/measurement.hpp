@@ -23,7 +23,11 @@
 #include <antkit/buffon/world.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/random.hpp>
+#include <climits>
 #include <cstdint>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <functional>
 #include <utility>
 #include <vector>
@@ -62,9 +66,34 @@ public:
       sq[d] = dx2 * dx2;
       room[d] = 4 * r2_ - dy2 * dy2; // a column is in row d's chord when sq <= room[d]
     }
+    std::uint64_t masks[5];
+#if defined(__SSE2__)
+    if (narrow_) {
+      // Every sq and room fits in 32 bits (the constructor checks (5 cell)^2 and 4 r^2 < 2^31):
+      // four columns per comparison, the same integers compared exactly.
+      const __m128i sq_lo =
+          _mm_setr_epi32(static_cast<std::int32_t>(sq[0]), static_cast<std::int32_t>(sq[1]),
+                         static_cast<std::int32_t>(sq[2]), static_cast<std::int32_t>(sq[3]));
+      const __m128i sq_hi =
+          _mm_setr_epi32(static_cast<std::int32_t>(sq[4]), INT32_MAX, INT32_MAX, INT32_MAX);
+      for (int e = 0; e < 5; ++e) {
+        const __m128i r = _mm_set1_epi32(static_cast<std::int32_t>(room[e]));
+        // Columns with sq > room are out; the rest (sq <= room) are in.
+        const int out_lo = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpgt_epi32(sq_lo, r)));
+        const int out_hi = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpgt_epi32(sq_hi, r)));
+        masks[e] = ~static_cast<std::uint64_t>(out_lo | (out_hi << 4)) & 0x1Fu;
+      }
+    } else
+#endif
+    {
+      for (int e = 0; e < 5; ++e) {
+        std::uint64_t mask = 0;
+        for (int d = 0; d < 5; ++d) mask |= std::uint64_t{sq[d] <= room[e]} << d;
+        masks[e] = mask;
+      }
+    }
     for (int e = 0; e < 5; ++e) {
-      std::uint64_t mask = 0;
-      for (int d = 0; d < 5; ++d) mask |= std::uint64_t{sq[d] <= room[e]} << d;
+      const std::uint64_t mask = masks[e];
       // Row j + e - 2, columns i - 2 .. i + 2: bits k .. k + 4 of the row-major bit array, which
       // may straddle two words (the array has a spare word at its end for that).
       const auto k = static_cast<std::uint64_t>((c.j + e - 2) * cols_ + c.i - 2);
@@ -81,9 +110,15 @@ public:
     const auto k = static_cast<std::uint64_t>(c.j * cols_ + c.i);
     return ((bits_[k >> 6] >> (k & 63)) & 1u) != 0;
   }
-  [[nodiscard]] Fx cell() const noexcept { return Fx::from_raw(static_cast<std::int32_t>(cell_)); }
-  [[nodiscard]] std::int64_t columns() const noexcept { return cols_; }
-  [[nodiscard]] std::int64_t rows() const noexcept { return rows_; }
+  [[nodiscard]] Fx cell() const noexcept {
+    return Fx::from_raw(static_cast<std::int32_t>(cell_));
+  }
+  [[nodiscard]] std::int64_t columns() const noexcept {
+    return cols_;
+  }
+  [[nodiscard]] std::int64_t rows() const noexcept {
+    return rows_;
+  }
   [[nodiscard]] std::uint64_t marked() const;
   // Same geometry and the same marked cells.
   friend bool operator==(const PheromoneRaster&, const PheromoneRaster&) = default;
@@ -117,6 +152,7 @@ private:
     divide(cy, out.j, out.oy);
     return true;
   }
+  bool narrow_; // (5 cell_)^2 and 4 r2_ below 2^31: lay() compares in 32-bit lanes
 
   std::int64_t x0_, y0_, cell_, half_width_, cols_, rows_;
   std::int64_t r2_;                 // half_width_ squared
