@@ -113,9 +113,11 @@ struct BresenhamWalk {
 
   [[nodiscard]] constexpr bool done() const noexcept { return k == dmajor; }
   // Moves one step along the major axis; returns whether the minor coordinate moved too.
+  // Precondition: !done(). The explicit bool conversion is the one branch: on machine integers a
+  // plain comparison, on the proofs' Z3 integers a fork of the run (proofs/z3/bresenham_walk.cpp).
   constexpr bool advance() noexcept {
     k = k + 1;
-    const bool minor = d >= 0; // ties (d == 0) move away from a
+    const bool minor = static_cast<bool>(d >= Int{0}); // ties (d == 0) move away from a
     if (minor) {
       j = j + 1;
       d = d - dmajor - dmajor;
