@@ -1,7 +1,7 @@
 // `antkit buffon`: Buffon's-needle blind area measurement (issue 4, paper 000).
 //
 //   antkit buffon --arena SPEC|FILE.wkt [--trials N] [--steps N] [--width W] [--seed S]
-//                 [--threads T] [--noise X] [--format table|json] [--svg FILE]
+//                 [--threads T] [--noise X] [--precision P] [--format table|json] [--svg FILE]
 //
 // JSON: {"arena": {"spec", "area"}, "trials": [{"trial", "bc", "nbc", "length1", "length2",
 //        "crossings_exact", "area_closed_form", "area_closed_form_ci", "blocked", "hash"}],
@@ -10,12 +10,21 @@
 // trial saw no crossing; the median is over the trials that have one (null if none). --svg draws
 // trial 0's two trails over the arena (visit 1 blue, visit 2 red), like the paper's Figure 4.
 // Output bytes do not depend on --threads.
+//
+// --precision P (issue 8, item 5): visit 2 stops as soon as BC reaches N*(P, phi), the least count
+// whose 95 % interval of A (closed form, square-root interval widened by the measured dispersion
+// phi of BC, stopping.hpp) lies within a relative P of the estimate; visit 1 keeps --steps and
+// visit 2 is still capped by --steps. Then each trial also has "reached_precision" (BC reached
+// N* before the cap) and the summary has "precision", "stop_bc" (N*), "dispersion" (phi),
+// "stopped_at_bc" (how many trials reached N*) and "length2_median". Without --precision the
+// output is unchanged.
 #include "commands.hpp"
 #include "output.hpp"
 #include "svg.hpp"
 
 #include <antkit/buffon/estimate.hpp>
 #include <antkit/buffon/measurement.hpp>
+#include <antkit/buffon/stopping.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
 #include <antkit/geometry/wkt.hpp>
@@ -41,6 +50,8 @@ struct BuffonCommand {
   std::uint64_t seed = 1;
   std::int64_t threads = 1;
   std::string svg;
+  std::string precision;        // as typed; read exactly by parse_precision
+  bool precision_given = false; // without --precision visit 2 runs all --steps
   Format format = Format::Table;
 };
 
@@ -103,6 +114,12 @@ void run(const BuffonCommand& c) {
   params.seed = c.seed;
   params.steps = c.steps;
   params.width = geometry::fixed_from_double<antkit::kernel::Fx>(c.width, "--width");
+  const bool online = c.precision_given;
+  std::uint32_t precision = 0;
+  if (online) {
+    precision = buffon::parse_precision(c.precision);
+    params.stop_bc = buffon::stop_count(precision, buffon::kMeasuredDispersionMilli);
+  }
 
   const auto count = static_cast<std::uint64_t>(c.trials);
   std::vector<buffon::TrialResult> results(count);
@@ -113,7 +130,8 @@ void run(const BuffonCommand& c) {
   });
 
   nlohmann::json trials = nlohmann::json::array();
-  std::vector<double> nbcs, areas;
+  std::vector<double> nbcs, areas, lengths2;
+  std::uint64_t stopped = 0;
   antkit::kernel::TraceHash all(c.seed);
   for (const auto& t : results) {
     const double l1 = fx_to_double(t.length1_raw), l2 = fx_to_double(t.length2_raw);
@@ -122,6 +140,7 @@ void run(const BuffonCommand& c) {
     nbcs.push_back(nbc);
     if (cf.area) areas.push_back(*cf.area);
     all.add_u64(t.hash);
+    lengths2.push_back(l2);
     trials.push_back({{"trial", t.trial},
                       {"bc", t.bc},
                       {"nbc", nbc},
@@ -133,6 +152,11 @@ void run(const BuffonCommand& c) {
                        {cf.lower, cf.upper ? nlohmann::json(*cf.upper) : nlohmann::json()}},
                       {"blocked", t.blocked},
                       {"hash", antkit::kernel::hash_hex(t.hash)}});
+    if (online) {
+      const bool reached = t.bc >= params.stop_bc;
+      stopped += reached ? 1 : 0;
+      trials.back()["reached_precision"] = reached;
+    }
   }
   nlohmann::json result;
   result["arena"] = {{"spec", c.arena}, {"area", arena.area()}};
@@ -143,6 +167,14 @@ void run(const BuffonCommand& c) {
       {"nbc_q3", buffon::quantile(nbcs, 0.75)},
       {"area_closed_form_median",
        areas.empty() ? nlohmann::json() : nlohmann::json(buffon::quantile(areas, 0.5))}};
+  if (online) {
+    result["summary"]["precision"] = static_cast<double>(precision) / buffon::kPrecisionDenominator;
+    result["summary"]["stop_bc"] = params.stop_bc;
+    result["summary"]["dispersion"] =
+        static_cast<double>(buffon::kMeasuredDispersionMilli) / buffon::kDispersionDenominator;
+    result["summary"]["stopped_at_bc"] = stopped;
+    result["summary"]["length2_median"] = buffon::quantile(lengths2, 0.5);
+  }
   result["hash"] = antkit::kernel::hash_hex(all.finish());
   if (!c.svg.empty()) write_svg(c.svg, arena, results[0]);
   antkit::cli::emit(result, c.format, std::cout);
@@ -160,9 +192,17 @@ void register_buffon(CLI::App& app) {
   sub->add_option("--noise", options->noise, "IR sensor noise amplitude in [0, 1] (default 0)");
   sub->add_option("--seed", options->seed, "Seed of the keyed streams (default 1)");
   sub->add_option("--threads", options->threads, "Worker threads (default 1)");
+  auto* precision = sub->add_option(
+      "--precision", options->precision,
+      "Online stopping: end visit 2 when BC reaches the count whose 95 % interval of "
+      "the area is within this relative precision P in (0, 1), at most six decimals "
+      "(visit 1 keeps --steps; visit 2 is still capped by --steps)");
   sub->add_option("--svg", options->svg, "Draw trial 0's trails to this SVG file");
   antkit::cli::add_format_option(*sub, options->format);
-  sub->callback([options] { run(*options); });
+  sub->callback([options, precision] {
+    options->precision_given = precision->count() > 0;
+    run(*options);
+  });
 }
 
 const antkit::cli::Registration reg{"buffon", &register_buffon};
