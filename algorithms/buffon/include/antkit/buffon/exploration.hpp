@@ -55,9 +55,97 @@ struct Command {
   Fx right;
 };
 
+namespace detail {
+
+constexpr Fx ratio(std::int32_t num, std::int32_t den) {
+  return Fx::from_ratio(num, den);
+}
+
+// The printed constants, rounded to the nearest 2^-16.
+inline constexpr Fx kOne = Fx::one();
+inline constexpr Fx kQuarter = ratio(1, 4);
+inline constexpr Fx kNLimit = ratio(2, 5);       // n in [-0.4, 0.4]
+inline constexpr Fx kNBarLow = ratio(3, 10);     // n_bar in [0.3, 1.0]
+inline constexpr Fx kFrontSum = ratio(27, 10);   // sum of I_1..I_4 above 2.7
+inline constexpr Fx kSideClose = ratio(95, 100); // I_0 or I_5 above 0.95
+inline constexpr Fx kRDecay = ratio(9, 10);
+inline constexpr Fx kRGain = ratio(3, 10);
+inline constexpr Fx kOuter = ratio(3, 2); // 1.5 for I_1, I_4
+inline constexpr Fx kInner = ratio(6, 5); // 1.2 for I_2, I_3
+inline constexpr Fx kWDecay = ratio(1, 10);
+inline constexpr Fx kWFront = ratio(7, 10);
+inline constexpr Fx kWallGain = Fx::from_raw(32768); // 0.5, the lost dw term (see above)
+
+} // namespace detail
+
+// The behaviour's state and outputs after one step, over the number type of a policy.
+template <class Num>
+struct ExplorationStep {
+  Num r, w_l, w_r; // the new state
+  Num r_bar;       // the turn chosen from the old state
+  Num m_l, m_r;    // the wheel commands
+};
+
+// The machine policy: Q15.16 numbers (kernel::Fx) and bool.
+struct FxPolicy {
+  using num = Fx;
+  static constexpr Fx select(bool c, Fx a, Fx b) noexcept { return c ? a : b; }
+  static constexpr Fx abs(Fx x) noexcept { return kernel::abs(x); }
+  static constexpr Fx lift(Fx x) noexcept { return x; }
+};
+
+// One step of the behaviour given the draws n and n_bar, written once over a number policy P
+// (DESIGN.md rule 6): P::num has + - * and comparisons, P::select(c, a, b) chooses, P::abs is |x|
+// and P::lift turns a constant Fx into a P::num. ExplorationBehaviour::step runs it with FxPolicy;
+// proofs/z3/buffon_behaviour.cpp runs it with Z3 integers inside the same Fixed kernels
+// (fx_mul_raw ...). Branch-free: every case is evaluated and chosen by select, so one symbolic run
+// covers all of them.
+template <class P>
+ExplorationStep<typename P::num>
+exploration_step(const typename P::num& r, const typename P::num& w_l, const typename P::num& w_r,
+                 const std::array<typename P::num, 6>& I, const typename P::num& n,
+                 const typename P::num& n_bar) {
+  using Num = typename P::num;
+  const Num zero = P::lift(Fx{}), one = P::lift(detail::kOne);
+  const auto clamp_unit = [&](const Num& v) {
+    return P::select(v < -one, -one, P::select(v > one, one, v));
+  };
+  const auto clamp01 = [&](const Num& v) {
+    return P::select(v < zero, zero, P::select(v > one, one, v));
+  };
+  const auto very_close = (I[1] + I[2] + I[3] + I[4]) > P::lift(detail::kFrontSum) ||
+                          I[0] > P::lift(detail::kSideClose) || I[5] > P::lift(detail::kSideClose);
+  // The current turning direction (see above for why not the printed sign): the sign of r; if r is
+  // 0, sign(w_l - w_r); if that is 0 too, away from the stronger front side (a tie turns left).
+  const auto r_positive = r > zero;
+  const auto r_negative = r < zero;
+  const auto left_front = (I[0] + I[1] + I[2]) > (I[3] + I[4] + I[5]);
+  const auto turn_positive =
+      r_positive || (!r_negative && (w_l > w_r || (!(w_l < w_r) && !left_front)));
+  const Num r_bar =
+      P::select(very_close, P::select(turn_positive, n_bar, -n_bar), clamp_unit(r + n));
+
+  const Num gain = P::lift(detail::kRGain), outer = P::lift(detail::kOuter),
+            inner = P::lift(detail::kInner);
+  const Num dr = -(P::lift(detail::kRDecay) * r) +
+                 gain * (one - r) * (w_l + outer * I[4] + inner * I[3]) -
+                 gain * (one + r) * (w_r + outer * I[1] + inner * I[2]);
+  const Num front = I[2] + I[3];
+  const Num wdecay = P::lift(detail::kWDecay), wfront = P::lift(detail::kWFront),
+            wall = P::lift(detail::kWallGain);
+  const Num dwl = -(wdecay * w_l) - wfront * w_l * front + wall * (one - w_l) * I[5];
+  const Num dwr = -(wdecay * w_r) - wfront * w_r * front + wall * (one - w_r) * I[0];
+  // A choice: r is kept in [-1, 1] and w in [0, 1]. The printed update can overshoot (at r = -1
+  // with strong right-side readings, 0.1 r + 0.6 * 3.7 > 1); the paper clamps r + n, so r itself
+  // is read as an activation in the same range.
+  const Num forward = (one - P::abs(r_bar)) * P::lift(detail::kQuarter);
+  return {clamp_unit(r + dr), clamp01(w_l + dwl), clamp01(w_r + dwr), r_bar,
+          forward - r_bar,    forward + r_bar};
+}
+
 class ExplorationBehaviour {
 public:
-  static constexpr Fx kWallGain = Fx::from_raw(32768); // 0.5, the lost dw term (see above)
+  static constexpr Fx kWallGain = detail::kWallGain;
 
   explicit ExplorationBehaviour(kernel::Stream stream) : stream_(stream) {}
 
