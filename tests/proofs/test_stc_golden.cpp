@@ -1,0 +1,103 @@
+// The Coq model of the STC tour (proofs/coq/StcTour.v, where every tour of the model is proved to
+// visit each sub-cell of the spanned cells exactly once and to be closed) and the shipped offline
+// STC (antkit::stc::SpanningTree), held to each other: proof.coq.StcTour requires coqc's `Compute`
+// output to equal proofs/golden/StcTour.out, and this test requires the shipped code to walk the
+// same tours. Tested correspondence on four trees (an L, a T, a plus, a 2 x 3 block), not a proof
+// about the C++ code.
+#include <algorithm>
+#include <antkit/stc/offline.hpp>
+#include <catch2/catch.hpp>
+#include <cctype>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using antkit::kernel::Cell;
+using antkit::kernel::Occupancy;
+using antkit::kernel::OccupancyGrid;
+using antkit::stc::SpanningTree;
+
+// The sub-cell lists of each `Compute` result of the golden file, in order: a result runs from its
+// "=" to its " : " type line and is a list of (x, y) pairs. Coq breaks lines inside a pair, so only
+// the integers (with their signs) are read, two at a time.
+std::vector<std::vector<Cell>> golden_tours(const std::string& path) {
+  std::ifstream in(path);
+  REQUIRE(in.good());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  std::vector<std::vector<Cell>> out;
+  std::size_t pos = 0;
+  while ((pos = text.find('=', pos)) != std::string::npos) {
+    const std::size_t end = text.find(" : ", pos);
+    REQUIRE(end != std::string::npos);
+    std::vector<int> numbers;
+    for (std::size_t i = pos; i < end; ++i) {
+      const bool minus = text[i] == '-';
+      if (minus) ++i;
+      if (i >= end || std::isdigit(static_cast<unsigned char>(text[i])) == 0) continue;
+      int v = 0;
+      while (i < end && std::isdigit(static_cast<unsigned char>(text[i])) != 0)
+        v = v * 10 + (text[i++] - '0');
+      numbers.push_back(minus ? -v : v);
+    }
+    REQUIRE(numbers.size() % 2 == 0);
+    std::vector<Cell> tour;
+    for (std::size_t k = 0; k < numbers.size(); k += 2)
+      tour.push_back({numbers[k], numbers[k + 1]});
+    out.push_back(std::move(tour));
+    pos = end;
+  }
+  return out;
+}
+
+// The shipped tour over exactly the cells the model's tour passes through, from its first
+// sub-cell. The map has one blocked cell of margin beyond the largest coordinates, so the cells
+// free in the map are exactly the model's cells (the model's vectors use no negative coordinate).
+std::vector<Cell> shipped_tour(const std::vector<Cell>& model, std::int64_t& cells) {
+  std::set<std::pair<int, int>> cell_set;
+  int max_x = 0, max_y = 0;
+  for (Cell s : model) {
+    REQUIRE(s.x >= 0);
+    REQUIRE(s.y >= 0);
+    cell_set.insert({s.x / 2, s.y / 2});
+    max_x = std::max(max_x, s.x / 2);
+    max_y = std::max(max_y, s.y / 2);
+  }
+  OccupancyGrid map(2 * (max_x + 2), 2 * (max_y + 2), Occupancy::Blocked);
+  for (auto [cx, cy] : cell_set)
+    for (int q = 0; q < 4; ++q) map[antkit::stc::subcell_of({cx, cy}, q)] = Occupancy::Free;
+  const SpanningTree tree(map, model.front());
+  cells = static_cast<std::int64_t>(cell_set.size());
+  REQUIRE(tree.cells() == cells);
+  return tree.tour();
+}
+
+} // namespace
+
+TEST_CASE("the shipped offline STC tour equals the Coq model's golden tours - an L a T a plus and "
+          "a 2 x 3 block",
+          "[proofs][stc]") {
+  const auto tours = golden_tours(ANTKIT_SOURCE_DIR "/proofs/golden/StcTour.out");
+  REQUIRE(tours.size() == 4);
+  for (std::size_t i = 0; i < tours.size(); ++i) {
+    const std::vector<Cell>& model = tours[i];
+    REQUIRE_FALSE(model.empty());
+    std::int64_t cells = 0;
+    const std::vector<Cell> shipped = shipped_tour(model, cells);
+    INFO("golden tour " << i << " of proofs/golden/StcTour.out, start (" << model.front().x << ", "
+                        << model.front().y << "), " << cells << " cells");
+    // Invariant 4 on the vector itself (the model's theorem says 4 x cells).
+    CHECK(static_cast<std::int64_t>(model.size()) == 4 * cells);
+    REQUIRE(shipped.size() == model.size());
+    for (std::size_t k = 0; k < model.size(); ++k) {
+      INFO("position " << k);
+      CHECK(shipped[k] == model[k]);
+    }
+  }
+}
