@@ -3,7 +3,9 @@
 // STC (antkit::stc::SpanningTree), held to each other: proof.coq.StcTour requires coqc's `Compute`
 // output to equal proofs/golden/StcTour.out, and this test requires the shipped code to walk the
 // same tours. Tested correspondence on four trees (an L, a T, a plus, a 2 x 3 block), not a proof
-// about the C++ code.
+// about the C++ code. A second test transcribes the model's `tour` recursion over the shipped
+// spanning tree and requires SpanningTree::advance to walk the same tour on every cell map of up
+// to 12 cells (4 x 3, 3 x 4 and smaller) from every start sub-cell.
 #include <algorithm>
 #include <antkit/stc/offline.hpp>
 #include <catch2/catch.hpp>
@@ -78,7 +80,68 @@ std::vector<Cell> shipped_tour(const std::vector<Cell>& model, std::int64_t& cel
   return tree.tour();
 }
 
+// StcTour.v's `tour`, transcribed: entering cell c whose parent lies in direction p, the sub-cell
+// p + 1; then for each side d = p + 1, p + 2, p + 3 the child's tour (if the shipped tree has a
+// child in direction d) and the sub-cell d + 1. The parent's slot is never read.
+void model_tour(const SpanningTree& tree, Cell c, int p, std::vector<Cell>& out) {
+  using namespace antkit::stc;
+  out.push_back(subcell_of(c, dir_add(p, 1)));
+  for (int k = 1; k <= 3; ++k) {
+    const int d = dir_add(p, k);
+    if ((tree.children(c) >> d) & 1u) model_tour(tree, step(c, d), opposite(d), out);
+    out.push_back(subcell_of(c, dir_add(d, 1)));
+  }
+}
+
+// StcTour.v's `stc_tour`: the root's tour with the virtual parent p = q0 - 1, then the tour of
+// the root's child in direction p, if any.
+std::vector<Cell> model_stc_tour(const SpanningTree& tree) {
+  using namespace antkit::stc;
+  std::vector<Cell> out;
+  const Cell root = tree.root();
+  const int p = dir_add(quadrant_of(tree.start()), 3);
+  model_tour(tree, root, p, out);
+  if ((tree.children(root) >> p) & 1u) model_tour(tree, step(root, p), opposite(p), out);
+  return out;
+}
+
 } // namespace
+
+TEST_CASE("every cell map of up to 12 cells in a 4 x 4 box - every start: the shipped tour is the "
+          "Coq model's "
+          "tour of the shipped tree",
+          "[proofs][stc][proof]") {
+  std::int64_t pairs = 0;
+  for (int cw = 1; cw <= 4; ++cw)
+    for (int ch = 1; ch <= 4; ++ch) {
+      if (cw * ch > 12) continue; // 4 x 4 is test_stc_exhaustive's (slow) job
+      OccupancyGrid map(2 * cw, 2 * ch, Occupancy::Blocked);
+      for (std::uint32_t mask = 0; mask < (1u << (cw * ch)); ++mask) {
+        // Bit i of the mask: cell (i % cw, i / cw) is free.
+        for (int i = 0; i < cw * ch; ++i)
+          for (int q = 0; q < 4; ++q)
+            map[antkit::stc::subcell_of({i % cw, i / cw}, q)] =
+                ((mask >> i) & 1u) ? Occupancy::Free : Occupancy::Blocked;
+        for (int i = 0; i < cw * ch; ++i) {
+          if (((mask >> i) & 1u) == 0) continue;
+          for (int q = 0; q < 4; ++q) {
+            const Cell start = antkit::stc::subcell_of({i % cw, i / cw}, q);
+            const SpanningTree tree(map, start);
+            const std::vector<Cell> shipped = tree.tour();
+            const std::vector<Cell> model = model_stc_tour(tree);
+            if (shipped != model) {
+              INFO("map " << cw << " x " << ch << " cells, free mask " << mask << ", start ("
+                          << start.x << ", " << start.y << "): shipped " << shipped.size()
+                          << " positions, model " << model.size());
+              REQUIRE(shipped == model);
+            }
+            ++pairs;
+          }
+        }
+      }
+    }
+  CHECK(pairs > 0);
+}
 
 TEST_CASE("the shipped offline STC tour equals the Coq model's golden tours - an L a T a plus and "
           "a 2 x 3 block",
