@@ -35,7 +35,11 @@
      stc_tour_theorem             all of the above for any spanning tree of any cell set.
    Golden vectors (proofs/golden/StcTour.out): the tours of an L, a T, a plus and a 2 x 3 block;
    tests/proofs/test_stc_golden.cpp runs the shipped offline STC on the same cells from the same
-   start sub-cell and requires the same tour (tested correspondence between model and code). *)
+   start sub-cell and requires the same tour (tested correspondence between model and code). The
+   same test transcribes `tour` / `stc_tour` over the shipped tree's child bits and requires the
+   shipped tour to equal it on every cell map of up to 12 cells from every start sub-cell.
+   Not modelled: building the tree (the hypothesis is "any spanning tree"; every 4-connected set
+   has one), the map, and the C++ integer arithmetic (coordinates here are unbounded Z). *)
 
 From Coq Require Import ZArith List Lia Permutation.
 Import ListNotations.
