@@ -32,13 +32,17 @@
                                        light (bits 8..11), covered_from_edges of the lit edges is
                                        exactly the set of sub-cells the pass has left;
      own_moves_light_only_boxes        a pass lights only bits 0..7 of its own cell's mask;
+     paper_edge_rule_over_every_pass   the same with the paper's own rule over its five boxes,
+                                       read from the entry sub-cell w + 1: it names exactly the
+                                       relative sub-cells 1, 2, 3 the pass has left;
      neighbour_moves_light_only_high_bits  an exterior edge a pass lights (bits 4..7, turn boxes)
                                        is, in the neighbour cell across it, one of bits 8..11: so
                                        the neighbours' passes can light nothing but the bits the
                                        rule is proved to ignore.
    Golden vectors (proofs/golden/AntStc.out), compared with the shipped code by
    tests/proofs/test_ant_golden.cpp for every input: the parent rule's table (current quadrant
-   0..3 x here-mask 0..15) and covered_from_edges for every 12-bit edge mask. *)
+   0..3 x here-mask 0..15), covered_from_edges for every 12-bit edge mask, paper_rule for every
+   box state and paper_boxes for every single edge and entry sub-cell. *)
 From Coq Require Import Arith Bool List Lia.
 Import ListNotations.
 
@@ -177,13 +181,49 @@ Theorem neighbour_moves_light_only_high_bits :
       else true) (range 4)) (range 4) = true.
 Proof. vm_compute. reflexivity. Qed.
 
+(* ---- the paper's five boxes ----
+   As ant.hpp's paper_boxes / paper_rule: relative to the entry sub-cell `entry` (numbered 0, the
+   sub-cells after it 1, 2, 3 counter-clockwise), box 1 = turn(1), box 2 = turn(2), box 3 =
+   cross(2), box 4 = cross(3), box 5 = cross(1); the paper's rule reads "1 iff box 1 or 5; 2 iff
+   box 2 or 3; 3 iff box 4". Bit k - 1 of the boxes is box k; bit r of the rule's answer is
+   relative sub-cell r. *)
+Definition paper_boxes (edges entry : nat) : nat :=
+  let cross r := if bit edges (dadd entry r) then 1 else 0 in
+  let turn r := if bit edges (4 + dadd entry r) then 1 else 0 in
+  turn 1 + 2 * turn 2 + 4 * cross 2 + 8 * cross 3 + 16 * cross 1.
+Definition paper_rule (boxes : nat) : nat :=
+  (if bit boxes 0 || bit boxes 4 then 2 else 0) + (if bit boxes 1 || bit boxes 2 then 4 else 0) +
+  (if bit boxes 3 then 8 else 0).
+
+(* The covered sub-cells relative to the entry sub-cell w + 1 (bits 1..3; the entry sub-cell
+   itself, bit 0, is what the rule does not answer). *)
+Definition relative (m entry : nat) : nat :=
+  (if bit m (dadd entry 1) then 2 else 0) + (if bit m (dadd entry 2) then 4 else 0) +
+  (if bit m (dadd entry 3) then 8 else 0).
+
+Theorem paper_edge_rule_over_every_pass :
+  all_passes (fun w c => forallb (fun n => forallb (fun nb =>
+      let ms := firstn n (pass w c) in
+      let entry := dadd w 1 in
+      Nat.eqb (paper_rule (paper_boxes (Nat.lor (lit_edges ms) (nb * 256)) entry))
+              (relative (marks ms) entry))
+    (range 16)) (range 5)) = true.
+Proof. vm_compute. reflexivity. Qed.
+
 Print Assumptions parent_from_marks_is_the_parent.
 Print Assumptions paper_transition_is_unique.
 Print Assumptions edge_rule_over_every_pass.
 Print Assumptions neighbour_moves_light_only_high_bits.
+Print Assumptions paper_edge_rule_over_every_pass.
 
 (* ---- golden vectors ---- *)
 (* 1. The parent rule's full table: entry 16 * cur + here. *)
 Compute flat_map (fun cur => map (fun here => parent_from_marks cur here) (range 16)) (range 4).
 (* 2. covered_from_edges for every 12-bit edge mask. *)
 Compute map covered_from_edges (range 4096).
+(* 3. The paper's rule over its five boxes, every box state 0..31. *)
+Compute map paper_rule (range 32).
+(* 4. paper_boxes of each single lit edge (bit b, b = 0..11) for each entry sub-cell: entry 12 *
+   entry + b. paper_boxes is an OR of single-edge contributions, so these and that OR determine it
+   on every mask (the C++ test checks the OR on every mask too). *)
+Compute flat_map (fun entry => map (fun b => paper_boxes (2 ^ b) entry) (range 12)) (range 4).

@@ -108,3 +108,28 @@ TEST_CASE("the shipped edge rule equals the Coq model's golden table for every 1
     CHECK(covered_from_edges(static_cast<std::uint16_t>(edges)) == table[edges]);
   }
 }
+
+TEST_CASE("the shipped paper rule and five boxes equal the Coq model's golden tables",
+          "[proofs][stc]") {
+  const auto vectors = golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/AntStc.out");
+  REQUIRE(vectors.size() >= 4);
+  const std::vector<int>& rule = vectors[2]; // paper_rule, box states 0..31
+  REQUIRE(rule.size() == 32);
+  for (unsigned boxes = 0; boxes < 32; ++boxes) {
+    INFO("boxes " << boxes);
+    CHECK(paper_rule(static_cast<std::uint8_t>(boxes)) == rule[boxes]);
+  }
+  const std::vector<int>& single = vectors[3]; // paper_boxes(1 << b, entry), 12 * entry + b
+  REQUIRE(single.size() == 48);
+  for (int entry = 0; entry < 4; ++entry)
+    for (unsigned edges = 0; edges < 4096; ++edges) {
+      // The model's paper_boxes of a mask is the OR of its single-edge values (each box reads one
+      // edge), so the golden single-edge table gives the model's value on every mask.
+      unsigned want = 0;
+      for (int b = 0; b < 12; ++b)
+        if (((edges >> b) & 1u) != 0)
+          want |= static_cast<unsigned>(single[static_cast<std::size_t>(12 * entry + b)]);
+      INFO("entry " << entry << ", edges " << edges);
+      CHECK(paper_boxes(static_cast<std::uint16_t>(edges), entry) == want);
+    }
+}
