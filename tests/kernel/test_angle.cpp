@@ -29,8 +29,8 @@ long double exact_radians(Angle a) {
   return static_cast<long double>(a.raw()) * 2 * kPi / kTurnUnits;
 }
 
-// The documented bounds (angle.hpp): 2^-(F+1) + 2.946e-7 for sine and cosine, 55 units for atan2.
-constexpr long double kInterpolationBound = 2.946e-7L;
+// The documented bounds (angle.hpp): 2^-(F+1) + 2.947e-7 for sine and cosine, 55 units for atan2.
+constexpr long double kInterpolationBound = 2.947e-7L;
 long double sin_bound(int frac_bits) {
   return std::ldexp(1.0L, -(frac_bits + 1)) + kInterpolationBound;
 }

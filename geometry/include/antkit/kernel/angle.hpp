@@ -12,9 +12,11 @@
 // by the exact symmetries sin(pi - x) = sin x and sin(-x) = -sin x. The interpolation is carried
 // out exactly (in units of 2^-50) and rounded once, half up, to the F fraction bits of the result;
 // the magnitude is rounded before the sign is applied, so sin(-a) == -sin(a) holds exactly.
-//   error bound:  |sin(a) - sin_exact(a)| <= 2^-(F+1) + 2.946e-7, where 2.946e-7 is the linear
-//                 interpolation error h^2/8 with h = (pi/2)/1024 (2.9413e-7) plus the table's
-//                 rounding 2^-31. For Fx (F = 16) that is <= 0.5194 ulp = 7.93e-6.
+//   error bound:  |sin(a) - sin_exact(a)| <= 2^-(F+1) + 2.947e-7, where 2.947e-7 is the linear
+//                 interpolation error h^2/8 with h = (pi/2)/1024 (2.94137e-7) plus the table's
+//                 rounding 2^-31 (4.66e-10), 2.94603e-7 rounded up (this said 2.946e-7, rounded
+//                 down, until tests/kernel/test_angle_sine_table.cpp checked the sum). For Fx
+//                 (F = 16) that is <= 0.5194 ulp = 7.93e-6.
 //   exact identities: cos(a) == sin(a + quarter turn); sin(a + half turn) == -sin(a);
 //                 sin(-a) == -sin(a); sin(half turn - a) == sin(a); the bearings give 0 and +-1
 //                 exactly on the axes.
