@@ -68,9 +68,48 @@ public:
     return claim(name, s_.ctx().bool_val(true));
   }
 
+  // A negative check, to show a proof has teeth: `c` must NOT hold in the domain (a deliberately
+  // wrong bound, or a domain one bit too large); Z3 must find a counterexample, which is printed.
+  // Pending obligations are left for the next claim. Fails (counts as a failure) if c is proved.
+  bool refute(const std::string& name, const Bool& c) { return refute(name, c.expr()); }
+  bool refute(const std::string& name, const z3::expr& c) {
+    z3::solver solver(s_.ctx(), "QF_BV");
+    solver.add(domain_);
+    for (const auto& p : s_.path()) solver.add(p);
+    for (const auto& f : s_.facts()) solver.add(f);
+    solver.add(!c);
+    const z3::check_result r = solver.check();
+    if (r == z3::sat) {
+      ++refuted_;
+      std::cout << "refuted  " << name << " (as it must be), e.g.";
+      const z3::model m = solver.get_model();
+      for (unsigned i = 0; i < m.size(); ++i) {
+        const z3::func_decl d = m[i];
+        if (d.arity() != 0 || d.name().str().find('!') != std::string::npos) continue;
+        std::cout << " " << d.name().str() << "="
+                  << m.eval(z3::expr(s_.ctx(), Z3_mk_bv2int(s_.ctx(), m.get_const_interp(d), true)),
+                            true);
+      }
+      std::cout << std::endl;
+      return true;
+    }
+    ++failures_;
+    std::cout << "NO TEETH " << name << ": expected a counterexample, Z3 says "
+              << (r == z3::unsat ? "it holds" : "unknown") << "\n";
+    return false;
+  }
+  // Every pending obligation as one expression (and forget them): for a negative check that the
+  // code has undefined behaviour just outside its domain.
+  z3::expr take_obligations() {
+    z3::expr all = s_.ctx().bool_val(true);
+    for (const auto& ob : s_.obligations()) all = all && ob.holds;
+    s_.clear_obligations();
+    return all;
+  }
+
   int result() const {
-    std::cout << (failures_ == 0 ? "all " : "") << proved_ << " proved, " << failures_
-              << " failed\n";
+    std::cout << (failures_ == 0 ? "all " : "") << proved_ << " proved, " << refuted_
+              << " wrong claims refuted, " << failures_ << " failed\n";
     return failures_ == 0 ? 0 : 1;
   }
 
@@ -121,6 +160,7 @@ private:
   z3::expr domain_;
   bool integers_ = false;
   int proved_ = 0;
+  int refuted_ = 0;
   int failures_ = 0;
 };
 
