@@ -77,24 +77,38 @@ bool binomial_accepts(const NeedleResult& r, double p) {
   return std::abs(static_cast<double>(r.hits) - n * p) <= kZ * std::sqrt(n * p * (1 - p));
 }
 
-// ---------------------------------------------------------- polygon with a hole, isotropic
-// segments Region: the square [0, S]^2 minus the square hole [H0, H1]^2 (integer corners, exact
-// area S^2 - (H1 - H0)^2). Segments of length l: direction uniform, midpoint uniform in the box
-// [-l/2, S + l/2]^2, then CLIPPED to the region (not kept-or-dropped). Why this is unbiased for
-// Crofton: the (midpoint, direction) measure is invariant under rigid motions, and every point of
-// the region at every direction is reached by the same measure of segments because the midpoint box
-// contains the region dilated by l/2; so the clipped length is spread uniformly and isotropically
-// over the region. Keeping only segments wholly inside would thin the length within l/2 of every
-// edge and bias A_hat. The classical formula E[N] = 2 L1 L2 / (pi A) then holds for the two
-// independent families of clipped pieces, conditionally on their lengths.
+// ------------------------------------------------ polygon with a hole, isotropic segments
+// Region: a rectangle minus a rectangular hole (integer corners, so the area is exact).
+// Segments of length l: direction uniform, midpoint uniform in the box
+// [-l/2, W + l/2] x [-l/2, H + l/2], then CLIPPED to the region (not kept-or-dropped). Why this is
+// unbiased for Crofton: the (midpoint, direction) measure is invariant under rigid motions, and
+// every point of the region at every direction is reached by the same measure of segments because
+// the midpoint box contains the region dilated by l/2; so the clipped length is spread uniformly
+// and isotropically over the region. Keeping only segments wholly inside would thin the length
+// within l/2 of every edge and bias A_hat. The classical formula E[N] = 2 L1 L2 / (pi A) then holds
+// for the two independent families of clipped pieces, conditionally on their lengths.
 struct Region {
-  double S = 20, H0 = 7, H1 = 13;
-  double area() const { return S * S - (H1 - H0) * (H1 - H0); }
+  double W = 20, H = 20;                       // outer rectangle [0, W] x [0, H]
+  double hx0 = 7, hy0 = 7, hx1 = 13, hy1 = 13; // hole [hx0, hx1] x [hy0, hy1], inside
+  double area() const { return W * H - (hx1 - hx0) * (hy1 - hy0); }
 };
 
-// Parameter interval [t0, t1] of p + t d inside the axis box [lo, hi]^2 (Liang-Barsky).
-bool clip_box(double px, double py, double dx, double dy, double lo, double hi, double& t0,
-              double& t1) {
+// A random rectangle with a random rectangular hole, integer corners: W, H in [8, 40], the hole at
+// least one unit from every outer edge (so the region stays connected around it).
+Region random_region(Stream& s) {
+  Region g;
+  g.W = s.between(8, 40);
+  g.H = s.between(8, 40);
+  g.hx0 = s.between(1, static_cast<std::int32_t>(g.W) - 3);
+  g.hx1 = s.between(static_cast<std::int32_t>(g.hx0) + 1, static_cast<std::int32_t>(g.W) - 1);
+  g.hy0 = s.between(1, static_cast<std::int32_t>(g.H) - 3);
+  g.hy1 = s.between(static_cast<std::int32_t>(g.hy0) + 1, static_cast<std::int32_t>(g.H) - 1);
+  return g;
+}
+
+// Parameter interval [t0, t1] of p + t d inside the box [x0, x1] x [y0, y1] (Liang-Barsky).
+bool clip_box(double px, double py, double dx, double dy, double x0, double y0, double x1,
+              double y1, double& t0, double& t1) {
   auto edge = [&](double p, double q) {
     if (p == 0) return q >= 0;
     const double r = q / p;
@@ -104,7 +118,7 @@ bool clip_box(double px, double py, double dx, double dy, double lo, double hi, 
       t1 = std::min(t1, r);
     return true;
   };
-  return edge(-dx, px - lo) && edge(dx, hi - px) && edge(-dy, py - lo) && edge(dy, hi - py) &&
+  return edge(-dx, px - x0) && edge(dx, x1 - px) && edge(-dy, py - y0) && edge(dy, y1 - py) &&
          t0 < t1;
 }
 
@@ -112,19 +126,19 @@ void drop_family(const Region& g, double l, double total_length, Stream& s,
                  std::vector<FxSegment>& out, double& length_inside) {
   out.clear();
   length_inside = 0;
-  const double span = g.S + l;
+  const double sx = g.W + l, sy = g.H + l;
   double dropped = 0;
-  while (dropped < total_length * (span * span) / g.area()) {
-    const double mx = -0.5 * l + span * unit(s), my = -0.5 * l + span * unit(s);
+  while (dropped < total_length * (sx * sy) / g.area()) {
+    const double mx = -0.5 * l + sx * unit(s), my = -0.5 * l + sy * unit(s);
     const double th = kPi * unit(s);
     const double dx = l * std::cos(th), dy = l * std::sin(th);
     const double px = mx - 0.5 * dx, py = my - 0.5 * dy;
     dropped += l;
     double t0 = 0, t1 = 1;
-    if (!clip_box(px, py, dx, dy, 0, g.S, t0, t1)) continue;
+    if (!clip_box(px, py, dx, dy, 0, 0, g.W, g.H, t0, t1)) continue;
     double h0 = t0, h1 = t1; // remove the part inside the hole
     std::vector<std::pair<double, double>> pieces;
-    if (clip_box(px, py, dx, dy, g.H0, g.H1, h0, h1)) {
+    if (clip_box(px, py, dx, dy, g.hx0, g.hy0, g.hx1, g.hy1, h0, h1)) {
       if (h0 > t0) pieces.emplace_back(t0, h0);
       if (t1 > h1) pieces.emplace_back(h1, t1);
     } else {
@@ -141,7 +155,7 @@ void drop_family(const Region& g, double l, double total_length, Stream& s,
 std::uint64_t crossings(const std::vector<FxSegment>& f, const std::vector<FxSegment>& g) {
   std::uint64_t n = 0;
   for (const auto& s : f)
-    for (const auto& t : g) n += antkit::kernel::properly_cross(s, t) ? 1 : 0;
+    for (const auto& t : g) n += antkit::kernel::properly_cross(s, t) ? 1u : 0u;
   return n;
 }
 
@@ -204,7 +218,8 @@ TEST_CASE("Crofton: two clipped isotropic segment families in a polygon with a h
     double mean = 0, sq = 0;
     int covered = 0;
     for (int t = 0; t < trials; ++t) {
-      const Trial tr = crofton_trial(g, l, total, seed, static_cast<std::uint64_t>(k * 1000 + t));
+      const Trial tr = crofton_trial(
+          g, l, total, seed, static_cast<std::uint64_t>(k) * 1000 + static_cast<std::uint64_t>(t));
       ts.push_back(tr);
       const auto cf = antkit::buffon::closed_form_area(tr.l1, tr.l2, tr.n);
       REQUIRE(cf.area.has_value());
@@ -233,9 +248,9 @@ TEST_CASE("Crofton: two clipped isotropic segment families in a polygon with a h
   // var(ln sd) ~ 1/(2 (T - 1)); the slope's standard error is sqrt of that over sum (x - xbar)^2.
   // (The fit's own residual SE has only 2 degrees of freedom, so its 1e-6 t quantile is useless.)
   double xb = 0, yb = 0;
-  for (int i = 0; i < 4; ++i) xb += log_n[i] / 4, yb += log_spread[i] / 4;
+  for (std::size_t i = 0; i < 4; ++i) xb += log_n[i] / 4, yb += log_spread[i] / 4;
   double sxx = 0, sxy = 0;
-  for (int i = 0; i < 4; ++i) {
+  for (std::size_t i = 0; i < 4; ++i) {
     sxx += (log_n[i] - xb) * (log_n[i] - xb);
     sxy += (log_n[i] - xb) * (log_spread[i] - yb);
   }
@@ -248,4 +263,39 @@ TEST_CASE("Crofton: two clipped isotropic segment families in a polygon with a h
   CHECK(std::abs(crofton_z(all, g.area(), kPi)) <= kZ);
   CHECK(std::abs(crofton_z(all, g.area(), 3.0)) > kZ);
   CHECK(std::abs(crofton_z(all, 1.1 * g.area(), kPi)) > kZ);
+}
+
+TEST_CASE("Crofton on random rectangles with random holes: A_hat unbiased over 20 regions",
+          "[crofton][property]") {
+  const std::uint64_t seed = 20261122;
+  Stream gs(seed, 8, 0, 0, 4);
+  const double l = 1.5;
+  std::vector<Trial> all;
+  std::vector<double> areas;
+  for (int r = 0; r < 20; ++r) {
+    const Region g = random_region(gs);
+    const double total = std::sqrt(800.0 * kPi * g.area() / 2); // E[N] about 800
+    for (int t = 0; t < 10; ++t) {
+      all.push_back(crofton_trial(g, l, total, seed, static_cast<std::uint64_t>(r * 100 + t)));
+      areas.push_back(g.area());
+    }
+  }
+  // Pooled z with each trial's own area: sum (N - E) / sqrt(sum (N - E)^2).
+  auto z_of = [&](double pi, double scale) {
+    double num = 0, var = 0;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      const double e = 2 * all[i].l1 * all[i].l2 / (pi * scale * areas[i]);
+      const double d = static_cast<double>(all[i].n) - e;
+      num += d;
+      var += d * d;
+    }
+    return num / std::sqrt(var);
+  };
+  const double z = z_of(kPi, 1.0);
+  std::printf("crofton random regions z=%.2f (pi->3: %.1f, area+10%%: %.1f)\n", z, z_of(3.0, 1.0),
+              z_of(kPi, 1.1));
+  INFO("seed " << seed << " z " << z);
+  CHECK(std::abs(z) <= kZ);
+  CHECK(std::abs(z_of(3.0, 1.0)) > kZ);
+  CHECK(std::abs(z_of(kPi, 1.1)) > kZ);
 }
