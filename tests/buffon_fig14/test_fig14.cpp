@@ -1,0 +1,94 @@
+// Issue 8 item 4 / Section 8.1, Figure 14 of paper 000: the calibrated Buffon estimate (a + b x^c
+// fitted on circles of diameter 30, 50, 70, 90, predicting 40, 60, 80, 100) is already good at
+// short trails, while the Randomized Search (RS) estimate can only grow with the area its body has
+// swept, so its error stays large until the trail covers the arena.
+//
+// Scale (to stay well under 90 s CPU in a release build): 40 trials per circle instead of the
+// paper's 100, checkpoints every 168 units per visit as in the paper, K = 10 (total 336 .. 3360).
+// What is asserted, and with what error rate:
+//  * RS: its estimate is at most the area swept by the unit-diameter body plus the cells that
+//    straddle the swept band: RS <= (L + pi/4 + cell slack) where L is the total trail length
+//    (a geometric bound: zero false-failure rate). Hence on d = 100 (area 7854) its relative
+//    error at total length L is at least 1 - (L + 2)/7854 > 0.5 for every checkpoint here; we
+//    assert the bound itself on every arena, trial and checkpoint, and that the RS median error on
+//    d = 100 stays above 0.5 throughout.
+//  * Buffon: the calibrated estimate's median relative error over the held-out diameters at the
+//    longest checkpoint is below 0.25 and below the RS error there; measured values are printed.
+//    This one is statistical with 40 trials; its margin is chosen from the measured spread (see the
+//    printed IQR), not proven to 1e-6 (stated as a weakness in the report).
+#include "../../algorithms/buffon/experiments/calibration.hpp"
+
+#include <algorithm>
+#include <antkit/buffon/checkpoints.hpp>
+#include <antkit/buffon/estimate.hpp>
+#include <antkit/buffon/measurement.hpp>
+#include <antkit/buffon/world.hpp>
+#include <antkit/geometry/arena_spec.hpp>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+TEST_CASE("Figure 14: calibrated Buffon beats Randomized Search at short trails", "[fig14][slow]") {
+  using namespace antkit;
+  constexpr int K = 10, T = 40;
+  const std::int64_t step_raw = std::int64_t{168} * 65536;
+  const std::uint64_t seed = 20261121;
+  struct A {
+    double d, area;
+    std::vector<std::vector<double>> nbc, rs;
+  };
+  std::vector<A> arenas;
+  for (int d = 30; d <= 100; d += 10) {
+    const auto arena = geometry::build_arena_spec("circle:d=" + std::to_string(d), "test").arena;
+    const buffon::World world(arena.walls_fx());
+    buffon::TrialParams params;
+    params.seed = seed;
+    params.experiment = 8400 + static_cast<std::uint64_t>(d);
+    A a{static_cast<double>(d), arena.area(), std::vector<std::vector<double>>(K),
+        std::vector<std::vector<double>>(K)};
+    for (std::uint64_t t = 0; t < T; ++t) {
+      const auto r = buffon::run_checkpoints(world, params, t, step_raw, K);
+      const double cell = static_cast<double>(r.rs_cell_raw) / 65536.0;
+      for (std::size_t k = 0; k < K; ++k) {
+        const double l2 = static_cast<double>(r.length2_raw[k]) / 65536.0;
+        a.nbc[k].push_back(l2 > 0 ? static_cast<double>(r.bc[k]) / l2 : 0.0);
+        const double rs = static_cast<double>(r.rs_cells[k]) * cell * cell;
+        a.rs[k].push_back(rs);
+        const double total = 2.0 * 168.0 * static_cast<double>(k + 1);
+        // Swept band of width 1 plus the end disk, plus one cell of slack on each side of the band.
+        INFO("seed " << seed << " d " << d << " trial " << t << " k " << k);
+        REQUIRE(rs <= (total * (1.0 + 2.0 * cell) + 3.15 / 4.0 + 4 * cell) * 1.0001);
+      }
+    }
+    arenas.push_back(std::move(a));
+  }
+  std::vector<double> buffon_err(K), rs_err100(K);
+  for (std::size_t k = 0; k < K; ++k) {
+    std::vector<double> xs, ys;
+    for (const auto& a : arenas)
+      if (static_cast<int>(a.d) % 20 == 10) {
+        xs.push_back(buffon::quantile(a.nbc[k], 0.5));
+        ys.push_back(a.area);
+      }
+    const auto fit = buffon::fit_power_law(xs, ys);
+    std::vector<double> errs;
+    for (const auto& a : arenas) {
+      if (static_cast<int>(a.d) % 20 != 0) continue;
+      std::vector<double> est;
+      for (double x : a.nbc[k]) est.push_back(x > 0 ? fit(x) : 0.0);
+      errs.push_back(std::abs(buffon::quantile(est, 0.5) / a.area - 1));
+      if (a.d == 100) rs_err100[k] = std::abs(buffon::quantile(a.rs[k], 0.5) / a.area - 1);
+    }
+    buffon_err[k] = buffon::quantile(errs, 0.5);
+    std::printf("fig14 total=%4.0f buffon_heldout_median_err=%.3f (max %.3f) rs_err_d100=%.3f\n",
+                2.0 * 168.0 * static_cast<double>(k + 1), buffon_err[k],
+                *std::max_element(errs.begin(), errs.end()), rs_err100[k]);
+  }
+  INFO("seed " << seed << " trials " << T);
+  for (std::size_t k = 0; k < K; ++k) CHECK(rs_err100[k] > 0.5);
+  CHECK(buffon_err[K - 1] < 0.25);
+  CHECK(buffon_err[K - 1] < buffon_err[0]); // the calibrated error falls as the trail grows
+  CHECK(buffon_err[K - 1] < rs_err100[K - 1]);
+}
