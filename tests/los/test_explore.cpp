@@ -35,19 +35,18 @@ OccupancyGrid random_grid(std::int32_t w, std::int32_t h, std::uint64_t seed, st
   return g;
 }
 
-} // namespace
-
-TEST_CASE("every 4x3 map and every start: sound and monotone and complete for all three variants",
-          "[proof]") {
-  // 2^12 maps x every free start cell with a free neighbour x 3 variants: each tick is checked
-  // (soundness, states only up, NLOS only from F, the frontier set, robots apart on free cells,
-  // moves to neighbours) and so is completion (observable == explored).
+// Every w x h map (each cell free or blocked) and every free start cell with a free neighbour, for
+// all three variants: each tick is checked (soundness, states only up, NLOS only from F, the
+// frontier set, robots apart on free cells, moves to neighbours) and so is completion
+// (observable == explored). Returns the number of runs.
+std::size_t check_every_map(std::int32_t w, std::int32_t h) {
+  const auto n = static_cast<std::size_t>(w * h);
   std::size_t runs = 0;
-  for (std::uint32_t bits = 0; bits < (1u << 12); ++bits) {
-    OccupancyGrid g(4, 3, Occupancy::Free);
-    for (std::size_t i = 0; i < 12; ++i)
+  for (std::uint32_t bits = 0; bits < (1u << n); ++bits) {
+    OccupancyGrid g(w, h, Occupancy::Free);
+    for (std::size_t i = 0; i < n; ++i)
       if (bits >> i & 1u) g.cells()[i] = Occupancy::Blocked;
-    for (std::size_t i = 0; i < 12; ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
       std::array<Cell, 2> start{};
       try {
         start = los::start_pair(g, g.cell_at(i));
@@ -58,14 +57,31 @@ TEST_CASE("every 4x3 map and every start: sound and monotone and complete for al
         const std::string err = antkit::test::check_run(g, start[0], start[1], options);
         ++runs;
         if (!err.empty()) {
-          INFO("map bits " << bits << ", start cell " << i << ", algorithm "
-                           << static_cast<int>(options.algorithm) << ": " << err);
+          INFO(w << "x" << h << " map bits " << bits << ", start cell " << i << ", algorithm "
+                 << static_cast<int>(options.algorithm) << ": " << err);
           REQUIRE(err.empty());
         }
       }
     }
   }
-  CHECK(runs > 50000);
+  return runs;
+}
+
+} // namespace
+
+TEST_CASE("every 3x3 map and every start: sound and monotone and complete for all three variants",
+          "[proof]") {
+  CHECK(check_every_map(3, 3) > 2000);
+}
+
+TEST_CASE("every 4x3 map and every start: sound and monotone and complete for all three variants",
+          "[proof]") {
+  CHECK(check_every_map(4, 3) > 50000);
+}
+
+TEST_CASE("every 4x4 map and every start: sound and monotone and complete for all three variants",
+          "[proof][slow]") {
+  CHECK(check_every_map(4, 4) > 1000000);
 }
 
 TEST_CASE("random maps up to 40x40: sound and monotone and complete", "[property]") {
