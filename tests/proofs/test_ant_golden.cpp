@@ -3,6 +3,8 @@
 // coqc's `Compute` output to equal proofs/golden/AntStc.out, and this test requires the shipped
 // code to give the same answer on every input of both rules. Tested correspondence between the
 // model and the code, not a proof about the C++ code itself.
+#include "coq_golden.hpp"
+
 #include <antkit/stc/ant.hpp>
 #include <catch2/catch.hpp>
 #include <cctype>
@@ -15,34 +17,6 @@
 namespace {
 
 using namespace antkit::stc;
-
-// The integers of each `Compute` result of the golden file, in order: one vector per result (a
-// result runs from its "=" to its " : " type line). Lines before the first "=" (the `Print
-// Assumptions` reports) hold no '='.
-std::vector<std::vector<int>> golden_vectors(const std::string& path) {
-  std::ifstream in(path);
-  REQUIRE(in.good());
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
-  std::vector<std::vector<int>> out;
-  std::size_t pos = 0;
-  while ((pos = text.find('=', pos)) != std::string::npos) {
-    const std::size_t end = text.find(" : ", pos);
-    REQUIRE(end != std::string::npos);
-    std::vector<int> numbers;
-    for (std::size_t i = pos; i < end; ++i) {
-      if (std::isdigit(static_cast<unsigned char>(text[i])) == 0) continue;
-      int v = 0;
-      while (i < end && std::isdigit(static_cast<unsigned char>(text[i])) != 0)
-        v = v * 10 + (text[i++] - '0');
-      numbers.push_back(v);
-    }
-    out.push_back(numbers);
-    pos = end;
-  }
-  return out;
-}
 
 Command decide(int cur, std::uint8_t here, unsigned free_neighbours) {
   int q = cur;
@@ -72,7 +46,8 @@ int observed_parent(int cur, std::uint8_t here) {
 
 TEST_CASE("the shipped parent-from-marks rule equals the Coq model's golden table, every input",
           "[proofs][stc]") {
-  const auto vectors = golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/AntStc.out");
+  const auto vectors =
+      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/AntStc.out");
   REQUIRE(vectors.size() >= 2);
   const std::vector<int>& table = vectors[0]; // current quadrant 0..3 x here-mask 0..15
   REQUIRE(table.size() == 64);
@@ -99,7 +74,8 @@ TEST_CASE("the reading of ant_decide's step 1 can fail: a walk where w == cur is
 
 TEST_CASE("the shipped edge rule equals the Coq model's golden table for every 12-bit mask",
           "[proofs][stc]") {
-  const auto vectors = golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/AntStc.out");
+  const auto vectors =
+      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/AntStc.out");
   REQUIRE(vectors.size() >= 2);
   const std::vector<int>& table = vectors[1];
   REQUIRE(table.size() == 4096);
@@ -111,7 +87,8 @@ TEST_CASE("the shipped edge rule equals the Coq model's golden table for every 1
 
 TEST_CASE("the shipped paper rule and five boxes equal the Coq model's golden tables",
           "[proofs][stc]") {
-  const auto vectors = golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/AntStc.out");
+  const auto vectors =
+      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/AntStc.out");
   REQUIRE(vectors.size() >= 4);
   const std::vector<int>& rule = vectors[2]; // paper_rule, box states 0..31
   REQUIRE(rule.size() == 32);

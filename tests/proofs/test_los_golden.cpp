@@ -2,6 +2,8 @@
 // antkit::los::ExplorationMap, held to each other: proof.coq.LosStates requires coqc's `Compute`
 // output to equal proofs/golden/LosStates.out, and this test requires the shipped code to produce
 // the same transition table and order. Tested correspondence, not a proof about the C++ code.
+#include "coq_golden.hpp"
+
 #include <antkit/los/cell_state.hpp>
 #include <antkit/los/exploration_map.hpp>
 #include <array>
@@ -18,33 +20,6 @@ using antkit::kernel::Cell;
 using antkit::los::CellState;
 using antkit::los::ExplorationMap;
 using antkit::los::Sensed;
-
-// The integers of each `Compute` result of the golden file, in order: one vector per result (a
-// result runs from its "=" to its " : " type line).
-std::vector<std::vector<int>> golden_vectors(const std::string& path) {
-  std::ifstream in(path);
-  REQUIRE(in.good());
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
-  std::vector<std::vector<int>> out;
-  std::size_t pos = 0;
-  while ((pos = text.find('=', pos)) != std::string::npos) {
-    const std::size_t end = text.find(" : ", pos);
-    REQUIRE(end != std::string::npos);
-    std::vector<int> numbers;
-    for (std::size_t i = pos; i < end; ++i) {
-      if (std::isdigit(static_cast<unsigned char>(text[i])) == 0) continue;
-      int v = 0;
-      while (i < end && std::isdigit(static_cast<unsigned char>(text[i])) != 0)
-        v = v * 10 + (text[i++] - '0');
-      numbers.push_back(v);
-    }
-    out.push_back(numbers);
-    pos = end;
-  }
-  return out;
-}
 
 // The model's events, in the golden table's column order.
 enum class Event { ScanFree, ScanObstacle, Seen, NotSeen };
@@ -83,7 +58,8 @@ const std::array<std::vector<Event>, 6> kReach{{
 
 TEST_CASE("the shipped LOS cell-state transitions equal the Coq model's golden table",
           "[proofs][los]") {
-  const auto vectors = golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/LosStates.out");
+  const auto vectors =
+      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/LosStates.out");
   REQUIRE(vectors.size() >= 2);
   const std::vector<int>& table = vectors[0]; // 6 states x 4 events
   REQUIRE(table.size() == 24);
@@ -100,7 +76,8 @@ TEST_CASE("the shipped LOS cell-state transitions equal the Coq model's golden t
 }
 
 TEST_CASE("the shipped cell-state order equals the Coq model's golden order", "[proofs][los]") {
-  const auto vectors = golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/LosStates.out");
+  const auto vectors =
+      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/LosStates.out");
   REQUIRE(vectors.size() >= 2);
   const std::vector<int>& order = vectors[1]; // 6 x 6
   REQUIRE(order.size() == 36);

@@ -6,6 +6,8 @@
 // about the C++ code. A second test transcribes the model's `tour` recursion over the shipped
 // spanning tree and requires SpanningTree::advance to walk the same tour on every cell map of up
 // to 12 cells (4 x 3, 3 x 4 and smaller) from every start sub-cell.
+#include "coq_golden.hpp"
+
 #include <algorithm>
 #include <antkit/stc/offline.hpp>
 #include <catch2/catch.hpp>
@@ -28,32 +30,13 @@ using antkit::stc::SpanningTree;
 // "=" to its " : " type line and is a list of (x, y) pairs. Coq breaks lines inside a pair, so only
 // the integers (with their signs) are read, two at a time.
 std::vector<std::vector<Cell>> golden_tours(const std::string& path) {
-  std::ifstream in(path);
-  REQUIRE(in.good());
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
   std::vector<std::vector<Cell>> out;
-  std::size_t pos = 0;
-  while ((pos = text.find('=', pos)) != std::string::npos) {
-    const std::size_t end = text.find(" : ", pos);
-    REQUIRE(end != std::string::npos);
-    std::vector<int> numbers;
-    for (std::size_t i = pos; i < end; ++i) {
-      const bool minus = text[i] == '-';
-      if (minus) ++i;
-      if (i >= end || std::isdigit(static_cast<unsigned char>(text[i])) == 0) continue;
-      int v = 0;
-      while (i < end && std::isdigit(static_cast<unsigned char>(text[i])) != 0)
-        v = v * 10 + (text[i++] - '0');
-      numbers.push_back(minus ? -v : v);
-    }
+  for (const std::vector<int>& numbers : antkit::test::coq_golden_vectors(path)) {
     REQUIRE(numbers.size() % 2 == 0);
     std::vector<Cell> tour;
     for (std::size_t k = 0; k < numbers.size(); k += 2)
       tour.push_back({numbers[k], numbers[k + 1]});
     out.push_back(std::move(tour));
-    pos = end;
   }
   return out;
 }

@@ -4,6 +4,8 @@
 // the same cells, in the same order, for those walks (and their reflections and translations,
 // which RasterFrame maps onto the same local walk). Tested correspondence between the model and
 // the code on these vectors, not a proof about the C++ code itself.
+#include "coq_golden.hpp"
+
 #include <antkit/kernel/raster.hpp>
 #include <array>
 #include <catch2/catch.hpp>
@@ -18,35 +20,6 @@ namespace {
 
 using antkit::kernel::Cell;
 
-// The integers of each `Compute` result of the golden file, in order: one vector per result (a
-// result runs from its "=" to its " : " type line). The walks stay in the first quadrant, so no
-// minus signs appear.
-std::vector<std::vector<int>> golden_vectors(const std::string& path) {
-  std::ifstream in(path);
-  REQUIRE(in.good());
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
-  std::vector<std::vector<int>> out;
-  std::size_t pos = 0;
-  while ((pos = text.find('=', pos)) != std::string::npos) {
-    const std::size_t end = text.find(" : ", pos);
-    REQUIRE(end != std::string::npos);
-    std::vector<int> numbers;
-    for (std::size_t i = pos; i < end; ++i) {
-      if (text[i] == '-') FAIL("negative coordinate in the golden file");
-      if (std::isdigit(static_cast<unsigned char>(text[i])) == 0) continue;
-      int v = 0;
-      while (i < end && std::isdigit(static_cast<unsigned char>(text[i])) != 0)
-        v = v * 10 + (text[i++] - '0');
-      numbers.push_back(v);
-    }
-    out.push_back(numbers);
-    pos = end;
-  }
-  return out;
-}
-
 // The walks Supercover.v computes, in its order: b - a = (dx, dy).
 constexpr std::array<std::pair<int, int>, 9> kWalks{
     {{0, 0}, {3, 5}, {5, 3}, {4, 2}, {3, 3}, {3, 1}, {0, 4}, {6, 0}, {7, 3}}};
@@ -55,7 +28,8 @@ constexpr std::array<std::pair<int, int>, 9> kWalks{
 
 TEST_CASE("the shipped supercover emits the Coq model's golden walks, cell by cell",
           "[proofs][raster]") {
-  const auto vectors = golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/Supercover.out");
+  const auto vectors =
+      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/Supercover.out");
   REQUIRE(vectors.size() == kWalks.size());
   // The model's local walk from (0, 0) to (dx, dy) is the shipped walk from a to
   // a + (sx dx, sy dy) with each cell mapped by a + (sx i, sy j): check all four reflections at
