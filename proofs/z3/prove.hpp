@@ -86,9 +86,12 @@ public:
       for (unsigned i = 0; i < m.size(); ++i) {
         const z3::func_decl d = m[i];
         if (d.arity() != 0 || d.name().str().find('!') != std::string::npos) continue;
-        std::cout << " " << d.name().str() << "="
-                  << m.eval(z3::expr(s_.ctx(), Z3_mk_bv2int(s_.ctx(), m.get_const_interp(d), true)),
-                            true);
+        const z3::expr value = m.get_const_interp(d);
+        std::cout << " " << d.name().str() << "=";
+        if (value.is_bv()) // as a signed integer; Booleans print as they are
+          std::cout << m.eval(z3::expr(s_.ctx(), Z3_mk_bv2int(s_.ctx(), value, true)), true);
+        else
+          std::cout << value;
       }
       std::cout << std::endl;
       return true;
