@@ -122,6 +122,27 @@ bool clip_box(double px, double py, double dx, double dy, double x0, double y0, 
          t0 < t1;
 }
 
+// Appends the parts of the segment p + t (dx, dy), t in [0, 1], that lie in the region (its box
+// minus its hole) and adds their lengths, measured from the rounded ends that are counted.
+void add_clipped(const Region& g, double px, double py, double dx, double dy,
+                 std::vector<FxSegment>& out, double& length_inside) {
+  double t0 = 0, t1 = 1;
+  if (!clip_box(px, py, dx, dy, 0, 0, g.W, g.H, t0, t1)) return;
+  double h0 = t0, h1 = t1; // remove the part inside the hole
+  std::vector<std::pair<double, double>> pieces;
+  if (clip_box(px, py, dx, dy, g.hx0, g.hy0, g.hx1, g.hy1, h0, h1)) {
+    if (h0 > t0) pieces.emplace_back(t0, h0);
+    if (t1 > h1) pieces.emplace_back(h1, t1);
+  } else {
+    pieces.emplace_back(t0, t1);
+  }
+  for (auto [u, v] : pieces) {
+    const FxSegment seg{to_fx(px + u * dx, py + u * dy), to_fx(px + v * dx, py + v * dy)};
+    out.push_back(seg);
+    length_inside += len(seg);
+  }
+}
+
 void drop_family(const Region& g, double l, double total_length, Stream& s,
                  std::vector<FxSegment>& out, double& length_inside) {
   out.clear();
@@ -134,21 +155,7 @@ void drop_family(const Region& g, double l, double total_length, Stream& s,
     const double dx = l * std::cos(th), dy = l * std::sin(th);
     const double px = mx - 0.5 * dx, py = my - 0.5 * dy;
     dropped += l;
-    double t0 = 0, t1 = 1;
-    if (!clip_box(px, py, dx, dy, 0, 0, g.W, g.H, t0, t1)) continue;
-    double h0 = t0, h1 = t1; // remove the part inside the hole
-    std::vector<std::pair<double, double>> pieces;
-    if (clip_box(px, py, dx, dy, g.hx0, g.hy0, g.hx1, g.hy1, h0, h1)) {
-      if (h0 > t0) pieces.emplace_back(t0, h0);
-      if (t1 > h1) pieces.emplace_back(h1, t1);
-    } else {
-      pieces.emplace_back(t0, t1);
-    }
-    for (auto [u, v] : pieces) {
-      const FxSegment seg{to_fx(px + u * dx, py + u * dy), to_fx(px + v * dx, py + v * dy)};
-      out.push_back(seg);
-      length_inside += len(seg); // the length of what is actually counted (rounded ends)
-    }
+    add_clipped(g, px, py, dx, dy, out, length_inside);
   }
 }
 
@@ -282,22 +289,7 @@ void drop_walks(const Region& g, double l, int m, double total_length, Stream& s
     for (int j = 0; j < m; ++j) {
       const double th = 2 * kPi * unit(s), dx = l * std::cos(th), dy = l * std::sin(th);
       dropped += l;
-      double t0 = 0, t1 = 1;
-      if (clip_box(px, py, dx, dy, 0, 0, g.W, g.H, t0, t1)) {
-        double h0 = t0, h1 = t1;
-        std::vector<std::pair<double, double>> pieces;
-        if (clip_box(px, py, dx, dy, g.hx0, g.hy0, g.hx1, g.hy1, h0, h1)) {
-          if (h0 > t0) pieces.emplace_back(t0, h0);
-          if (t1 > h1) pieces.emplace_back(h1, t1);
-        } else {
-          pieces.emplace_back(t0, t1);
-        }
-        for (auto [u, v] : pieces) {
-          const FxSegment seg{to_fx(px + u * dx, py + u * dy), to_fx(px + v * dx, py + v * dy)};
-          out.push_back(seg);
-          length_inside += len(seg);
-        }
-      }
+      add_clipped(g, px, py, dx, dy, out, length_inside);
       px += dx;
       py += dy;
     }
