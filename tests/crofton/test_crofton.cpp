@@ -5,9 +5,9 @@
 //
 // Randomness: keyed kernel::Stream with fixed seeds (printed on failure). The bounds are normal
 // tails at z = 5.3 (two-sided false-failure rate 1.2e-7 per check, below 1e-6).
+#include "crofton_common.hpp"
+
 #include <antkit/buffon/estimate.hpp>
-#include <antkit/kernel/random.hpp>
-#include <antkit/kernel/segment.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -15,28 +15,7 @@
 
 namespace {
 
-using antkit::kernel::Fx;
-using antkit::kernel::FxPoint;
-using antkit::kernel::FxSegment;
-using antkit::kernel::Stream;
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kZ = 5.3; // two-sided normal tail 1.16e-7
-
-double unit(Stream& s) { // uniform in [0, 1) with 53 bits
-  return static_cast<double>(s.next_u64() >> 11) * 0x1.0p-53;
-}
-
-FxPoint to_fx(double x, double y) {
-  return {Fx::from_raw(static_cast<std::int32_t>(std::llround(x * 65536.0))),
-          Fx::from_raw(static_cast<std::int32_t>(std::llround(y * 65536.0)))};
-}
-double to_d(Fx v) {
-  return static_cast<double>(v.raw()) / 65536.0;
-}
-double len(const FxSegment& s) {
-  return std::hypot(to_d(s.b.x) - to_d(s.a.x), to_d(s.b.y) - to_d(s.a.y));
-}
+using namespace antkit::test::crofton;
 
 // ---------------------------------------------------------------- Buffon-Laplace needle on a grid
 // Grid lines x = k a and y = j b; the needle's centre is uniform in one cell (by periodicity this
@@ -78,19 +57,14 @@ bool binomial_accepts(const NeedleResult& r, double p) {
 }
 
 // ------------------------------------------------ polygon with a hole, isotropic segments
-// Region: a rectangle minus a rectangular hole (integer corners, so the area is exact).
-// Segments of length l: direction uniform, midpoint uniform in the box
-// [-l/2, W + l/2] x [-l/2, H + l/2], then CLIPPED to the region (not kept-or-dropped). Why this is
-// unbiased for Crofton: the (midpoint, direction) measure is invariant under rigid motions, and
-// every point of the region at every direction is reached by the same measure of segments because
-// the midpoint box contains the region dilated by l/2; so the clipped length is spread uniformly
-// and isotropically over the region. Keeping only segments wholly inside would thin the length
-// within l/2 of every edge and bias A_hat. The classical formula E[N] = 2 L1 L2 / (pi A) then holds
-// for the two independent families of clipped pieces, conditionally on their lengths.
+// Region: a rectangle minus a rectangular hole (integer corners, so the area is exact). The two
+// families are dropped over it by crofton_common.hpp's drop_family / drop_walks (see there why
+// clipping, not keep-or-drop, is unbiased).
 struct Region {
   double W = 20, H = 20;                       // outer rectangle [0, W] x [0, H]
   double hx0 = 7, hy0 = 7, hx1 = 13, hy1 = 13; // hole [hx0, hx1] x [hy0, hy1], inside
   double area() const { return W * H - (hx1 - hx0) * (hy1 - hy0); }
+  Box box() const { return {0, 0, W, H}; }
 };
 
 // A random rectangle with a random rectangular hole, integer corners: W, H in [8, 40], the hole at
@@ -143,34 +117,6 @@ void add_clipped(const Region& g, double px, double py, double dx, double dy,
   }
 }
 
-void drop_family(const Region& g, double l, double total_length, Stream& s,
-                 std::vector<FxSegment>& out, double& length_inside) {
-  out.clear();
-  length_inside = 0;
-  const double sx = g.W + l, sy = g.H + l;
-  double dropped = 0;
-  while (dropped < total_length * (sx * sy) / g.area()) {
-    const double mx = -0.5 * l + sx * unit(s), my = -0.5 * l + sy * unit(s);
-    const double th = kPi * unit(s);
-    const double dx = l * std::cos(th), dy = l * std::sin(th);
-    const double px = mx - 0.5 * dx, py = my - 0.5 * dy;
-    dropped += l;
-    add_clipped(g, px, py, dx, dy, out, length_inside);
-  }
-}
-
-std::uint64_t crossings(const std::vector<FxSegment>& f, const std::vector<FxSegment>& g) {
-  std::uint64_t n = 0;
-  for (const auto& s : f)
-    for (const auto& t : g) n += antkit::kernel::properly_cross(s, t) ? 1u : 0u;
-  return n;
-}
-
-struct Trial {
-  double l1, l2;
-  std::uint64_t n;
-};
-
 Trial crofton_trial(const Region& g, double l, double total, std::uint64_t seed, std::uint64_t t) {
   Stream s1(seed, 8, t, 0, 2), s2(seed, 8, t, 0, 3);
   std::vector<FxSegment> f1, f2;
@@ -179,18 +125,6 @@ Trial crofton_trial(const Region& g, double l, double total, std::uint64_t seed,
   drop_family(g, l, total, s2, f2, r.l2);
   r.n = crossings(f1, f2);
   return r;
-}
-
-// Self-normalised check of E[N] = 2 L1 L2 / (pi A) over trials: z = (sum N - sum E) / sqrt(sum
-// (N - E)^2); under the formula z is approximately standard normal (independent trials).
-double crofton_z(const std::vector<Trial>& trials, double area, double pi) {
-  double num = 0, var = 0;
-  for (const auto& t : trials) {
-    const double e = 2 * t.l1 * t.l2 / (pi * area);
-    num += static_cast<double>(t.n) - e;
-    var += (static_cast<double>(t.n) - e) * (static_cast<double>(t.n) - e);
-  }
-  return num / std::sqrt(var);
 }
 
 } // namespace
@@ -270,30 +204,6 @@ TEST_CASE("Crofton: two clipped isotropic segment families in a polygon with a h
   CHECK(std::abs(crofton_z(all, g.area(), kPi)) <= kZ);
   CHECK(std::abs(crofton_z(all, g.area(), 3.0)) > kZ);
   CHECK(std::abs(crofton_z(all, 1.1 * g.area(), kPi)) > kZ);
-}
-
-// Random-walk polylines: a walk of m steps of length l, each step's direction uniform and
-// independent, starting uniformly in the box enlarged by the walk's reach m l; each step is clipped
-// to the region like a segment. Unbiased for Crofton: for any fixed sequence of step
-// displacements, the start is uniform over a box that contains the region shifted by every partial
-// displacement, so every step's length density is uniform over the region, and its direction is
-// uniform.
-void drop_walks(const Region& g, double l, int m, double total_length, Stream& s,
-                std::vector<FxSegment>& out, double& length_inside) {
-  out.clear();
-  length_inside = 0;
-  const double reach = l * m, sx = g.W + 2 * reach, sy = g.H + 2 * reach;
-  double dropped = 0;
-  while (dropped < total_length * (sx * sy) / g.area()) {
-    double px = -reach + sx * unit(s), py = -reach + sy * unit(s);
-    for (int j = 0; j < m; ++j) {
-      const double th = 2 * kPi * unit(s), dx = l * std::cos(th), dy = l * std::sin(th);
-      dropped += l;
-      add_clipped(g, px, py, dx, dy, out, length_inside);
-      px += dx;
-      py += dy;
-    }
-  }
 }
 
 TEST_CASE("Crofton with random-walk polylines against segments in a polygon with a hole",
