@@ -209,6 +209,7 @@ TEST_CASE("the pheromone raster's fast paths equal the reference loops", "[prope
       fast.lay(c);
       exact.lay_exact(c);
     }
+    RC_ASSERT(fast == exact); // the same cells, word for word
     RC_ASSERT(fast.marked() == exact.marked());
     RC_ASSERT(fast.marked() > 0u);
     for (int k = 0; k < 400; ++k) {

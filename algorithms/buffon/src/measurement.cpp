@@ -1,6 +1,8 @@
 // Buffon's-needle measurement: two visits, the pheromone raster, the detector (measurement.hpp).
 #include <algorithm>
+#include <antkit/buffon/crossing_counter.hpp>
 #include <antkit/buffon/measurement.hpp>
+#include <antkit/buffon/stopping.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <atomic>
 #include <exception>
@@ -43,15 +45,16 @@ PheromoneRaster::PheromoneRaster(FxPoint lower, FxPoint upper, Fx width,
   y0_ = lower.y.raw();
   cols_ = (std::int64_t{upper.x.raw()} - x0_) / cell_ + 1;
   rows_ = (std::int64_t{upper.y.raw()} - y0_) / cell_ + 1;
-  if (cols_ * rows_ > (std::int64_t{1} << 33))
-    throw kernel::InputError("--width", "the pheromone raster would exceed 2^33 cells (1 GiB); "
+  // The bands round the columns up to a multiple of 64: the limit is on the words allocated.
+  if ((cols_ + 63) / 64 * rows_ > (std::int64_t{1} << 27))
+    throw kernel::InputError("--width", "the pheromone raster would exceed 2^27 words (1 GiB); "
                                         "use a wider trail or a smaller arena");
   r2_ = half_width_ * half_width_;
   reciprocal_ = (std::uint64_t{1} << 32) / static_cast<std::uint64_t>(cell_);
   fast_ = 2 * half_width_ < 5 * cell_; // holds for every width in range (cell >= 163 raw)
   // w up to about 0.56 units (every width of the paper's figures).
   narrow_ = 25 * cell_ * cell_ < (std::int64_t{1} << 31) && 4 * r2_ < (std::int64_t{1} << 31);
-  bits_.assign(static_cast<std::size_t>((cols_ * rows_ + 63) / 64) + 1, 0);
+  bits_.assign(static_cast<std::size_t>((cols_ + 63) / 64 * rows_), 0);
 }
 
 void PheromoneRaster::lay_exact(FxPoint c) noexcept {
@@ -66,8 +69,7 @@ void PheromoneRaster::lay_exact(FxPoint c) noexcept {
     for (std::int64_t i = i0; i <= i1; ++i) {
       const std::int64_t dx2 = (2 * i + 1) * cell_ - 2 * cx;
       if (dx2 * dx2 + dy2 * dy2 > 4 * r2_) continue;
-      const auto k = static_cast<std::uint64_t>(j * cols_ + i);
-      bits_[k >> 6] |= std::uint64_t{1} << (k & 63);
+      bits_[word_index(i, j)] |= std::uint64_t{1} << (i & 63);
     }
   }
 }
@@ -76,8 +78,7 @@ bool PheromoneRaster::at_exact(FxPoint c) const noexcept {
   const std::int64_t i = floor_div(c.x.raw() - x0_, cell_);
   const std::int64_t j = floor_div(c.y.raw() - y0_, cell_);
   if (i < 0 || j < 0 || i >= cols_ || j >= rows_) return false;
-  const auto k = static_cast<std::uint64_t>(j * cols_ + i);
-  return ((bits_[k >> 6] >> (k & 63)) & 1u) != 0;
+  return bit(i, j);
 }
 
 std::uint64_t PheromoneRaster::marked() const {
@@ -123,13 +124,41 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
       std::move(scratch.trail1));
   CrossingDetector detector;
   std::uint64_t bc = 0;
-  VisitLog second = run_visit(
-      world, params, trial, 2, hash,
-      [&](const Pose& p) {
-        if (detector.update(raster.at(p.position))) ++bc;
-        return params.stop_bc == 0 || bc < params.stop_bc;
-      },
-      std::move(scratch.trail2));
+  VisitLog second;
+  if (params.precision_millionths == 0) {
+    second = run_visit(
+        world, params, trial, 2, hash,
+        [&](const Pose& p) {
+          if (detector.update(raster.at(p.position))) ++bc;
+          return true;
+        },
+        std::move(scratch.trail2));
+  } else {
+    // The online rule (stopping.hpp): visit 2's exact crossings with visit 1, step by step.
+    CrossingCounter counter(first.trail);
+    PrecisionMonitor monitor(params.precision_millionths, first.trail.size() - 1);
+    std::vector<std::uint32_t> crossed;
+    FxPoint previous{};
+    bool started = false;
+    second = run_visit(
+        world, params, trial, 2, hash,
+        [&](const Pose& p) {
+          if (detector.update(raster.at(p.position))) ++bc;
+          if (!std::exchange(started, true)) {
+            previous = p.position; // the start pose: no segment yet
+            return true;
+          }
+          crossed.clear();
+          counter.add(previous, p.position, &crossed);
+          previous = p.position;
+          for (std::uint32_t segment : crossed) monitor.crossing(segment);
+          return !monitor.end_step();
+        },
+        std::move(scratch.trail2));
+    result.reached_precision = monitor.reached();
+    result.variance_visit1 = monitor.spread().visit1;
+    result.variance_visit2 = monitor.spread().visit2;
+  }
   keep(scratch.raster, raster.release_storage());
   result.bc = bc;
   result.length1_raw = first.length_raw;

@@ -10,6 +10,12 @@
 //    walls' bounding box. Each step of visit 1 marks every cell whose centre is within w / 2 of the
 //    robot's centre (exact integer test); steps are at most 0.04 < w / 2 apart for w = 0.1, so the
 //    marks join into a band of width w, with edges accurate to half a cell (w / 8).
+//  * Raster memory: column bands of 64 cells, each a run of `rows` 64-bit words (cell (i, j) is
+//    bit i mod 64 of word (i div 64) rows + j). A step's 5 x 5 stamp then touches 5 adjacent
+//    words, and a robot moving up or down stays in the same cache lines for several steps and
+//    in the same page for hundreds, where the plain row-major layout needed a new line (and
+//    often a new page) at almost every step: cache and TLB misses were most of lay()'s time in
+//    the 100-unit circle. Only the layout; which cells are marked is unchanged.
 //  * Detector: y <- y + (b - y) / 2 for the raster bit b under the centre (the leaky integrator);
 //    the thresholded value goes high when y >= 1/2 and low again when y < 1/4 (hysteresis, so
 //    that a single missing pixel inside a band, an artefact of the raster, does not make a second
@@ -92,23 +98,24 @@ public:
         masks[e] = mask;
       }
     }
-    for (int e = 0; e < 5; ++e) {
-      const std::uint64_t mask = masks[e];
-      // Row j + e - 2, columns i - 2 .. i + 2: bits k .. k + 4 of the row-major bit array, which
-      // may straddle two words (the array has a spare word at its end for that).
-      const auto k = static_cast<std::uint64_t>((c.j + e - 2) * cols_ + c.i - 2);
-      const unsigned shift = k & 63;
-      bits_[k >> 6] |= mask << shift;
-      // Only 4 of 64 shifts spill into the next word: a well-predicted branch beats a store.
-      if (shift > 59) bits_[(k >> 6) + 1] |= mask >> (64 - shift);
+    // Rows j - 2 .. j + 2, columns i - 2 .. i + 2: bits `shift` .. `shift` + 4 of five adjacent
+    // words of one column band, which may straddle into the same rows of the next band.
+    const auto first = static_cast<std::uint64_t>(c.i - 2);
+    const unsigned shift = first & 63;
+    std::uint64_t* const words = bits_.data() + word_index(c.i - 2, c.j - 2);
+    for (int e = 0; e < 5; ++e) words[e] |= masks[e] << shift;
+    // Only 4 of 64 shifts spill into the next band (which then exists: the columns up to i + 2
+    // are in the raster): a well-predicted branch beats five stores.
+    if (shift > 59) {
+      std::uint64_t* const next = words + rows_;
+      for (int e = 0; e < 5; ++e) next[e] |= masks[e] >> (64 - shift);
     }
   }
   [[nodiscard]] bool at(FxPoint centre) const noexcept {
     Cell c;
     if (!locate(centre, c)) return at_exact(centre);
     if (c.i >= cols_ || c.j >= rows_) return false;
-    const auto k = static_cast<std::uint64_t>(c.j * cols_ + c.i);
-    return ((bits_[k >> 6] >> (k & 63)) & 1u) != 0;
+    return bit(c.i, c.j);
   }
   [[nodiscard]] Fx cell() const noexcept {
     return Fx::from_raw(static_cast<std::int32_t>(cell_));
@@ -152,13 +159,20 @@ private:
     divide(cy, out.j, out.oy);
     return true;
   }
+  // The word holding cell (i, j) (0 <= i < cols_, 0 <= j < rows_): column band i div 64, row j.
+  [[nodiscard]] std::size_t word_index(std::int64_t i, std::int64_t j) const noexcept {
+    return static_cast<std::size_t>((i >> 6) * rows_ + j);
+  }
+  [[nodiscard]] bool bit(std::int64_t i, std::int64_t j) const noexcept {
+    return ((bits_[word_index(i, j)] >> (i & 63)) & 1u) != 0;
+  }
   bool narrow_; // (5 cell_)^2 and 4 r2_ below 2^31: lay() compares in 32-bit lanes
 
   std::int64_t x0_, y0_, cell_, half_width_, cols_, rows_;
   std::int64_t r2_;                 // half_width_ squared
   std::uint64_t reciprocal_;        // floor(2^32 / cell_)
   bool fast_;                       // 2 half_width_ < 5 cell_: the 5 x 5 fast path of lay() applies
-  std::vector<std::uint64_t> bits_; // row-major bits, plus one spare word (always 0)
+  std::vector<std::uint64_t> bits_; // column bands of 64 cells, each `rows_` words (see above)
 };
 
 struct TrialParams {
@@ -167,9 +181,11 @@ struct TrialParams {
   std::int64_t steps = kDefaultSteps; // per visit
   Fx width = kDefaultWidth;
   bool keep_trails = false; // keep both trails' points in the result (figures, tests)
-  // Online stopping (issue 8): when non-zero, visit 2 ends after the step at which BC reaches
-  // stop_bc (or after `steps` steps, whichever comes first). 0: visit 2 runs all its steps.
-  std::uint64_t stop_bc = 0;
+  // Online stopping (issue 8, item 5; stopping.hpp): when non-zero, visit 2 counts its exact
+  // crossings with visit 1 as it walks and ends at the first check where A_hat's interval is within
+  // the relative precision precision_millionths / 10^6 (or after `steps` steps, whichever comes
+  // first). 0: visit 2 runs all its steps.
+  std::uint32_t precision_millionths = 0;
 };
 
 struct TrialResult {
@@ -181,6 +197,10 @@ struct TrialResult {
   std::uint64_t blocked = 0;         // steps not taken (both visits)
   std::uint64_t hash = 0;
   std::vector<FxPoint> trail1, trail2; // only with keep_trails
+  // With precision_millionths: whether visit 2 stopped on the rule (false: it ran to `steps`), and
+  // the variance estimate's two shares at the last check (stopping.hpp; reporting only).
+  bool reached_precision = false;
+  double variance_visit1 = 0, variance_visit2 = 0;
 };
 
 // One visit: up to `steps` steps from the start pose; calls on_step(pose) after every step (and
