@@ -1,7 +1,8 @@
 // `antkit buffon`: Buffon's-needle blind area measurement (issue 4, paper 000).
 //
 //   antkit buffon --arena SPEC|FILE.wkt [--trials N] [--steps N] [--width W] [--seed S]
-//                 [--threads T] [--noise X] [--precision P] [--format table|json] [--svg FILE]
+//                 [--threads T] [--noise X] [--precision P [--max-steps2 N]] [--format table|json]
+//                 [--svg FILE]
 //
 // JSON: {"arena": {"spec", "area"}, "trials": [{"trial", "bc", "nbc", "length1", "length2",
 //        "crossings_exact", "area_closed_form", "area_closed_form_ci", "blocked", "hash"}],
@@ -11,13 +12,14 @@
 // trial 0's two trails over the arena (visit 1 blue, visit 2 red), like the paper's Figure 4.
 // Output bytes do not depend on --threads.
 //
-// --precision P (issue 8, item 5): visit 2 stops as soon as BC reaches N*(P, phi), the least count
-// whose 95 % interval of A (closed form, square-root interval widened by the measured dispersion
-// phi of BC, stopping.hpp) lies within a relative P of the estimate; visit 1 keeps --steps and
-// visit 2 is still capped by --steps. Then each trial also has "reached_precision" (BC reached
-// N* before the cap) and the summary has "precision", "stop_bc" (N*), "dispersion" (phi),
-// "stopped_at_bc" (how many trials reached N*) and "length2_median". Without --precision the
-// output is unchanged.
+// --precision P (issue 8, item 5): visit 2 counts its exact crossings with visit 1 as it walks and
+// stops at the first check (every 10 000 steps) where the closed form's 95 % interval, from the
+// two-way batch-means variance of the count (stopping.hpp), lies within a relative P of the
+// estimate; visit 1 keeps --steps and visit 2 is capped by --max-steps2 (default --steps). Then
+// each trial also has "reached_precision" (false: visit 2 ran to the cap), "precision_ci" (the
+// rule's interval) and "variance_visit1", "variance_visit2" (the variance's two shares: when visit
+// 1's dominates, only a longer visit 1 helps), and the summary has "precision", "reached_precision"
+// (how many trials reached it) and "length2_median". Without --precision the output is unchanged.
 #include "commands.hpp"
 #include "output.hpp"
 #include "svg.hpp"
@@ -30,6 +32,7 @@
 #include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -45,6 +48,7 @@ struct BuffonCommand {
   std::string arena;
   std::int64_t trials = 1;
   std::int64_t steps = buffon::kDefaultSteps;
+  std::int64_t max_steps2 = 0; // --max-steps2: visit 2's cap under --precision (0: --steps)
   double width = 0.1;
   double noise = 0.0;
   std::uint64_t seed = 1;
@@ -97,6 +101,10 @@ void run(const BuffonCommand& c) {
     throw InputError("--trials", "the number of trials must be in [1, 100000]");
   if (c.steps < 1 || c.steps > 10000000)
     throw InputError("--steps", "the steps per visit must be in [1, 10000000]");
+  if (c.max_steps2 != 0 && !c.precision_given)
+    throw InputError("--max-steps2", "--max-steps2 needs --precision");
+  if (c.max_steps2 < 0 || c.max_steps2 > 100000000)
+    throw InputError("--max-steps2", "visit 2's step cap must be in [1, 100000000]");
   if (c.threads < 1 || c.threads > 256)
     throw InputError("--threads", "the number of threads must be in [1, 256]");
   if (!(c.width >= 0.01 && c.width <= 10))
@@ -118,7 +126,8 @@ void run(const BuffonCommand& c) {
   std::uint32_t precision = 0;
   if (online) {
     precision = buffon::parse_precision(c.precision);
-    params.stop_bc = buffon::stop_count(precision, buffon::kMeasuredDispersionMilli);
+    params.precision_millionths = precision;
+    params.visit2_steps = c.max_steps2;
   }
 
   const auto count = static_cast<std::uint64_t>(c.trials);
@@ -153,9 +162,17 @@ void run(const BuffonCommand& c) {
                       {"blocked", t.blocked},
                       {"hash", antkit::kernel::hash_hex(t.hash)}});
     if (online) {
-      const bool reached = t.bc >= params.stop_bc;
-      stopped += reached ? 1 : 0;
-      trials.back()["reached_precision"] = reached;
+      stopped += t.reached_precision ? 1 : 0;
+      trials.back()["reached_precision"] = t.reached_precision;
+      // The rule's own interval (stopping.hpp): V = both shares, floored at N; z^2 = 5.118.
+      const double n = static_cast<double>(t.crossings_exact);
+      const double v = std::max(t.variance_visit1 + t.variance_visit2, n);
+      const double half = std::sqrt(5.118 * v);
+      trials.back()["precision_ci"] = {
+          cf.area && n > 0 ? nlohmann::json(*cf.area * n / (n + half)) : nlohmann::json(),
+          cf.area && n > half ? nlohmann::json(*cf.area * n / (n - half)) : nlohmann::json()};
+      trials.back()["variance_visit1"] = t.variance_visit1;
+      trials.back()["variance_visit2"] = t.variance_visit2;
     }
   }
   nlohmann::json result;
@@ -169,10 +186,7 @@ void run(const BuffonCommand& c) {
        areas.empty() ? nlohmann::json() : nlohmann::json(buffon::quantile(areas, 0.5))}};
   if (online) {
     result["summary"]["precision"] = static_cast<double>(precision) / buffon::kPrecisionDenominator;
-    result["summary"]["stop_bc"] = params.stop_bc;
-    result["summary"]["dispersion"] =
-        static_cast<double>(buffon::kMeasuredDispersionMilli) / buffon::kDispersionDenominator;
-    result["summary"]["stopped_at_bc"] = stopped;
+    result["summary"]["reached_precision"] = stopped;
     result["summary"]["length2_median"] = buffon::quantile(lengths2, 0.5);
   }
   result["hash"] = antkit::kernel::hash_hex(all.finish());
@@ -194,9 +208,12 @@ void register_buffon(CLI::App& app) {
   sub->add_option("--threads", options->threads, "Worker threads (default 1)");
   auto* precision = sub->add_option(
       "--precision", options->precision,
-      "Online stopping: end visit 2 when BC reaches the count whose 95 % interval of "
-      "the area is within this relative precision P in (0, 1), at most six decimals "
-      "(visit 1 keeps --steps; visit 2 is still capped by --steps)");
+      "Online stopping: end visit 2 as soon as the 95 % interval of the closed-form area "
+      "(exact crossings, two-way batch-means variance) is within this relative precision P "
+      "in (0, 1), at most six decimals; checked every 10000 steps (visit 1 keeps --steps; "
+      "visit 2 is capped by --max-steps2, default --steps; large arenas need a longer visit 1)");
+  sub->add_option("--max-steps2", options->max_steps2,
+                  "With --precision: visit 2's step cap (default: --steps)");
   sub->add_option("--svg", options->svg, "Draw trial 0's trails to this SVG file");
   antkit::cli::add_format_option(*sub, options->format);
   sub->callback([options, precision] {

@@ -124,10 +124,12 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
       std::move(scratch.trail1));
   CrossingDetector detector;
   std::uint64_t bc = 0;
+  TrialParams params2 = params;
+  if (params.visit2_steps != 0) params2.steps = params.visit2_steps;
   VisitLog second;
   if (params.precision_millionths == 0) {
     second = run_visit(
-        world, params, trial, 2, hash,
+        world, params2, trial, 2, hash,
         [&](const Pose& p) {
           if (detector.update(raster.at(p.position))) ++bc;
           return true;
@@ -141,7 +143,7 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
     FxPoint previous{};
     bool started = false;
     second = run_visit(
-        world, params, trial, 2, hash,
+        world, params2, trial, 2, hash,
         [&](const Pose& p) {
           if (detector.update(raster.at(p.position))) ++bc;
           if (!std::exchange(started, true)) {

@@ -1,4 +1,5 @@
 // Online stopping rule (issue 8, item 5): see stopping.hpp for the derivation.
+#include <algorithm>
 #include <antkit/buffon/stopping.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <array>
@@ -6,21 +7,10 @@
 
 namespace antkit::buffon {
 
-// Dispersion of BC, variance / mean of BC (scaled to the mean L1 L2) over 200 trials x 50 000
-// steps, width 0.1, seed 1 (`antkit buffon --arena SPEC --trials 200 --steps 50000 --format json`):
-// circle:d=20 1.37, square:area=314 1.11, ellipse:area=314,e=0.968 2.46, circle:d=40 1.87. These
-// arenas are small enough for 50 000 steps to mix; the rule takes the largest, rounded up to the
-// next 0.1. In the 7854-area arenas (ring 44.5, plus 29.0, barrier-plus 25.0, obstacles 15.9) the
-// two trails of 50 000 steps cover different parts of the arena and the counts are far from
-// Poisson: there the interval is too narrow unless the visits are long enough to mix (issue 8
-// report; not corrected here).
-const std::uint32_t kMeasuredDispersionMilli = 2500;
-
 namespace {
 
 constexpr std::uint64_t kD = kPrecisionDenominator;
-constexpr std::uint64_t kQ = 10000000; // c^2 = 0.9604 phi = 9604 m / 10^7
-constexpr std::uint64_t kMaxCount = std::uint64_t{1} << 47;
+constexpr int kK = PrecisionMonitor::kBatches;
 
 __extension__ typedef unsigned __int128 u128; // GCC and Clang; -Wpedantic wants the marker
 using U256 = std::array<std::uint64_t, 4>;    // little-endian 64-bit limbs
@@ -44,55 +34,72 @@ U256 mul(u128 a, u128 b) {
   return out;
 }
 
-bool geq(const U256& x, const U256& y) {
+bool leq(const U256& x, const U256& y) {
   for (int i = 3; i >= 0; --i) {
     const auto k = static_cast<std::size_t>(i);
-    if (x[k] != y[k]) return x[k] > y[k];
+    if (x[k] != y[k]) return x[k] < y[k];
   }
   return true;
 }
 
-void check(std::uint32_t p, std::uint32_t m) {
+void check_precision(std::uint32_t p) {
   if (p < 1 || p >= kD)
     throw kernel::InputError("--precision", "the relative precision must be in (0, 1)");
-  if (m < kDispersionDenominator || m > 10 * kDispersionDenominator)
-    throw kernel::InputError("--dispersion", "the dispersion factor must be in [1, 10]");
 }
 
-// The exact test, domain already checked and n < 2^47.
-bool reached(std::uint64_t n, std::uint64_t p, std::uint64_t m) {
-  const std::uint64_t q = 9604 * m;                 // < 2^27
-  if (static_cast<u128>(n) * kQ <= q) return false; // sqrt N <= c: no upper bound yet
-  // Left: p N Q + (D + p) q < 2^20 2^47 2^24 + 2^21 2^27 < 2^92; its square < 2^184.
-  const u128 left = static_cast<u128>(p) * n * kQ + static_cast<u128>(kD + p) * q;
-  // Right: 4 (D + p)^2 q Q < 2^2 2^42 2^27 2^24 = 2^95, times N < 2^142.
-  const u128 coeff = static_cast<u128>(4) * (kD + p) * (kD + p) * q * kQ;
-  return geq(mul(left, left), mul(coeff, n));
+// 10 sum x_i^2 - (sum x_i)^2 = K (K - 1) s^2: never negative (Cauchy-Schwarz). Each x < 2^54, so
+// every square < 2^108 and K times their sum < 2^112.
+u128 spread_of(std::span<const std::uint64_t, kK> x, std::uint64_t n) {
+  u128 squares = 0;
+  for (std::uint64_t v : x) squares += static_cast<u128>(v) * v;
+  return kK * squares - static_cast<u128>(n) * n;
 }
 
 } // namespace
 
-bool precision_reached(std::uint64_t n, std::uint32_t precision_millionths,
-                       std::uint32_t dispersion_milli) {
-  check(precision_millionths, dispersion_milli);
-  if (n >= kMaxCount) return true; // beyond every N* of the domain (see stop_count)
-  return reached(n, precision_millionths, dispersion_milli);
+bool precision_met(std::span<const std::uint64_t, kK> rows,
+                   std::span<const std::uint64_t, kK> columns, std::uint32_t precision_millionths) {
+  check_precision(precision_millionths);
+  std::uint64_t n = 0;
+  for (std::uint64_t v : rows) n += v;
+  if (n == 0) return false;
+  // W = 9 V < 2^113; floored at 9 N (V >= N, Poisson).
+  const u128 w = std::max(spread_of(rows, n) + spread_of(columns, n), static_cast<u128>(9) * n);
+  const u128 p = precision_millionths;
+  // Left: 5118 (D + p)^2 < 2^13 2^42 = 2^55, times W < 2^113: < 2^168. Right: 9000 p^2 < 2^54,
+  // times N^2 < 2^108: < 2^162. Both exact in 256 bits.
+  const u128 coeff_left = static_cast<u128>(PrecisionMonitor::kZSquaredMilli) * (kD + p) * (kD + p);
+  const u128 coeff_right = static_cast<u128>(9000) * p * p;
+  return leq(mul(coeff_left, w), mul(coeff_right, static_cast<u128>(n) * n));
 }
 
-std::uint64_t stop_count(std::uint32_t precision_millionths, std::uint32_t dispersion_milli) {
-  check(precision_millionths, dispersion_milli);
-  // Smallest N with the predicate: it is false at N <= c^2 and monotone above it. The largest
-  // N* of the domain (p = 1, m = 10000) is about (2 c / P)^2 = 3.8e13 < 2^46 < kMaxCount.
-  std::uint64_t lo = 0, hi = 1; // predicate false at lo (N = 0), search for a true hi
-  while (!reached(hi, precision_millionths, dispersion_milli)) {
-    lo = hi;
-    hi *= 2;
-  }
-  while (hi - lo > 1) {
-    const std::uint64_t mid = lo + (hi - lo) / 2;
-    (reached(mid, precision_millionths, dispersion_milli) ? hi : lo) = mid;
-  }
-  return hi;
+PrecisionMonitor::PrecisionMonitor(std::uint32_t precision_millionths,
+                                   std::uint64_t visit1_segments)
+    : p_(precision_millionths), segments1_(std::max<std::uint64_t>(visit1_segments, 1)) {
+  check_precision(precision_millionths);
+}
+
+void PrecisionMonitor::crossing(std::uint64_t segment) {
+  // Row i holds segments [i S / K, (i + 1) S / K): the K equal runs of visit 1 (S < 2^58).
+  const std::uint64_t row = std::min<std::uint64_t>(segment * kK / segments1_, kK - 1);
+  ++rows_[row];
+  ++n_;
+}
+
+bool PrecisionMonitor::end_step() {
+  if (++steps_ % kBlockSteps != 0) return false;
+  prefix_.push_back(n_);
+  const std::size_t blocks = prefix_.size() - 1;
+  if (blocks % kK != 0) return false;
+  // Column j: the crossings of blocks [j m, (j + 1) m), m = blocks / K.
+  const std::size_t m = blocks / kK;
+  std::uint64_t columns[kK];
+  for (std::size_t j = 0; j < kK; ++j) columns[j] = prefix_[(j + 1) * m] - prefix_[j * m];
+  const auto to_double = [](u128 v) { return static_cast<double>(v); };
+  spread_ = {n_, n_ ? to_double(spread_of(rows_, n_)) / 9.0 : 0.0,
+             n_ ? to_double(spread_of(columns, n_)) / 9.0 : 0.0};
+  reached_ = precision_met(rows_, columns, p_);
+  return reached_;
 }
 
 std::uint32_t parse_precision(std::string_view text) {

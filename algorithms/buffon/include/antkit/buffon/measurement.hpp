@@ -186,6 +186,9 @@ struct TrialParams {
   // the relative precision precision_millionths / 10^6 (or after `steps` steps, whichever comes
   // first). 0: visit 2 runs all its steps.
   std::uint32_t precision_millionths = 0;
+  // Visit 2's step cap when non-zero (visit 1 keeps `steps`): with the online rule, a long cap on
+  // visit 2 without a longer visit 1. 0: `steps` for both visits.
+  std::int64_t visit2_steps = 0;
 };
 
 struct TrialResult {
@@ -241,9 +244,19 @@ void check_visit_steps(std::int64_t steps);
 // The exact floor square root of a step's squared length n2, started from the commanded forward
 // distance (the step's length is within a few raw units of it) and corrected by +/- 1 per
 // iteration (isqrt64 was 15 % of a step's time).
+//
+// The root is almost always within two of f = |forward| (the step is forward times a rounded unit
+// vector, each coordinate rounded by half a raw unit), so it is first counted without branches
+// over the bracket [f - 2, f + 2): root = f - 2 + the number of k in {f - 1, f, f + 1} with
+// k^2 <= n2, which is exact whenever (f - 2)^2 <= n2 < (f + 2)^2 (checked; the loop takes the
+// rest). The data-dependent loop branches were mispredicted on a good share of the steps.
 inline std::uint64_t step_length_raw(std::uint64_t n2, Fx forward) noexcept {
   if (n2 == 0) return 0;
   auto root = static_cast<std::uint64_t>(kernel::abs(forward).raw());
+  if (root >= 2 && (root - 2) * (root - 2) <= n2 && n2 < (root + 2) * (root + 2)) {
+    return root - 2 + std::uint64_t{(root - 1) * (root - 1) <= n2} +
+           std::uint64_t{root * root <= n2} + std::uint64_t{(root + 1) * (root + 1) <= n2};
+  }
   while (root * root > n2) --root;
   while ((root + 1) * (root + 1) <= n2) ++root;
   return root;
