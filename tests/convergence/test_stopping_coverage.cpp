@@ -82,7 +82,9 @@ struct Regime {
   const char* spec;
   std::uint32_t precision; // millionths
   std::int64_t steps1, cap2;
-  int min_stopped; // trials (of 40) that must reach the precision within the cap
+  // The stopping rate claimed within the cap (measured: 1.0 on the small arenas, 0.55-1.0 on the
+  // large ones); asserted through the same binomial floor at 1e-6.
+  double stop_rate;
 };
 
 } // namespace
@@ -98,18 +100,18 @@ TEST_CASE("online stopping: the achieved error meets P in >= 95 % of the stopped
           "[slow]") {
   constexpr int kTrials = 40;
   const Regime regimes[] = {
-      {"circle:d=20", 100000, 50000, 400000, 36},
-      {"square:area=314", 100000, 50000, 400000, 36},
-      {"ellipse:area=314,e=0.968", 100000, 50000, 400000, 36},
-      {"circle:d=40", 100000, 50000, 400000, 36},
-      {"standard", 200000, 300000, 600000, 20},
-      {"square", 200000, 300000, 600000, 20},
-      {"ellipse:e=0.968", 200000, 300000, 600000, 10},
-      {"ring", 200000, 300000, 600000, 10},
-      {"plus", 200000, 300000, 600000, 10},
-      {"obstacles", 200000, 300000, 600000, 20},
-      {"barrier-i:len=0.5", 200000, 300000, 600000, 20},
-      {"barrier-plus:len=0.5", 200000, 300000, 600000, 10},
+      {"circle:d=20", 100000, 50000, 400000, 0.95},
+      {"square:area=314", 100000, 50000, 400000, 0.95},
+      {"ellipse:area=314,e=0.968", 100000, 50000, 400000, 0.95},
+      {"circle:d=40", 100000, 50000, 400000, 0.95},
+      {"standard", 200000, 300000, 600000, 0.5},
+      {"square", 200000, 300000, 600000, 0.5},
+      {"ellipse:e=0.968", 200000, 300000, 600000, 0.5},
+      {"ring", 200000, 300000, 600000, 0.5},
+      {"plus", 200000, 300000, 600000, 0.5},
+      {"obstacles", 200000, 300000, 600000, 0.5},
+      {"barrier-i:len=0.5", 200000, 300000, 600000, 0.5},
+      {"barrier-plus:len=0.5", 200000, 300000, 600000, 0.5},
   };
   std::printf("online stopping (seed 1, %d trials): arena | area | A_eff | P | L1 | stopped | "
               "met vs A_eff | met vs A | L2 median | L2 q3\n",
@@ -145,7 +147,7 @@ TEST_CASE("online stopping: the achieved error meets P in >= 95 % of the stopped
     std::fflush(stdout);
     INFO(r.spec << ": stopped " << stopped << " of " << kTrials << ", met P against A_eff " << a_eff
                 << " in " << met);
-    CHECK(stopped >= r.min_stopped);
+    CHECK(stopped >= binomial_floor(kTrials, r.stop_rate, 1e-6));
     CHECK(met >= binomial_floor(stopped, 0.95, 1e-6));
   }
 }
