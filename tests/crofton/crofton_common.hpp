@@ -13,6 +13,7 @@
 #include <antkit/kernel/segment.hpp>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace antkit::test::crofton {
@@ -54,11 +55,18 @@ struct Box {
 // families of clipped pieces, conditionally on their lengths. A drop whose clipped part is empty
 // is the rejection step: it costs its length l in `dropped` and adds nothing. The dropped length
 // is total_length * box / area, so that about total_length lands inside.
+//
+// `drop`, when given, receives for every piece the index of the drop it came from (the drops are
+// independent and identically distributed given the other family: the unit of a cluster-robust
+// variance, see crofton_common's cluster_z).
 template <class Region>
 void drop_family(const Region& g, double l, double total_length, Stream& s,
-                 std::vector<FxSegment>& out, double& length_inside) {
+                 std::vector<FxSegment>& out, double& length_inside,
+                 std::vector<std::uint32_t>* drop = nullptr) {
   out.clear();
   length_inside = 0;
+  if (drop) drop->clear();
+  std::uint32_t index = 0;
   const Box b = g.box();
   const double sx = b.x1 - b.x0 + l, sy = b.y1 - b.y0 + l;
   double dropped = 0;
@@ -69,6 +77,8 @@ void drop_family(const Region& g, double l, double total_length, Stream& s,
     const double px = mx - 0.5 * dx, py = my - 0.5 * dy;
     dropped += l;
     add_clipped(g, px, py, dx, dy, out, length_inside);
+    if (drop) drop->resize(out.size(), index);
+    ++index;
   }
 }
 
@@ -78,11 +88,15 @@ void drop_family(const Region& g, double l, double total_length, Stream& s,
 // displacements, the start is uniform over a box that contains the region shifted by every partial
 // displacement, so every step's length density is uniform over the region, and its direction is
 // uniform.
+// `drop` as for drop_family: one index per walk (its steps are not independent of each other).
 template <class Region>
 void drop_walks(const Region& g, double l, int m, double total_length, Stream& s,
-                std::vector<FxSegment>& out, double& length_inside) {
+                std::vector<FxSegment>& out, double& length_inside,
+                std::vector<std::uint32_t>* drop = nullptr) {
   out.clear();
   length_inside = 0;
+  if (drop) drop->clear();
+  std::uint32_t index = 0;
   const Box b = g.box();
   const double reach = l * m, sx = b.x1 - b.x0 + 2 * reach, sy = b.y1 - b.y0 + 2 * reach;
   double dropped = 0;
@@ -95,28 +109,41 @@ void drop_walks(const Region& g, double l, int m, double total_length, Stream& s
       px += dx;
       py += dy;
     }
+    if (drop) drop->resize(out.size(), index);
+    ++index;
   }
 }
 
-// The exact number of proper crossings between the two families (kernel predicate on the
-// fixed-point pieces). Sorting g by its left end lets each piece of f stop scanning once g's pieces
-// start right of it: the same pairs are tested that can cross, so the count is the all-pairs count.
-inline std::uint64_t crossings(const std::vector<FxSegment>& f, std::vector<FxSegment> g) {
+// The exact number of proper crossings of each piece of f with the family g (kernel predicate on
+// the fixed-point pieces). Sorting g by its left end lets each piece of f stop scanning once g's
+// pieces start right of it: the same pairs are tested that can cross, so every count is the
+// all-pairs count.
+inline std::vector<std::uint32_t> crossings_per_piece(const std::vector<FxSegment>& f,
+                                                      std::vector<FxSegment> g) {
   auto left = [](const FxSegment& s) { return std::min(s.a.x.raw(), s.b.x.raw()); };
   auto right = [](const FxSegment& s) { return std::max(s.a.x.raw(), s.b.x.raw()); };
   std::sort(g.begin(), g.end(),
             [&](const FxSegment& u, const FxSegment& v) { return left(u) < left(v); });
   std::int64_t widest = 0; // the longest x-extent in g bounds how far left a crossing g can start
   for (const auto& t : g) widest = std::max<std::int64_t>(widest, std::int64_t{right(t)} - left(t));
-  std::uint64_t n = 0;
+  std::vector<std::uint32_t> out;
+  out.reserve(f.size());
   for (const auto& s : f) {
     const std::int64_t lo = left(s), hi = right(s);
     // g's pieces with left end < lo - widest end before lo: they cannot meet s.
     auto it = std::lower_bound(g.begin(), g.end(), lo - widest,
                                [&](const FxSegment& u, std::int64_t v) { return left(u) < v; });
+    std::uint32_t n = 0;
     for (; it != g.end() && left(*it) <= hi; ++it)
       n += antkit::kernel::properly_cross(s, *it) ? 1u : 0u;
+    out.push_back(n);
   }
+  return out;
+}
+
+inline std::uint64_t crossings(const std::vector<FxSegment>& f, const std::vector<FxSegment>& g) {
+  std::uint64_t n = 0;
+  for (const std::uint32_t c : crossings_per_piece(f, g)) n += c;
   return n;
 }
 
@@ -134,6 +161,47 @@ inline double crofton_z(const std::vector<Trial>& trials, double area, double pi
     num += static_cast<double>(t.n) - e;
     var += (static_cast<double>(t.n) - e) * (static_cast<double>(t.n) - e);
   }
+  return num / std::sqrt(var);
+}
+
+// A trial kept drop by drop, for a variance that does not assume N Poisson. Given the second
+// family, the drops of the first are independent and identically distributed, and for each drop w
+// (a segment, or a whole walk) with clipped length lambda_w and M_w crossings with the second
+// family, D_w = M_w - 2 lambda_w L2 / (pi A) has mean zero (Crofton for a fixed piece of the
+// second family against one random drop). So N - E = sum_w D_w is a sum of many independent
+// centred terms, and sum_w D_w^2 estimates its variance whatever the clustering of crossings
+// within a drop (a walk folding back crosses one segment several times: N is over-dispersed).
+struct ClusterTrial {
+  double l2 = 0;
+  std::vector<std::pair<double, double>> drops; // (M_w, lambda_w) for every drop with a piece
+};
+
+// Groups the pieces of f (with their drop indices) into drops and counts their crossings with g.
+inline ClusterTrial cluster_trial(const std::vector<FxSegment>& f,
+                                  const std::vector<std::uint32_t>& drop,
+                                  const std::vector<FxSegment>& g, double l2) {
+  ClusterTrial t;
+  t.l2 = l2;
+  const std::vector<std::uint32_t> per_piece = crossings_per_piece(f, g);
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (i == 0 || drop[i] != drop[i - 1]) t.drops.emplace_back(0.0, 0.0);
+    t.drops.back().first += per_piece[i];
+    t.drops.back().second += len(f[i]);
+  }
+  return t;
+}
+
+// z = sum D_w / sqrt(sum D_w^2) over every drop of every trial, trial i in a region of area
+// areas[i]; approximately standard normal when E[N] = 2 L1 L2 / (pi A) holds (thousands of terms).
+inline double cluster_z(const std::vector<ClusterTrial>& trials, const std::vector<double>& areas,
+                        double pi) {
+  double num = 0, var = 0;
+  for (std::size_t i = 0; i < trials.size(); ++i)
+    for (auto [m, lambda] : trials[i].drops) {
+      const double d = m - 2 * lambda * trials[i].l2 / (pi * areas[i]);
+      num += d;
+      var += d * d;
+    }
   return num / std::sqrt(var);
 }
 

@@ -6,11 +6,13 @@
 // Randomness: keyed kernel::Stream with fixed seeds (printed on failure). The bounds are normal
 // tails at z = 5.3 (two-sided false-failure rate 1.2e-7 per check, below 1e-6).
 #include "crofton_common.hpp"
+#include "random_polygon.hpp"
 
 #include <antkit/buffon/estimate.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <rapidcheck/catch.h>
 #include <vector>
 
 namespace {
@@ -264,4 +266,75 @@ TEST_CASE("Crofton on random rectangles with random holes: A_hat unbiased over 2
   CHECK(std::abs(z) <= kZ);
   CHECK(std::abs(z_of(3.0, 1.0)) > kZ);
   CHECK(std::abs(z_of(kPi, 1.1)) > kZ);
+}
+
+// The general polygon clipper of random_polygon.hpp, held against the Liang-Barsky clipping above
+// on the same rectangles with rectangular holes: same pieces, ends within one fixed-point unit
+// (the two compute the same crossing parameters by different binary64 formulas, so a rounding to
+// Q15.16 may land on either side of a half).
+TEST_CASE("the polygon clipper cuts the same pieces as the rectangle-minus-hole clipper",
+          "[crofton][property]") {
+  rc::prop("pieces agree on a random rectangle with a hole", [] {
+    Region g;
+    g.W = uniform_in(8, 41);
+    g.H = uniform_in(8, 41);
+    g.hx0 = uniform_in(1, static_cast<int>(g.W) - 2);
+    g.hx1 = uniform_in(static_cast<int>(g.hx0) + 1, static_cast<int>(g.W));
+    g.hy0 = uniform_in(1, static_cast<int>(g.H) - 2);
+    g.hy1 = uniform_in(static_cast<int>(g.hy0) + 1, static_cast<int>(g.H));
+    auto grid = [](double v) { return static_cast<std::int64_t>(v) * kGrid; };
+    const RandomPolygon p =
+        make_polygon({{{0, 0}, {grid(g.W), 0}, {grid(g.W), grid(g.H)}, {0, grid(g.H)}},
+                      {{grid(g.hx0), grid(g.hy0)},
+                       {grid(g.hx0), grid(g.hy1)},
+                       {grid(g.hx1), grid(g.hy1)},
+                       {grid(g.hx1), grid(g.hy0)}}});
+    RC_ASSERT(valid_rings(p.rings));
+    RC_ASSERT(p.exact_area == antkit::geometry::ExactNumber(static_cast<long>(g.area())));
+    for (int k = 0; k < 50; ++k) {
+      const double l = uniform_in(1, 200) / 10.0;
+      const double th = uniform_in(0, 1 << 20) * (2 * kPi / (1 << 20));
+      const double mx = -2 + (g.W + 4) * uniform_in(0, 1 << 16) / 65536.0;
+      const double my = -2 + (g.H + 4) * uniform_in(0, 1 << 16) / 65536.0;
+      const double dx = l * std::cos(th), dy = l * std::sin(th);
+      std::vector<FxSegment> box_pieces, poly_pieces;
+      double box_len = 0, poly_len = 0;
+      add_clipped(g, mx - dx / 2, my - dy / 2, dx, dy, box_pieces, box_len);
+      add_clipped(p, mx - dx / 2, my - dy / 2, dx, dy, poly_pieces, poly_len);
+      RC_ASSERT(box_pieces.size() == poly_pieces.size());
+      auto near = [](FxPoint a, FxPoint b) {
+        return std::abs(a.x.raw() - b.x.raw()) <= 1 && std::abs(a.y.raw() - b.y.raw()) <= 1;
+      };
+      for (std::size_t i = 0; i < box_pieces.size(); ++i) {
+        RC_ASSERT(near(box_pieces[i].a, poly_pieces[i].a));
+        RC_ASSERT(near(box_pieces[i].b, poly_pieces[i].b));
+      }
+    }
+  });
+}
+
+// The swept crossing count of crofton_common.hpp equals the plain count over all pairs.
+TEST_CASE("the swept crossing count equals the all-pairs count", "[crofton][property]") {
+  rc::prop("random segment and walk families in the square with a hole", [] {
+    const Region g;
+    Stream s1(uniform_in<std::uint64_t>(0, 1u << 30), 8, 0, 0, 11),
+        s2(uniform_in<std::uint64_t>(0, 1u << 30), 8, 0, 0, 12);
+    const double l = uniform_in(1, 100) / 10.0, total = uniform_in(10, 400);
+    std::vector<FxSegment> f1, f2;
+    std::vector<std::uint32_t> drop;
+    double l1 = 0, l2 = 0;
+    drop_walks(g, l / 4, 8, total, s1, f1, l1, &drop);
+    drop_family(g, l, total, s2, f2, l2);
+    std::uint64_t all_pairs = 0;
+    for (const auto& a : f1)
+      for (const auto& b : f2) all_pairs += antkit::kernel::properly_cross(a, b) ? 1u : 0u;
+    RC_ASSERT(crossings(f1, f2) == all_pairs);
+    RC_ASSERT(crossings(f2, f1) == all_pairs);
+    // The drop-by-drop trial adds up to the same count and length.
+    const ClusterTrial c = cluster_trial(f1, drop, f2, l2);
+    double m = 0, lambda = 0;
+    for (auto [mw, lw] : c.drops) m += mw, lambda += lw;
+    RC_ASSERT(m == static_cast<double>(all_pairs));
+    RC_ASSERT(std::abs(lambda - l1) <= 1e-9 * (1 + l1));
+  });
 }
