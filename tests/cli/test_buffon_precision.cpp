@@ -1,4 +1,5 @@
-// `antkit buffon --precision P` (issue 8, item 5): visit 2 ends at BC = N*, bad P exits 2.
+// `antkit buffon --precision P` (issue 8, item 5): visit 2 ends at the first check where the
+// rule's interval is within P (stopping.hpp); bad P or --max-steps2 exits 2.
 #include "run_antkit.hpp"
 
 #include <catch2/catch.hpp>
@@ -6,41 +7,60 @@
 
 using antkit::test::run_antkit;
 
-TEST_CASE("antkit buffon --precision stops visit 2 at the threshold count") {
-  const auto r = run_antkit(
-      "buffon --arena circle:d=20 --trials 3 --steps 50000 --precision 0.1 --format json");
+TEST_CASE("antkit buffon --precision stops visit 2 at a check once the interval is narrow") {
+  const auto r = run_antkit("buffon --arena circle:d=20 --trials 3 --steps 50000 --max-steps2 "
+                            "400000 --precision 0.1 --format json");
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);
   const auto& s = j["summary"];
   for (const char* key : {"nbc_median", "nbc_q1", "nbc_q3", "area_closed_form_median", "precision",
-                          "stop_bc", "dispersion", "stopped_at_bc", "length2_median"})
+                          "reached_precision", "length2_median"})
     CHECK(s.contains(key));
   CHECK(s["precision"].get<double>() == 0.1);
-  const auto n = s["stop_bc"].get<std::uint64_t>();
-  CHECK(n > 400); // N*(0.1, phi >= 1) >= 445
-  CHECK(s["stopped_at_bc"].get<int>() == 3);
+  CHECK(s["reached_precision"].get<int>() == 3);
   for (const auto& t : j["trials"]) {
-    CHECK(t["bc"].get<std::uint64_t>() == n); // ends at the step BC reaches N*
     CHECK(t["reached_precision"].get<bool>());
-    CHECK(t["length2"].get<double>() < t["length1"].get<double>()); // stopped before --steps
+    // The rule's interval is within a factor 1 + P of the estimate on its wider, upper side.
+    const double a = t["area_closed_form"].get<double>();
+    const auto& ci = t["precision_ci"];
+    REQUIRE(ci[1].is_number());
+    CHECK(ci[0].get<double>() < a);
+    CHECK(ci[1].get<double>() <= a * 1.1 * (1 + 1e-9));
+    CHECK(t["variance_visit1"].get<double>() >= 0);
+    CHECK(t["variance_visit2"].get<double>() >= 0);
+    // Checks fall every 10 000 steps (0.0336 units a step): visit 2 is a whole number of them.
+    const double checks = t["length2"].get<double>() / 336.0;
+    CHECK(checks > 0.9);
+    CHECK(t["length2"].get<double>() < 400000 * 0.034); // stopped before the cap
   }
   // A finer precision needs a longer second visit.
   const auto fine = nlohmann::json::parse(
-      run_antkit("buffon --arena circle:d=20 --trials 3 --steps 50000 --precision 0.05 "
-                 "--format json")
+      run_antkit("buffon --arena circle:d=20 --trials 3 --steps 50000 --max-steps2 400000 "
+                 "--precision 0.05 --format json")
           .out);
   CHECK(fine["summary"]["length2_median"].get<double>() > s["length2_median"].get<double>());
 }
 
-TEST_CASE("antkit buffon --precision: the --steps cap wins when N* is out of reach") {
+TEST_CASE("antkit buffon --precision: the cap wins when the precision is out of reach") {
   const auto r = run_antkit(
-      "buffon --arena circle:d=20 --trials 2 --steps 2000 --precision 0.01 --format json");
+      "buffon --arena circle:d=20 --trials 2 --steps 20000 --precision 0.01 --format json");
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);
-  CHECK(j["summary"]["stopped_at_bc"].get<int>() == 0);
+  CHECK(j["summary"]["reached_precision"].get<int>() == 0);
   for (const auto& t : j["trials"]) {
     CHECK_FALSE(t["reached_precision"].get<bool>());
-    CHECK(t["bc"].get<std::uint64_t>() < j["summary"]["stop_bc"].get<std::uint64_t>());
+    CHECK(t["length2"].get<double>() > 20000 * 0.03); // ran to --steps
+  }
+}
+
+TEST_CASE("antkit buffon --max-steps2 needs --precision and a positive cap") {
+  for (const std::string args : {"--max-steps2 1000", "--precision 0.1 --max-steps2 -5",
+                                 "--precision 0.1 --max-steps2 200000000"}) {
+    const auto r = run_antkit("buffon --arena circle:d=20 --steps 100 " + args);
+    INFO(args << "\n" << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("--max-steps2") != std::string::npos);
+    CHECK(r.out.empty());
   }
 }
 
