@@ -62,6 +62,33 @@ void BM_BuffonAt(benchmark::State& state) {
 }
 BENCHMARK(BM_BuffonAt)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
+// The behaviour's two draws per step (n, n_bar): items = steps. Argument 0: BufferedStream (the
+// batched draw, four Philox blocks at a time), 1: kernel::uniform on the Stream (one block per
+// two steps), for before/after ratios in one run.
+void BM_BuffonDraws(benchmark::State& state) {
+  namespace d = buffon::detail;
+  const bool plain = state.range(0) == 1;
+  constexpr std::int64_t kSteps = 50000;
+  std::uint64_t trial = 0;
+  for (auto _ : state) {
+    antkit::kernel::Stream stream(1, buffon::kExperiment, trial++, 1, 0);
+    buffon::BufferedStream buffered(stream);
+    std::int64_t sum = 0;
+    for (std::int64_t s = 0; s < kSteps; ++s) {
+      if (plain) {
+        sum += antkit::kernel::uniform(stream, -d::kNLimit, d::kNLimit).raw();
+        sum += antkit::kernel::uniform(stream, d::kNBarLow, d::kOne).raw();
+      } else {
+        sum += buffered.uniform(-d::kNLimit, d::kNLimit).raw();
+        sum += buffered.uniform(d::kNBarLow, d::kOne).raw();
+      }
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(state.iterations() * kSteps);
+}
+BENCHMARK(BM_BuffonDraws)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
 // One visit of 50 000 steps in the standard circle: items = robot steps. Argument 0 lays the
 // pheromone at every step (the target: >= 10 M steps/s with sensing and pheromone),
 // argument 1 does not (the robot alone: sensing, behaviour, motion, trace hash). The second

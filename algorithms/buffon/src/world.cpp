@@ -136,17 +136,10 @@ World::World(std::vector<FxSegment> walls, BodyParams body)
   }
 }
 
-std::span<const World::BucketWall> World::nearby(FxPoint p) const noexcept {
-  // kBucket is 2^16 raw: an arithmetic shift is the floor division (C++20 defines >> on negatives).
-  static_assert(kBucket == std::int64_t{1} << 16);
-  const std::int64_t bx = (std::int64_t{p.x.raw()} >> 16) - grid_x0_;
-  const std::int64_t by = (std::int64_t{p.y.raw()} >> 16) - grid_y0_;
-  if (bx < 0 || by < 0 || bx >= grid_w_ || by >= grid_h_) return {}; // far from every wall
-  const auto k = static_cast<std::size_t>(by * grid_w_ + bx);
-  return {members_.data() + start_[k], members_.data() + start_[k + 1]};
-}
+// nearby() (world.hpp) shifts by 16 for the bucket.
+static_assert(kBucket == std::int64_t{1} << 16);
 
-Observation World::sense(const Pose& pose, kernel::Stream* noise) const {
+Observation World::sense_walls(const Pose& pose, kernel::Stream* noise) const {
   Observation obs;
   const FxPoint c = pose.position;
   const std::int64_t cx = c.x.raw(), cy = c.y.raw();
@@ -227,29 +220,13 @@ Observation World::sense(const Pose& pose, kernel::Stream* noise) const {
   return obs;
 }
 
-bool World::clear(FxPoint p) const {
+bool World::clear_walls(FxPoint p, std::span<const BucketWall> bucket) const {
   const std::int64_t px = p.x.raw(), py = p.y.raw(), rho = kBodyRadius.raw();
-  for (const auto& w : nearby(p)) {
+  for (const auto& w : bucket) {
     // A wall whose bounding box keeps rho away in x or y is at least rho away.
     if (w.x1 <= px - rho || w.x0 >= px + rho || w.y1 <= py - rho || w.y0 >= py + rho) continue;
     if (closer_than(p, w, rho)) return false;
   }
-  return true;
-}
-
-bool World::move(Pose& pose, const Command& cmd) const {
-  const Fx turn_rad = body_.speed * (cmd.right - cmd.left); // wheel base 1
-  const Fx forward = body_.speed * (cmd.left + cmd.right) * Fx::from_ratio(1, 2);
-  const Angle turn = Angle::from_radians(turn_rad);
-  // Heading along the chord of the arc: the mean of the old and new headings.
-  const Angle mid =
-      pose.heading + Angle::from_raw(static_cast<std::uint32_t>(turn.signed_raw() / 2));
-  pose.heading = pose.heading + turn;
-  if (forward == Fx{}) return true;
-  const FxPoint next{pose.position.x + forward * kernel::cos(mid),
-                     pose.position.y + forward * kernel::sin(mid)};
-  if (!clear(next)) return false;
-  pose.position = next;
   return true;
 }
 

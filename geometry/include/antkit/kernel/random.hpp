@@ -15,6 +15,11 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
+#include <type_traits>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace antkit::kernel {
 
@@ -48,6 +53,85 @@ constexpr std::array<std::uint32_t, 4> philox4x32_10(std::array<std::uint32_t, 4
     const auto hi0 = static_cast<std::uint32_t>(p0 >> 32), lo0 = static_cast<std::uint32_t>(p0);
     const auto hi1 = static_cast<std::uint32_t>(p1 >> 32), lo1 = static_cast<std::uint32_t>(p1);
     ctr = {hi1 ^ ctr[1] ^ key[0], lo1, hi0 ^ ctr[3] ^ key[1], lo0};
+    key[0] += W0;
+    key[1] += W1;
+  }
+  return ctr;
+}
+
+#if defined(__SSE2__)
+namespace detail {
+// Philox4x32-10 on four counters at once in SSE2 lanes (SSE2 is part of every x86-64): x[w] holds
+// word w of the four counters. The 32 x 32 -> 64-bit products come from pmuludq, which multiplies
+// lanes 0 and 2; lanes 1 and 3 are shifted down and multiplied in a second one, and the halves are
+// regrouped by shuffles. Integer operations only, so the results are the scalar rounds' bits.
+inline std::array<std::array<std::uint32_t, 4>, 4>
+philox4x32_10_x4_sse2(const std::array<std::array<std::uint32_t, 4>, 4>& ctr,
+                      std::array<std::uint32_t, 2> key) noexcept {
+  auto lane = [&](int w) {
+    return _mm_setr_epi32(static_cast<int>(ctr[0][static_cast<std::size_t>(w)]),
+                          static_cast<int>(ctr[1][static_cast<std::size_t>(w)]),
+                          static_cast<int>(ctr[2][static_cast<std::size_t>(w)]),
+                          static_cast<int>(ctr[3][static_cast<std::size_t>(w)]));
+  };
+  __m128i x0 = lane(0), x1 = lane(1), x2 = lane(2), x3 = lane(3);
+  const __m128i m0 = _mm_set1_epi32(static_cast<int>(0xD2511F53u));
+  const __m128i m1 = _mm_set1_epi32(static_cast<int>(0xCD9E8D57u));
+  // The low and high halves of the four products x * m, each gathered into one vector.
+  auto mul_hi_lo = [](__m128i x, __m128i m, __m128i& hi, __m128i& lo) {
+    const __m128i even = _mm_mul_epu32(x, m);                           // lo0 hi0 lo2 hi2
+    const __m128i odd = _mm_mul_epu32(_mm_srli_epi64(x, 32), m);        // lo1 hi1 lo3 hi3
+    const __m128i e = _mm_shuffle_epi32(even, _MM_SHUFFLE(3, 1, 2, 0)); // lo0 lo2 hi0 hi2
+    const __m128i o = _mm_shuffle_epi32(odd, _MM_SHUFFLE(3, 1, 2, 0));  // lo1 lo3 hi1 hi3
+    lo = _mm_unpacklo_epi32(e, o);
+    hi = _mm_unpackhi_epi32(e, o);
+  };
+  for (int round = 0; round < 10; ++round) {
+    __m128i hi0, lo0, hi1, lo1;
+    mul_hi_lo(x0, m0, hi0, lo0);
+    mul_hi_lo(x2, m1, hi1, lo1);
+    const __m128i k0 = _mm_set1_epi32(static_cast<int>(key[0]));
+    const __m128i k1 = _mm_set1_epi32(static_cast<int>(key[1]));
+    x0 = _mm_xor_si128(_mm_xor_si128(hi1, x1), k0);
+    x1 = lo1;
+    x2 = _mm_xor_si128(_mm_xor_si128(hi0, x3), k1);
+    x3 = lo0;
+    key[0] += 0x9E3779B9u;
+    key[1] += 0xBB67AE85u;
+  }
+  alignas(16) std::array<std::array<std::uint32_t, 4>, 4> words{};
+  _mm_store_si128(reinterpret_cast<__m128i*>(words[0].data()), x0);
+  _mm_store_si128(reinterpret_cast<__m128i*>(words[1].data()), x1);
+  _mm_store_si128(reinterpret_cast<__m128i*>(words[2].data()), x2);
+  _mm_store_si128(reinterpret_cast<__m128i*>(words[3].data()), x3);
+  std::array<std::array<std::uint32_t, 4>, 4> out{};
+  for (std::size_t b = 0; b < 4; ++b)
+    for (std::size_t w = 0; w < 4; ++w) out[b][w] = words[w][b];
+  return out;
+}
+} // namespace detail
+#endif
+
+// Four Philox4x32-10 blocks under one key: the same four results as four calls of philox4x32_10.
+// At run time on x86-64 the four are computed in SSE2 lanes (detail::philox4x32_10_x4_sse2, about
+// half the instructions of four scalar blocks); otherwise round by round, four independent chains
+// of multiplies that overlap in the processor.
+constexpr std::array<std::array<std::uint32_t, 4>, 4>
+philox4x32_10_x4(std::array<std::array<std::uint32_t, 4>, 4> ctr,
+                 std::array<std::uint32_t, 2> key) noexcept {
+#if defined(__SSE2__)
+  if (!std::is_constant_evaluated()) return detail::philox4x32_10_x4_sse2(ctr, key);
+#endif
+  constexpr std::uint32_t M0 = 0xD2511F53u, M1 = 0xCD9E8D57u;
+  constexpr std::uint32_t W0 = 0x9E3779B9u, W1 = 0xBB67AE85u;
+  for (int round = 0; round < 10; ++round) {
+    for (auto& c : ctr) {
+      const std::uint64_t p0 = std::uint64_t{M0} * c[0];
+      const std::uint64_t p1 = std::uint64_t{M1} * c[2];
+      const auto hi0 = static_cast<std::uint32_t>(p0 >> 32), lo0 = static_cast<std::uint32_t>(p0);
+      const auto hi1 = static_cast<std::uint32_t>(p1 >> 32), lo1 = static_cast<std::uint32_t>(p1);
+      c = {hi1 ^ c[1] ^ key[0], lo1, hi0 ^ c[3] ^ key[1], lo0};
+    }
     key[0] += W0;
     key[1] += W1;
   }
@@ -122,17 +206,42 @@ public:
   // True with probability num / den (0 <= num <= den, den >= 1), exactly.
   constexpr bool chance(std::uint32_t num, std::uint32_t den) noexcept { return below(den) < num; }
 
+  // The batched draw: fills `out` with the next out.size() words, exactly the words that as many
+  // next_u32() calls in a row would return, and leaves the stream where those calls would (so
+  // next_u32() and next_u32s() can be mixed freely). Whole blocks are computed four at a time
+  // (philox4x32_10_x4); a loop that needs many words draws them ahead in one call.
+  constexpr void next_u32s(std::span<std::uint32_t> out) noexcept {
+    std::size_t k = 0;
+    const std::size_t n = out.size();
+    while (k < n && word_ < 4) out[k++] = block_[word_++]; // the rest of the current block
+    while (n - k >= 16) {
+      std::array<std::array<std::uint32_t, 4>, 4> ctr{};
+      for (std::uint64_t b = 0; b < 4; ++b) ctr[b] = counter(block_index_ + b);
+      const auto blocks = philox4x32_10_x4(ctr, key_);
+      for (const auto& block : blocks)
+        for (std::uint32_t word : block) out[k++] = word;
+      // As if the four blocks had been refilled and drawn one by one: the last one is the
+      // current block, used up.
+      block_ = blocks[3];
+      block_index_ += 4;
+      word_ = 4;
+    }
+    while (k < n) out[k++] = next_u32();
+  }
+
   // How many 32-bit words have been drawn.
   [[nodiscard]] constexpr std::uint64_t drawn() const noexcept {
     return block_index_ == 0 ? 0 : (block_index_ - 1) * 4 + word_;
   }
 
 private:
+  // The counter of block i of this stream (see the top of the file).
+  [[nodiscard]] constexpr std::array<std::uint32_t, 4> counter(std::uint64_t i) const noexcept {
+    return {static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(i >> 32),
+            static_cast<std::uint32_t>(name_), static_cast<std::uint32_t>(name_ >> 32)};
+  }
   constexpr void refill() noexcept {
-    block_ = philox4x32_10(
-        {static_cast<std::uint32_t>(block_index_), static_cast<std::uint32_t>(block_index_ >> 32),
-         static_cast<std::uint32_t>(name_), static_cast<std::uint32_t>(name_ >> 32)},
-        key_);
+    block_ = philox4x32_10(counter(block_index_), key_);
     ++block_index_;
     word_ = 0;
   }

@@ -36,8 +36,10 @@
 //  * Q15.16 arithmetic rounds each product to the nearest 2^-16 (ties up), so the behaviour is
 //    the printed one to within a few 2^-16 per step.
 #include <antkit/kernel/fixed.hpp>
+#include <antkit/kernel/fixed_random.hpp>
 #include <antkit/kernel/random.hpp>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace antkit::buffon {
@@ -143,6 +145,45 @@ exploration_step(const typename P::num& r, const typename P::num& w_l, const typ
           forward - r_bar,    forward + r_bar};
 }
 
+// The behaviour's stream read through a buffer filled by the batched draw (Stream::next_u32s):
+// the words come out in the stream's order, so every draw is the one kernel::uniform would make
+// from the stream itself, but the Philox blocks are computed 4 at a time (8 steps' worth), off the
+// step's critical path. The stream is only read through the buffer.
+class BufferedStream {
+public:
+  explicit BufferedStream(kernel::Stream stream) : stream_(stream) {}
+  std::uint32_t next_u32() noexcept {
+    if (next_ == kWords) refill();
+    return words_[next_++];
+  }
+  // kernel::uniform(stream, a, b) for a <= b: Lemire's map with rejection of the next words, as
+  // uniform_offset_u32 does it (the same words accepted or rejected, the same offset).
+  Fx uniform(Fx a, Fx b) noexcept {
+    const auto span = static_cast<std::uint32_t>(static_cast<std::uint32_t>(b.raw()) -
+                                                 static_cast<std::uint32_t>(a.raw()));
+    std::uint32_t offset = 0;
+    if (span == 0xFFFFFFFFu) {
+      offset = next_u32();
+    } else {
+      while (!kernel::lemire_bounded<std::uint32_t, std::uint64_t>(next_u32(), span + 1u, offset)) {
+      }
+    }
+    return Fx::from_raw(static_cast<std::int32_t>(static_cast<std::uint32_t>(a.raw()) + offset));
+  }
+
+private:
+  // Out of line: it runs once every eight steps, and inlined twice (one per draw) it made the
+  // behaviour's step several times larger.
+  [[gnu::noinline]] void refill() noexcept {
+    stream_.next_u32s(words_);
+    next_ = 0;
+  }
+  static constexpr std::size_t kWords = 16;
+  kernel::Stream stream_;
+  std::array<std::uint32_t, kWords> words_{};
+  std::size_t next_ = kWords;
+};
+
 class ExplorationBehaviour {
 public:
   static constexpr Fx kWallGain = detail::kWallGain;
@@ -157,7 +198,7 @@ public:
   [[nodiscard]] Fx r_bar() const noexcept { return r_bar_; }
 
 private:
-  kernel::Stream stream_;
+  BufferedStream stream_;
   Fx r_{};
   Fx w_l_{};
   Fx w_r_{};

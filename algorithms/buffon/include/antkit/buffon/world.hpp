@@ -68,11 +68,37 @@ public:
   [[nodiscard]] FxPoint upper() const noexcept { return hi_; }
 
   // The six front readings at `pose`; `noise` may be null when body().noise is 0.
-  [[nodiscard]] Observation sense(const Pose& pose, kernel::Stream* noise) const;
+  //
+  // sense(), clear() and move() are inline so that the step loop (run_visit) sees through them:
+  // far from the walls, where a visit spends most of its steps, the bucket is empty, every reading
+  // is 0 and every position is clear, and that is decided here without a call; only steps near a
+  // wall take the out-of-line paths (sense_walls, clear_walls), which test the bucket's walls.
+  [[nodiscard]] Observation sense(const Pose& pose, kernel::Stream* noise) const {
+    if (nearby(pose.position).empty() && !(noise != nullptr && body_.noise > Fx{}))
+      return Observation{}; // no wall within 1.5 of the centre: every ray misses (see sense_walls)
+    return sense_walls(pose, noise);
+  }
   // Does the body's disk centred at p keep at least 0.5 from every wall (exact)?
-  [[nodiscard]] bool clear(FxPoint p) const;
+  [[nodiscard]] bool clear(FxPoint p) const {
+    const auto bucket = nearby(p);
+    return bucket.empty() || clear_walls(p, bucket);
+  }
   // Carries out one command; returns false when the translation was blocked (pose turned only).
-  bool move(Pose& pose, const Command& cmd) const;
+  bool move(Pose& pose, const Command& cmd) const {
+    const Fx turn_rad = body_.speed * (cmd.right - cmd.left); // wheel base 1
+    const Fx forward = body_.speed * (cmd.left + cmd.right) * Fx::from_ratio(1, 2);
+    const Angle turn = Angle::from_radians(turn_rad);
+    // Heading along the chord of the arc: the mean of the old and new headings.
+    const Angle mid =
+        pose.heading + Angle::from_raw(static_cast<std::uint32_t>(turn.signed_raw() / 2));
+    pose.heading = pose.heading + turn;
+    if (forward == Fx{}) return true;
+    const FxPoint next{pose.position.x + forward * kernel::cos(mid),
+                       pose.position.y + forward * kernel::sin(mid)};
+    if (!clear(next)) return false;
+    pose.position = next;
+    return true;
+  }
 
   // Section 4.1: the bottom-most wall point on the vertical line through the walls' horizontal
   // centre, the robot's centre 0.83 above it, heading up (into the arena) +/- 15 degrees drawn
@@ -90,7 +116,18 @@ public:
 
 private:
   // The walls registered in the bucket holding p (empty when p is far from every wall).
-  [[nodiscard]] std::span<const BucketWall> nearby(FxPoint p) const noexcept;
+  [[nodiscard]] std::span<const BucketWall> nearby(FxPoint p) const noexcept {
+    // Buckets are 2^16 raw wide: an arithmetic shift is the floor division (C++20 defines >> on
+    // negatives).
+    const std::int64_t bx = (std::int64_t{p.x.raw()} >> 16) - grid_x0_;
+    const std::int64_t by = (std::int64_t{p.y.raw()} >> 16) - grid_y0_;
+    if (bx < 0 || by < 0 || bx >= grid_w_ || by >= grid_h_) return {}; // far from every wall
+    const auto k = static_cast<std::size_t>(by * grid_w_ + bx);
+    return {members_.data() + start_[k], members_.data() + start_[k + 1]};
+  }
+  // sense() and clear() over the bucket's walls.
+  [[nodiscard]] Observation sense_walls(const Pose& pose, kernel::Stream* noise) const;
+  [[nodiscard]] bool clear_walls(FxPoint p, std::span<const BucketWall> bucket) const;
 
   std::vector<FxSegment> walls_;
   BodyParams body_;
