@@ -13,6 +13,7 @@
 #include <antkit/kernel/segment.hpp>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -203,6 +204,38 @@ inline double cluster_z(const std::vector<ClusterTrial>& trials, const std::vect
       var += d * d;
     }
   return num / std::sqrt(var);
+}
+
+// The confidence interval for A that goes with cluster_z, over trials in one region: with
+// b = 2 / (pi A), D_w = M_w - b L2 lambda_w, and |sum D_w| <= z sqrt(sum D_w^2) is the quadratic
+// inequality in b
+//     (K^2 - z^2 S_ll) b^2 - 2 (N K - z^2 S_ml) b + (N^2 - z^2 S_mm) <= 0,
+// K = sum L2 lambda_w (= sum of L1 L2 over the trials), S_ll = sum (L2 lambda_w)^2,
+// S_ml = sum M_w L2 lambda_w, S_mm = sum M_w^2, N = sum M_w. With thousands of drops the leading
+// coefficient is positive and the b that pass lie between the two roots; A = 2 / (pi b) maps
+// them to [lower, upper] (upper infinite when the lower root is not positive). Empty (lower >
+// upper) when no b passes. The point estimate 2 sum L1 L2 / (pi N) (b = N / K) is always inside.
+struct AreaInterval {
+  double lower, upper;
+  bool covers(double a) const { return lower <= a && a <= upper; }
+};
+
+inline AreaInterval cluster_interval(const std::vector<ClusterTrial>& trials, double pi, double z) {
+  double k = 0, s_ll = 0, s_ml = 0, s_mm = 0, n = 0;
+  for (const auto& t : trials)
+    for (auto [m, lambda] : t.drops) {
+      const double x = t.l2 * lambda;
+      k += x;
+      s_ll += x * x;
+      s_ml += m * x;
+      s_mm += m * m;
+      n += m;
+    }
+  const double z2 = z * z, qa = k * k - z2 * s_ll, qb = n * k - z2 * s_ml, qc = n * n - z2 * s_mm;
+  const double disc = qb * qb - qa * qc;
+  if (qa <= 0 || disc < 0) return {1, 0}; // too few drops for a bounded interval: empty
+  const double b_lo = (qb - std::sqrt(disc)) / qa, b_hi = (qb + std::sqrt(disc)) / qa;
+  return {2 / (pi * b_hi), b_lo > 0 ? 2 / (pi * b_lo) : std::numeric_limits<double>::infinity()};
 }
 
 } // namespace antkit::test::crofton
