@@ -282,6 +282,46 @@ TEST_CASE("every non-negative 16-bit input: sqrt is the nearest root", "[fixed][
   CHECK(wrong == 0);
 }
 
+// The digit-by-digit loop invariant that proofs/z3/fixed_sqrt_step.cpp proves for one symbolic
+// iteration, checked along whole runs of the shipped isqrt_start / isqrt_step: before the iteration
+// with bit = 4^k, r = y 4^(k+1) and remaining = n - y^2 4^(k+1) with 0 <= remaining < 2r + 4^(k+1)
+// (y = r / 4^(k+1), the root digits so far); after the last, isqrt_floor's r and rest.
+template <class W, int Top>
+void check_isqrt_invariant(W n) {
+  using antkit::kernel::isqrt_start;
+  using antkit::kernel::isqrt_step;
+  auto st = isqrt_start<W, Top>(n);
+  for (int k = Top / 2; k >= -1; --k) {
+    const int128 scale = int128{1} << (2 * k + 2); // 4^(k+1)
+    const int128 r = st.r, rem = st.remaining;
+    RC_ASSERT(r % scale == 0);
+    const int128 y = r / scale;
+    RC_ASSERT(rem == int128{n} - y * y * scale);
+    RC_ASSERT(rem >= 0);
+    RC_ASSERT(rem < 2 * r + scale);
+    RC_ASSERT(int128{st.bit} == (k >= 0 ? scale / 4 : 0));
+    if (k >= 0) isqrt_step(st);
+  }
+  W rest{0};
+  const W root = antkit::kernel::isqrt_floor<W, Top>(n, rest);
+  RC_ASSERT(root == st.r);
+  RC_ASSERT(rest == st.remaining);
+}
+
+TEST_CASE("the square root's loop keeps its invariant at every iteration", "[fixed][property]") {
+  rc::prop("isqrt_floor<int64, 46> (Fx), n in [0, 2^48)", [] {
+    const int scale = *rc::gen::inRange(0, 49);
+    const std::int64_t n = *rc::gen::inRange<std::int64_t>(0, std::int64_t{1} << scale);
+    check_isqrt_invariant<std::int64_t, 46>(n);
+  });
+  rc::prop("isqrt_floor<int128, 94> (Q31.32), n in [0, 2^96)", [] {
+    const int hi_bits = *rc::gen::inRange(0, 33);
+    const std::uint64_t lo = *rc::gen::arbitrary<std::uint64_t>();
+    const std::int64_t hi = *rc::gen::inRange<std::int64_t>(0, std::int64_t{1} << hi_bits);
+    check_isqrt_invariant<int128, 94>((int128{hi} << 64) | lo);
+  });
+}
+
 TEST_CASE("outside the documented domains: detected when checked, defined otherwise", "[fixed]") {
   const Fx big = Fx::from_int(30000);
   if constexpr (kCheckedArithmetic) {

@@ -122,22 +122,47 @@ constexpr I fx_div_raw(I a, I b) {
 // The square root of n >= 0, rounded down, by the digit-by-digit method with a trip count fixed by
 // the bound: `top` is an even exponent with n < 4 * 2^top. Returns r with r*r <= n < (r+1)^2 and
 // leaves n - r*r in `rest`.
+//
+// The method decides one binary digit of the root per iteration, from the top. Its state is split
+// out (isqrt_start, isqrt_step) so that the Z3 proof (proofs/z3/fixed_sqrt_step.cpp) can run ONE
+// iteration on a symbolic state instead of all of them unrolled. With bit = 4^k before an iteration
+// and y the root's digits decided so far (y = floor(sqrt(n / 4^(k+1)))), the state satisfies
+//     r = y * 4^(k+1),   remaining = n - y^2 * 4^(k+1),   0 <= remaining < 2 r + 4^(k+1);
+// the iteration decides the digit of weight 2^k (take: (2y+1)^2 4^k <= n, i.e. remaining >= r +
+// bit) and leaves the same with y' = 2y + take and k - 1. After the last iteration (k = 0) the
+// scale 4^(k+1) is 1: r = y, remaining = n - r^2 < 2r + 1.
+template <class W>
+struct IsqrtState {
+  W r;         // y * 4^(k+1)
+  W remaining; // n - y^2 * 4^(k+1)
+  W bit;       // 4^k
+};
+
+// Before the first iteration: no digit decided (y = 0), k = top / 2.
+template <class W, int Top>
+constexpr IsqrtState<W> isqrt_start(W n) {
+  using ops::shl;
+  static_assert(Top % 2 == 0 && Top >= 0);
+  return IsqrtState<W>{W{0}, n, shl(W{1}, Top)};
+}
+
+// One iteration: decides the digit of weight 2^k and moves to k - 1 (bit / 4; 0 after k = 0).
+template <class W>
+constexpr void isqrt_step(IsqrtState<W>& s) {
+  using ops::add, ops::sub, ops::shr, ops::select;
+  const W trial = add(s.r, s.bit);
+  const auto take = s.remaining >= trial;
+  s.remaining = select(take, sub(s.remaining, trial), s.remaining);
+  s.r = select(take, add(shr(s.r, 1), s.bit), shr(s.r, 1));
+  s.bit = shr(s.bit, 2);
+}
+
 template <class W, int Top>
 constexpr W isqrt_floor(W n, W& rest) {
-  using ops::add, ops::sub, ops::shl, ops::shr, ops::select;
-  static_assert(Top % 2 == 0 && Top >= 0);
-  W r{0};
-  W remaining = n;
-  W bit = shl(W{1}, Top);
-  for (int i = 0; i <= Top / 2; ++i) {
-    const W trial = add(r, bit);
-    const auto take = remaining >= trial;
-    remaining = select(take, sub(remaining, trial), remaining);
-    r = select(take, add(shr(r, 1), bit), shr(r, 1));
-    bit = shr(bit, 2);
-  }
-  rest = remaining;
-  return r;
+  IsqrtState<W> s = isqrt_start<W, Top>(n);
+  for (int i = 0; i <= Top / 2; ++i) isqrt_step(s);
+  rest = s.remaining;
+  return s.r;
 }
 
 // raw = the nearest integer to sqrt(a * 2^F); a < 0 gives 0.
