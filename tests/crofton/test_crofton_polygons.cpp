@@ -210,7 +210,7 @@ TEST_CASE("the z-level interval is estimate.hpp's 95 % interval at z = 1.96", "[
 }
 
 TEST_CASE("Crofton on rapidcheck-generated polygons with 0-3 holes: A_hat within its z = 5.3 "
-          "interval, for segments and random-walk polylines; wrong area or pi -> 3 rejected",
+          "interval, for segments and random-walk polylines, wrong area or pi -> 3 rejected",
           "[crofton][property]") {
   // Six polygons, hole counts 0, 1, 2, 3, 0, 1 (so every count is covered). On each, 12
   // segment/segment trials and 6 walk/segment trials, E[N] ~ 6000 per trial (108000 pooled).
