@@ -157,11 +157,7 @@ void write_plot(const std::filesystem::path& path, const std::string& title,
 void run_figure14(const ExperimentCommand& c) {
   constexpr int K = 10;
   const std::int64_t step_raw = std::int64_t{168} * 65536;
-  struct Arena {
-    double d, area;
-    std::vector<std::vector<double>> nbc, rs; // [k][trial]
-  };
-  std::vector<Arena> arenas;
+  std::vector<buffon::Figure14Arena> arenas;
   for (int d = 30; d <= 100; d += 10) {
     const auto arena = geometry::build_arena_spec("circle:d=" + std::to_string(d), "figure").arena;
     const buffon::World world(arena.walls_fx());
@@ -173,15 +169,8 @@ void run_figure14(const ExperimentCommand& c) {
     buffon::parallel_for(results.size(), static_cast<unsigned>(c.threads), [&](std::uint64_t t) {
       results[t] = buffon::run_checkpoints(world, params, t, step_raw, K);
     });
-    Arena a{static_cast<double>(d), arena.area(), std::vector<std::vector<double>>(K),
-            std::vector<std::vector<double>>(K)};
-    for (const auto& r : results)
-      for (std::size_t k = 0; k < K; ++k) {
-        const double l2 = static_cast<double>(r.length2_raw[k]) / 65536.0;
-        a.nbc[k].push_back(l2 > 0 ? static_cast<double>(r.bc[k]) / l2 : 0.0);
-        const double cell = static_cast<double>(r.rs_cell_raw) / 65536.0;
-        a.rs[k].push_back(static_cast<double>(r.rs_cells[k]) * cell * cell);
-      }
+    buffon::Figure14Arena a{static_cast<double>(d), arena.area(), {}, {}};
+    for (const auto& r : results) buffon::add_checkpoints(a, r);
     arenas.push_back(std::move(a));
     std::cerr << "figure 14: circle d=" << d << " done\n";
   }
@@ -190,26 +179,19 @@ void run_figure14(const ExperimentCommand& c) {
          "fit_a,fit_b,fit_c\n";
   std::vector<Row> plot;
   for (std::size_t k = 0; k < K; ++k) {
-    std::vector<double> xs, ys;
-    for (const auto& a : arenas)
-      if (static_cast<int>(a.d) % 20 == 10) {
-        xs.push_back(buffon::quantile(a.nbc[k], 0.5));
-        ys.push_back(a.area);
-      }
-    const auto fit = buffon::fit_power_law(xs, ys);
+    const auto fit = buffon::calibrate_at(arenas, k);
     const double total = 2.0 * 168.0 * static_cast<double>(k + 1);
     for (const auto& a : arenas) {
-      if (static_cast<int>(a.d) % 20 != 0) continue;
-      std::vector<double> est;
-      for (double x : a.nbc[k]) est.push_back(x > 0 ? fit(x) : 0.0);
+      if (buffon::is_calibration_diameter(a.diameter)) continue;
+      const std::vector<double> est = buffon::estimates_at(a, k, fit);
       const double bm = buffon::quantile(est, 0.5), b1 = buffon::quantile(est, 0.25),
                    b3 = buffon::quantile(est, 0.75);
       const double rm = buffon::quantile(a.rs[k], 0.5), r1 = buffon::quantile(a.rs[k], 0.25),
                    r3 = buffon::quantile(a.rs[k], 0.75);
-      csv << num(a.d) << ',' << num(total) << ',' << num(a.area) << ',' << num(bm) << ',' << num(b1)
-          << ',' << num(b3) << ',' << num(rm) << ',' << num(r1) << ',' << num(r3) << ','
+      csv << num(a.diameter) << ',' << num(total) << ',' << num(a.area) << ',' << num(bm) << ','
+          << num(b1) << ',' << num(b3) << ',' << num(rm) << ',' << num(r1) << ',' << num(r3) << ','
           << num(fit.a) << ',' << num(fit.b) << ',' << num(fit.c) << '\n';
-      const std::string d = num(a.d);
+      const std::string d = num(a.diameter);
       plot.push_back(Row{Point{"buffon d=" + d, total, "", 0.1}, a.area, bm / a.area, b1 / a.area,
                          b3 / a.area, 0, 0});
       plot.push_back(Row{Point{"rs d=" + d, total, "", 0.1}, a.area, rm / a.area, r1 / a.area,

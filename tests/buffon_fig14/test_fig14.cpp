@@ -35,51 +35,36 @@ TEST_CASE("Figure 14: calibrated Buffon beats Randomized Search at short trails"
   constexpr int K = 10, T = 40;
   const std::int64_t step_raw = std::int64_t{168} * 65536;
   const std::uint64_t seed = 20261121;
-  struct A {
-    double d, area;
-    std::vector<std::vector<double>> nbc, rs;
-  };
-  std::vector<A> arenas;
+  std::vector<buffon::Figure14Arena> arenas;
   for (int d = 30; d <= 100; d += 10) {
     const auto arena = geometry::build_arena_spec("circle:d=" + std::to_string(d), "test").arena;
     const buffon::World world(arena.walls_fx());
     buffon::TrialParams params;
     params.seed = seed;
     params.experiment = 8400 + static_cast<std::uint64_t>(d);
-    A a{static_cast<double>(d), arena.area(), std::vector<std::vector<double>>(K),
-        std::vector<std::vector<double>>(K)};
+    buffon::Figure14Arena a{static_cast<double>(d), arena.area(), {}, {}};
     for (std::uint64_t t = 0; t < T; ++t) {
       const auto r = buffon::run_checkpoints(world, params, t, step_raw, K);
+      buffon::add_checkpoints(a, r);
       const double cell = static_cast<double>(r.rs_cell_raw) / 65536.0;
       for (std::size_t k = 0; k < K; ++k) {
-        const double l2 = static_cast<double>(r.length2_raw[k]) / 65536.0;
-        a.nbc[k].push_back(l2 > 0 ? static_cast<double>(r.bc[k]) / l2 : 0.0);
-        const double rs = static_cast<double>(r.rs_cells[k]) * cell * cell;
-        a.rs[k].push_back(rs);
         const double total = 2.0 * 168.0 * static_cast<double>(k + 1);
         // Swept band of width 1 plus the end disk, plus one cell of slack on each side of the band.
         INFO("seed " << seed << " d " << d << " trial " << t << " k " << k);
-        REQUIRE(rs <= (total * (1.0 + 2.0 * cell) + 3.15 / 4.0 + 4 * cell) * 1.0001);
+        REQUIRE(a.rs[k].back() <= (total * (1.0 + 2.0 * cell) + 3.15 / 4.0 + 4 * cell) * 1.0001);
       }
     }
     arenas.push_back(std::move(a));
   }
   std::vector<double> buffon_err(K), rs_err100(K);
   for (std::size_t k = 0; k < K; ++k) {
-    std::vector<double> xs, ys;
-    for (const auto& a : arenas)
-      if (static_cast<int>(a.d) % 20 == 10) {
-        xs.push_back(buffon::quantile(a.nbc[k], 0.5));
-        ys.push_back(a.area);
-      }
-    const auto fit = buffon::fit_power_law(xs, ys);
+    const auto fit = buffon::calibrate_at(arenas, k);
     std::vector<double> errs;
     for (const auto& a : arenas) {
-      if (static_cast<int>(a.d) % 20 != 0) continue;
-      std::vector<double> est;
-      for (double x : a.nbc[k]) est.push_back(x > 0 ? fit(x) : 0.0);
+      if (buffon::is_calibration_diameter(a.diameter)) continue;
+      const std::vector<double> est = buffon::estimates_at(a, k, fit);
       errs.push_back(std::abs(buffon::quantile(est, 0.5) / a.area - 1));
-      if (a.d == 100) rs_err100[k] = std::abs(buffon::quantile(a.rs[k], 0.5) / a.area - 1);
+      if (a.diameter == 100) rs_err100[k] = std::abs(buffon::quantile(a.rs[k], 0.5) / a.area - 1);
     }
     buffon_err[k] = buffon::quantile(errs, 0.5);
     std::printf("fig14 total=%4.0f buffon_heldout_median_err=%.3f (max %.3f) rs_err_d100=%.3f\n",

@@ -10,6 +10,8 @@
 // squares for each, which keeps LM away from the flat region c ~ 0; LM stops after 200 iterations
 // or when a step changes the cost by less than 1e-15 relative.
 #include <Eigen/Dense>
+#include <antkit/buffon/checkpoints.hpp>
+#include <antkit/buffon/estimate.hpp>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -79,6 +81,57 @@ inline PowerFit fit_power_law(const std::vector<double>& x, const std::vector<do
     }
   }
   return best;
+}
+
+// Figure 14 (Section 8.1): circles of diameter 30, 40, ..., 100; those of 30, 50, 70, 90 calibrate
+// and 40, 60, 80, 100 are held out. At every checkpoint k the calibration circles' median nBC at k
+// is fitted to their areas and each held-out trial's nBC at k becomes one estimate. One definition
+// for the experiment driver (cli/buffon_experiment.cpp) and the test that asserts the figure's
+// claim (tests/buffon_fig14).
+struct Figure14Arena {
+  double diameter = 0, area = 0;
+  std::vector<std::vector<double>> nbc, rs; // [checkpoint][trial]: nBC and the RS estimate
+};
+
+inline bool is_calibration_diameter(double d) {
+  return static_cast<int>(d) % 20 == 10;
+}
+
+// Appends one trial's checkpoints (checkpoints.hpp) to the arena's columns.
+inline void add_checkpoints(Figure14Arena& a, const CheckpointResult& r) {
+  const std::size_t k_count = r.bc.size();
+  a.nbc.resize(k_count);
+  a.rs.resize(k_count);
+  const double cell = static_cast<double>(r.rs_cell_raw) / 65536.0;
+  for (std::size_t k = 0; k < k_count; ++k) {
+    const double l2 = static_cast<double>(r.length2_raw[k]) / 65536.0;
+    a.nbc[k].push_back(l2 > 0 ? static_cast<double>(r.bc[k]) / l2 : 0.0);
+    a.rs[k].push_back(static_cast<double>(r.rs_cells[k]) * cell * cell);
+  }
+}
+
+// The median of a sample (type 7 quantile, as estimate.hpp's quantile).
+inline double median_of(std::vector<double> v) {
+  return quantile(std::move(v), 0.5);
+}
+
+// The fit at checkpoint k: area = a + b nBC^c through the calibration circles' median nBC.
+inline PowerFit calibrate_at(const std::vector<Figure14Arena>& arenas, std::size_t k) {
+  std::vector<double> xs, ys;
+  for (const auto& a : arenas)
+    if (is_calibration_diameter(a.diameter)) {
+      xs.push_back(median_of(a.nbc[k]));
+      ys.push_back(a.area);
+    }
+  return fit_power_law(xs, ys);
+}
+
+// A held-out arena's estimates at checkpoint k, one per trial (0 where the trial saw no crossing).
+inline std::vector<double> estimates_at(const Figure14Arena& a, std::size_t k,
+                                        const PowerFit& fit) {
+  std::vector<double> est;
+  for (double x : a.nbc[k]) est.push_back(x > 0 ? fit(x) : 0.0);
+  return est;
 }
 
 } // namespace antkit::buffon
