@@ -37,6 +37,20 @@ static_assert(kernel::philox4x32_10_x4({Block{}, Block{},
                                        {0xFFFFFFFFu, 0xFFFFFFFFu})[2] ==
               Block{0x408f276du, 0x41c83b0eu, 0xa20bc7c6u, 0x6d5451fdu});
 
+// next_u32s in a constant expression (the scalar rounds): 3 single words, a batch of 37 (the rest
+// of a block, two groups of four blocks, a tail), then one more word, against 41 next_u32 calls.
+constexpr bool batch_matches_singles() {
+  kernel::Stream batched(99, 4, 5, 1, 0), plain(99, 4, 5, 1, 0);
+  for (int k = 0; k < 3; ++k)
+    if (batched.next_u32() != plain.next_u32()) return false;
+  std::array<std::uint32_t, 37> words{};
+  batched.next_u32s(words);
+  for (std::uint32_t w : words)
+    if (w != plain.next_u32()) return false;
+  return batched.drawn() == plain.drawn() && batched.next_u32() == plain.next_u32();
+}
+static_assert(batch_matches_singles());
+
 } // namespace
 
 TEST_CASE("philox4x32_10_x4 at run time equals four philox4x32_10 blocks", "[property]") {
