@@ -12,10 +12,17 @@
 //    error at total length L is at least 1 - (L + 2)/7854 > 0.5 for every checkpoint here; we
 //    assert the bound itself on every arena, trial and checkpoint, and that the RS median error on
 //    d = 100 stays above 0.5 throughout.
-//  * Buffon: the calibrated estimate's median relative error over the held-out diameters at the
-//    longest checkpoint is below 0.25 and below the RS error there; measured values are printed.
-//    This one is statistical with 40 trials; its margin is chosen from the measured spread (see the
-//    printed IQR), not proven to 1e-6 (stated as a weakness in the report).
+//  * Buffon: statistical, with bounds chosen from the statistics' spread over 9 independent seeds
+//    (this one and seeds 1-8, 40 trials each; measured with the same code):
+//    - the held-out median error at the longest checkpoint (mean 0.022, sd 0.0066) is below 0.25
+//      (34 sd away) and below RS's error there (0.664, ~97 sd);
+//    - the per-trial error (median of |estimate / area - 1| over the 160 held-out trials; mean
+//      0.536, sd 0.063 at the shortest checkpoint and 0.065, sd 0.0071 at the longest) falls by at
+//      least half from the first to the last checkpoint (margin 0.20, 6.2 sd of the difference)
+//      and is below 0.15 at the last (12 sd).
+//    Under a normal approximation every margin is beyond 6 sd, a false-failure rate below 1e-9
+//    each. (The held-out median error at the first checkpoint alone is too noisy to compare,
+//    0.095-0.403 over the seeds, so it is printed but not asserted.)
 #include "../../algorithms/buffon/experiments/calibration.hpp"
 
 #include <algorithm>
@@ -56,24 +63,28 @@ TEST_CASE("Figure 14: calibrated Buffon beats Randomized Search at short trails"
     }
     arenas.push_back(std::move(a));
   }
-  std::vector<double> buffon_err(K), rs_err100(K);
+  std::vector<double> buffon_err(K), rs_err100(K), trial_err(K);
   for (std::size_t k = 0; k < K; ++k) {
     const auto fit = buffon::calibrate_at(arenas, k);
-    std::vector<double> errs;
+    std::vector<double> errs, each;
     for (const auto& a : arenas) {
       if (buffon::is_calibration_diameter(a.diameter)) continue;
       const std::vector<double> est = buffon::estimates_at(a, k, fit);
       errs.push_back(std::abs(buffon::quantile(est, 0.5) / a.area - 1));
+      for (double e : est) each.push_back(std::abs(e / a.area - 1));
       if (a.diameter == 100) rs_err100[k] = std::abs(buffon::quantile(a.rs[k], 0.5) / a.area - 1);
     }
     buffon_err[k] = buffon::quantile(errs, 0.5);
-    std::printf("fig14 total=%4.0f buffon_heldout_median_err=%.3f (max %.3f) rs_err_d100=%.3f\n",
+    trial_err[k] = buffon::quantile(each, 0.5);
+    std::printf("fig14 total=%4.0f buffon_heldout_median_err=%.3f (max %.3f) trial_err=%.3f "
+                "rs_err_d100=%.3f\n",
                 2.0 * 168.0 * static_cast<double>(k + 1), buffon_err[k],
-                *std::max_element(errs.begin(), errs.end()), rs_err100[k]);
+                *std::max_element(errs.begin(), errs.end()), trial_err[k], rs_err100[k]);
   }
   INFO("seed " << seed << " trials " << T);
   for (std::size_t k = 0; k < K; ++k) CHECK(rs_err100[k] > 0.5);
   CHECK(buffon_err[K - 1] < 0.25);
-  CHECK(buffon_err[K - 1] < buffon_err[0]); // the calibrated error falls as the trail grows
+  CHECK(trial_err[K - 1] < trial_err[0] / 2); // the calibrated error falls as the trail grows
+  CHECK(trial_err[K - 1] < 0.15);
   CHECK(buffon_err[K - 1] < rs_err100[K - 1]);
 }
