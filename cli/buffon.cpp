@@ -20,6 +20,7 @@
 // rule's interval) and "variance_visit1", "variance_visit2" (the variance's two shares: when visit
 // 1's dominates, only a longer visit 1 helps), and the summary has "precision", "reached_precision"
 // (how many trials reached it) and "length2_median". Without --precision the output is unchanged.
+#include "buffon_options.hpp"
 #include "commands.hpp"
 #include "output.hpp"
 #include "svg.hpp"
@@ -97,16 +98,11 @@ void write_svg(const std::string& path, const geometry::Arena& arena,
 }
 
 void run(const BuffonCommand& c) {
-  if (c.trials < 1 || c.trials > 100000)
-    throw InputError("--trials", "the number of trials must be in [1, 100000]");
-  if (c.steps < 1 || c.steps > 10000000)
-    throw InputError("--steps", "the steps per visit must be in [1, 10000000]");
+  antkit::cli::check_buffon_run_size(c.trials, c.steps, c.threads);
   if (c.max_steps2 != 0 && !c.precision_given)
     throw InputError("--max-steps2", "--max-steps2 needs --precision");
   if (c.max_steps2 < 0 || c.max_steps2 > 100000000)
     throw InputError("--max-steps2", "visit 2's step cap must be in [1, 100000000]");
-  if (c.threads < 1 || c.threads > 256)
-    throw InputError("--threads", "the number of threads must be in [1, 256]");
   if (!(c.width >= 0.01 && c.width <= 10))
     throw InputError("--width", "the trail width must be in [0.01, 10] units");
   if (!(c.noise >= 0 && c.noise <= 1))

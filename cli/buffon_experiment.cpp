@@ -15,6 +15,7 @@
 // 10..80 % of the diameter in steps of 10; Figure 9's widths are 0.05, 0.1, 0.2, 0.4 over the ten
 // circles. Figure 14: see run_figure14. The plot's colours cycle after eight series.
 #include "../algorithms/buffon/experiments/calibration.hpp"
+#include "buffon_options.hpp"
 #include "commands.hpp"
 #include "output.hpp"
 #include "svg.hpp"
@@ -208,12 +209,7 @@ void run(const ExperimentCommand& c) {
   const auto points = figure_points(c.figure);
   if (points.empty() && c.figure != 14)
     throw InputError("--figure", "the figure must be 5, 6, 7, 8, 9 or 14");
-  if (c.trials < 1 || c.trials > 100000)
-    throw InputError("--trials", "the number of trials must be in [1, 100000]");
-  if (c.steps < 1 || c.steps > 10000000)
-    throw InputError("--steps", "the steps per visit must be in [1, 10000000]");
-  if (c.threads < 1 || c.threads > 256)
-    throw InputError("--threads", "the number of threads must be in [1, 256]");
+  antkit::cli::check_buffon_run_size(c.trials, c.steps, c.threads);
   if (c.out.empty()) throw InputError("--out", "give an output directory");
   std::filesystem::create_directories(c.out);
   if (c.figure == 14) return run_figure14(c);
