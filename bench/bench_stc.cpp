@@ -8,6 +8,7 @@
 #include <benchmark/benchmark.h>
 #include <cstdint>
 #include <sys/resource.h>
+#include <vector>
 
 using antkit::kernel::Occupancy;
 using antkit::kernel::OccupancyGrid;
@@ -39,40 +40,214 @@ long max_rss_kib() {
   return usage.ru_maxrss;
 }
 
-// Offline STC, both phases (free cells from the map, the tree, the tour), from the map in memory.
-void run_offline(benchmark::State& state, const OccupancyGrid& map) {
-  std::int64_t subcells = 0;
-  std::size_t extra_bytes = 0;
-  for (auto _ : state) {
-    const SpanningTree tree(map, {0, 0});
-    std::uint64_t fold = 0;
-    std::int64_t n = 0;
-    tree.tour([&](SubCell s) {
-      fold += static_cast<std::uint64_t>(s.x) * 31u + static_cast<std::uint64_t>(s.y);
-      ++n;
-    });
-    benchmark::DoNotOptimize(fold);
-    subcells += n;
-    // The tree's one byte per cell is everything offline STC allocates beyond the map.
-    extra_bytes = static_cast<std::size_t>(tree.shape().cells_x) *
-                  static_cast<std::size_t>(tree.shape().cells_y);
+// The offline STC of before the run-at-a-time walk and the mask-and-table search (commit
+// 23a7ad0), kept here only as the "before" of the comparison, measured in the same run as the
+// shipped code: one byte per cell in 64 x 64 tiles, the search testing one neighbour at a time,
+// the walk deciding once per sub-cell.
+class LegacyTree {
+public:
+  static constexpr std::uint8_t kFree = 0x01, kParent = 0x03, kInTree = 0x04, kRoot = 0x08;
+  static constexpr int kChild = 4;
+
+  LegacyTree(const OccupancyGrid& map, SubCell start)
+      : shape_(cell_shape(map)), tiles_x_((static_cast<std::size_t>(shape_.cells_x) + 65) >> 6),
+        root_(cell_of(start)), q0_(quadrant_of(start)) {
+    const std::size_t tiles_y = (static_cast<std::size_t>(shape_.cells_y) + 65) >> 6;
+    state_.assign((tiles_x_ * tiles_y) << 12, 0);
+    const auto width = static_cast<std::size_t>(map.width());
+    const auto& sub = map.cells();
+    for (std::int32_t cy = 0; cy < shape_.cells_y; ++cy) {
+      const std::size_t top = static_cast<std::size_t>(2 * cy) * width, bottom = top + width;
+      for (std::int32_t cx = 0; cx < shape_.cells_x; ++cx) {
+        const auto x = static_cast<std::size_t>(2 * cx);
+        const bool free = sub[top + x] == Occupancy::Free && sub[top + x + 1] == Occupancy::Free &&
+                          sub[bottom + x] == Occupancy::Free &&
+                          sub[bottom + x + 1] == Occupancy::Free;
+        state_[index({cx, cy})] = free ? kFree : std::uint8_t{0};
+      }
+    }
+    build();
   }
+
+  template <class Visit>
+  void tour(Visit&& visit) const {
+    Cell cell = root_;
+    std::size_t at = index(cell);
+    int q = q0_;
+    visit(subcell_of(cell, q));
+    for (;;) {
+      const std::uint8_t here = state_[at];
+      const int d = q;
+      bool cross = ((here >> (kChild + d)) & 1) != 0;
+      if (!cross && (here & kRoot) == 0 && (here & kParent) == d) {
+        if (dir_add(d, 3) == q0_ && step(cell, d) == root_) return;
+        cross = true;
+      }
+      if (cross) {
+        cell = step(cell, d);
+        at = index(cell);
+        q = dir_add(d, 3);
+      } else {
+        q = dir_add(d, 1);
+        if (q == q0_ && cell == root_) return;
+      }
+      visit(subcell_of(cell, q));
+    }
+  }
+
+private:
+  [[nodiscard]] std::size_t index(Cell c) const noexcept {
+    const auto x = static_cast<std::size_t>(c.x + 1), y = static_cast<std::size_t>(c.y + 1);
+    return ((((y >> 6) * tiles_x_ + (x >> 6)) << 12) | ((y & 63) << 6) | (x & 63));
+  }
+  void build() {
+    std::uint8_t* s = state_.data();
+    Cell cur = root_;
+    std::size_t at = index(cur);
+    s[at] = static_cast<std::uint8_t>(kInTree | kRoot | dir_add(q0_, 3));
+    int k = 0;
+    for (;;) {
+      const std::uint8_t here = s[at];
+      const int base = here & kParent;
+      const int limit = (here & kRoot) ? 4 : 3;
+      bool descended = false;
+      for (; k < limit; ++k) {
+        const int d = dir_add(base, 1 + k);
+        const Cell nb = step(cur, d);
+        const std::size_t n = index(nb);
+        if (s[n] != kFree) continue;
+        s[n] = static_cast<std::uint8_t>(kInTree | opposite(d));
+        s[at] = static_cast<std::uint8_t>(s[at] | (1u << (kChild + d)));
+        cur = nb;
+        at = n;
+        k = 0;
+        descended = true;
+        break;
+      }
+      if (descended) continue;
+      if (here & kRoot) break;
+      const int e = opposite(base);
+      cur = step(cur, base);
+      at = index(cur);
+      k = dir_add(e, -(s[at] & kParent) - 1) + 1;
+    }
+  }
+
+  CellGridShape shape_;
+  std::size_t tiles_x_;
+  std::vector<std::uint8_t> state_;
+  Cell root_;
+  int q0_;
+};
+
+// The benchmark's consumer of the tour: a fold of the positions (so that none can be skipped)
+// and their count.
+struct Fold {
+  std::uint64_t fold = 0;
+  std::int64_t n = 0;
+  void operator()(SubCell s) noexcept {
+    fold += static_cast<std::uint64_t>(s.x) * 31u + static_cast<std::uint64_t>(s.y);
+    ++n;
+  }
+};
+
+// Offline STC, both phases (free cells from the map, the tree, the tour), from the map in memory.
+// Argument 0: the shipped SpanningTree; 1: LegacyTree, the code before (same tour: checked).
+template <class Tree>
+std::int64_t offline_once(const OccupancyGrid& map, std::uint64_t& fold) {
+  const Tree tree(map, {0, 0});
+  Fold f;
+  tree.tour(f);
+  fold = f.fold;
+  return f.n;
+}
+
+void run_offline(benchmark::State& state, const OccupancyGrid& map) {
+  const bool legacy = state.range(0) != 0;
+  std::uint64_t fold = 0, reference = 0;
+  std::int64_t subcells = 0;
+  for (auto _ : state) {
+    subcells +=
+        legacy ? offline_once<LegacyTree>(map, fold) : offline_once<SpanningTree>(map, fold);
+    benchmark::DoNotOptimize(fold);
+  }
+  // After the timed loop: both codes walk the same tour (the same fold of the same number of
+  // positions).
+  const std::int64_t n = legacy ? offline_once<SpanningTree>(map, reference)
+                                : offline_once<LegacyTree>(map, reference);
+  if (reference != fold || n * static_cast<std::int64_t>(state.iterations()) != subcells)
+    state.SkipWithError("the shipped and the legacy offline tours differ");
   state.SetItemsProcessed(subcells);
+  // The tree's one byte per cell (in 64 x 64 tiles, with a border) is everything offline STC
+  // allocates beyond the map.
+  const SpanningTree tree(map, {0, 0});
   state.counters["extra_bytes_per_subcell"] =
-      static_cast<double>(extra_bytes) / static_cast<double>(map.size());
+      static_cast<double>(tree.bytes()) / static_cast<double>(map.size());
   state.counters["max_rss_MiB"] = static_cast<double>(max_rss_kib()) / 1024.0;
 }
 
 void BM_StcOffline4096Blocked10(benchmark::State& state) {
   run_offline(state, map_4096());
 }
-BENCHMARK(BM_StcOffline4096Blocked10)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_StcOffline4096Blocked10)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("legacy")
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
+
+const OccupancyGrid& map_16384() {
+  static const OccupancyGrid map(16384, 16384, Occupancy::Free); // 256 MiB, the map itself
+  return map;
+}
 
 void BM_StcOffline16384Empty(benchmark::State& state) {
-  const OccupancyGrid map(16384, 16384, Occupancy::Free); // 256 MiB, the map itself
-  run_offline(state, map);
+  run_offline(state, map_16384());
 }
-BENCHMARK(BM_StcOffline16384Empty)->Unit(benchmark::kMillisecond)->Iterations(2);
+BENCHMARK(BM_StcOffline16384Empty)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("legacy")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+// The two phases apart (shipped code): the tree alone (free cells and search), and the walk of a
+// tree built before the timing.
+void BM_StcOfflineTreeOnly(benchmark::State& state) {
+  const OccupancyGrid& map = state.range(0) == 0 ? map_4096() : map_16384();
+  std::int64_t subcells = 0;
+  for (auto _ : state) {
+    const SpanningTree tree(map, {0, 0});
+    subcells += 4 * tree.cells();
+    benchmark::DoNotOptimize(tree.cells());
+  }
+  state.SetItemsProcessed(subcells);
+}
+BENCHMARK(BM_StcOfflineTreeOnly)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("empty16384")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+void BM_StcOfflineWalkOnly(benchmark::State& state) {
+  const OccupancyGrid& map = state.range(0) == 0 ? map_4096() : map_16384();
+  const SpanningTree tree(map, {0, 0});
+  std::int64_t subcells = 0;
+  for (auto _ : state) {
+    Fold f;
+    tree.tour(f);
+    benchmark::DoNotOptimize(f.fold);
+    subcells += f.n;
+  }
+  state.SetItemsProcessed(subcells);
+}
+BENCHMARK(BM_StcOfflineWalkOnly)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("empty16384")
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 // A variant run as a controller in the simulated world (observations, marks, trace hash).
 void run_world(benchmark::State& state, Variant variant) {

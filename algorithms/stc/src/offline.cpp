@@ -1,5 +1,7 @@
+#include <algorithm>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/stc/offline.hpp>
+#include <cstring>
 #include <string>
 
 namespace antkit::stc {
@@ -42,61 +44,139 @@ SpanningTree::SpanningTree(const kernel::OccupancyGrid& map, SubCell start)
                                           std::to_string(root_.x) + ", " + std::to_string(root_.y) +
                                           "), which is not free (all four sub-cells must be)");
   const std::size_t tiles_y = (static_cast<std::size_t>(shape_.cells_y) + 2 + 63) >> kTileBits;
+  constexpr std::size_t tile = std::size_t{1} << (2 * kTileBits);
+  const std::size_t tile_row = tiles_x_ * tile;
+  steps_.leave = {tile - 63, 63 * 64 - tile_row, 0 - (tile - 63), tile_row - 63 * 64};
   state_.assign((tiles_x_ * tiles_y) << (2 * kTileBits), 0);
-  // Free cells, two map rows at a time so that the map is read sequentially.
-  const auto width = static_cast<std::size_t>(map.width());
-  const auto& sub = map.cells();
-  for (std::int32_t cy = 0; cy < shape_.cells_y; ++cy) {
-    const std::size_t top = static_cast<std::size_t>(2 * cy) * width, bottom = top + width;
-    for (std::int32_t cx = 0; cx < shape_.cells_x; ++cx) {
-      const auto x = static_cast<std::size_t>(2 * cx);
-      const bool free = sub[top + x] == kernel::Occupancy::Free &&
-                        sub[top + x + 1] == kernel::Occupancy::Free &&
-                        sub[bottom + x] == kernel::Occupancy::Free &&
-                        sub[bottom + x + 1] == kernel::Occupancy::Free;
-      state_[index({cx, cy})] = free ? kFreeCell : std::uint8_t{0};
-    }
-  }
-  build();
+  // The search's own memory, one more byte per cell, released when the tree is built.
+  std::vector<std::uint8_t> open;
+  mark_free_cells(map, open);
+  build(open.data());
 }
 
-void SpanningTree::build() {
-  std::uint8_t* s = state_.data();
-  // The root's virtual parent is q0 - 1, so that its scan starts at q0 like every other cell's
-  // starts after its parent; unlike theirs, the root's scan covers all four directions.
-  Cell cur = root_;
-  std::size_t at = index(cur);
-  s[at] = static_cast<std::uint8_t>(kInTree | kRoot | dir_add(q0_, 3));
-  tree_cells_ = 1;
-  int k = 0; // the next scan position of `cur`: direction base + 1 + k
-  for (;;) {
-    const std::uint8_t here = s[at];
-    const int base = here & kParentMask;
-    const int limit = (here & kRoot) ? 4 : 3;
-    bool descended = false;
-    for (; k < limit; ++k) {
-      const int d = dir_add(base, 1 + k);
-      const Cell nb = step(cur, d);
-      const std::size_t n = index(nb);
-      if (s[n] != kFreeCell) continue; // blocked, border, or already in the tree
-      s[n] = static_cast<std::uint8_t>(kInTree | opposite(d));
-      s[at] = static_cast<std::uint8_t>(s[at] | (1u << (kChildShift + d)));
-      ++tree_cells_;
-      cur = nb;
-      at = n;
-      k = 0;
-      descended = true;
-      break;
-    }
-    if (descended) continue;
-    if (here & kRoot) break;
-    // Back to the parent; resume its scan after the direction that led here.
-    const int e = opposite(base); // from the parent to cur
-    cur = step(cur, base);
-    at = index(cur);
-    const int parent_base = s[at] & kParentMask;
-    k = dir_add(e, -parent_base - 1) + 1;
+namespace {
+
+// The byte the search keeps per cell (in the tree's tiled layout), apart from the tree itself:
+// bits 0-3, bit d set while the neighbour in direction d is a new cell (free, not yet in the
+// tree; Gabriely & Rimon's "new" cells); once the cell is in the tree, bits 4-5 hold the direction
+// of its parent and bit 6 says it is the root.
+constexpr unsigned kNewMask = 0x0F;
+constexpr int kOpenParentShift = 4;
+constexpr unsigned kOpenRoot = 0x40;
+
+// Row cy of the cell grid: out[cx + 1] = 1 when cell (cx, cy) is free, 0 otherwise, and 0 at
+// out[0] and out[cells_x + 1]. A cell is free when its four sub-cells are Free (0): the two
+// sub-cells of each of its map rows are read as one 16-bit word and the two words must OR to zero
+// (no branch per sub-cell; the loop vectorises).
+void free_row(const kernel::OccupancyGrid& map, std::int32_t cells_x, std::int32_t cy,
+              std::vector<std::uint8_t>& out) {
+  static_assert(static_cast<int>(kernel::Occupancy::Free) == 0 && sizeof(kernel::Occupancy) == 1);
+  const auto width = static_cast<std::size_t>(map.width());
+  const auto* top = reinterpret_cast<const unsigned char*>(map.cells().data()) +
+                    static_cast<std::size_t>(2 * cy) * width;
+  const unsigned char* bottom = top + width;
+  std::uint8_t* o = out.data() + 1;
+  for (std::size_t cx = 0; cx < static_cast<std::size_t>(cells_x); ++cx) {
+    std::uint16_t t = 0, b = 0;
+    std::memcpy(&t, top + 2 * cx, 2);
+    std::memcpy(&b, bottom + 2 * cx, 2);
+    o[cx] = (t | b) == 0 ? 1 : 0;
   }
+}
+
+} // namespace
+
+// The new-neighbour masks of every free cell (0 for the others and the border), two map rows at a
+// time so that the map is read sequentially, from three rows of free flags (above, the row,
+// below), and a tile row's run of cells at a time so that the masks are written sequentially.
+void SpanningTree::mark_free_cells(const kernel::OccupancyGrid& map,
+                                   std::vector<std::uint8_t>& open) {
+  open.assign(state_.size(), 0);
+  const std::int32_t cx_end = shape_.cells_x;
+  const auto row_size = static_cast<std::size_t>(cx_end) + 2;
+  std::vector<std::uint8_t> above(row_size, 0), row(row_size, 0), below(row_size, 0);
+  if (shape_.cells_y > 0) free_row(map, cx_end, 0, row);
+  constexpr std::int32_t side = std::int32_t{1} << kTileBits;
+  for (std::int32_t cy = 0; cy < shape_.cells_y; ++cy) {
+    if (cy + 1 < shape_.cells_y)
+      free_row(map, cx_end, cy + 1, below);
+    else
+      std::fill(below.begin(), below.end(), std::uint8_t{0});
+    for (std::int32_t cx = 0; cx < cx_end;) {
+      // Stored x is cx + 1: the run ends at the tile's last column.
+      const std::int32_t run = std::min(cx_end - cx, side - ((cx + 1) & (side - 1)));
+      std::uint8_t* out = open.data() + index({cx, cy});
+      const std::uint8_t* r = row.data() + cx; // r[j + 1] is cell cx + j
+      const std::uint8_t* up = above.data() + cx + 1;
+      const std::uint8_t* down = below.data() + cx + 1;
+      for (std::int32_t j = 0; j < run; ++j) {
+        const unsigned mask = static_cast<unsigned>(r[j + 2]) | static_cast<unsigned>(up[j]) << 1 |
+                              static_cast<unsigned>(r[j]) << 2 |
+                              static_cast<unsigned>(down[j]) << 3;
+        out[j] = static_cast<std::uint8_t>(r[j + 1] != 0 ? mask : 0u);
+      }
+      cx += run;
+    }
+    std::swap(above, row);
+    std::swap(row, below);
+  }
+}
+
+// The depth-first search, one event per loop. A cell scans its neighbours counter-clockwise from
+// after its parent; every direction it has scanned is no longer new (it was blocked or in the tree
+// then and stays so, or it was descended into), so the next direction of the scan is simply the
+// first new neighbour at or after the scan position `q`: one byte read (the cell's new-neighbour
+// mask) and one table lookup (kFirstFrom). The masks are kept up to date by the cell that joins
+// the tree: it clears its own bit in its four neighbours' masks, stores that are off the chain of
+// loads the search waits for. No new neighbour: back to the parent, whose scan resumes after the
+// direction that led here. After a descent in direction d the child's scan starts at d + 3 (after
+// its parent, in direction d + 2); after coming back from a child whose parent lies in direction
+// p, the parent's scan resumes at p + 3 (after p + 2): both are d + 3 for the direction d just
+// moved in. The root's scan starts at q0 and covers all four directions; it ends the search when
+// it has no new neighbour. No stack, no recursion.
+void SpanningTree::build(std::uint8_t* open) {
+  std::uint8_t* s = state_.data();
+  const TileSteps steps = steps_;
+  // A cell joins the tree: its bit leaves the masks of its four neighbours (border cells
+  // included; their masks are never read).
+  const auto join = [open](const Around& n) {
+    open[n.e] = static_cast<std::uint8_t>(open[n.e] & ~(1u << 2));
+    open[n.n] = static_cast<std::uint8_t>(open[n.n] & ~(1u << 3));
+    open[n.w] = static_cast<std::uint8_t>(open[n.w] & ~(1u << 0));
+    open[n.s] = static_cast<std::uint8_t>(open[n.s] & ~(1u << 1));
+  };
+  std::size_t at = index(root_);
+  const int p0 = dir_add(q0_, 3);
+  s[at] = static_cast<std::uint8_t>(kInTree | kRoot | p0);
+  join(steps.around(at));
+  unsigned here = (open[at] & kNewMask) | kOpenRoot | static_cast<unsigned>(p0) << kOpenParentShift;
+  open[at] = static_cast<std::uint8_t>(here);
+  std::int64_t cells = 1;
+  int q = q0_;
+  for (;;) {
+    const unsigned fresh = here & kNewMask;
+    int d = 0;
+    if (fresh != 0) {
+      const int first = kFirstFrom[fresh * 4 + static_cast<unsigned>(q)];
+      d = first & 3;
+      const std::size_t child = steps.next(at, d, first >> 2);
+      s[at] = static_cast<std::uint8_t>(s[at] | (1u << (kChildShift + d)));
+      s[child] = static_cast<std::uint8_t>(kInTree | opposite(d));
+      // The child's mask as it is now (its bit for `at` already clear), plus its parent.
+      here = open[child] | static_cast<unsigned>(opposite(d)) << kOpenParentShift;
+      open[child] = static_cast<std::uint8_t>(here);
+      join(steps.around(child)); // clears bit d of open[at] among others
+      at = child;
+      ++cells;
+    } else {
+      if (here & kOpenRoot) break;
+      d = static_cast<int>(here >> kOpenParentShift) & 3;
+      at = steps.next(at, d, kStep[static_cast<std::size_t>(d)]);
+      here = open[at];
+    }
+    q = dir_add(d, 3);
+  }
+  tree_cells_ = cells;
 }
 
 std::vector<SubCell> SpanningTree::tour() const {

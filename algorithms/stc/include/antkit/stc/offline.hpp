@@ -9,11 +9,12 @@
 // (issue 3, invariant 5). Any spanning tree would give a valid tour; this one is chosen so that
 // they agree.
 //
-// Memory: one byte per cell (a quarter of a byte per sub-cell) holds everything: the free flag, the
-// tree membership, the direction of the parent and the child directions. The depth-first search
-// keeps no stack: it backtracks through the parent directions it stored, and on coming back from a
-// child in direction e it resumes its scan at e + 1. Nothing recurses, so no map can overflow the
-// call stack.
+// Memory: the tree is one byte per cell (a quarter of a byte per sub-cell): the tree membership,
+// the direction of the parent and the child directions. While it is built, the depth-first search
+// keeps one more byte per cell (the mask of its new neighbours, its parent and the root flag) and
+// releases it after: at most half a byte per sub-cell beyond the map. The search keeps no stack:
+// it backtracks through the parent directions it stored. Nothing recurses, so no map can overflow
+// the call stack. Both bytes are stored in 64 x 64-cell tiles (see index()).
 #include <antkit/stc/subcell.hpp>
 #include <array>
 #include <cstddef>
@@ -22,13 +23,28 @@
 
 namespace antkit::stc {
 
+namespace detail {
+// The in-tile index steps of SpanningTree's 64 x 64 tiles, E N W S.
+inline constexpr std::array<int, 4> kTileStep{1, -64, -1, 64};
+// A direction and its in-tile step in one table entry: 4 * step + d (d = entry & 3, step =
+// entry >> 2, an arithmetic shift in C++20).
+constexpr std::int16_t with_step(int d) noexcept {
+  return static_cast<std::int16_t>(4 * kTileStep[static_cast<std::size_t>(d)] + d);
+}
+// A position packed in one word for the walk's buffer: x in the low 32 bits, y in the high 32.
+// Coordinates are never negative, so adding packed offsets adds the coordinates apart (an offset
+// with a negative part wraps around 2^64 and lands on the right word, as the sum is in range).
+constexpr std::uint64_t pack(std::int64_t x, std::int64_t y) noexcept {
+  return static_cast<std::uint64_t>(x) + (static_cast<std::uint64_t>(y) << 32);
+}
+} // namespace detail
+
 class SpanningTree {
 public:
-  // Byte layout of a cell's state. Not in the tree: 0 (blocked, or the one-cell border that spares
-  // every bounds check) or kFreeCell. In the tree: kInTree, the direction of the parent in the low
-  // two bits (the root: q0 - 1, its virtual parent), kRoot, and one bit per child direction, so
-  // that the tour reads one byte per cell it walks through.
-  static constexpr std::uint8_t kFreeCell = 0x01;
+  // Byte layout of a cell's state. Not in the tree: 0 (blocked, not reachable from the start, or
+  // the one-cell border that spares every bounds check). In the tree: kInTree, the direction of the
+  // parent in the low two bits (the root: q0 - 1, its virtual parent), kRoot, and one bit per child
+  // direction, so that the tour reads one byte per cell it walks through.
   static constexpr std::uint8_t kParentMask = 0x03;
   static constexpr std::uint8_t kInTree = 0x04;
   static constexpr std::uint8_t kRoot = 0x08;
@@ -43,7 +59,9 @@ public:
   [[nodiscard]] SubCell start() const noexcept { return subcell_of(root_, q0_); }
   [[nodiscard]] std::int64_t cells() const noexcept { return tree_cells_; }
   // Bytes this tree holds: a quarter byte per sub-cell, plus the border and the tiles' rounding.
+  // Building it took twice as much for a while (peak_bytes()).
   [[nodiscard]] std::size_t bytes() const noexcept { return state_.size(); }
+  [[nodiscard]] std::size_t peak_bytes() const noexcept { return 2 * state_.size(); }
   [[nodiscard]] bool in_tree(Cell c) const noexcept {
     return shape_.in_bounds(c) && (state_[index(c)] & kInTree) != 0;
   }
@@ -81,12 +99,58 @@ public:
     return at.q; // moving to quadrant q + 1 is a move in direction q + 1
   }
 
-  // Calls visit(SubCell) for every position of the tour, the start first; 4 * cells() calls.
+  // Calls visit(SubCell) for every position of the tour, the start first; 4 * cells() calls,
+  // the same positions in the same order as repeated advance() from begin().
+  //
+  // Why it is not a loop over advance(): that decides cross-or-turn once per sub-cell, a branch
+  // the processor cannot predict on a cluttered map. Here the walk goes one run at a time: from
+  // the quadrant q it enters a cell in, the robot turns counter-clockwise through q, q + 1, ...
+  // until the first side d (in that order) with a tree edge (a child, or the parent), then
+  // crosses it. kRunEnd[state][q] gives d (and the step to the next cell's index); the run's up to
+  // four sub-cells are written to a small buffer without a branch (all four are written, the write
+  // position advances by the run's length), and the buffer is handed to `visit` in a plain loop.
+  // The tour is closed after exactly 4 * cells() positions (issue 3, invariant 4), so the walk
+  // counts positions instead of testing for the start sub-cell; the root needs no special case: its
+  // virtual parent side is not an edge, and the count ends the walk before the run that would
+  // re-enter the start.
   template <class Visit>
   void tour(Visit&& visit) const {
-    Cursor at = begin();
-    visit(subcell_of(at.cell, at.q));
-    while (advance(at) >= 0) visit(subcell_of(at.cell, at.q));
+    constexpr int kBuffer = 512;
+    std::array<std::uint64_t, kBuffer + 4> buffer; // packed positions, see pack()
+    std::int64_t left = 4 * tree_cells_;
+    const TileSteps steps = steps_;
+    std::size_t at = index(root_);
+    std::uint64_t corner = detail::pack(2 * root_.x, 2 * root_.y); // the cell's NW sub-cell
+    int q = q0_;
+    int filled = 0;
+    const auto hand_over = [&](std::int64_t count) {
+      for (std::int64_t i = 0; i < count; ++i) {
+        const std::uint64_t v = buffer[static_cast<std::size_t>(i)];
+        visit(SubCell{static_cast<std::int32_t>(static_cast<std::uint32_t>(v)),
+                      static_cast<std::int32_t>(static_cast<std::uint32_t>(v >> 32))});
+      }
+    };
+    for (;;) {
+      const int run =
+          kRunEnd[static_cast<std::size_t>(state_[at]) * 4 + static_cast<std::size_t>(q)];
+      const int d = run & 3;
+      const std::array<std::uint64_t, 4>& around_cell = kRunOffsets[static_cast<std::size_t>(q)];
+      std::uint64_t* out = buffer.data() + filled;
+      for (std::size_t i = 0; i < 4; ++i) out[i] = corner + around_cell[i];
+      filled += dir_add(d, -q) + 1;
+      if (filled >= left) {
+        hand_over(left);
+        return;
+      }
+      if (filled >= kBuffer) {
+        hand_over(filled);
+        left -= filled;
+        filled = 0;
+      }
+      at = steps.next(at, d, run >> 2);
+      corner += kCellMove[static_cast<std::size_t>(d)];
+      q = dir_add(d, 3);
+    }
   }
   [[nodiscard]] std::vector<SubCell> tour() const;
 
@@ -102,16 +166,95 @@ private:
     return ((((y >> kTileBits) * tiles_x_ + (x >> kTileBits)) << (2 * kTileBits)) |
             ((y & mask) << kTileBits) | (x & mask));
   }
+  // Moving between cells by index, without the cell's coordinates: inside a tile a step is +-1
+  // (E/W) or -+64 (N/S); from a tile's edge it lands in the next tile, at the opposite edge (the
+  // `leave` steps).
+  static constexpr std::array<int, 4> kStep = detail::kTileStep;
+  static constexpr std::array<std::size_t, 4> kField{63, 63 << 6, 63, 63 << 6};
+  static constexpr std::array<std::size_t, 4> kEdge{63, 0, 0, 63 << 6};
+  // The four neighbours at once (the search updates them all when a cell joins the tree); the
+  // tests against the tile's edges compile to conditional moves.
+  struct Around {
+    std::size_t e, n, w, s;
+  };
+  struct TileSteps {
+    std::array<std::size_t, 4> leave; // E N W S
+    [[nodiscard]] Around around(std::size_t i) const noexcept {
+      constexpr std::size_t row = 63 << 6;
+      const std::size_t x = i & 63, y = i & row;
+      return {i + (x == 63 ? leave[0] : 1), i + (y == 0 ? leave[1] : 0 - std::size_t{64}),
+              i + (x == 0 ? leave[2] : 0 - std::size_t{1}), i + (y == row ? leave[3] : 64)};
+    }
+    // The neighbour of i in direction d, given the in-tile step (kStep[d], which the callers read
+    // from the same table entry as d, so that the chain of loads the search and the walk wait for
+    // is one load, one table lookup and one add per cell). Leaving the tile is the rare case (one
+    // move in 64 at most), a branch the processor predicts.
+    [[nodiscard]] std::size_t next(std::size_t i, int d, int in_tile) const noexcept {
+      const auto k = static_cast<std::size_t>(d);
+      if ((i & kField[k]) == kEdge[k]) [[unlikely]]
+        return i + leave[k];
+      return i + static_cast<std::size_t>(static_cast<std::ptrdiff_t>(in_tile));
+    }
+  };
+  // kRunOffsets[q][i]: sub-cell q + i of a cell, relative to the cell's NW sub-cell.
+  static constexpr std::array<std::array<std::uint64_t, 4>, 4> kRunOffsets = [] {
+    std::array<std::array<std::uint64_t, 4>, 4> t{};
+    for (int q = 0; q < 4; ++q)
+      for (int i = 0; i < 4; ++i) {
+        const Cell o = kQuadrantOffset[static_cast<std::size_t>(dir_add(q, i))];
+        t[static_cast<std::size_t>(q)][static_cast<std::size_t>(i)] = detail::pack(o.x, o.y);
+      }
+    return t;
+  }();
+  // The move of a cell's NW sub-cell to the neighbour cell in direction d, packed.
+  static constexpr std::array<std::uint64_t, 4> kCellMove = [] {
+    std::array<std::uint64_t, 4> t{};
+    for (std::size_t d = 0; d < 4; ++d)
+      t[d] = detail::pack(2 * kernel::kNeighbours4[d].x, 2 * kernel::kNeighbours4[d].y);
+    return t;
+  }();
+  // kRunEnd[state * 4 + q]: the first side d = q, q + 1, q + 2, q + 3 of a cell with that state
+  // byte that has a tree edge (a child, or the parent unless the cell is the root); q + 3 when
+  // there is none (the root of a one-cell tree, whose four sub-cells are the whole tour). Stored
+  // with_step(d).
+  static constexpr std::array<std::int16_t, 1024> kRunEnd = [] {
+    std::array<std::int16_t, 1024> t{};
+    for (unsigned s = 0; s < 256; ++s)
+      for (int q = 0; q < 4; ++q) {
+        unsigned edges = s >> kChildShift;
+        if ((s & kRoot) == 0) edges |= 1u << (s & kParentMask);
+        int d = dir_add(q, 3);
+        for (int i = 3; i >= 0; --i)
+          if ((edges >> dir_add(q, i)) & 1u) d = dir_add(q, i);
+        t[s * 4 + static_cast<unsigned>(q)] = detail::with_step(d);
+      }
+    return t;
+  }();
+  // kFirstFrom[mask * 4 + q]: the first direction q, q + 1, q + 2, q + 3 whose bit is set in the
+  // 4-bit mask (mask != 0), stored detail::with_step(d).
+  static constexpr std::array<std::int16_t, 64> kFirstFrom = [] {
+    std::array<std::int16_t, 64> t{};
+    for (unsigned m = 1; m < 16; ++m)
+      for (int q = 0; q < 4; ++q) {
+        int d = 0;
+        for (int i = 3; i >= 0; --i)
+          if ((m >> dir_add(q, i)) & 1u) d = dir_add(q, i);
+        t[m * 4 + static_cast<unsigned>(q)] = detail::with_step(d);
+      }
+    return t;
+  }();
   int cross(Cursor& at, int d) const noexcept {
     at.cell = step(at.cell, d);
     at.index = index(at.cell);
     at.q = dir_add(d, 3);
     return d;
   }
-  void build();
+  void mark_free_cells(const kernel::OccupancyGrid& map, std::vector<std::uint8_t>& open);
+  void build(std::uint8_t* open);
 
   CellGridShape shape_;
   std::size_t tiles_x_;
+  TileSteps steps_{};
   std::vector<std::uint8_t> state_;
   Cell root_{};
   int q0_ = 0;
