@@ -57,8 +57,8 @@ inline geometry::ExactPolygon exact_ring(const Ring& r) {
 }
 
 struct RandomPolygon {
-  std::vector<Ring>
-      rings; // rings[0] the outer boundary (counter-clockwise), then holes (clockwise)
+  // rings[0] the outer boundary (counter-clockwise), then the holes (clockwise)
+  std::vector<Ring> rings;
   std::vector<FastPolygon> fast;         // the same rings, exact predicates
   geometry::ExactPolygonWithHoles exact; // the same rings, exact rationals
   geometry::ExactNumber exact_area;      // outer area minus the holes' areas, exactly
