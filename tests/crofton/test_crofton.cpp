@@ -2,6 +2,8 @@
 // segment families inside a polygon with a hole gives the Buffon-Crofton estimate
 // A_hat = 2 L1 L2 / (pi N) without bias, with relative error falling as 1/sqrt(N); and the
 // Buffon-Laplace needle on a rectangular grid is a golden check of count_proper_crossings.
+// Random polygons with holes (CGAL-generated, exact area) are in test_crofton_polygons.cpp; the
+// families, the crossing count and the pooled z shared by both files are in crofton_common.hpp.
 //
 // Randomness: keyed kernel::Stream with fixed seeds (printed on failure). The bounds are normal
 // tails at z = 5.3 (two-sided false-failure rate 1.2e-7 per check, below 1e-6).
