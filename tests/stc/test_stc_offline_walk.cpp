@@ -1,9 +1,9 @@
-// The fast paths of offline STC (the mask-and-table depth-first search and the run-at-a-time walk,
-// SpanningTree::tour) against references that share none of their code: the tour equals the
-// cursor walk of the same tree (SpanningTree::advance, one sub-cell per step) and the tour of
-// online STC (an independent depth-first search with the same neighour order, run in the world),
-// on random maps large enough to cross the 64 x 64-cell tiles of the tree's memory, with odd sizes
-// and blocked border cells.
+// The fast paths of offline STC (the mask-and-table depth-first search, the run-at-a-time walk
+// SpanningTree::tour, and the tour the search emits as it builds the tree) against references that
+// share none of their code: the tour equals the cursor walk of the same tree
+// (SpanningTree::advance, one sub-cell per step) and the tour of online STC (an independent
+// depth-first search with the same neighbour order, run in the world), on random maps large enough
+// to cross the 64 x 64-cell tiles of the tree's memory, with odd sizes and blocked border cells.
 #include "stc_checkers.hpp"
 #include "stc_test_maps.hpp"
 
@@ -85,8 +85,8 @@ rc::Gen<LargeMap> large_map() {
 
 } // namespace
 
-TEST_CASE("offline fast paths: tour() equals the cursor walk of the same tree and online STC's "
-          "tour - on maps across tiles - odd sizes - blocked borders",
+TEST_CASE("offline fast paths: tour() and the search's own tour equal the cursor walk of the same "
+          "tree and online STC's tour - on maps across tiles - odd sizes - blocked borders",
           "[stc][property]") {
   rc::prop("tour() == advance() walk == online", [] {
     const auto m = *large_map();
@@ -96,6 +96,13 @@ TEST_CASE("offline fast paths: tour() equals the cursor walk of the same tree an
     const SpanningTree tree(m.map, m.start);
     const std::vector<SubCell> fast = tree.tour();
     RC_ASSERT(static_cast<std::int64_t>(fast.size()) == 4 * tree.cells());
+    // The tour emitted by the search itself, and the tree it leaves, are the same.
+    std::vector<SubCell> fused;
+    const SpanningTree walked(m.map, m.start, [&](SubCell s) { fused.push_back(s); });
+    const auto same_fused = antkit::test::check_same_tour(fast, fused, "search's tour");
+    RC_ASSERT(same_fused.describe() == "ok");
+    RC_ASSERT(walked.cells() == tree.cells());
+    RC_ASSERT(walked.tour() == fast);
     const auto same_cursor = antkit::test::check_same_tour(cursor_tour(tree), fast, "tour()");
     RC_ASSERT(same_cursor.describe() == "ok");
     RunOptions options;
@@ -131,5 +138,8 @@ TEST_CASE("offline fast paths: an empty map of 130 x 70 cells crosses tile edges
     const std::vector<SubCell> fast = tree.tour();
     CHECK(fast == cursor_tour(tree));
     CHECK(fast == run_stc(map, start, Variant::Online).path);
+    std::vector<SubCell> fused;
+    const SpanningTree walked(map, start, [&](SubCell s) { fused.push_back(s); });
+    CHECK(fused == fast);
   }
 }

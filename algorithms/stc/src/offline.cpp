@@ -29,7 +29,7 @@ kernel::Grid<std::uint8_t> free_cells(const kernel::OccupancyGrid& map) {
   return out;
 }
 
-SpanningTree::SpanningTree(const kernel::OccupancyGrid& map, SubCell start)
+SpanningTree::SpanningTree(const kernel::OccupancyGrid& map, SubCell start, Prepare)
     : shape_(cell_shape(map)),
       tiles_x_((static_cast<std::size_t>(shape_.cells_x) + 2 + 63) >> kTileBits),
       root_(cell_of(start)), q0_(quadrant_of(start)) {
@@ -48,21 +48,16 @@ SpanningTree::SpanningTree(const kernel::OccupancyGrid& map, SubCell start)
   const std::size_t tile_row = tiles_x_ * tile;
   steps_.leave = {tile - 63, 63 * 64 - tile_row, 0 - (tile - 63), tile_row - 63 * 64};
   state_.assign((tiles_x_ * tiles_y) << (2 * kTileBits), 0);
-  // The search's own memory, one more byte per cell, released when the tree is built.
-  std::vector<std::uint8_t> open;
-  mark_free_cells(map, open);
-  build(open.data());
+  mark_free_cells(map, open_);
+}
+
+SpanningTree::SpanningTree(const kernel::OccupancyGrid& map, SubCell start)
+    : SpanningTree(map, start, Prepare{}) {
+  NoVisit none;
+  search(none);
 }
 
 namespace {
-
-// The byte the search keeps per cell (in the tree's tiled layout), apart from the tree itself:
-// bits 0-3, bit d set while the neighbour in direction d is a new cell (free, not yet in the
-// tree; Gabriely & Rimon's "new" cells); once the cell is in the tree, bits 4-5 hold the direction
-// of its parent and bit 6 says it is the root.
-constexpr unsigned kNewMask = 0x0F;
-constexpr int kOpenParentShift = 4;
-constexpr unsigned kOpenRoot = 0x40;
 
 // Row cy of the cell grid: out[cx + 1] = 1 when cell (cx, cy) is free, 0 otherwise, and 0 at
 // out[0] and out[cells_x + 1]. A cell is free when its four sub-cells are Free (0): the two
@@ -120,63 +115,6 @@ void SpanningTree::mark_free_cells(const kernel::OccupancyGrid& map,
     std::swap(above, row);
     std::swap(row, below);
   }
-}
-
-// The depth-first search, one event per loop. A cell scans its neighbours counter-clockwise from
-// after its parent; every direction it has scanned is no longer new (it was blocked or in the tree
-// then and stays so, or it was descended into), so the next direction of the scan is simply the
-// first new neighbour at or after the scan position `q`: one byte read (the cell's new-neighbour
-// mask) and one table lookup (kFirstFrom). The masks are kept up to date by the cell that joins
-// the tree: it clears its own bit in its four neighbours' masks, stores that are off the chain of
-// loads the search waits for. No new neighbour: back to the parent, whose scan resumes after the
-// direction that led here. After a descent in direction d the child's scan starts at d + 3 (after
-// its parent, in direction d + 2); after coming back from a child whose parent lies in direction
-// p, the parent's scan resumes at p + 3 (after p + 2): both are d + 3 for the direction d just
-// moved in. The root's scan starts at q0 and covers all four directions; it ends the search when
-// it has no new neighbour. No stack, no recursion.
-void SpanningTree::build(std::uint8_t* open) {
-  std::uint8_t* s = state_.data();
-  const TileSteps steps = steps_;
-  // A cell joins the tree: its bit leaves the masks of its four neighbours (border cells
-  // included; their masks are never read).
-  const auto join = [open](const Around& n) {
-    open[n.e] = static_cast<std::uint8_t>(open[n.e] & ~(1u << 2));
-    open[n.n] = static_cast<std::uint8_t>(open[n.n] & ~(1u << 3));
-    open[n.w] = static_cast<std::uint8_t>(open[n.w] & ~(1u << 0));
-    open[n.s] = static_cast<std::uint8_t>(open[n.s] & ~(1u << 1));
-  };
-  std::size_t at = index(root_);
-  const int p0 = dir_add(q0_, 3);
-  s[at] = static_cast<std::uint8_t>(kInTree | kRoot | p0);
-  join(steps.around(at));
-  unsigned here = (open[at] & kNewMask) | kOpenRoot | static_cast<unsigned>(p0) << kOpenParentShift;
-  open[at] = static_cast<std::uint8_t>(here);
-  std::int64_t cells = 1;
-  int q = q0_;
-  for (;;) {
-    const unsigned fresh = here & kNewMask;
-    int d = 0;
-    if (fresh != 0) {
-      const int first = kFirstFrom[fresh * 4 + static_cast<unsigned>(q)];
-      d = first & 3;
-      const std::size_t child = steps.next(at, d, first >> 2);
-      s[at] = static_cast<std::uint8_t>(s[at] | (1u << (kChildShift + d)));
-      s[child] = static_cast<std::uint8_t>(kInTree | opposite(d));
-      // The child's mask as it is now (its bit for `at` already clear), plus its parent.
-      here = open[child] | static_cast<unsigned>(opposite(d)) << kOpenParentShift;
-      open[child] = static_cast<std::uint8_t>(here);
-      join(steps.around(child)); // clears bit d of open[at] among others
-      at = child;
-      ++cells;
-    } else {
-      if (here & kOpenRoot) break;
-      d = static_cast<int>(here >> kOpenParentShift) & 3;
-      at = steps.next(at, d, kStep[static_cast<std::size_t>(d)]);
-      here = open[at];
-    }
-    q = dir_add(d, 3);
-  }
-  tree_cells_ = cells;
 }
 
 std::vector<SubCell> SpanningTree::tour() const {

@@ -19,6 +19,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace antkit::stc {
@@ -53,6 +54,19 @@ public:
   // The tree of `map` from `start` (a sub-cell). Throws kernel::InputError when the start
   // sub-cell is outside the cell area or its cell is not free.
   SpanningTree(const kernel::OccupancyGrid& map, SubCell start);
+
+  // The same tree, and its tour while it is built: visit(SubCell) is called for every position of
+  // the tour, the start first, in the order tour() gives (4 * cells() calls). The depth-first
+  // search that builds the tree moves exactly as the robot circumnavigates it: each event of the
+  // search (a descent to a new child in direction d, or the return to the parent in direction d)
+  // is the run of sub-cells from the quadrant q the robot is in up to quadrant d, then the move
+  // across side d (see tour()); the search and the walk of the tree are one loop. The tree is
+  // complete when the constructor returns, and tour() walks it again if asked.
+  template <class Visit>
+  SpanningTree(const kernel::OccupancyGrid& map, SubCell start, Visit&& visit)
+      : SpanningTree(map, start, Prepare{}) {
+    search(visit);
+  }
 
   [[nodiscard]] CellGridShape shape() const noexcept { return shape_; }
   [[nodiscard]] Cell root() const noexcept { return root_; }
@@ -115,38 +129,25 @@ public:
   // re-enter the start.
   template <class Visit>
   void tour(Visit&& visit) const {
-    constexpr int kBuffer = 512;
-    std::array<std::uint64_t, kBuffer + 4> buffer; // packed positions, see pack()
-    std::int64_t left = 4 * tree_cells_;
+    const std::int64_t total = 4 * tree_cells_;
+    std::int64_t emitted = 0;
+    PositionBuffer<Visit> out(visit);
     const TileSteps steps = steps_;
     std::size_t at = index(root_);
     std::uint64_t corner = detail::pack(2 * root_.x, 2 * root_.y); // the cell's NW sub-cell
     int q = q0_;
-    int filled = 0;
-    const auto hand_over = [&](std::int64_t count) {
-      for (std::int64_t i = 0; i < count; ++i) {
-        const std::uint64_t v = buffer[static_cast<std::size_t>(i)];
-        visit(SubCell{static_cast<std::int32_t>(static_cast<std::uint32_t>(v)),
-                      static_cast<std::int32_t>(static_cast<std::uint32_t>(v >> 32))});
-      }
-    };
     for (;;) {
       const int run =
           kRunEnd[static_cast<std::size_t>(state_[at]) * 4 + static_cast<std::size_t>(q)];
       const int d = run & 3;
-      const std::array<std::uint64_t, 4>& around_cell = kRunOffsets[static_cast<std::size_t>(q)];
-      std::uint64_t* out = buffer.data() + filled;
-      for (std::size_t i = 0; i < 4; ++i) out[i] = corner + around_cell[i];
-      filled += dir_add(d, -q) + 1;
-      if (filled >= left) {
-        hand_over(left);
+      const int length = dir_add(d, -q) + 1;
+      emitted += length;
+      if (emitted >= total) {
+        out.run(corner, q, length - static_cast<int>(emitted - total));
+        out.flush();
         return;
       }
-      if (filled >= kBuffer) {
-        hand_over(filled);
-        left -= filled;
-        filled = 0;
-      }
+      out.run(corner, q, length);
       at = steps.next(at, d, run >> 2);
       corner += kCellMove[static_cast<std::size_t>(d)];
       q = dir_add(d, 3);
@@ -249,13 +250,137 @@ private:
     at.q = dir_add(d, 3);
     return d;
   }
+  // The runs of the tour on their way to the visitor: each run's up to four sub-cells are written
+  // without a branch (all four are written, the write position advances by the run's length),
+  // and a full buffer is handed to the visitor in a plain loop.
+  template <class Visit>
+  class PositionBuffer {
+  public:
+    explicit PositionBuffer(Visit& visit) noexcept : visit_(visit) {}
+    // Sub-cells q, q + 1, ... of the cell whose NW sub-cell is `corner`, `length` (0 to 4) of them.
+    void run(std::uint64_t corner, int q, int length) {
+      const std::array<std::uint64_t, 4>& offsets = kRunOffsets[static_cast<std::size_t>(q)];
+      std::uint64_t* out = buffer_.data() + filled_;
+      for (std::size_t i = 0; i < 4; ++i) out[i] = corner + offsets[i];
+      filled_ += length;
+      if (filled_ >= kBuffer) flush();
+    }
+    void flush() {
+      for (int i = 0; i < filled_; ++i) {
+        const std::uint64_t v = buffer_[static_cast<std::size_t>(i)];
+        visit_(SubCell{static_cast<std::int32_t>(static_cast<std::uint32_t>(v)),
+                       static_cast<std::int32_t>(static_cast<std::uint32_t>(v >> 32))});
+      }
+      filled_ = 0;
+    }
+
+  private:
+    static constexpr int kBuffer = 512;
+    Visit& visit_;
+    int filled_ = 0;
+    std::array<std::uint64_t, kBuffer + 4> buffer_; // packed positions, see detail::pack()
+  };
+
+  // The visitor of the plain constructor: the search then builds the tree and writes no tour.
+  struct NoVisit {
+    void operator()(SubCell) const noexcept {}
+  };
+  struct Prepare {};
+  // Checks the start, allocates the tree and computes the search's new-neighbour masks.
+  SpanningTree(const kernel::OccupancyGrid& map, SubCell start, Prepare);
+
+  // The byte the search keeps per cell (in the tree's tiled layout), apart from the tree itself:
+  // bits 0-3, bit d set while the neighbour in direction d is a new cell (free, not yet in the
+  // tree; Gabriely & Rimon's "new" cells); once the cell is in the tree, bits 4-5 hold the
+  // direction of its parent and bit 6 says it is the root.
+  static constexpr unsigned kNewMask = 0x0F;
+  static constexpr int kOpenParentShift = 4;
+  static constexpr unsigned kOpenRoot = 0x40;
+
+  // The depth-first search, one event per loop. A cell scans its neighbours counter-clockwise from
+  // after its parent; every direction it has scanned is no longer new (it was blocked or in the
+  // tree then and stays so, or it was descended into), so the next direction of the scan is simply
+  // the first new neighbour at or after the scan position `q`: one byte read (the cell's
+  // new-neighbour mask) and one table lookup (kFirstFrom). The masks are kept up to date by the
+  // cell that joins the tree: it clears its own bit in its four neighbours' masks, stores that are
+  // off the chain of loads the search waits for. No new neighbour: back to the parent, whose scan
+  // resumes after the direction that led here. After a descent in direction d the child's scan
+  // starts at d + 3 (after its parent, in direction d + 2); after coming back from a child whose
+  // parent lies in direction p, the parent's scan resumes at p + 3 (after p + 2): both are d + 3
+  // for the direction d just moved in. The root's scan starts at q0 and covers all four directions;
+  // it ends the search when it has no new neighbour. No stack, no recursion.
+  template <class Visit>
+  void search(Visit& visit) {
+    constexpr bool kTour = !std::is_same_v<std::remove_cvref_t<Visit>, NoVisit>;
+    std::uint8_t* open = open_.data();
+    std::uint8_t* s = state_.data();
+    const TileSteps steps = steps_;
+    // A cell joins the tree: its bit leaves the masks of its four neighbours (border cells
+    // included; their masks are never read).
+    const auto join = [open](const Around& n) {
+      open[n.e] = static_cast<std::uint8_t>(open[n.e] & ~(1u << 2));
+      open[n.n] = static_cast<std::uint8_t>(open[n.n] & ~(1u << 3));
+      open[n.w] = static_cast<std::uint8_t>(open[n.w] & ~(1u << 0));
+      open[n.s] = static_cast<std::uint8_t>(open[n.s] & ~(1u << 1));
+    };
+    std::size_t at = index(root_);
+    const int p0 = dir_add(q0_, 3);
+    s[at] = static_cast<std::uint8_t>(kInTree | kRoot | p0);
+    join(steps.around(at));
+    unsigned here =
+        (open[at] & kNewMask) | kOpenRoot | static_cast<unsigned>(p0) << kOpenParentShift;
+    open[at] = static_cast<std::uint8_t>(here);
+    std::int64_t cells = 1;
+    int q = q0_;
+    PositionBuffer<Visit> out(visit);
+    std::uint64_t corner = detail::pack(2 * root_.x, 2 * root_.y);
+    std::int64_t emitted = 0;
+    for (;;) {
+      const unsigned fresh = here & kNewMask;
+      int d = 0;
+      if (fresh != 0) {
+        const int first = kFirstFrom[fresh * 4 + static_cast<unsigned>(q)];
+        d = first & 3;
+        const std::size_t child = steps.next(at, d, first >> 2);
+        s[at] = static_cast<std::uint8_t>(s[at] | (1u << (kChildShift + d)));
+        s[child] = static_cast<std::uint8_t>(kInTree | opposite(d));
+        // The child's mask as it is now (its bit for `at` already clear), plus its parent.
+        here = open[child] | static_cast<unsigned>(opposite(d)) << kOpenParentShift;
+        open[child] = static_cast<std::uint8_t>(here);
+        join(steps.around(child)); // clears bit d of open[at] among others
+        at = child;
+        ++cells;
+      } else {
+        if (here & kOpenRoot) break;
+        d = static_cast<int>(here >> kOpenParentShift) & 3;
+        at = steps.next(at, d, kStep[static_cast<std::size_t>(d)]);
+        here = open[at];
+      }
+      if constexpr (kTour) {
+        const int length = dir_add(d, -q) + 1;
+        out.run(corner, q, length);
+        emitted += length;
+        corner += kCellMove[static_cast<std::size_t>(d)];
+      }
+      q = dir_add(d, 3);
+    }
+    tree_cells_ = cells;
+    if constexpr (kTour) {
+      // The root's last run, up to its virtual parent's side q0 - 1: what is left of the 4 * cells
+      // positions (0 when the last child lay in direction q0 - 1; 4 for a one-cell tree).
+      out.run(corner, q, static_cast<int>(4 * cells - emitted));
+      out.flush();
+    }
+    std::vector<std::uint8_t>().swap(open_); // the search's memory is released
+  }
+
   void mark_free_cells(const kernel::OccupancyGrid& map, std::vector<std::uint8_t>& open);
-  void build(std::uint8_t* open);
 
   CellGridShape shape_;
   std::size_t tiles_x_;
   TileSteps steps_{};
   std::vector<std::uint8_t> state_;
+  std::vector<std::uint8_t> open_; // the search's new-neighbour masks, released after it
   Cell root_{};
   int q0_ = 0;
   std::int64_t tree_cells_ = 0;
