@@ -9,6 +9,12 @@
 // (issue 3, invariant 5). Any spanning tree would give a valid tour; this one is chosen so that
 // they agree.
 //
+// Two ways to get the tour: SpanningTree(map, start) then tour() (the two phases apart), or
+// SpanningTree(map, start, visit), where the search emits the tour as it builds the tree. The
+// second is the fast one (about 1.5 times the speed of the first on the benchmark maps): the
+// depth-first search visits the cells in the very order of the circumnavigation, so walking the
+// finished tree again repeats its loop. Both give the same positions and leave the same tree.
+//
 // Memory: the tree is one byte per cell (a quarter of a byte per sub-cell): the tree membership,
 // the direction of the parent and the child directions. While it is built, the depth-first search
 // keeps one more byte per cell (the mask of its new neighbours, its parent and the root flag) and
