@@ -63,6 +63,23 @@ public:
     return ok;
   }
 
+  // A claim over Z3's real numbers, for the QF_NRA solver (nlsat, a decision procedure for
+  // polynomial arithmetic over the reals): a nonlinear lemma that holds over the reals holds over
+  // the integers in particular, and nlsat decides it in milliseconds where the integer solver's
+  // search is erratic (the same lemma took 7 s in one run and did not finish in another).
+  bool claim_over_reals(const std::string& name, const z3::expr& c) {
+    logic_ = "QF_NRA";
+    const bool ok = claim(name, c);
+    logic_ = nullptr;
+    return ok;
+  }
+  bool refute_over_reals(const std::string& name, const z3::expr& c) {
+    logic_ = "QF_NRA";
+    const bool ok = refute(name, c);
+    logic_ = nullptr;
+    return ok;
+  }
+
   // The obligations alone (for a function whose only claim is that it is free of UB).
   bool no_undefined_behaviour(const std::string& name) {
     return claim(name, s_.ctx().bool_val(true));
@@ -72,8 +89,16 @@ public:
   // wrong bound, or a domain one bit too large); Z3 must find a counterexample, which is printed.
   // Pending obligations are left for the next claim. Fails (counts as a failure) if c is proved.
   bool refute(const std::string& name, const Bool& c) { return refute(name, c.expr()); }
+  bool refute_over_integers(const std::string& name, const z3::expr& c) {
+    integers_ = true;
+    const bool ok = refute(name, c);
+    integers_ = false;
+    return ok;
+  }
   bool refute(const std::string& name, const z3::expr& c) {
-    z3::solver solver(s_.ctx(), "QF_BV");
+    z3::solver solver = logic_ != nullptr ? z3::solver(s_.ctx(), logic_)
+                        : integers_       ? z3::solver(s_.ctx())
+                                          : bit_vector_solver();
     solver.add(domain_);
     for (const auto& p : s_.path()) solver.add(p);
     for (const auto& f : s_.facts()) solver.add(f);
@@ -88,7 +113,7 @@ public:
         if (d.arity() != 0 || d.name().str().find('!') != std::string::npos) continue;
         const z3::expr value = m.get_const_interp(d);
         std::cout << " " << d.name().str() << "=";
-        if (value.is_bv()) // as a signed integer; Booleans print as they are
+        if (value.is_bv()) // as a signed integer; Booleans and integers print as they are
           std::cout << m.eval(z3::expr(s_.ctx(), Z3_mk_bv2int(s_.ctx(), value, true)), true);
         else
           std::cout << value;
@@ -122,7 +147,9 @@ private:
     // Bit-vector claims go to Z3's QF_BV solver (simplify, then bit-blast to SAT), which is much
     // faster on them than the default portfolio; claims over mathematical integers (a few
     // nonlinear lemmas) to the default solver.
-    z3::solver solver = integers_ ? z3::solver(s_.ctx()) : z3::solver(s_.ctx(), "QF_BV");
+    z3::solver solver = logic_ != nullptr ? z3::solver(s_.ctx(), logic_)
+                        : integers_       ? z3::solver(s_.ctx())
+                                          : bit_vector_solver();
     solver.add(domain_);
     for (const auto& c : s_.path()) solver.add(c);
     for (const auto& f : s_.facts()) solver.add(f);
@@ -159,9 +186,16 @@ private:
     return false;
   }
 
+  // QF_BV, or QF_ABV once a kernel has read a table as a Z3 array (z3_int.hpp, lookup): QF_BV's
+  // tactic rejects array terms.
+  z3::solver bit_vector_solver() {
+    return z3::solver(s_.ctx(), s_.uses_arrays() ? "QF_ABV" : "QF_BV");
+  }
+
   Session& s_;
   z3::expr domain_;
   bool integers_ = false;
+  const char* logic_ = nullptr; // a solver chosen by logic name (claim_over_reals), or none
   int proved_ = 0;
   int refuted_ = 0;
   int failures_ = 0;

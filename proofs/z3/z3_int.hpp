@@ -118,6 +118,10 @@ public:
   std::map<std::pair<unsigned, unsigned>, std::pair<z3::expr, z3::expr>>& signed_divisions() {
     return signed_divisions_;
   }
+  // Tables read by the kernels (ops::lookup), one Z3 array per (table, width): see lookup() below.
+  // Once a table is an array the checks need the array theory (Prover picks QF_ABV, not QF_BV).
+  std::map<std::pair<const void*, int>, z3::expr>& tables() { return tables_; }
+  bool uses_arrays() const { return !tables_.empty(); }
   void clear_obligations() { obligations_.clear(); }
   // Replaces `from` by `to` in every pending obligation and fact: the generalisation of a term
   // (e.g. a product) to a fresh unknown. Sound for proving: what is proved for every value of the
@@ -142,6 +146,7 @@ private:
   std::vector<z3::expr> path_;
   std::map<std::pair<unsigned, unsigned>, std::pair<z3::expr, z3::expr>> divisions_;
   std::map<std::pair<unsigned, unsigned>, std::pair<z3::expr, z3::expr>> signed_divisions_;
+  std::map<std::pair<const void*, int>, z3::expr> tables_;
   int fresh_ = 0;
 };
 
@@ -422,6 +427,46 @@ Int<N, S> select(const Bool& c, const Int<N, S>& a, const Int<N, S>& b) {
 }
 inline Bool select(const Bool& c, const Bool& a, const Bool& b) {
   return Bool(z3::ite(c.expr(), a.expr(), b.expr()));
+}
+
+// A table read (int_ops.hpp, ops::lookup), preferred by overload resolution to the generic chain
+// of 1026 selects there (this one is more specialised: its index is an Int). The table becomes ONE
+// Z3 array constant per (table, width), the same for every read, constrained by one fact per entry:
+//     table!k[i] == table[i]      for i = 0 .. size - 1,
+// true of the shipped table by construction (each fact is the entry's value, converted to N bits
+// as the generic lookup's I(table[i]) converts it). Outside [0, size) the array is unconstrained,
+// so a claim that depended on such a read could not be proved -- and the read itself records the
+// obligation 0 <= index < size, which the machine build checks (ops::lookup's require).
+// Why: with the ite chain, every claim carried two 1026-way multiplexers into the bit-blaster;
+// with the array, a claim that needs no entry (the formula, the absence of overflow) never looks
+// at the facts, and a claim about the entries (a table lemma) is proved once, by case split over
+// the index, and then stated as a fact about the two reads (see proofs/z3/angle_sine.cpp).
+template <class Table, int N, bool S>
+Int<N, S> lookup(const Table& table, const Int<N, S>& index) {
+  Session& s = Session::current();
+  z3::context& c = s.ctx();
+  const std::size_t size = table.size();
+  // Written over N + 1 bits so that `size` itself is representable whatever the width.
+  const z3::expr wide_index = S ? z3::sext(index.expr(), 1) : z3::zext(index.expr(), 1);
+  const z3::expr zero = c.bv_val(0, N + 1);
+  s.oblige("table index in range",
+           z3::sle(zero, wide_index) &&
+               z3::slt(wide_index, c.bv_val(static_cast<std::uint64_t>(size), N + 1)));
+  const std::pair<const void*, int> key{static_cast<const void*>(table.data()), N};
+  auto it = s.tables().find(key);
+  if (it == s.tables().end()) {
+    const z3::sort bv = c.bv_sort(N);
+    const z3::expr a = c.constant(s.fresh("table").c_str(), c.array_sort(bv, bv));
+    for (std::size_t i = 0; i < size; ++i)
+      s.fact(z3::select(a, Int<N, S>(i).expr()) == Int<N, S>(table[i]).expr());
+    it = s.tables().emplace(key, a).first;
+  }
+  return Int<N, S>(z3::select(it->second, index.expr()));
+}
+// The array behind a table (after the first lookup at width N): for stating table lemmas.
+template <class Table>
+z3::expr table_array(const Table& table, int n) {
+  return Session::current().tables().at({static_cast<const void*>(table.data()), n});
 }
 
 using I8 = Int<8, true>;
