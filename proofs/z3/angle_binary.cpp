@@ -6,8 +6,8 @@
 //   angle.nearest_bearing  nearest_bearing_raw(a) = k in [0, 8) with a - k 2^29 (mod 2^32, read as
 //                          signed) in [-2^28, 2^28): the nearest bearing, ties counter-clockwise.
 // Negative check: the bearing window without its counter-clockwise tie is refuted.
-// (sin_raw over the 1026-entry table as an ite chain: its no-UB claim was proved in a manual run
-// but took minutes under load, so it is not a ctest yet; see the issue 7 report.)
+// (sin_raw and cos_raw are proved in angle_sine.cpp, the degree/radian conversions in
+// angle_conversions.cpp.)
 #include "prove.hpp"
 
 #include <antkit/kernel/angle.hpp>

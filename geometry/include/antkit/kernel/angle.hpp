@@ -388,6 +388,57 @@ constexpr U atan2_raw(I y, I x) {
   return select(origin, U{0}, full);
 }
 
+// The conversions between fixed-point degrees/radians and binary-angle units, over the policy like
+// the kernels above (proofs/z3/angle_conversions.cpp instantiates them with Z3 words). R is the
+// fixed-point raw type with F fraction bits, S the signed 32-bit unit type, W a signed type of at
+// least 128 bits. They return the rounded value in W, before the caller's wrap to a turn (the
+// from_* ones) or its narrowing to R (the to_* ones): that unwrapped value is what the proofs'
+// rounding claims are about.
+
+// units = raw * 2^(32-F) / 360, rounded half up (div_round_half_up: error <= 1/2 unit, ties up).
+template <class W, int F, class R>
+constexpr W degrees_to_units_raw(R raw) {
+  using ops::shl, ops::widen;
+  static_assert(F >= 0 && F <= 32);
+  return div_round_half_up(shl(widen<W>(raw), 32 - F), W{360});
+}
+
+// units = raw * (2^64 / (2 pi)) / 2^(32+F), rounded half up (floor of p / 2^(32+F) + 1/2). The
+// constant kInvTwoPiQ64 is 2^64 / (2 pi) rounded to an integer (error <= 1/2), which adds at most
+// |raw| / 2^(33+F) units: 2^-18 unit for Fx, up to 1/4 unit for Q31.32 at its extremes.
+template <class W, int F, class R>
+constexpr W radians_to_units_raw(R raw) {
+  using ops::add, ops::mul, ops::shl, ops::shr, ops::widen;
+  static_assert(F >= 0 && F <= 32);
+  const W p = mul(widen<W>(raw), W{angle_tables::kInvTwoPiQ64});
+  return shr(add(p, shl(W{1}, 31 + F)), 32 + F);
+}
+
+// Degrees, raw with F fraction bits: units * 360 * 2^F / 2^32, rounded half up. At F = 32 the
+// division is by 2^0: exact, with no rounding term (2^(31-F) would be a shift by -1, undefined --
+// the int128 code before the policy version computed exactly that for Fixed<int64, 32>).
+template <class W, int F, class S>
+constexpr W units_to_degrees_raw(S units) {
+  using ops::add, ops::mul, ops::shl, ops::shr, ops::widen;
+  static_assert(F >= 0 && F <= 32);
+  const W p = mul(widen<W>(units), W{360});
+  if constexpr (F == 32) {
+    return p;
+  } else {
+    return shr(add(p, shl(W{1}, 31 - F)), 32 - F);
+  }
+}
+
+// Radians, raw with F fraction bits: units * (2 pi * 2^60) / 2^(92-F), rounded half up; the
+// constant kTwoPiQ60 is 2 pi 2^60 rounded to an integer, which adds at most 2^(F-62) ulp.
+template <class W, int F, class S>
+constexpr W units_to_radians_raw(S units) {
+  using ops::add, ops::mul, ops::shl, ops::shr, ops::widen;
+  static_assert(F >= 0 && F <= 32);
+  const W p = mul(widen<W>(units), W{angle_tables::kTwoPiQ60});
+  return shr(add(p, shl(W{1}, 91 - F)), 92 - F);
+}
+
 // The bearing (0..7) nearest to the angle: round half up in units of 1/8 turn, so an angle exactly
 // between two bearings goes to the counter-clockwise one.
 template <class U>
@@ -425,11 +476,11 @@ public:
   template <class Rep, int F>
   static constexpr Angle from_degrees(Fixed<Rep, F> deg) {
     static_assert(F <= 32);
-    const int128 n = ops::shl(int128{deg.raw()}, 32 - F);
-    return from_raw(ops::truncate<std::uint32_t>(div_round_half_up<int128>(n, int128{360})));
+    return from_raw(ops::truncate<std::uint32_t>(degrees_to_units_raw<int128, F>(deg.raw())));
   }
   // Fixed-point radians (F <= 32): r / (2 pi) turns, rounded half up; error <= 1/2 unit plus
-  // 2^-18 unit for the rounding of 1/(2 pi) to 2^-64.
+  // |raw| / 2^(33+F) unit for the rounding of 1/(2 pi) to 2^-64 (2^-18 unit for Fx; up to 1/4
+  // unit for Q31.32 at its extremes).
   template <class Rep, int F>
   static constexpr Angle from_radians(Fixed<Rep, F> rad);
 
@@ -437,10 +488,13 @@ public:
   // The same angle in [-half turn, half turn), as signed units.
   [[nodiscard]] constexpr std::int32_t signed_raw() const noexcept { return ops::as_signed(raw_); }
 
-  // Degrees in [-180, 180] (180 only by rounding up from just below), rounded half up.
+  // Degrees in [-180, 180] (180 only by rounding up from just below), rounded half up. The
+  // format must hold 180: F + 9 <= bits of its raw type (Fx: F <= 23 for 32 bits).
   template <class FixedT = Fx>
   [[nodiscard]] constexpr FixedT degrees() const;
-  // Radians in [-pi, pi], rounded half up; error <= 1/2 ulp plus 2^-28 ulp for 2 pi's rounding.
+  // Radians in [-pi, pi], rounded half up; error <= 1/2 ulp plus 2^-28 ulp for 2 pi's rounding
+  // (2^(F-62) ulp, proved in proofs/z3/angle_conversions.cpp for the integer formula). The format
+  // must hold pi: F + 3 <= bits of its raw type (F <= 29 for 32 bits).
   template <class FixedT = Fx>
   [[nodiscard]] constexpr FixedT radians() const;
 
@@ -493,10 +547,7 @@ constexpr Angle atan2(std::int32_t y, std::int32_t x) {
 template <class Rep, int F>
 constexpr Angle Angle::from_radians(Fixed<Rep, F> rad) {
   static_assert(F <= 32 && ops::int_info<Rep>::bits <= 64);
-  // units = rad * 2^32 / (2 pi) = raw * (2^64 / (2 pi)) / 2^(32 + F)
-  const int128 p = ops::mul(int128{rad.raw()}, int128{angle_tables::kInvTwoPiQ64});
-  const int128 q = ops::shr(ops::add(p, ops::shl(int128{1}, 31 + F)), 32 + F);
-  return from_raw(ops::truncate<std::uint32_t>(q));
+  return from_raw(ops::truncate<std::uint32_t>(radians_to_units_raw<int128, F>(rad.raw())));
 }
 
 template <class FixedT>
@@ -504,10 +555,8 @@ constexpr FixedT Angle::degrees() const {
   using Rep = typename FixedT::rep;
   constexpr int F = FixedT::frac_bits;
   static_assert(F <= 32 && ops::int_info<Rep>::bits <= 64);
-  // raw = signed units * 360 * 2^F / 2^32
-  const int128 p = ops::mul(int128{signed_raw()}, int128{360});
-  const int128 q = ops::shr(ops::add(p, ops::shl(int128{1}, 31 - F)), 32 - F);
-  return FixedT::from_raw(ops::narrow<Rep>(q));
+  static_assert(F + 9 <= ops::int_info<Rep>::bits, "the format cannot hold 180 degrees");
+  return FixedT::from_raw(ops::narrow<Rep>(units_to_degrees_raw<int128, F>(signed_raw())));
 }
 
 template <class FixedT>
@@ -515,10 +564,8 @@ constexpr FixedT Angle::radians() const {
   using Rep = typename FixedT::rep;
   constexpr int F = FixedT::frac_bits;
   static_assert(F <= 32 && ops::int_info<Rep>::bits <= 64);
-  // raw = signed units * 2 pi * 2^F / 2^32 = units * (2 pi * 2^60) / 2^(92 - F)
-  const int128 p = ops::mul(int128{signed_raw()}, int128{angle_tables::kTwoPiQ60});
-  const int128 q = ops::shr(ops::add(p, ops::shl(int128{1}, 91 - F)), 92 - F);
-  return FixedT::from_raw(ops::narrow<Rep>(q));
+  static_assert(F + 3 <= ops::int_info<Rep>::bits, "the format cannot hold pi");
+  return FixedT::from_raw(ops::narrow<Rep>(units_to_radians_raw<int128, F>(signed_raw())));
 }
 
 // ---------------------------------------------------------------------------------------------
