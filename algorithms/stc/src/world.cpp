@@ -6,6 +6,11 @@
 
 namespace antkit::stc {
 
+namespace {
+constexpr unsigned kMarkFreeBit = 7;  // marks_: bits 0-3 the sub-cells' marks
+constexpr unsigned kEdgeFreeBit = 15; // edges_: bits 0-11 the cell's edges (ant.hpp)
+} // namespace
+
 std::string_view variant_name(Variant v) noexcept {
   switch (v) {
   case Variant::Offline:
@@ -52,6 +57,10 @@ void StcWorld::reset(const kernel::OccupancyGrid& map, SubCell start, NoiseModel
     }
   marks_.assign(cell_free_.size(), 0);
   edges_.assign(cell_free_.size(), 0);
+  for (std::size_t i = 0; i < cell_free_.size(); ++i) {
+    marks_[i] = static_cast<std::uint8_t>(cell_free_[i] << kMarkFreeBit);
+    edges_[i] = static_cast<std::uint16_t>(cell_free_[i] << kEdgeFreeBit);
+  }
   entered_.assign(n, 0);
   position_ = start;
   noise_ = noise;
@@ -131,11 +140,13 @@ void StcWorld::light_edge(SubCell s, int d) noexcept {
 }
 
 std::uint16_t StcWorld::cell_edges(Cell c) const noexcept {
-  return shape_.in_bounds(c) ? edges_[cell_index(c)] : std::uint16_t{0};
+  return shape_.in_bounds(c) ? static_cast<std::uint16_t>(edges_[cell_index(c)] & 0x0FFFu)
+                             : std::uint16_t{0};
 }
 
 std::uint8_t StcWorld::cell_marks(Cell c) const noexcept {
-  return shape_.in_bounds(c) ? marks_[cell_index(c)] : std::uint8_t{0};
+  return shape_.in_bounds(c) ? static_cast<std::uint8_t>(marks_[cell_index(c)] & 0x0Fu)
+                             : std::uint8_t{0};
 }
 
 std::uint32_t StcWorld::misread(std::uint32_t bits, int count) noexcept {
@@ -155,9 +166,14 @@ CellObservation StcWorld::observe_cells() const noexcept {
 MarkObservation StcWorld::observe_marks() noexcept {
   const std::size_t i = cell_index(cell_of(position_));
   MarkObservation o;
-  o.free_neighbours = observe_cells().free_neighbours;
-  o.here = marks_[i];
-  for (std::size_t d = 0; d < 4; ++d) o.neighbour[d] = marks_[i + offset_[d]];
+  o.here = static_cast<std::uint8_t>(marks_[i] & 0x0Fu);
+  unsigned free = 0;
+  for (std::size_t d = 0; d < 4; ++d) {
+    const std::uint8_t m = marks_[i + offset_[d]];
+    o.neighbour[d] = static_cast<std::uint8_t>(m & 0x0Fu);
+    free |= static_cast<unsigned>(m >> kMarkFreeBit) << d;
+  }
+  o.free_neighbours = static_cast<std::uint8_t>(free);
   if (noise_.ppm != 0) {
     o.here = static_cast<std::uint8_t>(misread(o.here, 4));
     for (auto& m : o.neighbour) m = static_cast<std::uint8_t>(misread(m, 4));
@@ -168,9 +184,14 @@ MarkObservation StcWorld::observe_marks() noexcept {
 EdgeObservation StcWorld::observe_edges() noexcept {
   const std::size_t i = cell_index(cell_of(position_));
   EdgeObservation o;
-  o.free_neighbours = observe_cells().free_neighbours;
-  o.here = edges_[i];
-  for (std::size_t d = 0; d < 4; ++d) o.neighbour[d] = edges_[i + offset_[d]];
+  o.here = static_cast<std::uint16_t>(edges_[i] & 0x0FFFu);
+  unsigned free = 0;
+  for (std::size_t d = 0; d < 4; ++d) {
+    const std::uint16_t e = edges_[i + offset_[d]];
+    o.neighbour[d] = static_cast<std::uint16_t>(e & 0x0FFFu);
+    free |= static_cast<unsigned>(e >> kEdgeFreeBit) << d;
+  }
+  o.free_neighbours = static_cast<std::uint8_t>(free);
   if (noise_.ppm != 0) {
     o.here = static_cast<std::uint16_t>(misread(o.here, 12));
     for (auto& m : o.neighbour) m = static_cast<std::uint16_t>(misread(m, 12));
