@@ -4,8 +4,9 @@
 // uniform(stream, a, b) is uniform over the raw values of the closed interval [a, b]: each of the
 // (b.raw - a.raw + 1) representable numbers has probability exactly 1 / (b.raw - a.raw + 1).
 // "Unbiased to the raw resolution" is meant literally: the integer offset is drawn with Lemire's
-// multiply-shift map and rejection (the same method as Stream::below, written here for 32- and
-// 64-bit words), so no residue of 2^32 or 2^64 modulo the count leaks into the result.
+// multiply-shift map and rejection (the same function as Stream::below, random.hpp's
+// lemire_bounded, at 32 or 64 bits), so no residue of 2^32 or 2^64 modulo the count leaks into the
+// result.
 //
 // Draws: for formats of at most 32 bits each attempt takes one 32-bit word (Stream::next_u32), for
 // 64-bit formats one 64-bit word (Stream::next_u64); an attempt is rejected with probability
@@ -22,22 +23,8 @@
 
 namespace antkit::kernel {
 
-// Lemire's map of a uniform w-bit word x to [0, n), n >= 1, over any unsigned word type U with a
-// type U2 of twice the width. Returns false when x must be rejected (the low half of x * n is
-// below 2^w mod n); the accepted words map onto every value of [0, n) exactly floor(2^w / n) times.
-// The 8-bit instantiation is checked exhaustively in tests/kernel/test_fixed_random.cpp.
-template <class U, class U2>
-constexpr bool lemire_bounded(U x, U n, U& out) noexcept {
-  constexpr int w = ops::int_info<U>::bits;
-  const U2 m = static_cast<U2>(static_cast<U2>(x) * static_cast<U2>(n));
-  const auto low = static_cast<U>(m);
-  if (low < n) {
-    const auto threshold = static_cast<U>(static_cast<U>(U{0} - n) % n); // 2^w mod n
-    if (low < threshold) return false;
-  }
-  out = static_cast<U>(m >> w);
-  return true;
-}
+// The offsets use lemire_bounded (random.hpp), the one copy of Lemire's map, whose 32-bit
+// instantiation proofs/z3/bounded_u32.cpp proves.
 
 // Uniform raw offset in [0, span] (span + 1 values; span may be the largest word, then every word
 // is accepted as it is).

@@ -138,29 +138,52 @@ philox4x32_10_x4(std::array<std::array<std::uint32_t, 4>, 4> ctr,
   return ctr;
 }
 
-// Lemire's multiply-shift map of a uniform 32-bit word x to [0, n), n >= 1. It returns false when x
-// falls in the rejected zone of the low product (low < 2^32 mod n); accepting only the other words
-// makes every value in [0, n) come from exactly floor(2^32 / n) words, so the result is unbiased.
+// The width of an unsigned word type: a policy type (proofs/z3/z3_int.hpp's Int) states it as
+// `bits`; a machine integer (unsigned __int128 included, which std::numeric_limits does not know in
+// strict mode) by its size.
+template <class U>
+constexpr int lemire_word_bits() {
+  if constexpr (requires { U::bits; }) {
+    return U::bits;
+  } else {
+    return static_cast<int>(sizeof(U)) * 8;
+  }
+}
+
+// Lemire's multiply-shift map of a uniform w-bit word x to [0, n), n >= 1, over an unsigned word
+// type U and a type U2 of twice its width. It returns false when x falls in the rejected zone of
+// the low product (low < 2^w mod n); accepting only the other words makes every value in [0, n)
+// come from exactly floor(2^w / n) words, so the result is unbiased.
 //
-// Written once over an integer policy W (DESIGN.md rule 6): W::u32 and W::u64 are the 32- and
-// 64-bit unsigned words. bounded_u32 below instantiates it with the machine words (MachineWords);
-// proofs/z3/bounded_u32.cpp instantiates the same source with Z3 bit-vectors and proves the
-// rejection exact. The two `if`s stay branches rather than selects: on machine words the remainder
-// (a division) is then computed only when low < n, which is rare for small n; on Z3 words each
-// `if` forks the proof run (z3_int.hpp, Session::decide), so the three paths are checked apart.
-// Only unsigned arithmetic is used, so nothing can overflow; the one precondition is n != 0.
-template <class W>
-constexpr bool bounded_u32_t(typename W::u32 x, typename W::u32 n, typename W::u32& out) {
-  using u32 = typename W::u32;
-  using u64 = typename W::u64;
-  const u64 m = static_cast<u64>(x) * static_cast<u64>(n);
-  const auto low = static_cast<u32>(m);
+// The one copy of the map (DESIGN.md rule 6): Stream::below (through bounded_u32_t below), the
+// fixed-point uniforms of fixed_random.hpp (32 and 64 bits) and the Buffon controller's draws all
+// call it. proofs/z3/bounded_u32.cpp instantiates it through bounded_u32_t with Z3 bit-vectors at
+// w = 32 and proves the rejection exact; the 64-bit instantiation is the same source at another
+// width (not proved in Z3; the 8-bit one is checked exhaustively in
+// tests/kernel/test_fixed_random.cpp). The two `if`s stay branches rather than selects: on machine
+// words the remainder (a division) is then computed only when low < n, which is rare for small n;
+// on Z3 words each `if` forks the proof run (z3_int.hpp, Session::decide), so the three paths are
+// checked apart. Only unsigned arithmetic is used, so nothing can overflow; the one precondition is
+// n != 0. (The outer casts matter only for types narrower than int, which C++ promotes.)
+template <class U, class U2>
+constexpr bool lemire_bounded(U x, U n, U& out) {
+  constexpr int w = lemire_word_bits<U>();
+  const U2 m = static_cast<U2>(static_cast<U2>(x) * static_cast<U2>(n));
+  const auto low = static_cast<U>(m);
   if (low < n) {
-    const u32 threshold = static_cast<u32>(u32{0} - n) % n; // 2^32 mod n
+    const U threshold = static_cast<U>(static_cast<U>(U{0} - n) % n); // 2^w mod n
     if (low < threshold) return false;
   }
-  out = static_cast<u32>(m >> 32);
+  out = static_cast<U>(m >> w);
   return true;
+}
+
+// Lemire's map at 32 bits over an integer policy W (W::u32 and W::u64 are the 32- and 64-bit
+// unsigned words): bounded_u32 below instantiates it with the machine words (MachineWords),
+// proofs/z3/bounded_u32.cpp with Z3 bit-vectors.
+template <class W>
+constexpr bool bounded_u32_t(typename W::u32 x, typename W::u32 n, typename W::u32& out) {
+  return lemire_bounded<typename W::u32, typename W::u64>(x, n, out);
 }
 
 // The machine instantiation's policy.
