@@ -1,5 +1,0 @@
-#include <antkit/stc/ant.hpp>
-
-namespace antkit::stc {
-
-} // namespace antkit::stc
