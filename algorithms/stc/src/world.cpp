@@ -181,6 +181,8 @@ MarkObservation StcWorld::observe_marks() noexcept {
   return o;
 }
 
+// Written out beside observe_marks rather than shared as a template over the word type: the shared
+// form measured 12 % slower for ant-edge on 4096^2 (21.2 -> 18.7 M sub-cells/s, same quiet run).
 EdgeObservation StcWorld::observe_edges() noexcept {
   const std::size_t i = cell_index(cell_of(position_));
   EdgeObservation o;
