@@ -28,20 +28,6 @@
 using namespace antkit::proofs;
 namespace kn = antkit::kernel;
 
-namespace {
-
-// The first bit-vector multiplication in e (depth-first), or e itself if there is none.
-std::optional<z3::expr> first_product(const z3::expr& e) {
-  if (!e.is_app()) return std::nullopt;
-  if (e.decl().decl_kind() == Z3_OP_BMUL && !e.arg(0).is_numeral() && !e.arg(1).is_numeral())
-    return e;
-  for (unsigned i = 0; i < e.num_args(); ++i)
-    if (auto p = first_product(e.arg(i))) return p;
-  return std::nullopt;
-}
-
-} // namespace
-
 int main() {
   Session s;
   Prover p(s);

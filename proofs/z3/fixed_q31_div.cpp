@@ -38,16 +38,6 @@ namespace kn = antkit::kernel;
 
 namespace {
 
-// The first bit-vector multiplication of two non-constants in e (depth-first).
-std::optional<z3::expr> first_product(const z3::expr& e) {
-  if (!e.is_app()) return std::nullopt;
-  if (e.decl().decl_kind() == Z3_OP_BMUL && !e.arg(0).is_numeral() && !e.arg(1).is_numeral())
-    return e;
-  for (unsigned i = 0; i < e.num_args(); ++i)
-    if (auto p = first_product(e.arg(i))) return p;
-  return std::nullopt;
-}
-
 // The subterm of one of `roots` whose Z3 id is `id`.
 std::optional<z3::expr> find_by_id(const z3::expr& e, unsigned id, std::set<unsigned>& seen) {
   const unsigned here = Z3_get_ast_id(e.ctx(), e);

@@ -18,9 +18,21 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <string>
 
 namespace antkit::proofs {
+
+// The first bit-vector multiplication of two non-constants in e (depth-first), if any: the proofs
+// that replace a product by an unknown find the product the shipped code formed with it.
+inline std::optional<z3::expr> first_product(const z3::expr& e) {
+  if (!e.is_app()) return std::nullopt;
+  if (e.decl().decl_kind() == Z3_OP_BMUL && !e.arg(0).is_numeral() && !e.arg(1).is_numeral())
+    return e;
+  for (unsigned i = 0; i < e.num_args(); ++i)
+    if (auto p = first_product(e.arg(i))) return p;
+  return std::nullopt;
+}
 
 // Runs `body` once per path through the branches it takes on symbolic values (Session::decide),
 // depth-first; returns how many paths were run. Claims made inside are checked under the path's
