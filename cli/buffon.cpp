@@ -160,10 +160,11 @@ void run(const BuffonCommand& c) {
     if (online) {
       stopped += t.reached_precision ? 1 : 0;
       trials.back()["reached_precision"] = t.reached_precision;
-      // The rule's own interval (stopping.hpp): V = both shares, floored at N; z^2 = 5.118.
+      // The rule's own interval (stopping.hpp): V = both shares, floored at N; the rule's z^2.
       const double n = static_cast<double>(t.crossings_exact);
       const double v = std::max(t.variance_visit1 + t.variance_visit2, n);
-      const double half = std::sqrt(5.118 * v);
+      const double z2 = static_cast<double>(buffon::PrecisionMonitor::kZSquaredMilli) / 1000.0;
+      const double half = std::sqrt(z2 * v);
       trials.back()["precision_ci"] = {
           cf.area && n > 0 ? nlohmann::json(*cf.area * n / (n + half)) : nlohmann::json(),
           cf.area && n > half ? nlohmann::json(*cf.area * n / (n - half)) : nlohmann::json()};

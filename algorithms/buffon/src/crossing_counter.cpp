@@ -15,8 +15,7 @@ constexpr std::int64_t bucket_of(std::int32_t v, int shift) noexcept {
 }
 } // namespace
 
-CrossingCounter::CrossingCounter(std::span<const FxPoint> finished)
-    : points_(finished.begin(), finished.end()) {
+CrossingCounter::CrossingCounter(std::span<const FxPoint> finished) : points_(finished) {
   if (points_.size() < 2) return;
   if (points_.size() - 1 > std::numeric_limits<std::uint32_t>::max() - 1)
     throw kernel::InputError("trail", "a trail of more than 2^32 - 2 segments");

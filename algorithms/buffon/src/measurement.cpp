@@ -7,6 +7,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace antkit::buffon {
@@ -127,6 +128,7 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
   TrialParams params2 = params;
   if (params.visit2_steps != 0) params2.steps = params.visit2_steps;
   VisitLog second;
+  std::optional<std::uint64_t> counted; // visit 2's crossings, when the online rule counted them
   if (params.precision_millionths == 0) {
     second = run_visit(
         world, params2, trial, 2, hash,
@@ -160,13 +162,15 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
     result.reached_precision = monitor.reached();
     result.variance_visit1 = monitor.spread().visit1;
     result.variance_visit2 = monitor.spread().visit2;
+    counted = monitor.count(); // = count_proper_crossings(first, second): tests/convergence
   }
   keep(scratch.raster, raster.release_storage());
   result.bc = bc;
   result.length1_raw = first.length_raw;
   result.length2_raw = second.length_raw;
   result.blocked = first.blocked + second.blocked;
-  result.crossings_exact = kernel::count_proper_crossings(first.trail, second.trail);
+  result.crossings_exact =
+      counted ? *counted : kernel::count_proper_crossings(first.trail, second.trail);
   hash.add_u64(bc).add_u64(first.blocked).add_u64(second.blocked).add_u64(result.crossings_exact);
   result.hash = hash.finish();
   if (params.keep_trails) {

@@ -20,7 +20,8 @@ namespace antkit::buffon {
 class CrossingCounter {
 public:
   // Indexes the segments of `finished` (a polyline of n points has n - 1 segments; any Fx
-  // coordinates). Throws InputError for more than 2^32 - 2 segments.
+  // coordinates), which must outlive the counter (it is read, not copied). Throws InputError for
+  // more than 2^32 - 2 segments.
   explicit CrossingCounter(std::span<const kernel::FxPoint> finished);
   // The number of segments of the finished trail that segment (a, b) crosses properly. With
   // `crossed`, the index of each such segment (i joins points i and i + 1) is appended to it, in
@@ -30,7 +31,7 @@ public:
 
 private:
   static constexpr int kBucketShift = 15;
-  std::vector<kernel::FxPoint> points_;
+  std::span<const kernel::FxPoint> points_;
   std::int64_t bx0_ = 0, by0_ = 0, cols_ = 0, rows_ = 0; // bucket grid origin (in buckets), size
   std::vector<std::uint32_t> start_; // CSR: bucket b's ids in [start_[b], start_[b+1])
   std::vector<std::uint32_t> ids_;   // segment i joins points_[i], points_[i + 1]
