@@ -108,13 +108,7 @@ public:
     return ok;
   }
   bool refute(const std::string& name, const z3::expr& c) {
-    z3::solver solver = logic_ != nullptr ? z3::solver(s_.ctx(), logic_)
-                        : integers_       ? z3::solver(s_.ctx())
-                                          : bit_vector_solver();
-    solver.add(domain_);
-    for (const auto& p : s_.path()) solver.add(p);
-    for (const auto& f : s_.facts()) solver.add(f);
-    solver.add(!c);
+    z3::solver solver = negation_solver(c);
     const z3::check_result r = solver.check();
     if (r == z3::sat) {
       ++refuted_;
@@ -154,18 +148,24 @@ public:
   }
 
 private:
-  bool check(const std::string& name, const z3::expr& c) {
-    const auto t0 = std::chrono::steady_clock::now();
-    // Bit-vector claims go to Z3's QF_BV solver (simplify, then bit-blast to SAT), which is much
-    // faster on them than the default portfolio; claims over mathematical integers (a few
-    // nonlinear lemmas) to the default solver.
+  // A solver holding the domain, the path, the facts and the negation of c: unsat proves c, sat
+  // refutes it. Bit-vector claims go to Z3's QF_BV solver (simplify, then bit-blast to SAT), which
+  // is much faster on them than the default portfolio; claims over mathematical integers (a few
+  // nonlinear lemmas) to the default solver; claim_over_reals sets its own logic.
+  z3::solver negation_solver(const z3::expr& c) {
     z3::solver solver = logic_ != nullptr ? z3::solver(s_.ctx(), logic_)
                         : integers_       ? z3::solver(s_.ctx())
                                           : bit_vector_solver();
     solver.add(domain_);
-    for (const auto& c : s_.path()) solver.add(c);
+    for (const auto& p : s_.path()) solver.add(p);
     for (const auto& f : s_.facts()) solver.add(f);
     solver.add(!c);
+    return solver;
+  }
+
+  bool check(const std::string& name, const z3::expr& c) {
+    const auto t0 = std::chrono::steady_clock::now();
+    z3::solver solver = negation_solver(c);
     const z3::check_result r = solver.check();
     const auto ms =
         std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - t0)
