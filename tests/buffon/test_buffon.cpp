@@ -184,6 +184,40 @@ TEST_CASE("sensing and collisions equal the loop over every wall", "[property]")
   });
 }
 
+TEST_CASE("ray_reading at the Khepera's angles and full range is sense()", "[property]") {
+  // The emulators' sensor model (any angle, a shorter range) must be the simulator's for the
+  // simulator's own sensors; a shorter range reads less (or equal), never more.
+  rc::prop("ray_reading == sense for the six front sensors", [] {
+    const std::vector<std::string> specs{"circle:d=6", "plus", "obstacles", "ring"};
+    const auto w = world_of(*rc::gen::elementOf(specs));
+    const auto x = *rc::gen::inRange<std::int64_t>(w.lower().x.raw(), w.upper().x.raw() + 1);
+    const auto y = *rc::gen::inRange<std::int64_t>(w.lower().y.raw(), w.upper().y.raw() + 1);
+    const buffon::Pose pose{{antkit::kernel::Fx::from_raw(static_cast<std::int32_t>(x)),
+                             antkit::kernel::Fx::from_raw(static_cast<std::int32_t>(y))},
+                            antkit::kernel::Angle::from_raw(*rc::gen::arbitrary<std::uint32_t>())};
+    const auto want = w.sense(pose, nullptr);
+    const std::array<int, 6> degrees{90, 45, 10, -10, -45, -90};
+    const auto shorter = antkit::kernel::Fx::from_raw(*rc::gen::inRange(1, 49152));
+    for (std::size_t i = 0; i < 6; ++i) {
+      const auto offset = antkit::kernel::Angle::from_degrees(degrees[i]);
+      RC_ASSERT(w.ray_reading(pose, offset, buffon::kSensorRange) == want.ir[i]);
+      const auto near = w.ray_reading(pose, offset, shorter);
+      RC_ASSERT(near >= antkit::kernel::Fx{});
+      RC_ASSERT(near <= antkit::kernel::Fx::one());
+      // The same wall at distance d reads 1 - d/r: zero exactly when d >= r, so a shorter range
+      // sees a wall only if the full range does.
+      if (want.ir[i] == antkit::kernel::Fx{}) RC_ASSERT(near == antkit::kernel::Fx{});
+    }
+  });
+  const auto w = world_of("circle:d=6");
+  const buffon::Pose pose{{antkit::kernel::Fx{}, antkit::kernel::Fx{}},
+                          antkit::kernel::Angle::zero()};
+  CHECK_THROWS_AS(w.ray_reading(pose, antkit::kernel::Angle::zero(), antkit::kernel::Fx{}),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(w.ray_reading(pose, antkit::kernel::Angle::zero(), antkit::kernel::Fx::one()),
+                  std::invalid_argument);
+}
+
 TEST_CASE("the pheromone raster's fast paths equal the reference loops", "[property]") {
   // lay() stamps a precomputed 5 x 5 pattern of row masks and at() divides by multiplication;
   // lay_exact() and at_exact() are the plain loops with floor divisions. Two rasters fed the same

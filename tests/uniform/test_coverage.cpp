@@ -118,6 +118,33 @@ TEST_CASE("RW turns left, moves or turns right as its own keyed stream draws 0, 
   for (const int c : counts) CHECK(c > 150); // each of 600 draws' thirds is used
 }
 
+TEST_CASE("StepTurnWanderer emits the simulated RW robot's commands when told what it sees",
+          "[uniform]") {
+  // Robot 1 of a two-robot RW team on a cluttered map, and a StepTurnWanderer for robot 1 fed only
+  // "is the cell ahead free": the same commands, step for step.
+  kernel::OccupancyGrid grid(7, 5, Occupancy::Free);
+  for (const kernel::Cell c : {kernel::Cell{2, 1}, kernel::Cell{4, 3}, kernel::Cell{5, 0}})
+    grid[c] = Occupancy::Blocked;
+  CoverageWorld w(grid, {{{0, 0}, 0}, {{3, 2}, 2}}, 2);
+  RandomWanderer team(9, 4, 2);
+  StepTurnWanderer alone(9, 4, 1);
+  int forward = 0, wait = 0;
+  for (int t = 0; t < 400; ++t) {
+    const Pose p = w.robot(1);
+    const Command expected = team.step({1, &w});
+    const Command got = alone.step({w.can_step(p.cell, p.bearing)});
+    REQUIRE(got == expected);
+    forward += got.action == Action::Forward;
+    wait += got.action == Action::Wait;
+    if (got.action == Action::TurnLeft) w.turn(1, 1);
+    if (got.action == Action::TurnRight) w.turn(1, -1);
+    if (got.action == Action::Forward) REQUIRE(w.move(1, p.bearing));
+  }
+  CHECK(alone.steps() == 400);
+  CHECK(forward > 20); // both branches of the forward draw were exercised
+  CHECK(wait > 20);
+}
+
 TEST_CASE("A* (plain and coordinated) and frontier view every viewable free cell, breaking no rule",
           "[uniform][property]") {
   rc::prop("A* and frontier complete", [] {

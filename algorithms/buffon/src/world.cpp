@@ -4,6 +4,7 @@
 #include <antkit/kernel/fixed_random.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <array>
+#include <stdexcept>
 
 namespace antkit::buffon {
 
@@ -218,6 +219,21 @@ Observation World::sense_walls(const Pose& pose, kernel::Stream* noise) const {
     }
   }
   return obs;
+}
+
+Fx World::ray_reading(const Pose& pose, Angle offset, Fx range) const {
+  if (range <= Fx{} || range > kSensorRange)
+    throw std::invalid_argument("ray_reading: the range must be in (0, 0.75] units");
+  const Angle a = pose.heading + offset;
+  const Fx cs = kernel::cos(a), sn = kernel::sin(a);
+  const std::int64_t sx = std::int64_t{pose.position.x.raw()} + (kBodyRadius * cs).raw();
+  const std::int64_t sy = std::int64_t{pose.position.y.raw()} + (kBodyRadius * sn).raw();
+  const std::int64_t dx = (range * cs).raw(), dy = (range * sn).raw();
+  std::int64_t best_num = 1, best_den = 1;
+  // The bucket of the centre holds every wall within kMargin >= body radius + kSensorRange of it
+  // (constructor), so every wall the ray can meet.
+  for (const auto& w : nearby(pose.position)) ray_hit(w, sx, sy, dx, dy, best_num, best_den);
+  return Fx::one() - Fx::from_raw(static_cast<std::int32_t>(best_num * 65536 / best_den));
 }
 
 bool World::clear_walls(FxPoint p, std::span<const BucketWall> bucket) const {

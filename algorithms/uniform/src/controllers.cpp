@@ -33,6 +33,21 @@ Command RandomWanderer::step(const Observation& obs) {
   }
 }
 
+StepTurnWanderer::StepTurnWanderer(std::uint64_t seed, std::uint64_t trial, std::size_t robot)
+    : stream_(robot_stream(seed, trial, robot, StreamPurpose::RandomWanderer)) {}
+
+Command StepTurnWanderer::step(const Observation& obs) {
+  ++steps_;
+  switch (stream_.below(3)) { // RandomWanderer::step's draw and meaning
+  case 0:
+    return {Action::TurnLeft};
+  case 2:
+    return {Action::TurnRight};
+  default:
+    return obs.front_free ? Command{Action::Forward} : Command{Action::Wait};
+  }
+}
+
 // ---- Primary Movement ----
 
 PrimaryMovement::PrimaryMovement(std::size_t robots) : turns_(robots, 0) {}

@@ -100,6 +100,14 @@ public:
     return true;
   }
 
+  // One IR reading along a ray at `offset` from the heading, from the body's edge, for a sensor of
+  // range `range` in (0, kSensorRange]: 1 - d / range for the distance d to the nearest wall along
+  // the ray, 0 when none is within range (the model of sense(), for any sensor angle and a shorter
+  // range; no noise). For bodies other than the simulated Khepera: the firmware emulators place
+  // each robot's sensors at its own angles (devices/emulator.hpp). Throws std::invalid_argument
+  // for a range outside (0, kSensorRange]: the walls' buckets only reach that far.
+  [[nodiscard]] Fx ray_reading(const Pose& pose, Angle offset, Fx range) const;
+
   // Section 4.1: the bottom-most wall point on the vertical line through the walls' horizontal
   // centre, the robot's centre 0.83 above it, heading up (into the arena) +/- 15 degrees drawn
   // from `stream`. Reading of "within +/-15 degrees of the wall": the heading is perpendicular to

@@ -72,6 +72,27 @@ private:
   std::vector<kernel::Stream> streams_;
 };
 
+// The Random Wanderer for one robot that only steps and turns and sees only whether the cell ahead
+// is free: a real robot (devices/adapter.hpp), whose own sensors answer that question, and whose
+// body turns a command into a 45-degree turn or a step of one cell. Its draws are RandomWanderer's
+// for robot `robot` (the same keyed stream, purpose RandomWanderer), so fed the front-free flags
+// the simulated robot would see, it emits the simulated robot's commands.
+class StepTurnWanderer {
+public:
+  struct Observation {
+    bool front_free = false;
+  };
+  using Command = uniform::Command;
+  StepTurnWanderer(std::uint64_t seed, std::uint64_t trial, std::size_t robot = 0);
+  Command step(const Observation& obs);
+  // Draws taken from the stream so far (with the last command, the controller's whole state).
+  [[nodiscard]] std::uint64_t steps() const noexcept { return steps_; }
+
+private:
+  kernel::Stream stream_;
+  std::uint64_t steps_ = 0;
+};
+
 class PrimaryMovement {
 public:
   using Observation = uniform::Observation;
