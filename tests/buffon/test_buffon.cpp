@@ -1,4 +1,5 @@
 // Buffon's-needle measurement: the Khepera world, the exploration behaviour, the two visits.
+#include <antkit/buffon/checkpoints.hpp>
 #include <antkit/buffon/estimate.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/geometry/arena_spec.hpp>
@@ -411,4 +412,43 @@ TEST_CASE("bad parameters are input errors") {
   const buffon::World tiny(antkit::geometry::build_arena_spec("circle:d=1.2").arena.walls_fx());
   antkit::kernel::Stream s(1);
   CHECK_THROWS_AS(tiny.start_pose(s), antkit::kernel::InputError);
+}
+
+TEST_CASE("rs_footprint counts the cells whose centre lies under the body along a trail",
+          "[property]") {
+  // The oracle: every cell of side 0.1 on the grid anchored at the trail's lower corner minus
+  // (radius + cell), counted once when its centre is within 0.5 of some point (doubled integers).
+  rc::prop("rs_footprint == the brute-force count", [] {
+    const auto n = *rc::gen::inRange<std::size_t>(1, 12);
+    std::vector<FxPoint> trail;
+    for (std::size_t i = 0; i < n; ++i)
+      trail.push_back({antkit::kernel::Fx::from_raw(*rc::gen::inRange(-200000, 200000)),
+                       antkit::kernel::Fx::from_raw(*rc::gen::inRange(-200000, 200000))});
+    const auto got = buffon::rs_footprint(trail);
+    const std::int64_t cell = got.cell_raw, r = buffon::kBodyRadius.raw();
+    REQUIRE(cell == 6554);
+    std::int64_t x0 = trail[0].x.raw(), y0 = trail[0].y.raw(), x1 = x0, y1 = y0;
+    for (const auto& p : trail) {
+      x0 = std::min<std::int64_t>(x0, p.x.raw()), y0 = std::min<std::int64_t>(y0, p.y.raw());
+      x1 = std::max<std::int64_t>(x1, p.x.raw()), y1 = std::max<std::int64_t>(y1, p.y.raw());
+    }
+    const std::int64_t ox = x0 - r - cell, oy = y0 - r - cell;
+    std::uint64_t want = 0;
+    for (std::int64_t j = 0; oy + j * cell <= y1 + r + cell; ++j)
+      for (std::int64_t i = 0; ox + i * cell <= x1 + r + cell; ++i) {
+        const std::int64_t cx2 = 2 * (ox + i * cell) + cell, cy2 = 2 * (oy + j * cell) + cell;
+        bool under = false;
+        for (const auto& p : trail) {
+          const std::int64_t dx = cx2 - 2 * std::int64_t{p.x.raw()},
+                             dy = cy2 - 2 * std::int64_t{p.y.raw()};
+          under = under || dx * dx + dy * dy <= 4 * r * r;
+        }
+        want += under ? 1 : 0;
+      }
+    RC_ASSERT(got.cells == want);
+  });
+  // One point: the unit disk's area in cells of 0.01, to within its rim.
+  const std::vector<FxPoint> one{{antkit::kernel::Fx{}, antkit::kernel::Fx{}}};
+  const auto f = buffon::rs_footprint(one);
+  CHECK(std::abs(static_cast<double>(f.cells) * 0.01 - 3.14159265 / 4) < 0.06);
 }

@@ -132,4 +132,24 @@ CheckpointResult run_checkpoints(const World& world, const TrialParams& params, 
   return out;
 }
 
+Footprint rs_footprint(std::span<const FxPoint> trail) {
+  Footprint out;
+  out.cell_raw = Fx::from_ratio(1, 10).raw();
+  if (trail.empty()) return out;
+  std::int32_t x0 = trail[0].x.raw(), y0 = trail[0].y.raw(), x1 = x0, y1 = y0;
+  for (const auto& p : trail) {
+    x0 = std::min(x0, p.x.raw()), y0 = std::min(y0, p.y.raw());
+    x1 = std::max(x1, p.x.raw()), y1 = std::max(y1, p.y.raw());
+  }
+  const std::int32_t r = kBodyRadius.raw() + static_cast<std::int32_t>(out.cell_raw);
+  ByteRaster rs({Fx::from_raw(x0 - r), Fx::from_raw(y0 - r)},
+                {Fx::from_raw(x1 + r), Fx::from_raw(y1 + r)}, out.cell_raw, 0);
+  for (const auto& p : trail)
+    rs.disk(p, kBodyRadius.raw(), [&out](std::uint8_t& cell) {
+      out.cells += cell == 0 ? 1 : 0;
+      cell = 1;
+    });
+  return out;
+}
+
 } // namespace antkit::buffon

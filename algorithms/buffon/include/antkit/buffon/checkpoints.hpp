@@ -16,6 +16,7 @@
 // cell's area after a trail of length 2 k * step.
 #include <antkit/buffon/measurement.hpp>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace antkit::buffon {
@@ -32,5 +33,15 @@ struct CheckpointResult {
 // or 1.3 times the steps that takes at the default mean step, whichever is first.
 CheckpointResult run_checkpoints(const World& world, const TrialParams& params, std::uint64_t trial,
                                  std::int64_t step_raw, int count);
+
+// RS's marked area along a finished trail (a robot's logged one, devices/odometry.hpp): the cells
+// of side 0.1 whose centre lies within the body's radius of a point of the trail, marked by the
+// rule run_checkpoints applies as it walks, over the trail's bounding box grown by the radius. The
+// estimate is cells * cell^2.
+struct Footprint {
+  std::uint64_t cells = 0;
+  std::int64_t cell_raw = 0; // side, raw Q15.16
+};
+Footprint rs_footprint(std::span<const FxPoint> trail);
 
 } // namespace antkit::buffon
