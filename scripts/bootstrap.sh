@@ -10,7 +10,7 @@ packages=(
   build-essential cmake ninja-build pkg-config ccache git
   clang-14 libclang-rt-14-dev clang-format
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
-  catch2 librapidcheck-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
+  catch2 librapidcheck-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev jq
   libz3-dev coq libcairo2-dev
 )
 

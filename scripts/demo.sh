@@ -22,11 +22,10 @@ section "Arenas of paper 000, Figure 3 (unit: robot diameter)"
 printf '%-34s %12s %-26s %9s %6s\n' spec area area_exact perimeter holes
 for spec in standard circle:d=10 square:d=100 ellipse:e=0.968 ellipse:e=0.998 \
   barrier-i:len=0.4 barrier-plus:len=0.4 ring plus obstacles; do
-  "$antkit" arena "$spec" --format json | python3 -c '
-import json, sys
-j = json.load(sys.stdin)
-exact = j["area_exact"] if len(j["area_exact"]) <= 24 else j["area_exact"][:21] + "..."
-print("%-34s %12.4f %-26s %9.3f %6d" % (sys.argv[1], j["area"], exact, j["perimeter"], j["holes"]))' "$spec"
+  "$antkit" arena "$spec" --format json | jq -r --arg spec "$spec" \
+    '[$spec, .area, (if (.area_exact | length) <= 24 then .area_exact else .area_exact[0:21] + "..." end),
+      .perimeter, .holes] | @tsv' |
+    while IFS=$'\t' read -r s a e p h; do printf '%-34s %12.4f %-26s %9.3f %6d\n' "$s" "$a" "$e" "$p" "$h"; done
 done
 
 if [ -d "$maps" ]; then
@@ -34,20 +33,17 @@ if [ -d "$maps" ]; then
   printf '%-36s %9s %9s %9s %9s %10s\n' map size free blocked unknown components
   for m in movingai/room-32-32-4.map movingai/Berlin_1_256.map movingai/brc202d.map \
     ros/turtlebot3_world.yaml ros/willow-2010-02-18-0.10.yaml; do
-    "$antkit" map info "$maps/$m" --format json | python3 -c '
-import json, sys
-j = json.load(sys.stdin)
-print("%-36s %9s %9d %9d %9d %10d" % (sys.argv[1], "%dx%d" % (j["width"], j["height"]), j["free"],
-      j["blocked"], j.get("unknown", 0), j["components"]))' "$m"
+    "$antkit" map info "$maps/$m" --format json |
+      jq -r --arg m "$m" '"\($m)\t\(.width)x\(.height)\t\(.free)\t\(.blocked)\t\(.unknown // 0)\t\(.components)"' |
+      while IFS=$'\t' read -r n size free blocked unknown comps; do
+        printf '%-36s %9s %9s %9s %9s %10s\n' "$n" "$size" "$free" "$blocked" "$unknown" "$comps"
+      done
   done
 
   section "Paper 002: ant-like STC on den312d (tour drawn in $out/stc-den312d.svg)"
   "$antkit" stc --map "$maps/movingai/den312d.map" --variant ant \
-    --svg "$out/stc-den312d.svg" --format json | python3 -c '
-import json, sys
-j = json.load(sys.stdin)
-print("variant %s: %d reachable sub-cells, %d covered, %d repeats, returned to start: %s, hash %s"
-      % (j["variant"], j["reachable_subcells"], j["covered"], j["repeats"], j["returned_to_start"], j["hash"]))'
+    --svg "$out/stc-den312d.svg" --format json |
+    jq -r '"variant \(.variant): \(.reachable_subcells) reachable sub-cells, \(.covered) covered, \(.repeats) repeats, returned to start: \(.returned_to_start), hash \(.hash)"'
 else
   section "../shared/maps not found beside the checkout: skipping the real maps"
 fi
