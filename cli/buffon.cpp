@@ -60,13 +60,6 @@ struct BuffonCommand {
   Format format = Format::Table;
 };
 
-bool is_wkt_path(const std::string& s) {
-  if (s.size() < 4) return false;
-  std::string tail = s.substr(s.size() - 4);
-  for (auto& ch : tail) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return tail == ".wkt";
-}
-
 double fx_to_double(std::int64_t raw) {
   return static_cast<double>(raw) / 65536.0;
 }
@@ -108,7 +101,7 @@ void run(const BuffonCommand& c) {
   if (!(c.noise >= 0 && c.noise <= 1))
     throw InputError("--noise", "the sensor noise must be in [0, 1]");
 
-  geometry::Arena arena = is_wkt_path(c.arena)
+  geometry::Arena arena = antkit::cli::is_wkt_path(c.arena)
                               ? geometry::read_wkt_file(c.arena)
                               : geometry::build_arena_spec(c.arena, "--arena").arena;
   buffon::BodyParams body;

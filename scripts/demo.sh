@@ -6,7 +6,9 @@
 #   3. paper 002: ant-like Spanning Tree Coverage of a real map, with the tour drawn;
 #   4. paper 001: two-robot line-of-sight exploration, Tables 2 and 3 beside the paper's;
 #   5. paper 004: uniform coverage, Tables 1-4 beside the paper's;
-#   6. paper 000: Buffon's-needle area measurement of the standard arena.
+#   6. paper 000: Buffon's-needle area measurement of the standard arena;
+#   7. a robot: the Khepera firmware emulator on a pseudo-terminal, two Buffon visits recorded over
+#      the tty, replayed bit for bit, and the area computed from the two logs.
 set -euo pipefail
 antkit=${1:-build/release/cli/antkit}
 out=${DEMO_OUT:-build/demo}
@@ -60,6 +62,26 @@ cat "$out/cover/uniform_tables.md"
 
 section "Paper 000: Buffon's-needle area measurement of the standard arena"
 "$antkit" buffon --arena standard --trials 8 --svg "$out/buffon-standard.svg"
+
+section "A robot over a serial link: Khepera emulator, two recorded visits, replay, area from logs"
+emu_out="$out/emulator.txt"
+"$antkit" emulate khepera --arena circle:d=20 --seed 3 >"$emu_out" &
+emu_pid=$!
+trap 'kill "$emu_pid" 2>/dev/null || true' EXIT
+for _ in $(seq 100); do [ -s "$emu_out" ] && break; sleep 0.05; done
+port=$(head -n 1 "$emu_out")
+echo "emulator on $port"
+for visit in 1 2; do
+  "$antkit" record --device khepera --port "$port" --controller buffon --visit "$visit" \
+    --steps 3000 --out "$out/khepera-visit$visit.jsonl" --format json |
+    jq -r '"visit '"$visit"': \(.steps) steps, \(.exchanges) exchanges, \(.retries) resends, stopped: \(.stopped), hash \(.hash)"'
+done
+"$antkit" replay "$out/khepera-visit1.jsonl" --format json |
+  jq -r '"replay of visit 1: \(.steps) steps, identical: \(.identical), hash \(.hash)"'
+"$antkit" buffon-from-logs "$out/khepera-visit1.jsonl" "$out/khepera-visit2.jsonl"
+kill "$emu_pid" 2>/dev/null || true
+wait "$emu_pid" 2>/dev/null || true
+trap - EXIT
 
 section "Figures and tables are in $out/"
 ls "$out"

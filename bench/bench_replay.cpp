@@ -1,0 +1,88 @@
+// Replay speed: steps per second of `antkit replay` on a Buffon log (issue 13's target: >= 1 M
+// steps/s, so that a day of robot logs replays in seconds). The log is made in process, without a
+// tty: the Khepera emulator's firmware answers each command directly (FirmwareEmulator::handle),
+// the Buffon controller decides, and the records are what record() would write (every exchange,
+// the observation, the command, the odometry and the state hash).
+#include <antkit/devices/controllers.hpp>
+#include <antkit/devices/emulator.hpp>
+#include <antkit/devices/log.hpp>
+#include <antkit/devices/replay.hpp>
+#include <antkit/geometry/arena_spec.hpp>
+#include <benchmark/benchmark.h>
+#include <filesystem>
+#include <unistd.h>
+
+namespace {
+
+namespace devices = antkit::devices;
+
+// A Buffon visit of `steps` steps on an emulated Khepera, logged to `path`.
+void make_log(const std::string& path, std::int64_t steps) {
+  const auto robot = devices::RobotKind::Khepera;
+  devices::FirmwareEmulator emu(
+      robot, antkit::geometry::build_arena_spec("circle:d=100").arena.walls_fx());
+  const devices::Codec codec(robot);
+  const auto spec = devices::make_spec("buffon", 1, {{"visit", 1}}, "bench");
+  auto controller = devices::make_controller(spec);
+  devices::LogHeader header;
+  header.antkit_version = "bench";
+  header.robot = "khepera";
+  header.port = "(in process)";
+  header.baud = codec.robot().line.baud;
+  header.framing = codec.robot().line.framing();
+  header.controller = spec.name;
+  header.params = spec.params;
+  header.seed = spec.seed;
+  devices::LogWriter log(path, header);
+  const auto exchange = [&](const std::string& command, std::vector<devices::Exchange>& io) {
+    std::string line = command;
+    while (!line.empty() && (line.back() == '\r' || line.back() == '\n')) line.pop_back();
+    io.push_back({command, emu.handle(line).bytes});
+    return io.back().received;
+  };
+  devices::LogRecord rec;
+  for (std::int64_t s = 0; s < steps; ++s) {
+    rec.io.clear();
+    const auto readings = *codec.decode_proximity(exchange(codec.read_proximity(), rec.io)).value;
+    controller->observe(codec.robot(), readings, rec.obs);
+    controller->step(codec.robot(), rec.obs, rec.cmd);
+    exchange(codec.set_speed(static_cast<std::int32_t>(rec.cmd[2]),
+                             static_cast<std::int32_t>(rec.cmd[3])),
+             rec.io);
+    const auto odo = *codec.decode_odometry(exchange(codec.read_odometry(), rec.io)).value;
+    rec.step = s;
+    rec.time_ns = s * 100000;
+    rec.odo.assign({odo.left, odo.right});
+    rec.state = controller->state_hash();
+    log.write(rec);
+  }
+  log.finish({steps, "done", {}});
+}
+
+const std::string& buffon_log() {
+  static const std::string path = [] {
+    const auto p = (std::filesystem::temp_directory_path() /
+                    ("antkit-bench-replay-" + std::to_string(::getpid()) + ".jsonl"))
+                       .string();
+    make_log(p, 200000);
+    return p;
+  }();
+  return path;
+}
+
+// items = replayed steps (read, re-decoded, stepped and checked).
+void BM_ReplayBuffonLog(benchmark::State& state) {
+  const auto& path = buffon_log();
+  std::int64_t steps = 0;
+  for (auto _ : state) {
+    const auto r = devices::replay(path);
+    if (!r.identical) state.SkipWithError("the benchmark's own log does not replay");
+    steps += r.steps;
+  }
+  state.SetItemsProcessed(steps);
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
+                          static_cast<std::int64_t>(std::filesystem::file_size(path)));
+}
+BENCHMARK(BM_ReplayBuffonLog)->Unit(benchmark::kMillisecond);
+
+} // namespace

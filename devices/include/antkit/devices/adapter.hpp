@@ -1,0 +1,66 @@
+#pragma once
+// Adapters: the bodies that carry a controller's commands out on a real robot (or an emulator)
+// over a serial link, and record(), which runs one and writes its log (DESIGN.md: a log recorded on
+// a robot replays through the same controller and must reproduce every command it recorded).
+//
+// One control step, for every robot:
+//   1. read the proximity sensors (`N`) and decode them; the controller's observation comes from
+//      that reply (LoggedController::observe);
+//   2. step the controller;
+//   3. carry the command out:
+//        buffon / rs: set the wheel speeds (`D,l,r`) to the command's wheel values;
+//        wander:      a 45-degree turn or a step of one cell (half a body diameter, a choice):
+//                     the wheels at half speed (turning: opposite), then one sensor read per
+//                     control period until the wheel travel reaches the target (robots with
+//                     encoders: closed loop on the counters; the Hemisson: the nominal number of
+//                     periods), then the wheels to zero; Wait does nothing;
+//   4. read the odometry: the wheel counters (Khepera `H`, e-puck `Q`; reset to 0 with `G`/`P`
+//      before the first step); the Hemisson has no encoders, so its odometry is the commanded
+//      wheel travel of every control period (a sensor read) at the speeds in force, in
+//      micrometres, by the simulator's motion model (odometry.hpp, step_travel2).
+// Then the step's record (every exchange of the step, the observation, the command, the odometry
+// and the controller's state hash) is written and flushed before the next step starts.
+//
+// Every way out stops the robot safely (RobotLink::safe_stop: wheels to zero, LEDs off) and ends
+// the log with its stop record, which also holds the exchanges of an unfinished step: the run's
+// steps, a stop signal (SIGINT / SIGTERM), a link failure (resends exhausted, the watchdog, a
+// disconnect), or any other error. No record is lost.
+#include <antkit/devices/controllers.hpp>
+#include <antkit/devices/link.hpp>
+#include <antkit/devices/robot.hpp>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace antkit::devices {
+
+struct RecordOptions {
+  RobotKind robot = RobotKind::Khepera;
+  std::string port;
+  LineSettings line; // usually describe(robot).line
+  ControllerSpec controller;
+  std::int64_t steps = 1000;
+  std::string out; // the log
+  LinkOptions link;
+  std::chrono::milliseconds period{0}; // shortest control period (0: as fast as the link allows)
+  std::uint32_t sync_every = 0;        // fdatasync the log every N records (0: only at the end)
+};
+
+struct RecordSummary {
+  std::int64_t steps = 0; // completed steps (records written)
+  LinkStats link;
+  std::string stop;       // "done", "interrupted by SIGINT", "link: ...", "error: ..."
+  bool completed = false; // all the requested steps ran
+  std::string safe_stop;  // "" when the safe stop was acknowledged, else what failed
+  std::uint64_t hash = 0; // RunHash of the run (replay() recomputes it)
+};
+
+using RecordProgress = std::function<void(std::int64_t step, std::int64_t steps)>;
+
+// Opens the port first (a bad --port is bad input and leaves no log), then writes the log as it
+// runs. Installs the SIGINT / SIGTERM handlers for its duration (StopSignals::Scope). Throws
+// kernel::InputError for bad options; every failure of the run itself ends in the summary.
+RecordSummary record(const RecordOptions& options, const RecordProgress& progress = {});
+
+} // namespace antkit::devices

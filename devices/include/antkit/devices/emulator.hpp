@@ -1,0 +1,135 @@
+#pragma once
+// Firmware emulators: a Khepera, a Hemisson or an e-puck answering its own serial protocol on a
+// pseudo-terminal, its body simulated in the Buffon world (algorithms/buffon/world.hpp), so that
+// the real adapter code (link.hpp, adapter.hpp) runs end to end over a real tty.
+//
+// The body, at the robot's own scale: the arena's unit of length is the robot's diameter (as in
+// paper 000, where the Khepera's diameter is the unit and Figure 13 scales the arenas with the
+// Hemisson's). Each proximity sensor sits on the body's edge at the robot's own angle
+// (RobotDescription::proximity_angle_deg) and reads the Buffon world's linear model along its ray
+// (World::ray_reading) over the robot's own range (sensor_range_um / diameter_um body units, at
+// most the simulator's 0.75), converted to the robot's raw scale by reading_to_raw. Ground sensors
+// read a constant floor (kFloorReading: the emulated floor carries no trail). Wheels: the
+// simulator's differential drive (World::move) at m = from_wheel_command(v) for wheel command v.
+//
+// Time: the emulator is lock-stepped, not clocked. Each proximity read (`N`) is one control period:
+// the body first moves one simulation step at the wheel speeds in force, then senses. Every other
+// command takes no time (setting speeds, reading counters, LEDs). So a run does not depend on how
+// fast the host is, and the adapter's loop -- read sensors, decide, set speeds, read odometry -- is
+// the simulator's step. A resent `N` is a second period (on a real robot a resend costs time too).
+//
+// Odometry: the wheel counters (Khepera H/G, e-puck Q/P) count what the wheels really turned, in
+// the robot's pulses (RobotDescription::odometry_pulse_nm) from the exact running total, so there
+// is no drift: for a step that moved by `fwd` and turned by `turn` radians, each wheel travels fwd
+// * diameter -/+ turn * wheel_base / 2 (a blocked step turns on the spot: fwd = 0). The wheels do
+// not slip. The counters are the dead reckoning's input (odometry.hpp), which recovers the body's
+// trail from them.
+//
+// Sessions: a client's session lasts from its first command until it closes the tty. Each session
+// starts afresh -- the body at the arena's start pose (from --seed), wheels stopped, counters at
+// zero, the fault stream from its start -- as paper 000 puts the robot back at its start for each
+// visit; so `antkit record` run twice against one emulator records two visits from the same pose.
+// (The reset happens at the new session's first command, so the last session's state stays
+// readable after its client has gone.)
+//
+// Faults (FaultSpec), each decided per command from the emulator's keyed streams, so a faulty run
+// is itself reproducible: a delay before the reply, garbage bytes before it, the reply dropped, the
+// reply cut in half (no terminator), and a disconnect (hang-up) after N commands.
+// `pace`: replies are paced at the robot's baud rate (10 or 11 bit times a byte) plus a command
+// latency (kCommandLatency), as the real firmware would; by default it answers as fast as the pty
+// allows.
+#include <antkit/buffon/world.hpp>
+#include <antkit/devices/protocol.hpp>
+#include <antkit/devices/robot.hpp>
+#include <antkit/devices/serial.hpp>
+#include <antkit/kernel/random.hpp>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace antkit::devices {
+
+// The experiment number of the emulators' keyed streams (issue 13).
+inline constexpr std::uint64_t kEmulatorExperiment = 13;
+inline constexpr std::int32_t kFloorReading = 200; // ground sensors over the bare floor (a choice)
+inline constexpr std::chrono::milliseconds kCommandLatency{2};
+
+struct FaultSpec {
+  std::uint32_t delay_ppm = 0; // per command, in millionths
+  std::chrono::milliseconds delay{0};
+  std::uint32_t garbage_ppm = 0;
+  std::uint32_t drop_ppm = 0;
+  std::uint32_t cut_ppm = 0;
+  std::int64_t disconnect_after = -1; // hang up after this many commands (-1: never)
+  friend bool operator==(const FaultSpec&, const FaultSpec&) = default;
+};
+
+// Parses --fault values: `delay=P:MS`, `garbage=P`, `drop=P`, `cut=P` (P a probability in [0, 1]
+// with up to six decimals), `disconnect=N` (N >= 0 commands). Several may be given. Throws
+// kernel::InputError("--fault", ...).
+FaultSpec parse_faults(const std::vector<std::string>& specs);
+
+struct EmulatorOptions {
+  std::uint64_t seed = 1;
+  FaultSpec faults;
+  bool pace = false;
+};
+
+class FirmwareEmulator {
+public:
+  // `walls` in body diameters (geometry::arena_walls of an arena spec or WKT). Throws
+  // kernel::InputError for an arena the Buffon world refuses or with no clear start.
+  FirmwareEmulator(RobotKind robot, std::vector<kernel::FxSegment> walls,
+                   EmulatorOptions options = {});
+
+  // What the firmware does with one received command line (terminator stripped).
+  struct Response {
+    std::string bytes;                  // to write (empty: nothing)
+    std::chrono::milliseconds delay{0}; // before writing
+    bool hang_up = false;               // then hang up the line
+  };
+  Response handle(std::string_view line);
+  // Starts a new session (see above): what serve() does at a new client's first command.
+  void reset();
+
+  // Serves `pty`, session after session, until a stop is requested (`stop` set, or a stop signal:
+  // StopSignals) or a disconnect fault hangs up. Returns the number of commands served.
+  // With stop_on_signal false the stop signals are left to the rest of the process (an emulator
+  // serving from a thread of a program that records through it, as the tests do).
+  std::uint64_t serve(Pty& pty, const std::atomic<bool>* stop = nullptr,
+                      bool stop_on_signal = true);
+
+  [[nodiscard]] const RobotDescription& robot() const noexcept { return codec_.robot(); }
+  [[nodiscard]] const buffon::Pose& pose() const noexcept { return pose_; }
+  [[nodiscard]] const buffon::World& world() const noexcept { return world_; }
+  // The body's centre at every control period so far (the start first): the truth that dead
+  // reckoning from the logged odometry should recover.
+  [[nodiscard]] const std::vector<kernel::FxPoint>& trail() const noexcept { return trail_; }
+  [[nodiscard]] std::uint64_t commands() const noexcept { return commands_; } // all sessions
+  [[nodiscard]] std::uint64_t sessions() const noexcept { return sessions_; } // served
+  [[nodiscard]] std::uint64_t faults() const noexcept { return faults_; }
+  [[nodiscard]] std::int32_t counter(int wheel) const noexcept;
+
+private:
+  std::string answer(const Fields& cmd);
+  void advance();
+  void sense(std::array<std::int32_t, 8>& raw) const;
+
+  Codec codec_;
+  buffon::World world_;
+  EmulatorOptions options_;
+  buffon::Pose start_, pose_;
+  kernel::Fx range_;
+  std::int32_t speed_left_ = 0, speed_right_ = 0;
+  // Twice the wheels' travel in (raw Q15.16 body units) x micrometres, exact.
+  __extension__ __int128 travel2_[2] = {0, 0};
+  std::int32_t offset_[2] = {0, 0}; // counter = pulses + offset (set by G / P)
+  std::vector<kernel::FxPoint> trail_;
+  kernel::Stream fault_stream_;
+  std::uint64_t commands_ = 0, faults_ = 0, sessions_ = 0;
+  std::uint64_t session_commands_ = 0; // for disconnect=N
+};
+
+} // namespace antkit::devices

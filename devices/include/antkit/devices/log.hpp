@@ -1,0 +1,113 @@
+#pragma once
+// Hardware logs: JSON Lines (DESIGN.md, Files and formats). Line 1 is the header, then one record
+// per control step, then a stop record that says how the run ended:
+//   {"schema":1,"antkit":"0.1.0","robot":"khepera","port":{"path":"/dev/pts/3","baud":9600,
+//    "framing":"8N2"},"controller":{"name":"buffon","params":{"trial":0,"visit":1}},"seed":1}
+//   {"step":0,"t_ns":1234,"io":[["N\r","n,0,0,0,0,0,0,0,0\r\n"],["D,3,4\r","d\r\n"]],
+//    "obs":[0,0],"cmd":[1,-2],"odo":[10,20],"state":"0123456789abcdef"}
+//   {"stop":"done","step":1000,"io":[["D,0,0\r","d\r\n"]]}
+// The writer emits exactly this form (keys in this order, no spaces). Bytes on the wire are JSON
+// strings with one character per byte: printable ASCII as itself but '"' and '\' (escaped), \r \n
+// \t, every other byte \u00XX; a log is pure ASCII. The reader takes any JSON of these shapes (keys
+// in any order, whitespace between tokens, every string escape up to \u00FF) and refuses anything
+// else with its line and column: unknown, missing or repeated keys, fractions, exponents, integers
+// out of range, a state that is not 16 hex digits, steps that do not count up by one, a line after
+// the stop record. A last line without its newline that does not parse is a cut (a crash or a power
+// cut while writing): truncated() says so and every record before it was read.
+//
+// Logs are the one output written in place rather than through a temporary file and a rename:
+// each record is written and flushed before the next step starts, so that whatever stops the run,
+// every step before it is on disk.
+#include <antkit/devices/log_schema.hpp>
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace antkit::devices {
+
+struct Exchange {
+  std::string sent;
+  std::string received;
+  friend bool operator==(const Exchange&, const Exchange&) = default;
+};
+
+struct LogHeader {
+  std::uint32_t schema = kLogSchemaVersion;
+  std::string antkit_version;
+  std::string robot;
+  std::string port;
+  std::uint32_t baud = 0;
+  std::string framing;
+  std::string controller;
+  std::vector<std::pair<std::string, std::int64_t>> params;
+  std::uint64_t seed = 0;
+  friend bool operator==(const LogHeader&, const LogHeader&) = default;
+};
+
+struct LogRecord {
+  std::int64_t step = 0;
+  std::int64_t time_ns = 0;
+  std::vector<Exchange> io;
+  std::vector<std::int64_t> obs;
+  std::vector<std::int64_t> cmd;
+  std::vector<std::int64_t> odo;
+  std::uint64_t state = 0;
+  friend bool operator==(const LogRecord&, const LogRecord&) = default;
+};
+
+struct LogStop {
+  std::int64_t step = 0;
+  std::string reason;
+  std::vector<Exchange> io;
+  friend bool operator==(const LogStop&, const LogStop&) = default;
+};
+
+std::string format_header(const LogHeader& h);
+std::string format_record(const LogRecord& r);
+std::string format_stop(const LogStop& s);
+
+class LogWriter {
+public:
+  // Throws kernel::InputError(path, ...) when the file cannot be created.
+  LogWriter(const std::string& path, const LogHeader& header, std::uint32_t sync_every = 0);
+  LogWriter(const LogWriter&) = delete;
+  LogWriter& operator=(const LogWriter&) = delete;
+  ~LogWriter();
+  void write(const LogRecord& r);
+  void finish(const LogStop& s);
+  [[nodiscard]] std::uint64_t records() const noexcept { return records_; }
+
+private:
+  void put(const std::string& line);
+  std::string path_;
+  std::FILE* file_ = nullptr;
+  std::uint32_t sync_every_;
+  std::uint64_t records_ = 0;
+};
+
+class LogReader {
+public:
+  explicit LogReader(const std::string& path);
+  LogReader(std::string name, std::string contents);
+  [[nodiscard]] const LogHeader& header() const noexcept { return header_; }
+  bool next(LogRecord& out);
+  [[nodiscard]] bool truncated() const noexcept { return truncated_; }
+  [[nodiscard]] const std::optional<LogStop>& stop() const noexcept { return stop_; }
+  [[nodiscard]] std::size_t line() const noexcept { return line_; }
+
+private:
+  void read_header();
+  std::string name_;
+  std::string data_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 0;
+  LogHeader header_;
+  std::optional<LogStop> stop_;
+  bool truncated_ = false;
+  std::int64_t next_step_ = 0;
+};
+
+} // namespace antkit::devices

@@ -1,0 +1,93 @@
+#pragma once
+// The robots' ASCII serial protocols (PROTOCOLS.md, "Common to all three"): a command is an
+// upper-case letter and comma-separated decimal integers, ended by the robot's terminator; the
+// reply is the letter in lower case, its values after commas, and CR LF. The codec encodes
+// commands, validates replies completely (the echoed letter, CR LF and nothing after it, arity,
+// ranges, decimal syntax), and on the firmware side parses commands and encodes replies for the
+// emulators. Decoders never throw and do not allocate on success.
+//
+// Per-robot choices and their sources (see also robot.cpp):
+//  * Replies: values are plain decimals with an optional '-'; leading zeros are accepted because
+//    HemiOS pads (RoadNarrows' HemiSerial expects an N reply of at least 33 characters: eight
+//    3-digit fields), and our Hemisson emulator pads the same way. '+', spaces and empty fields
+//    are refused.
+//  * e-puck N and O replies carry 8 values, or 10 on lab firmwares that append two (GCtronic's
+//    advanced sercom page): both are accepted, the first eight used. Calibrated e-puck proximity
+//    can dip below 0 by a little: values down to -proximity_max are accepted; normalisation
+//    clamps them to 0.
+//  * B (Khepera, Hemisson) and V (e-puck) reply with free text after the letter's comma.
+//  * Unknown commands: the Khepera and Hemisson firmwares answer "z,Protocol error" and asercom
+//    "z,Command not found" (a choice following the shape of the sources' error replies; no driver
+//    relies on the text).
+//  * Firmware leniency: asercom accepts lower-case command letters (PROTOCOLS.md); the Khepera
+//    and Hemisson emulators accept only upper case, as their manuals print them.
+#include <antkit/devices/robot.hpp>
+#include <antkit/kernel/fixed.hpp>
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace antkit::devices {
+
+struct Fields {
+  char letter = 0;
+  std::array<std::int32_t, 12> values{};
+  std::uint8_t count = 0;
+};
+
+struct DecodeError {
+  std::size_t column = 0;
+  std::string message;
+};
+template <class T>
+struct Decoded {
+  std::optional<T> value;
+  DecodeError error;
+  explicit operator bool() const noexcept { return value.has_value(); }
+};
+
+struct Proximity {
+  std::array<std::int32_t, 8> raw{};
+};
+struct WheelPair {
+  std::int32_t left = 0, right = 0;
+};
+
+class Codec {
+public:
+  explicit Codec(RobotKind robot);
+  [[nodiscard]] const RobotDescription& robot() const noexcept { return *robot_; }
+
+  std::string set_speed(std::int32_t left, std::int32_t right) const;
+  std::string read_speed() const;
+  std::string read_proximity() const;
+  std::string read_odometry() const;
+  std::string set_odometry(std::int32_t left, std::int32_t right) const;
+  std::string set_led(std::int32_t led, std::int32_t action) const;
+  std::string version() const;
+  std::vector<std::string> safe_stop() const;
+
+  Decoded<bool> decode_ack(std::string_view line, char command_letter) const;
+  Decoded<Proximity> decode_proximity(std::string_view line) const;
+  Decoded<WheelPair> decode_odometry(std::string_view line) const;
+  Decoded<WheelPair> decode_speed(std::string_view line) const;
+  Decoded<Fields> decode_reply(std::string_view sent_command, std::string_view line) const;
+
+  Decoded<Fields> parse_command(std::string_view line) const;
+  std::string reply(char command_letter, std::span<const std::int32_t> values = {}) const;
+  std::string unknown_command_reply(std::string_view line) const;
+
+private:
+  const RobotDescription* robot_;
+};
+
+kernel::Fx normalise_reading(const RobotDescription& robot, std::int32_t raw);
+std::int32_t reading_to_raw(const RobotDescription& robot, kernel::Fx reading);
+std::int32_t to_wheel_command(const RobotDescription& robot, kernel::Fx m);
+kernel::Fx from_wheel_command(const RobotDescription& robot, std::int32_t v);
+
+} // namespace antkit::devices

@@ -1,0 +1,41 @@
+#pragma once
+// The three robots of paper 000's family as antkit drives them: line settings, command ranges,
+// sensor layout and scales, body. Facts from ../shared/devices/PROTOCOLS.md and its sources (cited
+// per robot in robot.cpp); where a source is silent, the choice is named there.
+#include <antkit/devices/line_settings.hpp>
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace antkit::devices {
+
+enum class RobotKind : std::uint8_t { Khepera, Hemisson, Epuck };
+std::optional<RobotKind> parse_robot(std::string_view name);
+std::string_view robot_name(RobotKind robot);
+
+struct RobotDescription {
+  RobotKind kind;
+  std::string_view name;
+  LineSettings line;
+  std::string_view terminator;       // sent after each command
+  std::int32_t speed_min, speed_max; // D's accepted range
+  std::int32_t speed_full;           // the wheel command for the behaviour's unit speed 1.0
+  std::int32_t speed_unit_um_s;      // micrometres per second per speed unit
+  std::size_t proximity_count;       // readings in an N reply used by controllers
+  std::int32_t proximity_min;        // smallest reading a reply may carry
+  std::int32_t proximity_max;        // largest
+  std::int32_t proximity_scale;      // the reading normalised to 1.0
+  std::int32_t sensor_range_um;      // the emulator's linear model reaches 0 here
+  std::array<std::int16_t, 8> proximity_angle_deg; // per reading, CCW from the heading
+  std::array<bool, 8> ground;                      // downward-looking sensors
+  std::array<std::uint8_t, 6>
+      front_six; // readings for the Buffon behaviour's I_0 (+90) .. I_5 (-90)
+  std::int32_t diameter_um, wheel_base_um;
+  bool has_odometry;
+  char odometry_read, odometry_set;
+  std::int64_t odometry_pulse_nm;
+};
+const RobotDescription& describe(RobotKind robot);
+
+} // namespace antkit::devices

@@ -1,0 +1,191 @@
+// The robot bodies under the controller contract, and record() (adapter.hpp).
+#include <antkit/buffon/world.hpp>
+#include <antkit/devices/adapter.hpp>
+#include <antkit/devices/log.hpp>
+#include <antkit/devices/odometry.hpp>
+#include <antkit/devices/stop_signals.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <antkit/uniform/controllers.hpp>
+#include <csignal>
+#include <thread>
+
+namespace antkit::devices {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using kernel::Fx;
+__extension__ using i128 = __int128;
+
+// pi / 4 as Q15.16, for the wanderer's 45-degree turn.
+constexpr Fx kQuarterPi = Fx::from_raw(51472);
+
+class Body {
+public:
+  explicit Body(RobotLink& link) : link_(link), robot_(link.codec().robot()) {}
+
+  // Before the first step: the wheel counters to zero (robots with encoders).
+  void start(std::vector<Exchange>& io) {
+    if (robot_.has_odometry) link_.transact(link_.codec().set_odometry(0, 0), io);
+  }
+  Proximity read_sensors(std::vector<Exchange>& io) {
+    const std::size_t before = io.size();
+    const std::string reply = link_.transact(link_.codec().read_proximity(), io);
+    // Every proximity read sent is a control period in which the wheels turned at the speeds in
+    // force (the emulator's clock; a real robot's too, roughly): the Hemisson's odometry counts it.
+    for (std::size_t k = before; k < io.size(); ++k) period_elapsed();
+    return *link_.codec().decode_proximity(reply).value;
+  }
+  void set_wheels(std::int32_t left, std::int32_t right, std::vector<Exchange>& io) {
+    link_.transact(link_.codec().set_speed(left, right), io);
+    left_ = left;
+    right_ = right;
+  }
+  // Odometry after the step: the counters, or the Hemisson's commanded travel in micrometres.
+  WheelTravel odometry(std::vector<Exchange>& io) {
+    if (!robot_.has_odometry)
+      return {static_cast<std::int64_t>(travel2_.left / (2 * 65536)),
+              static_cast<std::int64_t>(travel2_.right / (2 * 65536))};
+    const std::string reply = link_.transact(link_.codec().read_odometry(), io);
+    const WheelPair w = *link_.codec().decode_odometry(reply).value;
+    return {w.left, w.right};
+  }
+  [[nodiscard]] const RobotDescription& robot() const noexcept { return robot_; }
+
+private:
+  void period_elapsed() {
+    const Travel2 t = step_travel2(robot_, buffon::kDefaultSpeed, from_wheel_command(robot_, left_),
+                                   from_wheel_command(robot_, right_), true);
+    travel2_.left += t.left;
+    travel2_.right += t.right;
+  }
+
+  RobotLink& link_;
+  const RobotDescription& robot_;
+  std::int32_t left_ = 0, right_ = 0;
+  Travel2 travel2_;
+};
+
+// The wanderer's moves: wheels at half speed (turns: opposite) until the wheels have travelled
+// the target (micrometres per wheel), one sensor read per control period.
+void wander_move(Body& body, uniform::Action action, std::vector<Exchange>& io) {
+  const auto& robot = body.robot();
+  const std::int32_t s = std::max<std::int32_t>(1, robot.speed_full / 2);
+  std::int32_t left = s, right = s;
+  // Targets: one cell = half a body diameter; 45 degrees = pi/4 * wheel_base / 2 per wheel.
+  std::int64_t target_um = robot.diameter_um / 2;
+  if (action == uniform::Action::TurnLeft || action == uniform::Action::TurnRight) {
+    target_um =
+        (Fx::from_raw(static_cast<std::int32_t>(robot.wheel_base_um / 2)) * kQuarterPi).raw();
+    left = action == uniform::Action::TurnLeft ? -s : s;
+    right = -left;
+  }
+  // Nominal periods (for a robot without encoders, and a bound for those with them): the travel
+  // of one period at speed s by the motion model.
+  const Travel2 one = step_travel2(robot, buffon::kDefaultSpeed, from_wheel_command(robot, left),
+                                   from_wheel_command(robot, right), true);
+  const i128 per_period = (one.right < 0 ? -one.right : one.right) / (2 * 65536);
+  const std::int64_t periods =
+      per_period > 0 ? static_cast<std::int64_t>((target_um + per_period - 1) / per_period) : 1;
+  WheelTravel start{};
+  if (robot.has_odometry) start = body.odometry(io);
+  body.set_wheels(left, right, io);
+  for (std::int64_t k = 0; k < 2 * periods; ++k) {
+    body.read_sensors(io);
+    if (!robot.has_odometry) {
+      if (k + 1 >= periods) break;
+      continue;
+    }
+    const WheelTravel now = body.odometry(io);
+    const std::int64_t travelled_units = std::abs(now.right - start.right);
+    if (i128{travelled_units} * robot.odometry_pulse_nm >= i128{target_um} * 1000) break;
+  }
+  body.set_wheels(0, 0, io);
+}
+
+std::string signal_name(int sig) {
+  return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "signal " + std::to_string(sig);
+}
+
+} // namespace
+
+RecordSummary record(const RecordOptions& options, const RecordProgress& progress) {
+  if (options.steps < 0 || options.steps > 1000000000)
+    throw kernel::InputError("--steps", "expected a whole number in [0, 1000000000]");
+  auto controller = make_controller(options.controller);
+  // The port first: a bad --port is bad input and must leave no log behind.
+  SerialPort port = SerialPort::open(options.port, options.line);
+  StopSignals::Scope signals;
+  RobotLink link(std::move(port), options.robot, options.link);
+  Body body(link);
+
+  LogHeader header;
+  header.antkit_version = ANTKIT_DEVICES_VERSION;
+  header.robot = std::string(robot_name(options.robot));
+  header.port = options.port;
+  header.baud = options.line.baud;
+  header.framing = options.line.framing();
+  header.controller = options.controller.name;
+  header.params = options.controller.params;
+  header.seed = options.controller.seed;
+  LogWriter log(options.out, header, options.sync_every);
+
+  RecordSummary summary;
+  RunHash run;
+  LogRecord rec;
+  std::vector<Exchange> pending; // exchanges of the step under way
+  const auto t0 = Clock::now();
+  const bool wander = options.controller.name == "wander";
+  try {
+    body.start(pending);
+    for (std::int64_t step = 0; step < options.steps; ++step) {
+      if (StopSignals::requested()) throw LinkError(LinkError::Kind::Interrupted, "stop signal");
+      const auto step_start = Clock::now();
+      const Proximity readings = body.read_sensors(pending);
+      controller->observe(body.robot(), readings, rec.obs);
+      controller->step(body.robot(), rec.obs, rec.cmd);
+      if (wander) {
+        const auto action = static_cast<uniform::Action>(rec.cmd[0]);
+        if (action != uniform::Action::Wait && action != uniform::Action::Stop)
+          wander_move(body, action, pending);
+      } else {
+        body.set_wheels(static_cast<std::int32_t>(rec.cmd[2]),
+                        static_cast<std::int32_t>(rec.cmd[3]), pending);
+      }
+      const WheelTravel odo = body.odometry(pending);
+      rec.step = step;
+      rec.time_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count();
+      rec.io.swap(pending);
+      pending.clear();
+      rec.odo.assign({odo.left, odo.right});
+      rec.state = controller->state_hash();
+      log.write(rec);
+      run.add(rec.step, rec.obs, rec.cmd, rec.state);
+      summary.steps = step + 1;
+      if (progress) progress(summary.steps, options.steps);
+      if (options.period.count() > 0) std::this_thread::sleep_until(step_start + options.period);
+    }
+    summary.completed = true;
+    summary.stop = "done";
+  } catch (const LinkError& e) {
+    summary.stop = e.kind() == LinkError::Kind::Interrupted
+                       ? "interrupted by " + signal_name(StopSignals::signal())
+                       : "link: " + std::string(link_error_name(e.kind())) + ": " + e.what();
+  } catch (const kernel::InputError& e) {
+    summary.stop = std::string("error: ") + e.what();
+  } catch (const std::exception& e) {
+    summary.stop = std::string("error: ") + e.what();
+  }
+  // The safe stop: a pending stop signal would interrupt it, so it is taken first (the stop
+  // reason already says it came).
+  StopSignals::reset();
+  summary.safe_stop = link.safe_stop(pending);
+  LogStop stop{summary.steps, summary.stop, std::move(pending)};
+  if (!summary.safe_stop.empty()) stop.reason += "; safe stop: " + summary.safe_stop;
+  log.finish(stop);
+  summary.link = link.stats();
+  summary.hash = run.value();
+  return summary;
+}
+
+} // namespace antkit::devices

@@ -1,0 +1,326 @@
+// Firmware emulators on a pseudo-terminal (emulator.hpp).
+#include <algorithm>
+#include <antkit/devices/emulator.hpp>
+#include <antkit/devices/odometry.hpp>
+#include <antkit/devices/stop_signals.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <cctype>
+#include <thread>
+
+namespace antkit::devices {
+
+namespace {
+
+using kernel::Fx;
+using kernel::InputError;
+
+// The emulator's streams: purpose 1 the start heading (as World::start_pose takes it), 2 the
+// faults.
+enum : std::uint64_t { kStartPurpose = 1, kFaultPurpose = 2 };
+constexpr std::uint32_t kMillion = 1000000;
+
+// "0.05" -> 50000 ppm: a probability with up to six decimals, in [0, 1].
+std::uint32_t parse_probability(std::string_view text, const std::string& spec) {
+  const auto bad = [&] {
+    return InputError("--fault", "'" + spec +
+                                     "': the probability must be a decimal in [0, 1] with at "
+                                     "most six decimals, e.g. 0.05");
+  };
+  std::uint64_t whole = 0, frac = 0;
+  std::size_t i = 0, digits = 0;
+  while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])) && i < 2)
+    whole = whole * 10 + static_cast<std::uint64_t>(text[i++] - '0');
+  if (i == 0) throw bad();
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])) && digits < 6) {
+      frac = frac * 10 + static_cast<std::uint64_t>(text[i++] - '0');
+      ++digits;
+    }
+    if (digits == 0) throw bad();
+  }
+  if (i != text.size()) throw bad();
+  while (digits++ < 6) frac *= 10;
+  const std::uint64_t ppm = whole * kMillion + frac;
+  if (ppm > kMillion) throw bad();
+  return static_cast<std::uint32_t>(ppm);
+}
+
+std::int64_t parse_count(std::string_view text, const std::string& spec, std::int64_t hi) {
+  std::int64_t v = 0;
+  if (text.empty() || text.size() > 10) v = -1;
+  for (const char c : text) {
+    if (v < 0 || !std::isdigit(static_cast<unsigned char>(c))) {
+      v = -1;
+      break;
+    }
+    v = v * 10 + (c - '0');
+  }
+  if (v < 0 || v > hi)
+    throw InputError("--fault",
+                     "'" + spec + "': expected a whole number in [0, " + std::to_string(hi) + "]");
+  return v;
+}
+
+__extension__ using i128 = __int128;
+
+std::int32_t floor_div(i128 a, i128 b) {
+  auto q = a / b;
+  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(static_cast<std::uint64_t>(q)));
+}
+
+std::string version_reply(RobotKind robot) {
+  // Shapes as the manuals print them (PROTOCOLS.md): Khepera "b,5.02,5.01"; HemiOS "b,<version>";
+  // e-puck "v,<version text>". The texts name the emulator so nobody mistakes it for a robot.
+  switch (robot) {
+  case RobotKind::Khepera:
+    return "b,5.02,5.01\r\n";
+  case RobotKind::Hemisson:
+    return "b,HemiOS_v1.50 antkit emulator\r\n";
+  case RobotKind::Epuck:
+    return "v,Version 1.2.2 antkit emulator\r\n";
+  }
+  return {};
+}
+
+} // namespace
+
+FaultSpec parse_faults(const std::vector<std::string>& specs) {
+  FaultSpec f;
+  for (const auto& spec : specs) {
+    const auto eq = spec.find('=');
+    if (eq == std::string::npos)
+      throw InputError("--fault", "'" + spec +
+                                      "': expected delay=P:MS, garbage=P, drop=P, cut=P or "
+                                      "disconnect=N");
+    const std::string kind = spec.substr(0, eq);
+    const std::string_view value = std::string_view(spec).substr(eq + 1);
+    if (kind == "delay") {
+      const auto colon = value.find(':');
+      if (colon == std::string_view::npos)
+        throw InputError("--fault", "'" + spec + "': expected delay=P:MS (e.g. delay=0.1:50)");
+      f.delay_ppm = parse_probability(value.substr(0, colon), spec);
+      f.delay = std::chrono::milliseconds(parse_count(value.substr(colon + 1), spec, 60000));
+    } else if (kind == "garbage") {
+      f.garbage_ppm = parse_probability(value, spec);
+    } else if (kind == "drop") {
+      f.drop_ppm = parse_probability(value, spec);
+    } else if (kind == "cut") {
+      f.cut_ppm = parse_probability(value, spec);
+    } else if (kind == "disconnect") {
+      f.disconnect_after = parse_count(value, spec, 1000000000);
+    } else {
+      throw InputError("--fault", "unknown fault '" + kind +
+                                      "': expected delay, garbage, drop, cut or disconnect");
+    }
+  }
+  return f;
+}
+
+FirmwareEmulator::FirmwareEmulator(RobotKind robot, std::vector<kernel::FxSegment> walls,
+                                   EmulatorOptions options)
+    : codec_(robot), world_(std::move(walls)), options_(options),
+      fault_stream_(options.seed, kEmulatorExperiment, 0, 0, kFaultPurpose) {
+  kernel::Stream start(options_.seed, kEmulatorExperiment, 0, 0, kStartPurpose);
+  start_ = world_.start_pose(start);
+  const auto& d = codec_.robot();
+  range_ = std::min(buffon::kSensorRange, Fx::from_ratio(d.sensor_range_um, d.diameter_um));
+  reset();
+}
+
+void FirmwareEmulator::reset() {
+  pose_ = start_;
+  speed_left_ = speed_right_ = 0;
+  travel2_[0] = travel2_[1] = 0;
+  offset_[0] = offset_[1] = 0;
+  trail_.assign(1, pose_.position);
+  fault_stream_ = kernel::Stream(options_.seed, kEmulatorExperiment, 0, 0, kFaultPurpose);
+  session_commands_ = 0;
+}
+
+std::int32_t FirmwareEmulator::counter(int wheel) const noexcept {
+  const auto& d = codec_.robot();
+  if (!d.has_odometry) return 0;
+  // pulses = travel / pulse = (travel2 / 2) [raw um] * 1000 / (65536 * pulse_nm)
+  const auto pulses = floor_div(travel2_[wheel] * 1000, i128{2} * 65536 * d.odometry_pulse_nm);
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(pulses) +
+                                   static_cast<std::uint32_t>(offset_[wheel]));
+}
+
+void FirmwareEmulator::advance() {
+  const auto& d = codec_.robot();
+  const buffon::Command cmd{from_wheel_command(d, speed_left_),
+                            from_wheel_command(d, speed_right_)};
+  const bool moved = world_.move(pose_, cmd); // false: blocked, turned on the spot
+  const Travel2 t = step_travel2(d, world_.body().speed, cmd.left, cmd.right, moved);
+  travel2_[0] += t.left;
+  travel2_[1] += t.right;
+  trail_.push_back(pose_.position);
+}
+
+void FirmwareEmulator::sense(std::array<std::int32_t, 8>& raw) const {
+  const auto& d = codec_.robot();
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    if (d.ground[i]) {
+      raw[i] = kFloorReading;
+      continue;
+    }
+    const Fx reading =
+        world_.ray_reading(pose_, kernel::Angle::from_degrees(d.proximity_angle_deg[i]), range_);
+    raw[i] = reading_to_raw(d, reading);
+  }
+}
+
+std::string FirmwareEmulator::answer(const Fields& cmd) {
+  const auto& d = codec_.robot();
+  const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(cmd.letter)));
+  const auto args = [&](std::uint8_t n) { return cmd.count == n; };
+  const auto values = [&](std::initializer_list<std::int32_t> v) {
+    return codec_.reply(letter, std::span<const std::int32_t>(v.begin(), v.size()));
+  };
+  if (letter == 'D' && args(2)) {
+    if (cmd.values[0] < d.speed_min || cmd.values[0] > d.speed_max || cmd.values[1] < d.speed_min ||
+        cmd.values[1] > d.speed_max)
+      return {};
+    speed_left_ = cmd.values[0];
+    speed_right_ = cmd.values[1];
+    return codec_.reply('D');
+  }
+  if (letter == 'E' && args(0)) return values({speed_left_, speed_right_});
+  if (letter == 'N' && args(0)) {
+    advance();
+    std::array<std::int32_t, 8> raw{};
+    sense(raw);
+    return codec_.reply('N', raw);
+  }
+  if (letter == 'O' && args(0)) {
+    std::array<std::int32_t, 8> ambient{};
+    ambient.fill(d.proximity_max / 2); // an evenly lit room (a choice)
+    return codec_.reply('O', ambient);
+  }
+  if (d.has_odometry && letter == d.odometry_read && args(0))
+    return values({counter(0), counter(1)});
+  if (d.has_odometry && letter == d.odometry_set && args(2)) {
+    for (int w = 0; w < 2; ++w) {
+      offset_[w] = 0;
+      offset_[w] = static_cast<std::int32_t>(
+          static_cast<std::uint32_t>(cmd.values[static_cast<std::size_t>(w)]) -
+          static_cast<std::uint32_t>(counter(w)));
+    }
+    return codec_.reply(letter);
+  }
+  if (letter == 'L' && args(2)) return codec_.reply('L');
+  if ((letter == 'B' && d.kind != RobotKind::Epuck) ||
+      (letter == 'V' && d.kind == RobotKind::Epuck))
+    return version_reply(d.kind);
+  if (d.kind == RobotKind::Epuck && letter == 'S' && args(0)) {
+    speed_left_ = speed_right_ = 0;
+    return codec_.reply('S');
+  }
+  return {};
+}
+
+FirmwareEmulator::Response FirmwareEmulator::handle(std::string_view line) {
+  ++commands_;
+  ++session_commands_;
+  Response out;
+  // The fault draws come first and always four, so the stream stays aligned whatever is enabled.
+  const auto& f = options_.faults;
+  const bool delay = fault_stream_.below(kMillion) < f.delay_ppm;
+  const bool garbage = fault_stream_.below(kMillion) < f.garbage_ppm;
+  const bool drop = fault_stream_.below(kMillion) < f.drop_ppm;
+  const bool cut = fault_stream_.below(kMillion) < f.cut_ppm;
+  if (f.disconnect_after >= 0 &&
+      session_commands_ > static_cast<std::uint64_t>(f.disconnect_after)) {
+    ++faults_;
+    out.hang_up = true;
+    return out;
+  }
+  const auto parsed = codec_.parse_command(line);
+  std::string reply = parsed ? answer(*parsed.value) : std::string();
+  if (reply.empty()) reply = codec_.unknown_command_reply(line);
+  if (delay) {
+    ++faults_;
+    out.delay = f.delay;
+  }
+  if (drop) {
+    ++faults_;
+    reply.clear();
+  } else if (cut && reply.size() > 2) {
+    ++faults_;
+    reply.resize(std::max<std::size_t>(1, (reply.size() - 2) / 2));
+  } else if (garbage) {
+    ++faults_;
+    std::string junk(1 + fault_stream_.below(8), '\0');
+    for (auto& c : junk) {
+      // Any byte but CR and LF: junk that runs into the reply line and spoils it.
+      do c = static_cast<char>(fault_stream_.below(256));
+      while (c == '\r' || c == '\n');
+    }
+    reply = junk + reply;
+  }
+  if (options_.pace && !reply.empty()) {
+    const auto& line_settings = codec_.robot().line;
+    const std::uint64_t bits = 1u + line_settings.data_bits + line_settings.stop_bits +
+                               (line_settings.parity == Parity::None ? 0u : 1u);
+    out.delay += kCommandLatency + std::chrono::milliseconds(reply.size() * bits * 1000 /
+                                                             std::max(1u, line_settings.baud));
+  }
+  out.bytes = std::move(reply);
+  return out;
+}
+
+std::uint64_t FirmwareEmulator::serve(Pty& pty, const std::atomic<bool>* stop,
+                                      bool stop_on_signal) {
+  SerialPort& port = pty.master();
+  // Without a slave fd of its own the master sees EIO whenever no client has the tty open: that is
+  // how a session's end shows.
+  pty.close_slave_keeper();
+  std::string pending;
+  bool in_session = false;
+  const std::uint64_t first = commands_;
+  while (!(stop != nullptr && stop->load()) && !(stop_on_signal && StopSignals::requested())) {
+    ReadResult r;
+    try {
+      r = port.read_line(std::chrono::milliseconds(50), LineEnd::CrOrLf);
+    } catch (const LinkError& e) {
+      if (e.kind() == LinkError::Kind::Interrupted) {
+        if (stop_on_signal) break;
+        continue;
+      }
+      // No client on the line: the session (if any) is over; wait for the next client.
+      in_session = false;
+      pending.clear();
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      continue;
+    }
+    pending += r.bytes;
+    if (!r.complete) continue;
+    while (!pending.empty() && (pending.back() == '\r' || pending.back() == '\n'))
+      pending.pop_back();
+    if (pending.empty()) continue;
+    if (!in_session) {
+      if (commands_ > 0) reset(); // a new client: the robot back at its start
+      in_session = true;
+      ++sessions_;
+    }
+    const Response response = handle(pending);
+    pending.clear();
+    if (response.delay.count() > 0) std::this_thread::sleep_for(response.delay);
+    if (response.hang_up) {
+      pty.hang_up();
+      break;
+    }
+    if (!response.bytes.empty()) {
+      try {
+        port.write_all(response.bytes, std::chrono::milliseconds(1000));
+      } catch (const LinkError&) {
+        // The client is gone or not reading: a real robot would not notice either.
+      }
+    }
+  }
+  return commands_ - first;
+}
+
+} // namespace antkit::devices

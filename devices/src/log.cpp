@@ -1,0 +1,608 @@
+// Hardware logs: the JSON Lines writer and a strict, allocation-free (in the steady state) reader
+// (log.hpp).
+#include <antkit/devices/log.hpp>
+#include <antkit/kernel/hash.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <unistd.h>
+
+namespace antkit::devices {
+
+namespace {
+
+using kernel::InputError;
+
+// ---- writing ----
+
+void put_bytes(std::string& out, const std::string& bytes) {
+  constexpr char hex[] = "0123456789abcdef";
+  out += '"';
+  for (const char ch : bytes) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c >= 0x20 && c < 0x7F) {
+      out += ch;
+    } else {
+      out += "\\u00";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  out += '"';
+}
+
+void put_int(std::string& out, std::int64_t v) {
+  char buf[24];
+  const int n = std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(v));
+  out.append(buf, static_cast<std::size_t>(n));
+}
+
+void put_ints(std::string& out, const std::vector<std::int64_t>& v) {
+  out += '[';
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i) out += ',';
+    put_int(out, v[i]);
+  }
+  out += ']';
+}
+
+void put_io(std::string& out, const std::vector<Exchange>& io) {
+  out += '[';
+  for (std::size_t i = 0; i < io.size(); ++i) {
+    if (i) out += ',';
+    out += '[';
+    put_bytes(out, io[i].sent);
+    out += ',';
+    put_bytes(out, io[i].received);
+    out += ']';
+  }
+  out += ']';
+}
+
+// ---- reading ----
+
+enum Key : unsigned {
+  kStep = 1u << 0,
+  kTime = 1u << 1,
+  kIo = 1u << 2,
+  kObs = 1u << 3,
+  kCmd = 1u << 4,
+  kOdo = 1u << 5,
+  kState = 1u << 6,
+  kStop = 1u << 7,
+};
+
+class Cursor {
+public:
+  Cursor(const std::string& name, std::size_t line, const char* begin, const char* end)
+      : name_(name), line_(line), b_(begin), p_(begin), e_(end) {}
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(name_, line_, static_cast<std::size_t>(p_ - b_) + 1, what);
+  }
+  void ws() {
+    while (p_ < e_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r')) ++p_;
+  }
+  bool at(char c) {
+    ws();
+    return p_ < e_ && *p_ == c;
+  }
+  void expect(char c, const char* what) {
+    ws();
+    if (p_ >= e_ || *p_ != c) fail(std::string("expected ") + what);
+    ++p_;
+  }
+  [[nodiscard]] bool done() {
+    ws();
+    return p_ == e_;
+  }
+
+  // A JSON string into bytes (one byte per character, \u00XX at most).
+  void string(std::string& out) {
+    ws();
+    if (p_ >= e_ || *p_ != '"') fail("expected a string");
+    ++p_;
+    out.clear();
+    for (;;) {
+      if (p_ >= e_) fail("unterminated string");
+      const char c = *p_;
+      if (c == '"') {
+        ++p_;
+        return;
+      }
+      if (static_cast<unsigned char>(c) < 0x20) fail("a control byte inside a string (escape it)");
+      if (static_cast<unsigned char>(c) >= 0x80)
+        fail("a non-ASCII byte inside a string (escape it as \\u00XX)");
+      if (c != '\\') {
+        out += c;
+        ++p_;
+        continue;
+      }
+      if (++p_ >= e_) fail("unterminated escape");
+      switch (*p_) {
+      case '"':
+        out += '"';
+        break;
+      case '\\':
+        out += '\\';
+        break;
+      case '/':
+        out += '/';
+        break;
+      case 'b':
+        out += '\b';
+        break;
+      case 'f':
+        out += '\f';
+        break;
+      case 'n':
+        out += '\n';
+        break;
+      case 'r':
+        out += '\r';
+        break;
+      case 't':
+        out += '\t';
+        break;
+      case 'u': {
+        unsigned v = 0;
+        for (int k = 0; k < 4; ++k) {
+          if (++p_ >= e_) fail("a \\u escape needs four hex digits");
+          const char h = *p_;
+          const int d = h >= '0' && h <= '9'   ? h - '0'
+                        : h >= 'a' && h <= 'f' ? h - 'a' + 10
+                        : h >= 'A' && h <= 'F' ? h - 'A' + 10
+                                               : -1;
+          if (d < 0) fail("a \\u escape needs four hex digits");
+          v = v * 16 + static_cast<unsigned>(d);
+        }
+        if (v > 0xFF) fail("\\u escape above \\u00ff: not a byte");
+        out += static_cast<char>(v);
+        break;
+      }
+      default:
+        fail("unknown escape");
+      }
+      ++p_;
+    }
+  }
+
+  std::int64_t integer() {
+    ws();
+    const char* start = p_;
+    bool negative = false;
+    if (p_ < e_ && *p_ == '-') negative = true, ++p_;
+    if (p_ >= e_ || *p_ < '0' || *p_ > '9') fail("expected an integer");
+    if (*p_ == '0' && p_ + 1 < e_ && p_[1] >= '0' && p_[1] <= '9') fail("a leading zero");
+    unsigned long long v = 0;
+    const unsigned long long limit = negative ? 9223372036854775808ULL : 9223372036854775807ULL;
+    while (p_ < e_ && *p_ >= '0' && *p_ <= '9') {
+      const unsigned d = static_cast<unsigned>(*p_ - '0');
+      if (v > (limit - d) / 10) {
+        p_ = start;
+        fail("integer out of the 64-bit range");
+      }
+      v = v * 10 + d;
+      ++p_;
+    }
+    if (p_ < e_ && (*p_ == '.' || *p_ == 'e' || *p_ == 'E')) fail("only integers are allowed here");
+    return negative ? static_cast<std::int64_t>(0 - v) : static_cast<std::int64_t>(v);
+  }
+
+  void ints(std::vector<std::int64_t>& out) {
+    out.clear();
+    expect('[', "'['");
+    if (at(']')) {
+      ++p_;
+      return;
+    }
+    for (;;) {
+      out.push_back(integer());
+      if (at(',')) {
+        ++p_;
+        continue;
+      }
+      expect(']', "',' or ']'");
+      return;
+    }
+  }
+
+  void io(std::vector<Exchange>& out) {
+    std::size_t n = 0;
+    expect('[', "'['");
+    if (at(']')) {
+      ++p_;
+      out.clear();
+      return;
+    }
+    for (;;) {
+      if (n == out.size()) out.emplace_back();
+      expect('[', "an exchange [sent, received]");
+      string(out[n].sent);
+      expect(',', "','");
+      string(out[n].received);
+      expect(']', "']' after an exchange's two strings");
+      ++n;
+      if (at(',')) {
+        ++p_;
+        continue;
+      }
+      expect(']', "',' or ']'");
+      break;
+    }
+    out.resize(n);
+  }
+
+  std::uint64_t hex16() {
+    ws();
+    const char* start = p_;
+    if (p_ >= e_ || *p_ != '"') fail("expected the state hash as a string of 16 hex digits");
+    ++p_;
+    std::uint64_t v = 0;
+    for (int k = 0; k < 16; ++k, ++p_) {
+      const char h = p_ < e_ ? *p_ : '\0';
+      const int d = h >= '0' && h <= '9' ? h - '0' : h >= 'a' && h <= 'f' ? h - 'a' + 10 : -1;
+      if (d < 0) {
+        p_ = start;
+        fail("the state hash must be 16 lower-case hex digits");
+      }
+      v = v * 16 + static_cast<std::uint64_t>(d);
+    }
+    if (p_ >= e_ || *p_ != '"') {
+      p_ = start;
+      fail("the state hash must be 16 lower-case hex digits");
+    }
+    ++p_;
+    return v;
+  }
+
+  // Skips any JSON value (for a header's unknown keys, reported after the schema check).
+  void skip_value(int depth = 0) {
+    if (depth > 64) fail("nested too deeply");
+    ws();
+    if (p_ >= e_) fail("expected a value");
+    if (*p_ == '"') {
+      std::string s;
+      string(s);
+    } else if (*p_ == '{' || *p_ == '[') {
+      const char close = *p_ == '{' ? '}' : ']';
+      const bool object = *p_ == '{';
+      ++p_;
+      if (at(close)) {
+        ++p_;
+        return;
+      }
+      for (;;) {
+        if (object) {
+          std::string k;
+          string(k);
+          expect(':', "':'");
+        }
+        skip_value(depth + 1);
+        if (at(',')) {
+          ++p_;
+          continue;
+        }
+        expect(close, object ? "',' or '}'" : "',' or ']'");
+        return;
+      }
+    } else if (e_ - p_ >= 4 &&
+               (std::strncmp(p_, "true", 4) == 0 || std::strncmp(p_, "null", 4) == 0)) {
+      p_ += 4;
+    } else if (e_ - p_ >= 5 && std::strncmp(p_, "false", 5) == 0) {
+      p_ += 5;
+    } else {
+      integer();
+    }
+  }
+
+  // Calls on_key(key) for each key of an object; on_key parses the value. Duplicate keys are
+  // caught by the callers' seen-bits.
+  template <class F>
+  void object(std::string& key, F&& on_key) {
+    expect('{', "'{'");
+    if (at('}')) {
+      ++p_;
+      return;
+    }
+    for (;;) {
+      string(key);
+      expect(':', "':'");
+      on_key(key);
+      if (at(',')) {
+        ++p_;
+        continue;
+      }
+      expect('}', "',' or '}'");
+      return;
+    }
+  }
+
+  const char* pos() const noexcept { return p_; }
+  void set(const char* p) noexcept { p_ = p; }
+
+private:
+  const std::string& name_;
+  std::size_t line_;
+  const char* b_;
+  const char* p_;
+  const char* e_;
+};
+
+void once(Cursor& c, unsigned& seen, unsigned bit, const std::string& key) {
+  if (seen & bit) c.fail("key \"" + key + "\" given twice");
+  seen |= bit;
+}
+
+} // namespace
+
+std::string format_header(const LogHeader& h) {
+  std::string out = "{\"schema\":";
+  put_int(out, h.schema);
+  out += ",\"antkit\":";
+  put_bytes(out, h.antkit_version);
+  out += ",\"robot\":";
+  put_bytes(out, h.robot);
+  out += ",\"port\":{\"path\":";
+  put_bytes(out, h.port);
+  out += ",\"baud\":";
+  put_int(out, h.baud);
+  out += ",\"framing\":";
+  put_bytes(out, h.framing);
+  out += "},\"controller\":{\"name\":";
+  put_bytes(out, h.controller);
+  out += ",\"params\":{";
+  for (std::size_t i = 0; i < h.params.size(); ++i) {
+    if (i) out += ',';
+    put_bytes(out, h.params[i].first);
+    out += ':';
+    put_int(out, h.params[i].second);
+  }
+  out += "}},\"seed\":";
+  put_int(out, static_cast<std::int64_t>(h.seed));
+  out += '}';
+  return out;
+}
+
+std::string format_record(const LogRecord& r) {
+  std::string out = "{\"step\":";
+  put_int(out, r.step);
+  out += ",\"t_ns\":";
+  put_int(out, r.time_ns);
+  out += ",\"io\":";
+  put_io(out, r.io);
+  out += ",\"obs\":";
+  put_ints(out, r.obs);
+  out += ",\"cmd\":";
+  put_ints(out, r.cmd);
+  out += ",\"odo\":";
+  put_ints(out, r.odo);
+  out += ",\"state\":\"" + kernel::hash_hex(r.state) + "\"}";
+  return out;
+}
+
+std::string format_stop(const LogStop& s) {
+  std::string out = "{\"stop\":";
+  put_bytes(out, s.reason);
+  out += ",\"step\":";
+  put_int(out, s.step);
+  out += ",\"io\":";
+  put_io(out, s.io);
+  out += '}';
+  return out;
+}
+
+LogWriter::LogWriter(const std::string& path, const LogHeader& header, std::uint32_t sync_every)
+    : path_(path), sync_every_(sync_every) {
+  file_ = std::fopen(path.c_str(), "wb");
+  if (file_ == nullptr)
+    throw InputError(path, std::string("cannot create the log: ") + std::strerror(errno));
+  put(format_header(header));
+}
+
+LogWriter::~LogWriter() {
+  if (file_ != nullptr) std::fclose(file_);
+}
+
+void LogWriter::put(const std::string& line) {
+  if (file_ == nullptr) throw std::logic_error("log " + path_ + " already finished");
+  if (std::fwrite(line.data(), 1, line.size(), file_) != line.size() ||
+      std::fputc('\n', file_) == EOF || std::fflush(file_) != 0)
+    throw std::runtime_error("writing the log " + path_ + ": " + std::strerror(errno));
+}
+
+void LogWriter::write(const LogRecord& r) {
+  put(format_record(r));
+  ++records_;
+  if (sync_every_ != 0 && records_ % sync_every_ == 0) ::fdatasync(::fileno(file_));
+}
+
+void LogWriter::finish(const LogStop& s) {
+  put(format_stop(s));
+  ::fdatasync(::fileno(file_));
+  std::fclose(file_);
+  file_ = nullptr;
+}
+
+LogReader::LogReader(const std::string& path) : name_(path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, std::string("cannot read the log: ") + std::strerror(errno));
+  data_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  read_header();
+}
+
+LogReader::LogReader(std::string name, std::string contents)
+    : name_(std::move(name)), data_(std::move(contents)) {
+  read_header();
+}
+
+void LogReader::read_header() {
+  if (data_.empty()) throw InputError(name_, 1, 1, "an empty log: expected a header line");
+  const auto nl = data_.find('\n');
+  const std::size_t end = nl == std::string::npos ? data_.size() : nl;
+  line_ = 1;
+  Cursor c(name_, 1, data_.data(), data_.data() + end);
+  std::string key, text;
+  unsigned seen = 0;
+  bool have_schema = false;
+  const char* unknown_at = nullptr;
+  std::string unknown;
+  c.object(key, [&](const std::string& k) {
+    if (k == "schema") {
+      once(c, seen, 1, k);
+      const auto v = c.integer();
+      if (v < 0 || v > 0xFFFFFFFF) c.fail("the schema version must be a small whole number");
+      header_.schema = static_cast<std::uint32_t>(v);
+      have_schema = true;
+    } else if (k == "antkit") {
+      once(c, seen, 2, k);
+      c.string(header_.antkit_version);
+    } else if (k == "robot") {
+      once(c, seen, 4, k);
+      c.string(header_.robot);
+    } else if (k == "port") {
+      once(c, seen, 8, k);
+      unsigned inner = 0;
+      std::string k2;
+      c.object(k2, [&](const std::string& pk) {
+        if (pk == "path")
+          once(c, inner, 1, pk), c.string(header_.port);
+        else if (pk == "baud") {
+          once(c, inner, 2, pk);
+          const auto v = c.integer();
+          if (v < 0 || v > 100000000) c.fail("baud out of range");
+          header_.baud = static_cast<std::uint32_t>(v);
+        } else if (pk == "framing")
+          once(c, inner, 4, pk), c.string(header_.framing);
+        else
+          c.fail("unknown key \"" + pk + "\" in \"port\": expected path, baud, framing");
+      });
+      if (inner != 7) c.fail("\"port\" needs path, baud and framing");
+    } else if (k == "controller") {
+      once(c, seen, 16, k);
+      unsigned inner = 0;
+      std::string k2;
+      c.object(k2, [&](const std::string& ck) {
+        if (ck == "name")
+          once(c, inner, 1, ck), c.string(header_.controller);
+        else if (ck == "params") {
+          once(c, inner, 2, ck);
+          header_.params.clear();
+          std::string k3;
+          c.object(k3, [&](const std::string& name) {
+            for (const auto& p : header_.params)
+              if (p.first == name) c.fail("parameter \"" + name + "\" given twice");
+            header_.params.emplace_back(name, c.integer());
+          });
+        } else
+          c.fail("unknown key \"" + ck + "\" in \"controller\": expected name, params");
+      });
+      if (inner != 3) c.fail("\"controller\" needs name and params");
+    } else if (k == "seed") {
+      once(c, seen, 32, k);
+      const auto v = c.integer();
+      if (v < 0) c.fail("the seed must be >= 0");
+      header_.seed = static_cast<std::uint64_t>(v);
+    } else {
+      if (unknown_at == nullptr) unknown_at = c.pos(), unknown = k;
+      c.skip_value();
+    }
+  });
+  if (!c.done()) c.fail("unexpected bytes after the header object");
+  if (have_schema && !can_replay_schema(header_.schema)) {
+    c.set(data_.data());
+    c.fail("schema version " + std::to_string(header_.schema) + "; this antkit reads schema " +
+           std::to_string(kLogSchemaVersion));
+  }
+  if (unknown_at != nullptr) {
+    c.set(unknown_at);
+    c.fail("unknown key \"" + unknown + "\" in the header");
+  }
+  if (seen != 63) c.fail("the header needs schema, antkit, robot, port, controller and seed");
+  pos_ = nl == std::string::npos ? data_.size() : nl + 1;
+}
+
+bool LogReader::next(LogRecord& out) {
+  while (pos_ < data_.size()) {
+    const auto nl = data_.find('\n', pos_);
+    const bool last_cut = nl == std::string::npos;
+    const std::size_t end = last_cut ? data_.size() : nl;
+    const std::size_t start = pos_;
+    pos_ = last_cut ? data_.size() : nl + 1;
+    ++line_;
+    Cursor c(name_, line_, data_.data() + start, data_.data() + end);
+    if (c.done()) {
+      if (last_cut) return false;
+      c.fail("an empty line");
+    }
+    try {
+      if (stop_) c.fail("a line after the stop record");
+      unsigned seen = 0;
+      std::string key;
+      std::string reason;
+      std::int64_t step = 0;
+      c.object(key, [&](const std::string& k) {
+        if (k == "step")
+          once(c, seen, kStep, k), step = c.integer();
+        else if (k == "t_ns")
+          once(c, seen, kTime, k), out.time_ns = c.integer();
+        else if (k == "io")
+          once(c, seen, kIo, k), c.io(out.io);
+        else if (k == "obs")
+          once(c, seen, kObs, k), c.ints(out.obs);
+        else if (k == "cmd")
+          once(c, seen, kCmd, k), c.ints(out.cmd);
+        else if (k == "odo")
+          once(c, seen, kOdo, k), c.ints(out.odo);
+        else if (k == "state")
+          once(c, seen, kState, k), out.state = c.hex16();
+        else if (k == "stop")
+          once(c, seen, kStop, k), c.string(reason);
+        else
+          c.fail("unknown key \"" + k + "\"");
+      });
+      if (!c.done()) c.fail("unexpected bytes after the record");
+      if (seen & kStop) {
+        if (seen != (kStop | kStep | kIo))
+          c.fail("a stop record has exactly the keys stop, step and io");
+        LogStop s;
+        s.reason = std::move(reason);
+        s.step = step;
+        s.io = out.io;
+        if (step != next_step_)
+          c.fail("the stop record says " + std::to_string(step) + " steps, the log has " +
+                 std::to_string(next_step_));
+        stop_ = std::move(s);
+        return false;
+      }
+      if (seen != (kStep | kTime | kIo | kObs | kCmd | kOdo | kState))
+        c.fail("a step record needs step, t_ns, io, obs, cmd, odo and state");
+      if (step != next_step_)
+        c.fail("step " + std::to_string(step) + " where step " + std::to_string(next_step_) +
+               " was expected");
+      out.step = step;
+      ++next_step_;
+      return true;
+    } catch (const InputError&) {
+      if (last_cut) { // the final line was cut short while being written
+        truncated_ = true;
+        return false;
+      }
+      throw;
+    }
+  }
+  return false;
+}
+
+} // namespace antkit::devices

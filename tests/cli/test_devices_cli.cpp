@@ -1,0 +1,215 @@
+// `antkit emulate`, `record`, `replay` and `buffon-from-logs`, run as the real executables: the
+// emulator in a child process on its own pseudo-terminal, the recorder talking to it over the tty.
+#include "run_antkit.hpp"
+
+#include <catch2/catch.hpp>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+using antkit::test::run_antkit;
+
+namespace {
+
+std::filesystem::path scratch_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("antkit-devices-cli-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// `antkit emulate ARGS` in a child process; the pty path is its first line of output.
+class Emulator {
+public:
+  explicit Emulator(const std::vector<std::string>& args) {
+    int fds[2];
+    REQUIRE(::pipe(fds) == 0);
+    pid_ = ::fork();
+    REQUIRE(pid_ >= 0);
+    if (pid_ == 0) {
+      ::dup2(fds[1], STDOUT_FILENO);
+      ::close(fds[0]);
+      ::close(fds[1]);
+      std::vector<std::string> all{ANTKIT_EXE, "emulate"};
+      all.insert(all.end(), args.begin(), args.end());
+      std::vector<char*> argv;
+      for (auto& a : all) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      ::execv(ANTKIT_EXE, argv.data());
+      ::_exit(127);
+    }
+    ::close(fds[1]);
+    out_ = ::fdopen(fds[0], "r");
+    char line[256] = {};
+    REQUIRE(std::fgets(line, sizeof line, out_) != nullptr);
+    path_ = line;
+    while (!path_.empty() && (path_.back() == '\n' || path_.back() == '\r')) path_.pop_back();
+  }
+  ~Emulator() {
+    if (pid_ > 0) finish();
+  }
+  [[nodiscard]] const std::string& port() const noexcept { return path_; }
+  // SIGTERM, then the exit status and the rest of what it printed.
+  std::pair<int, std::string> finish() {
+    ::kill(pid_, SIGTERM);
+    std::string rest;
+    char buf[512];
+    std::size_t n = 0;
+    while ((n = std::fread(buf, 1, sizeof buf, out_)) > 0) rest.append(buf, n);
+    std::fclose(out_);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, rest};
+  }
+
+private:
+  pid_t pid_ = -1;
+  FILE* out_ = nullptr;
+  std::string path_;
+};
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+} // namespace
+
+TEST_CASE("antkit emulate + record + replay + buffon-from-logs, end to end", "[cli][devices]") {
+  const auto dir = scratch_dir("e2e");
+  std::string logs[2];
+  std::string hashes[2];
+  // One emulator, two sessions: each starts the robot at the arena's start pose, as the paper puts
+  // the robot back for its second visit.
+  Emulator emu({"khepera", "--arena", "circle:d=8", "--seed", "5", "--format", "json"});
+  REQUIRE(emu.port().rfind("/dev/pts/", 0) == 0);
+  for (int visit = 1; visit <= 2; ++visit) {
+    logs[visit - 1] = (dir / ("visit" + std::to_string(visit) + ".jsonl")).string();
+    const auto r = run_antkit("record --device khepera --port " + emu.port() +
+                              " --controller buffon --visit " + std::to_string(visit) +
+                              " --steps 400 --out " + logs[visit - 1] + " --format json");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["steps"] == 400);
+    CHECK(j["completed"] == true);
+    CHECK(j["stopped"] == "done");
+    CHECK(j["retries"] == 0);
+    CHECK(j["safe_stop"] == "acknowledged");
+    hashes[visit - 1] = j["hash"].get<std::string>();
+    CHECK(hashes[visit - 1].size() == 16);
+
+    const auto rp = run_antkit("replay " + logs[visit - 1] + " --format json");
+    REQUIRE(rp.status == 0);
+    const auto k = nlohmann::json::parse(rp.out);
+    CHECK(k["identical"] == true);
+    CHECK(k["steps"] == 400);
+    CHECK(k["truncated"] == false);
+    CHECK(k["first_divergence"].is_null());
+    CHECK(k["hash"] == j["hash"]);
+  }
+  CHECK(hashes[0] != hashes[1]); // two visits, two behaviour streams
+  const auto [status, summary] = emu.finish();
+  CHECK(status == 0);
+  const auto s = nlohmann::json::parse(summary);
+  CHECK(s["sessions"] == 2);
+  // Per session: G, then N D H per step, then the safe stop's commands.
+  CHECK(s["commands"].get<int>() >= 2 * (1 + 3 * 400 + 1));
+  CHECK(s["commands"].get<int>() <= 2 * (1 + 3 * 400 + 4));
+
+  const auto b = run_antkit("buffon-from-logs " + logs[0] + " " + logs[1] + " --format json");
+  INFO(b.err);
+  REQUIRE(b.status == 0);
+  const auto j = nlohmann::json::parse(b.out);
+  for (const char* key : {"bc", "crossings_exact", "area", "area_m2", "visit1", "visit2"})
+    CHECK(j.contains(key));
+  CHECK(j["visit1"]["steps"] == 400);
+}
+
+TEST_CASE("antkit replay: a divergence exits 1 with the step and field, a bad log exits 2",
+          "[cli][devices]") {
+  const auto dir = scratch_dir("replay");
+  const auto log = (dir / "run.jsonl").string();
+  {
+    Emulator emu({"epuck", "--arena", "circle:d=8"});
+    REQUIRE(run_antkit("record --device epuck --port " + emu.port() +
+                       " --controller buffon --steps 50 --out " + log)
+                .status == 0);
+  }
+  // Change the state hash of step 10 (line 12): the replay names step 10 and "state".
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(slurp(log));
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+  }
+  REQUIRE(lines.size() == 52);
+  auto edited = lines;
+  const auto at = edited[11].find("\"state\":\"");
+  REQUIRE(at != std::string::npos);
+  char& digit = edited[11][at + 9];
+  digit = digit == '0' ? '1' : '0';
+  const auto bad = (dir / "edited.jsonl").string();
+  {
+    std::ofstream out(bad, std::ios::binary);
+    for (const auto& l : edited) out << l << '\n';
+  }
+  const auto r = run_antkit("replay " + bad + " --format json");
+  CHECK(r.status == 1);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["identical"] == false);
+  CHECK(j["first_divergence"]["step"] == 10);
+  CHECK(j["first_divergence"]["field"] == "state");
+  CHECK(j["steps"] == 10);
+
+  // A malformed line in the middle: exit 2, the file and line named.
+  auto broken = lines;
+  broken[5] = "{\"step\":4,";
+  const auto mal = (dir / "malformed.jsonl").string();
+  {
+    std::ofstream out(mal, std::ios::binary);
+    for (const auto& l : broken) out << l << '\n';
+  }
+  const auto m = run_antkit("replay " + mal);
+  CHECK(m.status == 2);
+  CHECK(m.err.find("antkit: error: " + mal + ":6:") != std::string::npos);
+}
+
+TEST_CASE("antkit record: bad options and a bad port exit 2 and leave no log", "[cli][devices]") {
+  const auto dir = scratch_dir("bad");
+  const auto log = (dir / "never.jsonl").string();
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"--device khepera --port /nonexistent/tty --controller buffon", "--port"},
+      {"--device roomba --port /dev/null --controller buffon", "--device"},
+      {"--device khepera --port /dev/null --controller dance", "--controller"},
+      {"--device khepera --port /dev/null --controller buffon --visit 3", "--controller"},
+      {"--device khepera --port /dev/null --controller buffon --param speed=2", "--controller"},
+      {"--device khepera --port /dev/null --controller buffon --param visit", "--param"},
+      {"--device khepera --port /dev/null --controller buffon --framing 9X1", "--framing"},
+      {"--device khepera --port /dev/null --controller buffon --baud 12345", "--baud"},
+      {"--device khepera --port /dev/null --controller buffon --tries 0", "--tries"},
+      {"--device khepera --port /dev/null --controller buffon --steps -5", "--steps"},
+      {"--device khepera --port /dev/null --controller buffon", "--port"}, // not a tty
+  };
+  for (const auto& [args, where] : cases) {
+    INFO(args);
+    const auto r = run_antkit("record " + args + " --out " + log);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("antkit: error: " + where) != std::string::npos);
+    CHECK(!std::filesystem::exists(log));
+  }
+  const auto e = run_antkit("emulate khepera --fault drop=1.5");
+  CHECK(e.status == 2);
+  CHECK(e.err.find("antkit: error: --fault") != std::string::npos);
+  const auto f = run_antkit("emulate lego");
+  CHECK(f.status == 2);
+}
