@@ -584,6 +584,17 @@ bool LogReader::next(LogRecord& out) {
           c.fail("the stop record says " + std::to_string(step) + " steps, the log has " +
                  std::to_string(next_step_));
         stop_ = std::move(s);
+        // Nothing may follow the stop record (blank lines aside).
+        std::size_t at = pos_;
+        while (at < data_.size()) {
+          const auto next_nl = data_.find('\n', at);
+          const std::size_t stop_at = next_nl == std::string::npos ? data_.size() : next_nl;
+          ++line_;
+          if (data_.find_first_not_of(" \t\r", at) < stop_at)
+            throw InputError(name_, line_, 1, "a line after the stop record");
+          at = stop_at + 1;
+        }
+        pos_ = data_.size();
         return false;
       }
       if (seen != (kStep | kTime | kIo | kObs | kCmd | kOdo | kState))

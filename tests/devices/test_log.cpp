@@ -1,0 +1,207 @@
+// Hardware logs (devices/log.hpp): the canonical lines, round trips of arbitrary bytes and
+// integers, any valid JSON of the shapes accepted, everything else refused at its line and
+// column, truncation at any byte of the last line, and the writer's per-record flush.
+#include <antkit/devices/log.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <rapidcheck/catch.h>
+#include <unistd.h>
+
+namespace devices = antkit::devices;
+using antkit::kernel::InputError;
+
+namespace {
+
+devices::LogHeader header() {
+  devices::LogHeader h;
+  h.antkit_version = "0.1.0";
+  h.robot = "khepera";
+  h.port = "/dev/pts/3";
+  h.baud = 9600;
+  h.framing = "8N2";
+  h.controller = "buffon";
+  h.params = {{"trial", 0}, {"visit", 1}};
+  h.seed = 1;
+  return h;
+}
+
+devices::LogRecord record(std::int64_t step) {
+  devices::LogRecord r;
+  r.step = step;
+  r.time_ns = 1234;
+  r.io = {{"N\r", "n,0,0,0,0,0,0,0,0\r\n"}, {"D,3,4\r", "d\r\n"}};
+  r.obs = {0, 0};
+  r.cmd = {1, -2};
+  r.odo = {10, 20};
+  r.state = 0x0123456789abcdefULL;
+  return r;
+}
+
+const std::string kHeader =
+    R"({"schema":1,"antkit":"0.1.0","robot":"khepera","port":{"path":"/dev/pts/3","baud":9600,)"
+    R"("framing":"8N2"},"controller":{"name":"buffon","params":{"trial":0,"visit":1}},"seed":1})";
+
+// The error a log with `line` as its first record gets: line and column.
+std::pair<std::size_t, std::size_t> error_of(const std::string& text) {
+  try {
+    devices::LogReader r("t.jsonl", text);
+    devices::LogRecord rec;
+    while (r.next(rec)) {
+    }
+  } catch (const InputError& e) {
+    return {e.line(), e.column()};
+  }
+  return {0, 0};
+}
+
+} // namespace
+
+TEST_CASE("the writer's lines are the documented canonical form", "[devices]") {
+  CHECK(devices::format_header(header()) == kHeader);
+  CHECK(devices::format_record(record(0)) ==
+        R"({"step":0,"t_ns":1234,"io":[["N\r","n,0,0,0,0,0,0,0,0\r\n"],["D,3,4\r","d\r\n"]],)"
+        R"("obs":[0,0],"cmd":[1,-2],"odo":[10,20],"state":"0123456789abcdef"})");
+  CHECK(devices::format_stop({1000, "done", {{"D,0,0\r", "d\r\n"}}}) ==
+        R"({"stop":"done","step":1000,"io":[["D,0,0\r","d\r\n"]]})");
+  devices::LogRecord junk = record(0);
+  junk.io = {{std::string("\x00\x7f\xff\"\\\t", 6), ""}};
+  CHECK(devices::format_record(junk).find(R"([["\u0000\u007f\u00ff\"\\\t",""]])") !=
+        std::string::npos);
+}
+
+TEST_CASE("records of arbitrary bytes and integers read back as written", "[devices][property]") {
+  rc::prop("format then read is the identity", [] {
+    devices::LogRecord r;
+    r.step = 0;
+    r.time_ns = *rc::gen::arbitrary<std::int64_t>();
+    const auto n = *rc::gen::inRange<std::size_t>(0, 4);
+    for (std::size_t i = 0; i < n; ++i)
+      r.io.push_back({*rc::gen::arbitrary<std::string>(), *rc::gen::arbitrary<std::string>()});
+    r.obs = *rc::gen::arbitrary<std::vector<std::int64_t>>();
+    r.cmd = *rc::gen::container<std::vector<std::int64_t>>(
+        rc::gen::element(INT64_MIN, INT64_MAX, std::int64_t{0}, std::int64_t{-1}));
+    r.odo = *rc::gen::arbitrary<std::vector<std::int64_t>>();
+    r.state = *rc::gen::arbitrary<std::uint64_t>();
+    const devices::LogStop s{1, *rc::gen::arbitrary<std::string>(), r.io};
+    devices::LogReader reader("p.jsonl", devices::format_header(header()) + "\n" +
+                                             devices::format_record(r) + "\n" +
+                                             devices::format_stop(s) + "\n");
+    RC_ASSERT(reader.header() == header());
+    devices::LogRecord back;
+    RC_ASSERT(reader.next(back));
+    RC_ASSERT(back == r);
+    RC_ASSERT(!reader.next(back));
+    RC_ASSERT(reader.stop().has_value());
+    RC_ASSERT(*reader.stop() == s);
+    RC_ASSERT(!reader.truncated());
+  });
+}
+
+TEST_CASE("any key order, whitespace and escapes are read", "[devices]") {
+  const std::string text =
+      kHeader + "\n" +
+      R"( { "state" : "0123456789abcdef", "odo":[ 10 , 20 ], "cmd":[1,-2],"obs":[0,0],)"
+      R"("io":[["N\u000d","n,0,0,0,0,0,0,0,0\r\n"],["D,3,4\r","d\r\n"]],"t_ns":1234,"step":0})" +
+      "\n";
+  devices::LogReader reader("w.jsonl", text);
+  devices::LogRecord r;
+  REQUIRE(reader.next(r));
+  CHECK(r == record(0));
+}
+
+TEST_CASE("malformed lines are refused with their line and column", "[devices]") {
+  const std::string r0 = devices::format_record(record(0));
+  const auto with = [&](const std::string& second) { return kHeader + "\n" + second + "\n"; };
+  CHECK(
+      error_of(
+          with(
+              R"({"step":0,"t_ns":1.5,"io":[],"obs":[],"cmd":[],"odo":[],"state":"0123456789abcdef"})"))
+          .first == 2);
+  CHECK(
+      error_of(with(
+          R"({"step":0,"t_ns":1,"io":[["\u0100",""]],"obs":[],"cmd":[],"odo":[],"state":"0123456789abcdef"})")) ==
+      std::pair<std::size_t, std::size_t>{2, 33});
+  CHECK(
+      error_of(
+          with(
+              R"({"step":0,"t_ns":1,"io":[],"obs":[],"cmd":[],"odo":[],"state":"0123456789ABCDEF"})"))
+          .first == 2);
+  CHECK(error_of(with(R"({"step":0,"t_ns":1,"io":[],"obs":[],"cmd":[],"odo":[]})")).first == 2);
+  CHECK(
+      error_of(
+          with(
+              R"({"step":0,"step":0,"t_ns":1,"io":[],"obs":[],"cmd":[],"odo":[],"state":"0123456789abcdef"})"))
+          .first == 2);
+  CHECK(
+      error_of(
+          with(
+              R"({"step":0,"t_ns":1,"io":[],"obs":[],"cmd":[],"odo":[],"state":"0123456789abcdef","x":1})"))
+          .first == 2);
+  CHECK(
+      error_of(
+          with(
+              R"({"step":0,"t_ns":99999999999999999999,"io":[],"obs":[],"cmd":[],"odo":[],"state":"0123456789abcdef"})"))
+          .first == 2);
+  CHECK(error_of(with(devices::format_record(record(1)))).first == 2); // steps count from 0
+  CHECK(error_of(kHeader + "\n" + r0 + "\n" + devices::format_stop({1, "done", {}}) + "\n" + r0 +
+                 "\n")
+            .first == 4); // a line after the stop record
+  CHECK(error_of(kHeader + "\n" + "{\"step\":0,\n" + r0 + "\n").first == 2);
+  CHECK(error_of("").first == 1);
+  CHECK(error_of("not json\n").first == 1);
+}
+
+TEST_CASE("a log of another schema version is refused", "[devices]") {
+  std::string h = kHeader;
+  h.replace(h.find("\"schema\":1"), 10, "\"schema\":2");
+  try {
+    devices::LogReader r("s.jsonl", h + "\n");
+    FAIL("schema 2 accepted");
+  } catch (const InputError& e) {
+    CHECK(e.line() == 1);
+    CHECK(std::string(e.what()) == "s.jsonl:1:1: schema version 2; this antkit reads schema 1");
+  }
+}
+
+TEST_CASE("a last line cut at any byte is reported and every record before it is read",
+          "[devices][property]") {
+  const std::string r0 = devices::format_record(record(0));
+  const std::string r1 = devices::format_record(record(1));
+  for (std::size_t cut = 1; cut < r1.size(); ++cut) {
+    devices::LogReader reader("c.jsonl", kHeader + "\n" + r0 + "\n" + r1.substr(0, cut));
+    devices::LogRecord r;
+    REQUIRE(reader.next(r));
+    CHECK(r.step == 0);
+    CHECK(!reader.next(r));
+    CHECK(reader.truncated());
+  }
+}
+
+TEST_CASE("the writer flushes each record as it is written", "[devices]") {
+  const std::string path = "/tmp/antkit-log-flush-" + std::to_string(::getpid()) + ".jsonl";
+  {
+    devices::LogWriter w(path, header());
+    for (std::int64_t s = 0; s < 3; ++s) {
+      w.write(record(s));
+      // Another reader sees every record so far while the writer is still open.
+      devices::LogReader r(path);
+      devices::LogRecord rec;
+      std::int64_t n = 0;
+      while (r.next(rec)) ++n;
+      CHECK(n == s + 1);
+      CHECK(!r.truncated());
+      CHECK(!r.stop().has_value());
+    }
+    w.finish({3, "done", {}});
+    CHECK(w.records() == 3);
+  }
+  devices::LogReader r(path);
+  devices::LogRecord rec;
+  while (r.next(rec)) {
+  }
+  REQUIRE(r.stop().has_value());
+  CHECK(r.stop()->step == 3);
+  ::unlink(path.c_str());
+  CHECK_THROWS_AS(devices::LogWriter("/nonexistent/dir/x.jsonl", header()), InputError);
+}
