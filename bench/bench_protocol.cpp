@@ -1,0 +1,36 @@
+// The robots' protocol codecs: commands encoded and replies validated per second, per robot
+// (devices/protocol.hpp). Replay decodes every logged reply again, so decode speed bounds it.
+#include <antkit/devices/protocol.hpp>
+#include <benchmark/benchmark.h>
+
+namespace {
+
+namespace devices = antkit::devices;
+
+void BM_EncodeSetSpeed(benchmark::State& state) {
+  const devices::Codec codec(static_cast<devices::RobotKind>(state.range(0)));
+  std::int32_t v = 0;
+  for (auto _ : state) {
+    auto s = codec.set_speed(v % 9, -(v % 9));
+    benchmark::DoNotOptimize(s);
+    ++v;
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel(std::string(codec.robot().name));
+}
+BENCHMARK(BM_EncodeSetSpeed)->DenseRange(0, 2);
+
+void BM_DecodeProximity(benchmark::State& state) {
+  const devices::Codec codec(static_cast<devices::RobotKind>(state.range(0)));
+  const std::array<std::int32_t, 8> raw{0, 12, 250, 5, 0, 0, 200, 200};
+  const std::string line = codec.reply('N', raw);
+  for (auto _ : state) {
+    auto d = codec.decode_proximity(line);
+    benchmark::DoNotOptimize(d);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel(std::string(codec.robot().name));
+}
+BENCHMARK(BM_DecodeProximity)->DenseRange(0, 2);
+
+} // namespace
