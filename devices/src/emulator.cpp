@@ -264,7 +264,7 @@ FirmwareEmulator::Response FirmwareEmulator::handle(std::string_view line) {
     const auto& line_settings = codec_.robot().line;
     const std::uint64_t bits = 1u + line_settings.data_bits + line_settings.stop_bits +
                                (line_settings.parity == Parity::None ? 0u : 1u);
-    out.delay += kCommandLatency + std::chrono::milliseconds(reply.size() * bits * 1000 /
+    out.delay += kCommandLatency + std::chrono::microseconds(reply.size() * bits * 1000000 /
                                                              std::max(1u, line_settings.baud));
   }
   out.bytes = std::move(reply);

@@ -377,3 +377,33 @@ TEST_CASE("Buffon from two recorded visits: the exact count of the dead-reckoned
   CHECK(*r.area < 200);
   CHECK(r.diameter_m == Approx(0.055).margin(0.005));
 }
+
+TEST_CASE("--pace: replies come no faster than the robot's baud rate allows", "[devices]") {
+  // Khepera: 9600 baud, 8N2 = 11 bit times a byte, plus the command latency. A lower bound on the
+  // logged time between steps, from the bytes each step received (a behaviour check: nothing is
+  // timed against an upper bound).
+  TempDir dir;
+  devices::EmulatorOptions eo;
+  eo.pace = true;
+  EmulatedRobot emu(RobotKind::Khepera, "circle:d=8", eo);
+  const auto log = dir.file("paced.jsonl");
+  REQUIRE(devices::record(options_for(RobotKind::Khepera, emu.port(), "buffon", {}, 12, log))
+              .completed);
+  emu.stop();
+  devices::LogReader reader(log);
+  devices::LogRecord r;
+  std::int64_t first = -1, last = 0, floor_ns = 0;
+  while (reader.next(r)) {
+    if (first < 0) {
+      first = r.time_ns;
+      continue;
+    }
+    last = r.time_ns;
+    for (const auto& ex : r.io)
+      floor_ns += static_cast<std::int64_t>(ex.received.size()) * 11 * 1000000000 / 9600 +
+                  std::chrono::nanoseconds(devices::kCommandLatency).count();
+  }
+  CAPTURE(last - first, floor_ns);
+  CHECK(floor_ns > 200000000); // 11 steps of N, D, H: over 0.2 s of line time
+  CHECK(last - first >= floor_ns);
+}

@@ -87,7 +87,7 @@ public:
   // What the firmware does with one received command line (terminator stripped).
   struct Response {
     std::string bytes;                  // to write (empty: nothing)
-    std::chrono::milliseconds delay{0}; // before writing
+    std::chrono::microseconds delay{0}; // before writing
     bool hang_up = false;               // then hang up the line
   };
   Response handle(std::string_view line);
