@@ -1,5 +1,7 @@
 // Uses each installed layer once and checks an answer, so that a broken package fails here.
 #include <antkit/algorithms/controller.hpp>
+#include <antkit/devices/controllers.hpp>
+#include <antkit/devices/protocol.hpp>
 #include <antkit/geometry/arena.hpp>
 #include <antkit/kernel/grid.hpp>
 #include <antkit/kernel/hash.hpp>
@@ -20,7 +22,18 @@ int main() {
   // The geometry layer (CGAL behind it): the standard arena has the area of the circle of diameter
   // 100.
   const auto arena = antkit::geometry::make_circle(100.0);
-  const bool ok = grid.size() == 12 && draw < 10 && cells.size() == 3 &&
+  // The devices layer: a Khepera's proximity reply decoded and fed to the Buffon controller.
+  const antkit::devices::Codec khepera(antkit::devices::RobotKind::Khepera);
+  const auto readings = khepera.decode_proximity("n,0,0,0,1023,0,0,0,0\r\n");
+  auto controller =
+      antkit::devices::make_controller(antkit::devices::make_spec("buffon", 1, {}, "consumer"));
+  std::vector<std::int64_t> obs, cmd;
+  if (readings) {
+    controller->observe(khepera.robot(), *readings.value, obs);
+    controller->step(khepera.robot(), obs, cmd);
+  }
+  const bool devices_ok = readings && obs.size() == 6 && obs[3] == 65536 && cmd.size() == 4;
+  const bool ok = devices_ok && grid.size() == 12 && draw < 10 && cells.size() == 3 &&
                   std::abs(arena.area() - antkit::geometry::standard_area()) < 1e-2 &&
                   antkit::algorithms::version_number() >= 100;
   std::printf(
