@@ -378,7 +378,7 @@ TEST_CASE("Buffon from two recorded visits: the exact count of the dead-reckoned
   CHECK(r.diameter_m == Approx(0.055).margin(0.005));
 }
 
-TEST_CASE("--pace: replies come no faster than the robot's baud rate allows", "[devices]") {
+TEST_CASE("emulate --pace: replies come no faster than the robot's baud rate allows", "[devices]") {
   // Khepera: 9600 baud, 8N2 = 11 bit times a byte, plus the command latency. A lower bound on the
   // logged time between steps, from the bytes each step received (a behaviour check: nothing is
   // timed against an upper bound).
