@@ -12,6 +12,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
   catch2 librapidcheck-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev jq
   libz3-dev coq libcairo2-dev
+  g++-s390x-linux-gnu qemu-user
 )
 
 missing=()

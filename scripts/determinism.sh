@@ -1,0 +1,194 @@
+#!/usr/bin/env bash
+# The determinism matrix (issue 16): builds antkit_determinism (determinism/scenarios.cpp: the
+# kernel and the algorithms only, ANTKIT_DETERMINISM_ONLY) in several configurations and requires
+# every one of them to print every golden hash of determinism/golden.txt at 1, 2 and 8 threads.
+#
+#   scripts/determinism.sh            the whole matrix: gcc-12 -O0 and -O3, clang-14 -O0 and -O3,
+#                                     s390x (big-endian, g++-s390x-linux-gnu, run under qemu-s390x)
+#   scripts/determinism.sh --ci       what .ci/run runs: clang-14 -O0 and s390x (the default gcc -O2
+#                                     build checks the same golden file under ctest, label
+#                                     determinism)
+#   scripts/determinism.sh CONFIG...  the named configurations only
+#
+# Every configuration compiles with -ffp-contract=off (the kernel's rule 7, also carried by
+# antkit::kernel). A mismatch prints the scenario, the configuration, and the first step at which
+# its trace (--trace: each step's state and a chained hash of the states so far) differs from the
+# reference build's, with both states. The teeth: the s390x build's native-endian hash must differ
+# from the little-endian golden value, and the script shows where its trace first parts.
+#
+# Builds go to build/determinism/<config> (ccache when installed). Exit status: 0 every
+# configuration gives every golden hash and the teeth bite, 1 otherwise, 2 bad usage.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+cd "$here"
+
+golden=determinism/golden.txt
+maps=${ANTKIT_MAPS:-$here/../shared/maps}
+jobs=${JOBS:-$(nproc)}
+all_configs=(gcc-O0 gcc-O3 clang-O0 clang-O3 s390x)
+ci_configs=(clang-O0 s390x)
+
+configs=()
+if [ $# -eq 0 ]; then
+  configs=("${all_configs[@]}")
+elif [ "$1" = "--ci" ] && [ $# -eq 1 ]; then
+  configs=("${ci_configs[@]}")
+else
+  for c in "$@"; do
+    case " ${all_configs[*]} " in
+    *" $c "*) configs+=("$c") ;;
+    *)
+      echo "determinism.sh: unknown configuration '$c' (known: ${all_configs[*]}, or --ci)" >&2
+      exit 2
+      ;;
+    esac
+  done
+fi
+if [ ! -d "$maps/movingai" ]; then
+  echo "determinism.sh: $maps/movingai: not found (the shared maps beside the checkout, or ANTKIT_MAPS)" >&2
+  exit 2
+fi
+
+# config_args CONFIG: sets compiler, flags and extra (the CMake arguments of a configuration).
+config_args() {
+  extra=()
+  case "$1" in
+  gcc-O0 | gcc-O3) compiler=g++-12 flags="-${1#gcc-} -ffp-contract=off" ;;
+  clang-O0 | clang-O3) compiler=clang++-14 flags="-${1#clang-} -ffp-contract=off" ;;
+  s390x)
+    compiler=s390x-linux-gnu-g++-12 flags="-O2 -ffp-contract=off"
+    extra=(-DCMAKE_SYSTEM_NAME=Linux -DCMAKE_SYSTEM_PROCESSOR=s390x -DCMAKE_EXE_LINKER_FLAGS=-static)
+    ;;
+  esac
+}
+
+# run CONFIG ARGS...: the configuration's runner (s390x under qemu-s390x).
+run() {
+  local config=$1
+  shift
+  local exe=build/determinism/$config/determinism/antkit_determinism
+  if [ "$config" = s390x ]; then
+    qemu-s390x "$exe" "$@"
+  else
+    "$exe" "$@"
+  fi
+}
+
+build() {
+  local dir=build/determinism/$1
+  config_args "$1"
+  if [ ! -f "$dir/build.ninja" ]; then
+    cmake -S . -B "$dir" -G Ninja -DANTKIT_DETERMINISM_ONLY=ON -DCMAKE_BUILD_TYPE=None \
+      "-DCMAKE_CXX_COMPILER=$compiler" "-DCMAKE_CXX_FLAGS=$flags" "${extra[@]}" \
+      >"$dir.configure.log" 2>&1 || { cat "$dir.configure.log"; return 1; }
+  fi
+  cmake --build "$dir" -j "$jobs" --target antkit_determinism >"$dir.build.log" 2>&1 ||
+    { tail -40 "$dir.build.log"; return 1; }
+}
+
+# first_difference CONFIG SCENARIO REFERENCE: the first step where CONFIG's trace of SCENARIO and
+# REFERENCE's differ, with both states.
+first_difference() {
+  local config=$1 scenario=$2 reference=$3 mode=(--maps "$maps" --trace "$2")
+  [ "$scenario" = teeth/native-endian ] && mode=(--teeth native-endian --trace "$2")
+  local a=build/determinism/$config.trace b=build/determinism/$reference.trace
+  run "$config" "${mode[@]}" >"$a"
+  run "$reference" "${mode[@]}" >"$b"
+  local line
+  line=$(cmp "$a" "$b" 2>/dev/null | sed -n 's/.* line \([0-9]*\)$/\1/p' || true)
+  echo "   $scenario, $config against $reference:"
+  if [ -z "$line" ]; then
+    if cmp -s "$a" "$b"; then
+      echo "     the per-step traces agree ($(wc -l <"$a") steps): only the hashed result differs"
+    else
+      echo "     one trace is a prefix of the other: $config has $(wc -l <"$a") steps," \
+        "$reference $(wc -l <"$b")"
+    fi
+    return
+  fi
+  echo "     first differing step: $(sed -n "${line}p" "$a" | cut -d' ' -f1)" \
+    "(each line: step, chained hash of the states so far, state)"
+  echo "     $config: $(sed -n "${line}p" "$a" | cut -d' ' -f2-)"
+  echo "     $reference: $(sed -n "${line}p" "$b" | cut -d' ' -f2-)"
+}
+
+failed=0
+reference=""
+declare -A verdict
+pending=() # "config scenario": a mismatch to locate once a reference build is known
+start_all=$SECONDS
+mkdir -p build/determinism
+for config in "${configs[@]}"; do
+  t0=$SECONDS
+  config_args "$config"
+  echo "== $config: $compiler $flags ${extra[*]}"
+  if ! build "$config"; then
+    echo "   BUILD FAILED"
+    verdict[$config]="build failed"
+    failed=1
+    continue
+  fi
+  ok=1
+  for threads in 1 2 8; do
+    out=$(run "$config" --maps "$maps" --check "$golden" --threads "$threads") && status=0 || status=$?
+    echo "   threads $threads: $(echo "$out" | tail -1)"
+    if [ "$status" -ne 0 ]; then
+      ok=0
+      echo "$out" | grep -E '^(MISMATCH|MISSING)' | sed "s/^/   [$config, threads $threads] /" || true
+      while read -r tag scenario _; do
+        [ "$tag" = MISMATCH ] && pending+=("$config ${scenario%:}")
+      done <<<"$out"
+    fi
+  done
+  # The teeth: native-endian bytes give the golden value on little-endian CPUs only.
+  teeth=$(run "$config" --teeth native-endian --check "$golden") && tstatus=0 || tstatus=$?
+  if [ "$config" = s390x ]; then
+    if [ "$tstatus" -eq 1 ] && echo "$teeth" | grep -q MISMATCH; then
+      echo "   teeth: the native-endian hash differs on s390x, as it must:"
+      echo "$teeth" | sed 's/^/     /'
+      pending+=("$config teeth/native-endian")
+    else
+      echo "   TEETH MISSING: the native-endian hash matched on a big-endian CPU"
+      ok=0
+    fi
+  elif [ "$tstatus" -ne 0 ]; then
+    echo "   teeth: the native-endian hash should match on this little-endian build: $teeth"
+    ok=0
+  fi
+  if [ $ok -eq 1 ]; then
+    verdict[$config]="every golden hash at 1, 2 and 8 threads ($((SECONDS - t0)) s with the build)"
+    [ -n "$reference" ] || reference=$config
+  else
+    verdict[$config]="MISMATCH"
+    failed=1
+  fi
+done
+
+if [ ${#pending[@]} -gt 0 ]; then
+  if [ -z "$reference" ] || [ "$reference" = s390x ]; then
+    # A little-endian build that gives every golden hash: the one the teeth are compared with.
+    for c in gcc-O3 clang-O3 gcc-O0 clang-O0; do
+      [ "${verdict[$c]:-}" = MISMATCH ] && continue
+      if [ -z "${verdict[$c]:-}" ]; then
+        build "$c" && run "$c" --maps "$maps" --check "$golden" >/dev/null && reference=$c && break
+      elif [ "${verdict[$c]}" != "build failed" ]; then
+        reference=$c && break
+      fi
+    done
+  fi
+  echo "== where the traces part:"
+  declare -A seen
+  for p in "${pending[@]}"; do
+    [ -n "${seen[$p]:-}" ] && continue
+    seen[$p]=1
+    if [ -z "$reference" ]; then
+      echo "   ${p#* }, ${p%% *}: no build matched every golden hash, so there is no reference trace"
+    else
+      first_difference "${p%% *}" "${p#* }" "$reference"
+    fi
+  done
+fi
+
+echo "== determinism matrix ($((SECONDS - start_all)) s):"
+for config in "${configs[@]}"; do echo "   $config: ${verdict[$config]}"; done
+exit $failed
