@@ -19,11 +19,11 @@
 #include "svg.hpp"
 
 #include <algorithm>
+#include <antkit/algorithms/options.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/los/explore.hpp>
 #include <antkit/maps/map_io.hpp>
-#include <charconv>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -51,29 +51,6 @@ struct ExploreCommand {
   Format format = Format::Table;
 };
 
-std::int64_t parse_int(const std::string& option, std::string_view text) {
-  std::int64_t v = 0;
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-  if (ec != std::errc{} || ptr != end || text.empty())
-    throw InputError(option, "'" + std::string(text) + "' is not an integer");
-  return v;
-}
-
-// "AxB" or "A,B" into two integers.
-std::pair<std::int64_t, std::int64_t> parse_pair(const std::string& option, const std::string& text,
-                                                 char separator, const std::string& expected) {
-  const auto cut = text.find(separator);
-  if (cut == std::string::npos)
-    throw InputError(option, "'" + text + "' is not of the form " + expected);
-  try {
-    return {parse_int(option, std::string_view(text).substr(0, cut)),
-            parse_int(option, std::string_view(text).substr(cut + 1))};
-  } catch (const InputError&) {
-    throw InputError(option, "'" + text + "' is not of the form " + expected);
-  }
-}
-
 // The exploration keeps about 30 bytes per cell (states, frontier set, planner and tracing
 // scratch), so the command caps a map at 2048 x 2048 cells (about 120 MiB); the maps are
 // at most about 1000 x 1000.
@@ -88,7 +65,8 @@ Environment build_environment(const ExploreCommand& c) {
   Environment env;
   std::optional<Cell> start;
   if (!c.start.empty()) {
-    const auto [x, y] = parse_pair("--start", c.start, ',', "X,Y (two integers)");
+    const auto [x, y] =
+        antkit::algorithms::parse_pair("--start", c.start, ',', "X,Y (two integers)");
     if (x < 0 || y < 0 || x >= antkit::kernel::kMaxGridSide || y >= antkit::kernel::kMaxGridSide)
       throw InputError("--start", "cell (" + c.start + ") is outside any map");
     start = Cell{static_cast<std::int32_t>(x), static_cast<std::int32_t>(y)};
@@ -105,7 +83,7 @@ Environment build_environment(const ExploreCommand& c) {
     if (!start && map.start) start = map.start;
   } else {
     if (c.size.empty()) throw InputError("explore", "give --map FILE or --size WxH");
-    const auto [w, h] = parse_pair("--size", c.size, 'x', "WxH (two integers)");
+    const auto [w, h] = antkit::algorithms::parse_pair("--size", c.size, 'x', "WxH (two integers)");
     if (w < 2 || h < 2 || w > 2048 || h > 2048)
       throw InputError("--size", "'" + c.size + "': each side must be in [2, 2048]");
     if (c.obstacles >= 0 && c.blocks >= 0)

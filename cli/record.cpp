@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "output.hpp"
 
+#include <antkit/algorithms/options.hpp>
 #include <antkit/devices/adapter.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -32,19 +33,6 @@ struct RecordCommand {
   Format format = Format::Table;
 };
 
-std::int64_t parse_int(const std::string& text, const std::string& where) {
-  std::size_t used = 0;
-  long long v = 0;
-  try {
-    v = std::stoll(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || text.empty())
-    throw InputError(where, "'" + text + "' is not a whole number");
-  return v;
-}
-
 void run(const RecordCommand& c) {
   const auto robot = devices::parse_robot(c.device);
   if (!robot)
@@ -57,7 +45,8 @@ void run(const RecordCommand& c) {
     const auto eq = p.find('=');
     if (eq == std::string::npos || eq == 0)
       throw InputError("--param", "'" + p + "': expected KEY=VALUE, e.g. visit=2");
-    given.emplace_back(p.substr(0, eq), parse_int(p.substr(eq + 1), "--param"));
+    given.emplace_back(p.substr(0, eq), antkit::algorithms::parse_integer(
+                                            "--param", p.substr(eq + 1), "a whole number"));
   }
   devices::RecordOptions o;
   o.robot = *robot;

@@ -15,10 +15,10 @@
 #include "svg.hpp"
 
 #include <algorithm>
+#include <antkit/algorithms/options.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
-#include <charconv>
 #include <cstdint>
 #include <iostream>
 #include <memory>
@@ -31,6 +31,7 @@
 namespace {
 
 using antkit::cli::Format;
+namespace algorithms = antkit::algorithms;
 using antkit::kernel::Cell;
 using antkit::kernel::InputError;
 using antkit::kernel::Occupancy;
@@ -47,54 +48,6 @@ struct StcOptions {
   Format format = Format::Table;
 };
 
-std::int32_t parse_int(const std::string& text, const std::string& option,
-                       const std::string& what) {
-  std::int32_t v = 0;
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-  if (ec != std::errc{} || ptr != end || text.empty())
-    throw InputError(option, "'" + text + "' is not " + what);
-  return v;
-}
-
-// "X,Y" in sub-cells.
-Cell parse_start(const std::string& text) {
-  const auto comma = text.find(',');
-  if (comma == std::string::npos)
-    throw InputError("--start", "'" + text + "' is not X,Y (two integers, in sub-cells)");
-  return {parse_int(text.substr(0, comma), "--start", "an integer X,Y in sub-cells"),
-          parse_int(text.substr(comma + 1), "--start", "an integer X,Y in sub-cells")};
-}
-
-// A probability written as a decimal in [0, 1] with at most six decimals, read exactly into parts
-// per million (no floating point on the way into the deterministic run).
-std::uint32_t parse_probability_ppm(const std::string& text, const std::string& option) {
-  const std::string expected = "'" + text +
-                               "' is not a probability: expected a decimal in [0, 1] "
-                               "with at most six decimals, e.g. 0.01";
-  std::size_t i = 0;
-  std::uint64_t whole = 0;
-  bool digits = false;
-  for (; i < text.size() && text[i] >= '0' && text[i] <= '9'; ++i) {
-    whole = std::min<std::uint64_t>(whole * 10 + static_cast<std::uint64_t>(text[i] - '0'), 10);
-    digits = true;
-  }
-  std::uint64_t fraction = 0;
-  int places = 0;
-  if (i < text.size() && text[i] == '.') {
-    for (++i; i < text.size() && text[i] >= '0' && text[i] <= '9'; ++i) {
-      if (++places > 6) throw InputError(option, expected);
-      fraction = fraction * 10 + static_cast<std::uint64_t>(text[i] - '0');
-      digits = true;
-    }
-  }
-  if (!digits || i != text.size()) throw InputError(option, expected);
-  for (; places < 6; ++places) fraction *= 10;
-  const std::uint64_t ppm = whole * 1'000'000 + fraction;
-  if (ppm > 1'000'000) throw InputError(option, expected);
-  return static_cast<std::uint32_t>(ppm);
-}
-
 Variant parse_variant_option(const std::string& name) {
   if (const auto v = parse_variant(name)) return *v;
   throw InputError("--variant", "'" + name +
@@ -109,7 +62,7 @@ Variant parse_variant_option(const std::string& name) {
 // largest region is what a user asking for "coverage of this map" means.)
 Cell choose_start(const antkit::maps::GridMap& map, Variant variant, const std::string& option,
                   const std::string& file) {
-  if (!option.empty()) return parse_start(option);
+  if (!option.empty()) return algorithms::parse_cell("--start", option);
   if (map.start) return *map.start;
   const OccupancyGrid& g = map.cells;
   const CellGridShape shape = cell_shape(g);
@@ -184,7 +137,7 @@ void run_stc_command(const StcOptions& o) {
       throw InputError("--noise", "marker noise applies to the variants that read marks, ant and "
                                   "ant-edge, not " +
                                       std::string(variant_name(variant)));
-    run.noise = {parse_probability_ppm(o.noise, "--noise"), o.seed, 0};
+    run.noise = {algorithms::parse_probability_ppm("--noise", o.noise), o.seed, 0};
   }
   const auto map = antkit::maps::load_map(o.map);
   const Cell start = choose_start(map, variant, o.start, o.map);
@@ -245,7 +198,7 @@ void run_noise_command(const NoiseOptions& o) {
   while (from <= o.levels.size()) {
     const auto comma = std::min(o.levels.find(',', from), o.levels.size());
     const std::string item = o.levels.substr(from, comma - from);
-    levels.emplace_back(item, parse_probability_ppm(item, "--levels"));
+    levels.emplace_back(item, algorithms::parse_probability_ppm("--levels", item));
     from = comma + 1;
   }
   const auto map = antkit::maps::load_map(o.map);
