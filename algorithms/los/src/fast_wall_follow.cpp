@@ -72,6 +72,13 @@ TeamCommand FastWallFollow::step(const TeamObservation& obs) {
   } else {
     cmd.move = completion_.decide(map_, {a, b});
   }
+  // The guard of the header's last choice: never a move the map itself rules out.
+  for (std::size_t r = 0; r < 2; ++r) {
+    const int m = cmd.move[r];
+    if (m == kStay) continue;
+    const Cell to = obs.robots[r].position + kernel::kNeighbours8[static_cast<std::size_t>(m)];
+    if (!map_.in_bounds(to) || map_.at(to) == CellState::O) cmd.move[r] = kStay;
+  }
   last_position_ = {a, b};
   sight_before_ = obs.line_of_sight;
   first_tick_ = false;

@@ -54,6 +54,11 @@
 //     furthest point for 4 (W + H) + 64 ticks. Then step 7.
 //   * The whole run stops, in any stage, as soon as no frontier cell is left (rule 6 as the issue
 //     states it: what can be observed is explored).
+//   * A move whose target is off the grid or a cell the map holds as an obstacle is never
+//     emitted: the robot stays instead. A consistent body never makes the trace ask for one (the
+//     golden hashes are unchanged by this guard), but a body that does not go where it was told
+//     (a robot observed away from the cell its trace put it on) would otherwise be sent off the
+//     grid; fuzz/controller_los.cpp found that.
 #include <antkit/frontier/planner.hpp>
 #include <antkit/kernel/grid.hpp>
 #include <antkit/los/exploration_map.hpp>
