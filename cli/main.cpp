@@ -6,6 +6,7 @@
 #include <antkit/kernel/input_error.hpp>
 #include <exception>
 #include <iostream>
+#include <string>
 
 namespace antkit::cli {
 std::map<std::string, Registrar>& registry() {
@@ -14,6 +15,23 @@ std::map<std::string, Registrar>& registry() {
 }
 } // namespace antkit::cli
 
+namespace {
+
+// An option given with an empty value ("--start ''") is bad input, not the option left out: every
+// option that takes a value, in every subcommand, refuses an empty one (exit 2, naming the option).
+void refuse_empty_values(CLI::App& app) {
+  const CLI::Validator non_empty(
+      [](std::string& value) -> std::string {
+        return value.empty() ? "an empty value; give one, or leave the option out" : "";
+      },
+      "", "non-empty");
+  for (CLI::Option* option : app.get_options())
+    if (option->get_items_expected_max() > 0) option->check(non_empty);
+  for (CLI::App* sub : app.get_subcommands({})) refuse_empty_values(*sub);
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"antkit: deterministic, verified kernels for ant-inspired robots that measure and "
                "cover space with markers",
@@ -21,8 +39,22 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("antkit ") + ANTKIT_VERSION);
   app.require_subcommand(1);
   for (const auto& [name, registrar] : antkit::cli::registry()) registrar(app);
+  refuse_empty_values(app);
 
   try {
+    // A first word that is neither an option nor a subcommand: name it (CLI11 would only say that
+    // a subcommand is required).
+    if (argc > 1 && argv[1][0] != '-') {
+      std::string names;
+      bool known = false;
+      for (const CLI::App* sub : app.get_subcommands({})) {
+        known = known || sub->get_name() == argv[1];
+        names += (names.empty() ? "" : ", ") + sub->get_name();
+      }
+      if (!known)
+        throw antkit::kernel::InputError("", "unknown subcommand '" + std::string(argv[1]) +
+                                                 "'; expected one of " + names);
+    }
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
