@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <optional>
 #include <set>
+#include <type_traits>
 
 namespace {
 
@@ -109,7 +110,8 @@ void run(fuzzing::Bytes& in, Variant variant, Observe observe, Lie lie, Arbitrar
     world.emplace(map, stc::subcell_of(cell, q0), noise,
                   variant == Variant::AntEdge ? stc::Marker::Edge : stc::Marker::WholeSubCell);
   }
-  std::size_t tiles = 0;
+  std::size_t tiles = 0; // online STC's memory tiles after the last step (or at the start)
+  if constexpr (std::is_same_v<Ctl, stc::OnlineStc>) tiles = a.memory().tiles();
   bool desynced = false; // a lie about freedom made the controller and the world part ways
   for (std::size_t step = 0; step < kMaxSteps && !in.empty(); ++step) {
     Obs o{};
