@@ -1,8 +1,8 @@
 // `antkit buffon`: Buffon's-needle blind area measurement (issue 4, paper 000).
 //
 //   antkit buffon --arena SPEC|FILE.wkt [--trials N] [--steps N] [--width W] [--seed S]
-//                 [--threads T] [--noise X] [--precision P [--max-steps2 N]] [--format table|json]
-//                 [--svg FILE]
+//                 [--threads T] [--noise X] [--precision P [--max-steps2 N]
+//                 [--first-visit fixed|online [--max-steps N]]] [--format table|json] [--svg FILE]
 //
 // JSON: {"arena": {"spec", "area"}, "trials": [{"trial", "bc", "nbc", "length1", "length2",
 //        "crossings_exact", "area_closed_form", "area_closed_form_ci", "blocked", "hash"}],
@@ -20,6 +20,15 @@
 // rule's interval) and "variance_visit1", "variance_visit2" (the variance's two shares: when visit
 // 1's dominates, only a longer visit 1 helps), and the summary has "precision", "reached_precision"
 // (how many trials reached it) and "length2_median". Without --precision the output is unchanged.
+//
+// --first-visit online (issue 17; with --precision): visit 1 decides its own length from its
+// self-crossings (stopping.hpp, FirstVisitMonitor) and stops when a visit 2 of its length would
+// meet P; visit 2 then runs the rule above. --max-steps N is the budget of both visits together
+// (visit 1 at most N / 2, visit 2 what is left); without it visit 1 is capped by --steps and visit
+// 2 by --max-steps2. Each trial then also has "steps1", "steps2", "first_visit_reached",
+// "self_crossings", "area_pilot" (length1^2 / (pi S)) and "stopped" (why the trial ended:
+// "precision", "visit 1 cap", "visit 2 cap"), and the summary "first_visit_reached" and
+// "length1_median". --first-visit fixed (the default) is the behaviour above.
 #include "buffon_options.hpp"
 #include "commands.hpp"
 #include "output.hpp"
@@ -55,8 +64,10 @@ struct BuffonCommand {
   std::uint64_t seed = 1;
   std::int64_t threads = 1;
   std::string svg;
-  std::string precision;        // as typed; read exactly by parse_precision
-  bool precision_given = false; // without --precision visit 2 runs all --steps
+  std::string precision;             // as typed; read exactly by parse_precision
+  bool precision_given = false;      // without --precision visit 2 runs all --steps
+  std::string first_visit = "fixed"; // --first-visit fixed|online
+  std::int64_t max_steps = 0;        // --max-steps: both visits' budget (online first visit)
   Format format = Format::Table;
 };
 
@@ -96,6 +107,15 @@ void run(const BuffonCommand& c) {
     throw InputError("--max-steps2", "--max-steps2 needs --precision");
   if (c.max_steps2 < 0 || c.max_steps2 > 100000000)
     throw InputError("--max-steps2", "visit 2's step cap must be in [1, 100000000]");
+  const bool online1 = c.first_visit == "online";
+  if (!online1 && c.first_visit != "fixed")
+    throw InputError("--first-visit", "expected 'fixed' or 'online', got '" + c.first_visit + "'");
+  if (online1 && !c.precision_given)
+    throw InputError("--first-visit", "an online first visit needs --precision");
+  if (c.max_steps != 0 && !online1)
+    throw InputError("--max-steps", "--max-steps (both visits' budget) needs --first-visit online");
+  if (c.max_steps < 0 || c.max_steps == 1 || c.max_steps > 200000000)
+    throw InputError("--max-steps", "the budget for both visits must be in [2, 200000000]");
   if (!(c.width >= 0.01 && c.width <= 10))
     throw InputError("--width", "the trail width must be in [0.01, 10] units");
   if (!(c.noise >= 0 && c.noise <= 1))
@@ -117,6 +137,8 @@ void run(const BuffonCommand& c) {
     precision = buffon::parse_precision(c.precision);
     params.precision_millionths = precision;
     params.visit2_steps = c.max_steps2;
+    params.online_first_visit = online1;
+    params.total_steps = c.max_steps;
   }
 
   const auto count = static_cast<std::uint64_t>(c.trials);
@@ -129,7 +151,8 @@ void run(const BuffonCommand& c) {
 
   nlohmann::json trials = nlohmann::json::array();
   std::vector<double> nbcs, areas, lengths2;
-  std::uint64_t stopped = 0;
+  std::uint64_t stopped = 0, first_reached = 0;
+  std::vector<double> lengths1;
   antkit::kernel::TraceHash all(c.seed);
   for (const auto& t : results) {
     const double l1 = fx_to_double(t.length1_raw), l2 = fx_to_double(t.length2_raw);
@@ -164,6 +187,22 @@ void run(const BuffonCommand& c) {
       trials.back()["variance_visit1"] = t.variance_visit1;
       trials.back()["variance_visit2"] = t.variance_visit2;
     }
+    if (online1) {
+      first_reached += t.first_visit_reached ? 1 : 0;
+      lengths1.push_back(l1);
+      auto& j = trials.back();
+      j["steps1"] = t.steps1;
+      j["steps2"] = t.steps2;
+      j["first_visit_reached"] = t.first_visit_reached;
+      j["self_crossings"] = t.self_crossings;
+      constexpr double pi = 3.14159265358979323846;
+      j["area_pilot"] = t.self_crossings > 0
+                            ? nlohmann::json(l1 * l1 / (pi * static_cast<double>(t.self_crossings)))
+                            : nlohmann::json();
+      j["stopped"] = t.reached_precision     ? "precision"
+                     : t.first_visit_reached ? "visit 2 cap"
+                                             : "visit 1 cap";
+    }
   }
   nlohmann::json result;
   result["arena"] = {{"spec", c.arena}, {"area", arena.area()}};
@@ -178,6 +217,10 @@ void run(const BuffonCommand& c) {
     result["summary"]["precision"] = static_cast<double>(precision) / buffon::kPrecisionDenominator;
     result["summary"]["reached_precision"] = stopped;
     result["summary"]["length2_median"] = buffon::quantile(lengths2, 0.5);
+  }
+  if (online1) {
+    result["summary"]["first_visit_reached"] = first_reached;
+    result["summary"]["length1_median"] = buffon::quantile(lengths1, 0.5);
   }
   result["hash"] = antkit::kernel::hash_hex(all.finish());
   if (!c.svg.empty()) write_svg(c.svg, arena, results[0]);
@@ -204,6 +247,11 @@ void register_buffon(CLI::App& app) {
       "visit 2 is capped by --max-steps2, default --steps; large arenas need a longer visit 1)");
   sub->add_option("--max-steps2", options->max_steps2,
                   "With --precision: visit 2's step cap (default: --steps)");
+  sub->add_option("--first-visit", options->first_visit,
+                  "With --precision: 'fixed' (visit 1 runs --steps; the default) or 'online' "
+                  "(visit 1 stops when its self-crossings say a visit 2 of its length meets P)");
+  sub->add_option("--max-steps", options->max_steps,
+                  "With --first-visit online: the step budget of both visits together");
   sub->add_option("--svg", options->svg, "Draw trial 0's trails to this SVG file");
   antkit::cli::add_format_option(*sub, options->format);
   sub->callback([options, precision] {

@@ -116,17 +116,54 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
   kernel::TraceHash hash(params.seed);
   hash.add_u64(trial);
   PheromoneRaster raster(world.lower(), world.upper(), params.width, std::move(scratch.raster));
-  VisitLog first = run_visit(
-      world, params, trial, 1, hash,
-      [&raster](const Pose& p) {
-        raster.lay(p.position);
-        return true;
-      },
-      std::move(scratch.trail1));
+  const bool online1 = params.online_first_visit;
+  if (online1 && params.precision_millionths == 0)
+    throw kernel::InputError("--first-visit", "an online first visit needs --precision");
+  if (params.total_steps != 0 && !online1)
+    throw kernel::InputError("--max-steps", "a budget for both visits needs an online first visit");
+  if (online1 && params.total_steps != 0 && params.total_steps < 2)
+    throw kernel::InputError("--max-steps", "the budget for both visits must be at least 2 steps");
+  TrialParams params1 = params;
+  if (params.total_steps != 0) params1.steps = params.total_steps / 2;
+  VisitLog first;
+  if (!online1) {
+    first = run_visit(
+        world, params1, trial, 1, hash,
+        [&raster](const Pose& p) {
+          raster.lay(p.position);
+          return true;
+        },
+        std::move(scratch.trail1));
+  } else {
+    // Visit 1 decides its own length (stopping.hpp: FirstVisitMonitor).
+    std::optional<SelfCrossingCounter> self;
+    FirstVisitMonitor monitor(params.precision_millionths);
+    std::vector<std::uint32_t> crossed;
+    first = run_visit(
+        world, params1, trial, 1, hash,
+        [&](const Pose& p) {
+          raster.lay(p.position);
+          if (!self) {
+            self.emplace(world.lower(), world.upper(), p.position); // the start pose
+            return true;
+          }
+          crossed.clear();
+          self->add(p.position, &crossed);
+          for (std::uint32_t segment : crossed) monitor.crossing(segment);
+          return !monitor.end_step();
+        },
+        std::move(scratch.trail1));
+    result.first_visit_reached = monitor.reached();
+    result.self_crossings = monitor.count();
+    result.variance_self = monitor.variance();
+    hash.add_u64(monitor.count());
+  }
   CrossingDetector detector;
   std::uint64_t bc = 0;
   TrialParams params2 = params;
   if (params.visit2_steps != 0) params2.steps = params.visit2_steps;
+  if (params.total_steps != 0)
+    params2.steps = params.total_steps - static_cast<std::int64_t>(first.trail.size() - 1);
   VisitLog second;
   std::optional<std::uint64_t> counted; // visit 2's crossings, when the online rule counted them
   if (params.precision_millionths == 0) {
@@ -166,6 +203,8 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
   }
   keep(scratch.raster, raster.release_storage());
   result.bc = bc;
+  result.steps1 = static_cast<std::int64_t>(first.trail.size()) - 1;
+  result.steps2 = static_cast<std::int64_t>(second.trail.size()) - 1;
   result.length1_raw = first.length_raw;
   result.length2_raw = second.length_raw;
   result.blocked = first.blocked + second.blocked;

@@ -102,6 +102,47 @@ bool PrecisionMonitor::end_step() {
   return reached_;
 }
 
+bool first_visit_met(std::span<const std::uint64_t, kK> runs, std::uint32_t precision_millionths) {
+  check_precision(precision_millionths);
+  std::uint64_t twice_s = 0;
+  for (std::uint64_t v : runs) twice_s += v;
+  const std::uint64_t s = twice_s / 2;
+  if (s == 0) return false;
+  // W = 9 V_S = 10 sum R^2 - (2 S)^2 < 2^112, floored at 9 S.
+  const u128 w = std::max(spread_of(runs, twice_s), static_cast<u128>(9) * s);
+  const u128 p = precision_millionths;
+  // Left < 2^55 2^112 = 2^167; right: 18000 p^2 < 2^55, times S^2 < 2^108. Exact in 256 bits.
+  const u128 coeff_left = static_cast<u128>(PrecisionMonitor::kZSquaredMilli) * (kD + p) * (kD + p);
+  const u128 coeff_right = static_cast<u128>(18000) * p * p;
+  return leq(mul(coeff_left, w), mul(coeff_right, static_cast<u128>(s) * s));
+}
+
+FirstVisitMonitor::FirstVisitMonitor(std::uint32_t precision_millionths)
+    : p_(precision_millionths) {
+  check_precision(precision_millionths);
+}
+
+void FirstVisitMonitor::crossing(std::uint64_t earlier) {
+  // The current step is steps_ + 1, its segment steps_: one end in its block, one in earlier's.
+  ++blocks_.back();
+  ++blocks_[static_cast<std::size_t>(earlier / kBlockSteps)];
+  ++s_;
+}
+
+bool FirstVisitMonitor::end_step() {
+  if (++steps_ % kBlockSteps != 0) return false;
+  const std::size_t full = blocks_.size(); // blocks completed, the last one included
+  blocks_.push_back(0);
+  if (full % kK != 0) return false;
+  const std::size_t m = full / kK;
+  std::uint64_t runs[kK] = {};
+  for (std::size_t g = 0; g < kK; ++g)
+    for (std::size_t b = g * m; b < (g + 1) * m; ++b) runs[g] += blocks_[b];
+  variance_ = s_ ? static_cast<double>(spread_of(runs, 2 * s_)) / 9.0 : 0.0;
+  reached_ = first_visit_met(runs, p_);
+  return reached_;
+}
+
 std::uint32_t parse_precision(std::string_view text) {
   const std::string shown(text);
   auto bad = [&shown]() {

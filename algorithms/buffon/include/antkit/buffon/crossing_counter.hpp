@@ -40,3 +40,50 @@ private:
 };
 
 } // namespace antkit::buffon
+
+namespace antkit::buffon {
+
+// Online exact self-crossing count (issue 17): the proper crossings of a growing polyline (the
+// first visit, step by step) with its own earlier segments, so that visit 1 can estimate the area
+// from its own trail while it lays it. For one isotropic curve of length L in a region of area A
+// the expected number of self-crossings is L^2 / (pi A) (the two-curve law 2 L1 L2 / (pi A) over
+// the L^2 / 2 pairs of the curve's elements), so A_pilot = L^2 / (pi S).
+//
+// The freshly laid stretch is excluded: a new segment is tested only against the segments at least
+// kGap before it (segment i joins points i and i + 1; segment j is tested against i <= j - kGap).
+// kGap = 25 steps is one unit of trail at full speed (0.04 per step), the robot's diameter: a
+// crossing of a stretch still under the body is not one the detector at the centre could sense
+// (it has not left the band), and pairs of elements that close along the curve are not the
+// independent pairs the law counts. The choice is ours; the paper is silent.
+//
+// Buckets as CrossingCounter (0.5-unit squares) over a box given up front (the arena's bounding
+// box); a point outside it is clamped to the border buckets, which keeps the count exact (clamping
+// is monotone, so two crossing segments still share a bucket). Deterministic: the count is a
+// property of the polyline only, and tests hold it to the brute-force count of the pairs.
+class SelfCrossingCounter {
+public:
+  static constexpr std::uint32_t kGap = 25;
+  // `first`: the polyline's first point; [lower, upper]: the box its points lie in.
+  SelfCrossingCounter(kernel::FxPoint lower, kernel::FxPoint upper, kernel::FxPoint first);
+  // Extends the polyline to `next`; returns the number of proper crossings of the new segment with
+  // the segments at least kGap before it, appending their indices to `crossed` when given. Throws
+  // InputError for more than 2^32 - 2 segments.
+  std::uint64_t add(kernel::FxPoint next, std::vector<std::uint32_t>* crossed = nullptr);
+  // Segments so far.
+  [[nodiscard]] std::uint64_t segments() const noexcept { return points_.size() - 1; }
+
+private:
+  static constexpr int kBucketShift = 15;
+  struct Box {
+    std::int64_t i0, i1, j0, j1;
+  };
+  [[nodiscard]] Box box_of(kernel::FxPoint a, kernel::FxPoint b) const noexcept;
+  void insert(std::uint32_t segment);
+  std::vector<kernel::FxPoint> points_;
+  std::int64_t bx0_ = 0, by0_ = 0, cols_ = 1, rows_ = 1;
+  std::vector<std::vector<std::uint32_t>> buckets_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t query_ = 0;
+};
+
+} // namespace antkit::buffon

@@ -189,6 +189,15 @@ struct TrialParams {
   // Visit 2's step cap when non-zero (visit 1 keeps `steps`): with the online rule, a long cap on
   // visit 2 without a longer visit 1. 0: `steps` for both visits.
   std::int64_t visit2_steps = 0;
+  // Online first visit (issue 17; FirstVisitMonitor in stopping.hpp): with precision_millionths,
+  // visit 1 counts its own exact self-crossings as it walks and ends at the first check where a
+  // visit 2 of its length would meet the precision (or after `steps` steps). Visit 2 then runs the
+  // rule above, capped by visit2_steps (or `steps`). false: visit 1 runs all `steps` steps.
+  bool online_first_visit = false;
+  // With online_first_visit, when non-zero: the budget of both visits together. Visit 1 is capped
+  // at half of it (the rule aims at equal visits, so a visit 1 that needs more leaves visit 2 too
+  // little) and visit 2 at what visit 1 left; `steps` and visit2_steps are then not used.
+  std::int64_t total_steps = 0;
 };
 
 struct TrialResult {
@@ -204,6 +213,14 @@ struct TrialResult {
   // the variance estimate's two shares at the last check (stopping.hpp; reporting only).
   bool reached_precision = false;
   double variance_visit1 = 0, variance_visit2 = 0;
+  // Steps each visit took.
+  std::int64_t steps1 = 0, steps2 = 0;
+  // With online_first_visit: whether visit 1 stopped on its rule (false: it ran to its cap), its
+  // exact self-crossing count S (the pilot estimate is length1^2 / (pi S)) and the batch-means
+  // variance of S at its last check.
+  bool first_visit_reached = false;
+  std::uint64_t self_crossings = 0;
+  double variance_self = 0;
 };
 
 // One visit: up to `steps` steps from the start pose; calls on_step(pose) after every step (and

@@ -80,6 +80,77 @@ private:
   Spread spread_;
 };
 
+// Online length of the first visit (issue 17; paper 000's closing question "Can the first visit's
+// duration be determined on-line, that is during the visit?").
+//
+// While visit 1 walks it counts S, the exact proper crossings of its centre line with its own
+// earlier trail (SelfCrossingCounter, which leaves out the stretch still under the body). For one
+// isotropic curve of length L, E[S] = L^2 / (pi A): the pilot A_pilot = L^2 / (pi S) estimates
+// the same (eroded) area as the two-visit closed form, from visit 1 alone.
+//
+// The rule, and why. Write the final count N of a second visit of length L2 as a two-sample
+// U-statistic over the two trails' elements, with the Hajek decomposition Var(N) / N^2 =
+// a / (L1 L2) + b / L1 + b / L2: a = pi A / 2 the Poisson part, b the part from the behaviour's
+// uneven sampling of the arena (the same b for both visits: the same behaviour walks them). S is
+// the one-sample U-statistic of degree 2 over visit 1's elements, and the same decomposition gives
+// Var(S) / S^2 = 2 a / L1^2 + 4 b / L1 = 2 Var(N) / N^2 at L2 = L1, term by term. So:
+//   * when the pilot's relative variance is at most twice the budget, a visit 2 as long as visit 1
+//     meets the request, and the total trail L1 + L2 under the budget a / (L1 L2) + b (1/L1 +
+//     1/L2) <= budget is smallest at L1 = L2 (the budget is symmetric in the two lengths);
+//   * visit 1's own share of the final variance, b / L1, is then at most half the budget, so the
+//     request is within reach of visit 2 (the existing rule below, which measures the real
+//     variance and runs visit 2 until it is met).
+// The budget is the visit-2 rule's: z^2 (1 + P)^2 Var(N) <= P^2 N^2. Visit 1 therefore stops at
+// the first check where
+//     z^2 (1 + P)^2 V_S <= 2 P^2 S^2,
+// V_S the batch-means variance of S: visit 1's steps in kBlockSteps-step blocks, grouped into
+// kBatches equal runs at a check; with R_g the crossings that have an end in run g (a crossing
+// inside one run counts twice there, so sum R_g = 2 S), V_S = kBatches s^2(R) (the form of the
+// visit-2 rule's shares, which is conservative by the same factor in the Poisson part: twice
+// S against twice N, so the two rules stay in the ratio above), floored at S (Poisson). In
+// exact integers, W = 9 V_S = 10 sum R_g^2 - (2 S)^2 and
+//     5118 (D + p)^2 max(W, 9 S) <= 18000 p^2 S^2,
+// compared in 256 bits, every kBatches blocks (every 10 000 steps: visit 1 is at least 10 000
+// steps long under the rule).
+//
+// Assumptions, stated here because the rule rests on them: both visits walk the same behaviour
+// (same b); the trail elements' pairs are weakly dependent beyond the excluded stretch (kGap); the
+// arena's eroded area does not change between the visits. The property tests
+// (tests/convergence/test_first_visit.cpp) measure what the rule then does: the visits' lengths
+// come out close to each other, and the pair reaches the request.
+class FirstVisitMonitor {
+public:
+  static constexpr int kBatches = PrecisionMonitor::kBatches;
+  static constexpr std::int64_t kBlockSteps = PrecisionMonitor::kBlockSteps;
+
+  // Throws InputError("--precision") unless p is in [1, 999999].
+  explicit FirstVisitMonitor(std::uint32_t precision_millionths);
+
+  // One self-crossing of visit 1: the current step's segment with the earlier segment `earlier`
+  // (0-based segment index; segment i is made by step i + 1).
+  void crossing(std::uint64_t earlier);
+  // Ends a step of visit 1; true when visit 1 may stop here.
+  bool end_step();
+
+  [[nodiscard]] std::uint64_t count() const noexcept { return s_; }
+  [[nodiscard]] bool reached() const noexcept { return reached_; }
+  // V_S at the last check (crossings^2; 0 before the first), for reporting.
+  [[nodiscard]] double variance() const noexcept { return variance_; }
+
+private:
+  std::uint32_t p_;
+  std::uint64_t s_ = 0;
+  std::vector<std::uint64_t> blocks_{0}; // crossings with an end in each block so far
+  std::int64_t steps_ = 0;
+  bool reached_ = false;
+  double variance_ = 0;
+};
+
+// The exact test on the runs' counts (each crossing counted at both ends, sum = 2 S): true when
+// visit 1 may stop (the inequality above). Exposed for the tests. Counts must be below 2^54.
+bool first_visit_met(std::span<const std::uint64_t, FirstVisitMonitor::kBatches> runs,
+                     std::uint32_t precision_millionths);
+
 // The exact test on a crossing table's row and column sums (each sums to N): true when the
 // request is met (the inequality above). Exposed for the tests. Sums must be below 2^54.
 bool precision_met(std::span<const std::uint64_t, PrecisionMonitor::kBatches> rows,
