@@ -5,7 +5,8 @@
 //   a probability (stc --noise, --levels: algorithms::parse_probability_ppm), --density and
 //   --size WxH (cover: uniform::parse_density_ppm, parse_size), --precision (buffon:
 //   buffon::parse_precision), --raster (arena: geometry::CellSize::parse), --baud and --framing
-//   (record, emulate: devices::parse_baud, parse_framing), and the names of --variant and --algo.
+//   (record, emulate: devices::parse_baud, parse_framing), and the names of --variant, --algo and
+//   --rule (buffon::parse_rule).
 // Bad text must be a kernel::InputError naming the option (anything else escaping is a crash);
 // an accepted value must be in its documented range and, where the format is canonical enough,
 // survive printing and parsing again.
@@ -79,6 +80,11 @@ void parse(unsigned which, std::string_view text) {
     ANTKIT_FUZZ_REQUIRE(0 < p && p < 1'000'000);
     break;
   }
+  case 12: {
+    const auto rule = buffon::parse_rule(text);
+    ANTKIT_FUZZ_REQUIRE(buffon::rule_name(rule) == text);
+    break;
+  }
   case 7: {
     const auto s = geometry::CellSize::parse(text, "--raster");
     ANTKIT_FUZZ_REQUIRE(s.num() > 0 && s.den() > 0);
@@ -108,7 +114,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
   try {
-    parse(data[0] % 12u, text);
+    parse(data[0] % 13u, text);
   } catch (const kernel::InputError& e) {
     ANTKIT_FUZZ_REQUIRE(!e.where().empty() && !e.message().empty());
   }

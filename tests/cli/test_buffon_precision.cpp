@@ -1,5 +1,7 @@
-// `antkit buffon --precision P` (issue 8, item 5): visit 2 ends at the first check where the
-// rule's interval is within P (stopping.hpp); bad P or --max-steps2 exits 2.
+// `antkit buffon --precision P`: with --rule fixed (issue 8, item 5) visit 2 ends at the first
+// check where the rule's interval is within P (stopping.hpp); the default two markers and the
+// online first visit (issue 17) end the run when P is met or the budget is spent, and say which;
+// bad P or --max-steps2 exits 2.
 #include "run_antkit.hpp"
 
 #include <catch2/catch.hpp>
@@ -9,7 +11,7 @@ using antkit::test::run_antkit;
 
 TEST_CASE("antkit buffon --precision stops visit 2 at a check once the interval is narrow") {
   const auto r = run_antkit("buffon --arena circle:d=20 --trials 3 --steps 50000 --max-steps2 "
-                            "400000 --precision 0.1 --format json");
+                            "400000 --precision 0.1 --rule fixed --format json");
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);
   const auto& s = j["summary"];
@@ -36,14 +38,15 @@ TEST_CASE("antkit buffon --precision stops visit 2 at a check once the interval 
   // A finer precision needs a longer second visit.
   const auto fine = nlohmann::json::parse(
       run_antkit("buffon --arena circle:d=20 --trials 3 --steps 50000 --max-steps2 400000 "
-                 "--precision 0.05 --format json")
+                 "--precision 0.05 --rule fixed --format json")
           .out);
   CHECK(fine["summary"]["length2_median"].get<double>() > s["length2_median"].get<double>());
 }
 
 TEST_CASE("antkit buffon --precision: the cap wins when the precision is out of reach") {
   const auto r = run_antkit(
-      "buffon --arena circle:d=20 --trials 2 --steps 20000 --precision 0.01 --format json");
+      "buffon --arena circle:d=20 --trials 2 --steps 20000 --precision 0.01 --rule fixed "
+      "--format json");
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["summary"]["reached_precision"].get<int>() == 0);
@@ -54,8 +57,9 @@ TEST_CASE("antkit buffon --precision: the cap wins when the precision is out of 
 }
 
 TEST_CASE("antkit buffon --max-steps2 needs --precision and a positive cap") {
-  for (const std::string args : {"--max-steps2 1000", "--precision 0.1 --max-steps2 -5",
-                                 "--precision 0.1 --max-steps2 200000000"}) {
+  for (const std::string args :
+       {"--max-steps2 1000", "--precision 0.1 --rule fixed --max-steps2 -5",
+        "--precision 0.1 --rule online --max-steps2 200000000"}) {
     const auto r = run_antkit("buffon --arena circle:d=20 --steps 100 " + args);
     INFO(args << "\n" << r.err);
     CHECK(r.status == 2);
@@ -79,5 +83,68 @@ TEST_CASE("antkit buffon rejects a bad --precision with exit 2") {
     CHECK(r.err.rfind("antkit: error: ", 0) == 0);
     CHECK(r.err.find("--precision") != std::string::npos);
     CHECK(r.out.empty());
+  }
+}
+
+TEST_CASE("antkit buffon --precision lays two markers by default and reaches P") {
+  const auto r =
+      run_antkit("buffon --arena circle:d=20 --trials 2 --threads 2 --precision 0.2 --format json");
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["summary"]["rule"] == "markers");
+  CHECK(j["summary"]["reached_precision"].get<int>() == 2);
+  CHECK_FALSE(j["summary"].contains("budget_note"));
+  for (const auto& t : j["trials"]) {
+    CHECK(t["stopped"] == "precision");
+    CHECK(t["reached_precision"].get<bool>());
+    // Checks every 20 000 steps of the walk, 10 000 per marker.
+    const auto steps1 = t["steps1"].get<std::int64_t>(), steps2 = t["steps2"].get<std::int64_t>();
+    CHECK(steps1 == steps2);
+    CHECK(steps1 % 10000 == 0);
+    CHECK(t["precision_reached"].get<double>() <= 0.2 * (1 + 1e-9));
+    // The erosion correction raises the estimate (the centre explores less than the arena) and
+    // scales the interval with it.
+    const double a = t["area_closed_form"].get<double>(), c = t["area_corrected"].get<double>();
+    CHECK(c > a);
+    CHECK(t["wall_encounters"].get<std::uint64_t>() > 0);
+    CHECK(t["area_corrected_ci"][0].get<double>() < c);
+    CHECK(t["area_corrected_ci"][1].get<double>() > c);
+    CHECK(t["length_total"].get<double>() ==
+          Approx(t["length1"].get<double>() + t["length2"].get<double>()));
+  }
+}
+
+TEST_CASE("antkit buffon --rule online: visit 1 stops at a check on its self-crossings") {
+  const auto j = nlohmann::json::parse(
+      run_antkit(
+          "buffon --arena circle:d=20 --trials 2 --precision 0.2 --rule online --format json")
+          .out);
+  CHECK(j["summary"]["rule"] == "online");
+  CHECK(j["summary"]["first_visit_reached"].get<int>() == 2);
+  for (const auto& t : j["trials"]) {
+    CHECK(t["first_visit_reached"].get<bool>());
+    CHECK(t["steps1"].get<std::int64_t>() % 10000 == 0);
+    CHECK(t["self_crossings"].get<std::uint64_t>() > 0);
+    CHECK(t["area_pilot"].is_number());
+    CHECK(t["stopped"] == "precision");
+  }
+}
+
+TEST_CASE("antkit buffon: a budget too small says so and reports the precision reached") {
+  for (const std::string rule : {"markers", "online"}) {
+    const auto r = run_antkit("buffon --arena circle:d=20 --trials 2 --precision 0.01 --rule " +
+                              rule + " --max-steps 30000 --format json");
+    INFO(rule << "\n" << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.find("antkit: note: 2 of 2 trials ran out of steps") != std::string::npos);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["summary"]["reached_precision"].get<int>() == 0);
+    CHECK(j["summary"]["budget_note"].is_string());
+    for (const auto& t : j["trials"]) {
+      CHECK(t["steps1"].get<std::int64_t>() + t["steps2"].get<std::int64_t>() == 30000);
+      CHECK(t["stopped"] == (rule == "markers" ? "budget" : "visit 1 cap"));
+      CHECK(t["precision_reached"].get<double>() > 0.01);
+    }
   }
 }

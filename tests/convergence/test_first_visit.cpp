@@ -205,7 +205,7 @@ TEST_CASE("FirstVisitMonitor checks every 10 000 steps on the runs it accumulate
   });
 }
 
-TEST_CASE("online first visit: the trial's S is visit 1's self-crossing count; the budget holds",
+TEST_CASE("online first visit: the trial's S is visit 1's self-crossing count and the budget holds",
           "[unit]") {
   const auto arena = antkit::geometry::build_arena_spec("circle:d=20").arena;
   const buffon::World world(arena.walls_fx());

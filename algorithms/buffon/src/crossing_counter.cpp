@@ -87,20 +87,19 @@ std::uint64_t CrossingCounter::add(FxPoint a, FxPoint b, std::vector<std::uint32
 
 namespace antkit::buffon {
 
-SelfCrossingCounter::SelfCrossingCounter(FxPoint lower, FxPoint upper, FxPoint first)
-    : points_{first} {
+GrowingTrailIndex::GrowingTrailIndex(FxPoint lower, FxPoint upper) {
   bx0_ = bucket_of(std::min(lower.x.raw(), upper.x.raw()), kBucketShift);
   by0_ = bucket_of(std::min(lower.y.raw(), upper.y.raw()), kBucketShift);
   cols_ = bucket_of(std::max(lower.x.raw(), upper.x.raw()), kBucketShift) - bx0_ + 1;
   rows_ = bucket_of(std::max(lower.y.raw(), upper.y.raw()), kBucketShift) - by0_ + 1;
-  // A Q15.16 box is at most 2^17 buckets a side; a bigger grid than 2^24 buckets (4096 units a
-  // side) would be mostly empty vectors: coarsen by clamping instead (still exact, see header).
+  // A grid of more than 2^24 buckets (4096 units a side) would be mostly empty vectors: coarsen by
+  // clamping instead (still exact, see the header).
   cols_ = std::min<std::int64_t>(cols_, 4096);
   rows_ = std::min<std::int64_t>(rows_, 4096);
   buckets_.resize(static_cast<std::size_t>(cols_ * rows_));
 }
 
-SelfCrossingCounter::Box SelfCrossingCounter::box_of(FxPoint a, FxPoint b) const noexcept {
+GrowingTrailIndex::Box GrowingTrailIndex::box_of(FxPoint a, FxPoint b) const noexcept {
   auto clamp = [](std::int64_t v, std::int64_t n) { return std::clamp<std::int64_t>(v, 0, n - 1); };
   return {clamp(bucket_of(std::min(a.x.raw(), b.x.raw()), kBucketShift) - bx0_, cols_),
           clamp(bucket_of(std::max(a.x.raw(), b.x.raw()), kBucketShift) - bx0_, cols_),
@@ -108,24 +107,23 @@ SelfCrossingCounter::Box SelfCrossingCounter::box_of(FxPoint a, FxPoint b) const
           clamp(bucket_of(std::max(a.y.raw(), b.y.raw()), kBucketShift) - by0_, rows_)};
 }
 
-void SelfCrossingCounter::insert(std::uint32_t segment) {
-  const Box box = box_of(points_[segment], points_[segment + 1]);
+std::uint32_t GrowingTrailIndex::insert(FxPoint a, FxPoint b) {
+  if (segments_.size() >= std::numeric_limits<std::uint32_t>::max() - 1)
+    throw kernel::InputError("trail", "a trail of more than 2^32 - 2 segments");
+  const auto id = static_cast<std::uint32_t>(segments_.size());
+  segments_.push_back({a, b});
+  stamp_.push_back(0);
+  const Box box = box_of(a, b);
   for (std::int64_t j = box.j0; j <= box.j1; ++j)
     for (std::int64_t i = box.i0; i <= box.i1; ++i)
-      buckets_[static_cast<std::size_t>(j * cols_ + i)].push_back(segment);
+      buckets_[static_cast<std::size_t>(j * cols_ + i)].push_back(id);
+  return id;
 }
 
-std::uint64_t SelfCrossingCounter::add(FxPoint next, std::vector<std::uint32_t>* crossed) {
-  if (points_.size() - 1 >= std::numeric_limits<std::uint32_t>::max() - 1)
-    throw kernel::InputError("trail", "a trail of more than 2^32 - 2 segments");
-  const auto j = static_cast<std::uint32_t>(points_.size() - 1); // the new segment's index
-  points_.push_back(next);
-  stamp_.push_back(0);
-  // Segment j - kGap becomes testable now: the index holds exactly the segments 0 .. j - kGap.
-  if (j >= kGap) insert(j - kGap);
-  const FxPoint a = points_[j];
-  const Box box = box_of(a, next);
-  const kernel::FxSegment s{a, next};
+std::uint64_t GrowingTrailIndex::cross(FxPoint a, FxPoint b, std::vector<std::uint32_t>* crossed) {
+  if (segments_.empty()) return 0;
+  const Box box = box_of(a, b);
+  const kernel::FxSegment s{a, b};
   if (++query_ == 0) { // the stamps wrapped: forget them all (once per 2^32 queries)
     std::fill(stamp_.begin(), stamp_.end(), 0);
     query_ = 1;
@@ -136,11 +134,23 @@ std::uint64_t SelfCrossingCounter::add(FxPoint next, std::vector<std::uint32_t>*
       for (const std::uint32_t id : buckets_[static_cast<std::size_t>(y * cols_ + x)]) {
         if (stamp_[id] == query_) continue;
         stamp_[id] = query_;
-        if (!kernel::properly_cross(s, kernel::FxSegment{points_[id], points_[id + 1]})) continue;
+        if (!kernel::properly_cross(s, segments_[id])) continue;
         ++n;
         if (crossed) crossed->push_back(id);
       }
   return n;
+}
+
+SelfCrossingCounter::SelfCrossingCounter(FxPoint lower, FxPoint upper, FxPoint first)
+    : points_{first}, index_(lower, upper) {}
+
+std::uint64_t SelfCrossingCounter::add(FxPoint next, std::vector<std::uint32_t>* crossed) {
+  const auto j = static_cast<std::uint64_t>(points_.size() - 1); // the new segment's index
+  points_.push_back(next);
+  // Segment j - kGap becomes testable now: the index holds exactly the segments 0 .. j - kGap, and
+  // their ids in the index are their indices in the polyline.
+  if (j >= kGap) index_.insert(points_[j - kGap], points_[j - kGap + 1]);
+  return index_.cross(points_[j], next, crossed);
 }
 
 } // namespace antkit::buffon

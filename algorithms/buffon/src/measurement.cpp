@@ -123,14 +123,17 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
     throw kernel::InputError("--max-steps", "a budget for both visits needs an online first visit");
   if (online1 && params.total_steps != 0 && params.total_steps < 2)
     throw kernel::InputError("--max-steps", "the budget for both visits must be at least 2 steps");
+  WallEncounters encounters; // with precision_millionths only (bookkeeping for the estimate)
+  const bool count_walls = params.precision_millionths != 0;
   TrialParams params1 = params;
   if (params.total_steps != 0) params1.steps = params.total_steps / 2;
   VisitLog first;
   if (!online1) {
     first = run_visit(
         world, params1, trial, 1, hash,
-        [&raster](const Pose& p) {
+        [&](const Pose& p) {
           raster.lay(p.position);
+          if (count_walls) encounters.observe(world.sense(p, nullptr));
           return true;
         },
         std::move(scratch.trail1));
@@ -143,6 +146,7 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
         world, params1, trial, 1, hash,
         [&](const Pose& p) {
           raster.lay(p.position);
+          encounters.observe(world.sense(p, nullptr));
           if (!self) {
             self.emplace(world.lower(), world.upper(), p.position); // the start pose
             return true;
@@ -185,6 +189,7 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
         world, params2, trial, 2, hash,
         [&](const Pose& p) {
           if (detector.update(raster.at(p.position))) ++bc;
+          encounters.observe(world.sense(p, nullptr));
           if (!std::exchange(started, true)) {
             previous = p.position; // the start pose: no segment yet
             return true;
@@ -200,6 +205,7 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
     result.variance_visit1 = monitor.spread().visit1;
     result.variance_visit2 = monitor.spread().visit2;
     counted = monitor.count(); // = count_proper_crossings(first, second): tests/convergence
+    result.wall_encounters = encounters.count();
   }
   keep(scratch.raster, raster.release_storage());
   result.bc = bc;

@@ -176,4 +176,27 @@ std::uint32_t parse_precision(std::string_view text) {
   return static_cast<std::uint32_t>(fraction);
 }
 
+PrecisionRule parse_rule(std::string_view text) {
+  for (const PrecisionRule r :
+       {PrecisionRule::markers, PrecisionRule::online, PrecisionRule::fixed})
+    if (text == rule_name(r)) return r;
+  std::string shown(text.substr(0, 64));
+  for (char& ch : shown)
+    if (static_cast<unsigned char>(ch) < 0x20 || static_cast<unsigned char>(ch) >= 0x7f) ch = '?';
+  throw kernel::InputError("--rule", "expected 'markers', 'online' or 'fixed', got '" + shown +
+                                         (text.size() > 64 ? "...'" : "'"));
+}
+
+std::string_view rule_name(PrecisionRule rule) noexcept {
+  switch (rule) {
+  case PrecisionRule::markers:
+    return "markers";
+  case PrecisionRule::online:
+    return "online";
+  case PrecisionRule::fixed:
+    break;
+  }
+  return "fixed";
+}
+
 } // namespace antkit::buffon

@@ -43,6 +43,36 @@ private:
 
 namespace antkit::buffon {
 
+// A growing set of segments, bucketed as CrossingCounter does (0.5-unit squares) over a box given
+// up front (the arena's bounding box), that answers which of its segments a new segment crosses
+// properly. A point outside the box is clamped to the border buckets, which keeps the answers exact
+// (clamping is monotone, so two crossing segments still share a bucket). The online counts of
+// issue 17 (a visit's self-crossings, two markers' crossings) are built on it.
+class GrowingTrailIndex {
+public:
+  GrowingTrailIndex(kernel::FxPoint lower, kernel::FxPoint upper);
+  // Adds segment (a, b); its id is the number of segments added before it. Throws InputError for
+  // more than 2^32 - 2 segments.
+  std::uint32_t insert(kernel::FxPoint a, kernel::FxPoint b);
+  // The number of the set's segments that (a, b) crosses properly; with `crossed`, their ids are
+  // appended to it (in bucket-scan order).
+  std::uint64_t cross(kernel::FxPoint a, kernel::FxPoint b,
+                      std::vector<std::uint32_t>* crossed = nullptr);
+  [[nodiscard]] std::uint64_t size() const noexcept { return segments_.size(); }
+
+private:
+  static constexpr int kBucketShift = 15;
+  struct Box {
+    std::int64_t i0, i1, j0, j1;
+  };
+  [[nodiscard]] Box box_of(kernel::FxPoint a, kernel::FxPoint b) const noexcept;
+  std::vector<kernel::FxSegment> segments_;
+  std::int64_t bx0_ = 0, by0_ = 0, cols_ = 1, rows_ = 1;
+  std::vector<std::vector<std::uint32_t>> buckets_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t query_ = 0;
+};
+
 // Online exact self-crossing count (issue 17): the proper crossings of a growing polyline (the
 // first visit, step by step) with its own earlier segments, so that visit 1 can estimate the area
 // from its own trail while it lays it. For one isotropic curve of length L in a region of area A
@@ -56,10 +86,8 @@ namespace antkit::buffon {
 // (it has not left the band), and pairs of elements that close along the curve are not the
 // independent pairs the law counts. The choice is ours; the paper is silent.
 //
-// Buckets as CrossingCounter (0.5-unit squares) over a box given up front (the arena's bounding
-// box); a point outside it is clamped to the border buckets, which keeps the count exact (clamping
-// is monotone, so two crossing segments still share a bucket). Deterministic: the count is a
-// property of the polyline only, and tests hold it to the brute-force count of the pairs.
+// Deterministic: the count is a property of the polyline only (a GrowingTrailIndex over the box
+// [lower, upper]), and tests hold it to the brute-force count of the pairs.
 class SelfCrossingCounter {
 public:
   static constexpr std::uint32_t kGap = 25;
@@ -73,17 +101,8 @@ public:
   [[nodiscard]] std::uint64_t segments() const noexcept { return points_.size() - 1; }
 
 private:
-  static constexpr int kBucketShift = 15;
-  struct Box {
-    std::int64_t i0, i1, j0, j1;
-  };
-  [[nodiscard]] Box box_of(kernel::FxPoint a, kernel::FxPoint b) const noexcept;
-  void insert(std::uint32_t segment);
   std::vector<kernel::FxPoint> points_;
-  std::int64_t bx0_ = 0, by0_ = 0, cols_ = 1, rows_ = 1;
-  std::vector<std::vector<std::uint32_t>> buckets_;
-  std::vector<std::uint32_t> stamp_;
-  std::uint32_t query_ = 0;
+  GrowingTrailIndex index_;
 };
 
 } // namespace antkit::buffon

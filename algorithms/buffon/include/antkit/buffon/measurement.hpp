@@ -175,6 +175,34 @@ private:
   std::vector<std::uint64_t> bits_; // column bands of 64 cells, each `rows_` words (see above)
 };
 
+// Wall encounters (issue 17, the bias correction of estimate.hpp): the number of times the robot
+// comes near a wall, counted from its front IR readings with hysteresis: an encounter begins when
+// the largest reading reaches 1/2 (a wall within 0.375 of a sensor) after it had fallen below 1/4.
+// For a walk spread evenly over the region its centre explores, encounters per unit of trail are
+// proportional to that region's perimeter over its area (Crofton: a path crosses a fixed curve of
+// length P on average 2 L P / (pi A) times), which is what the erosion bias needs. The runs feed it
+// the noise-free readings at each pose (World::sense without a stream): the count is bookkeeping
+// for the estimate, not a decision, and a real robot's thresholds with hysteresis are robust to
+// the small noise its sensors have.
+class WallEncounters {
+public:
+  void observe(const Observation& obs) noexcept {
+    Fx top{};
+    for (const Fx v : obs.ir) top = v > top ? v : top;
+    if (!near_ && top >= Fx::from_ratio(1, 2)) {
+      near_ = true;
+      ++count_;
+    } else if (near_ && top < Fx::from_ratio(1, 4)) {
+      near_ = false;
+    }
+  }
+  [[nodiscard]] std::uint64_t count() const noexcept { return count_; }
+
+private:
+  bool near_ = false;
+  std::uint64_t count_ = 0;
+};
+
 struct TrialParams {
   std::uint64_t seed = 1;
   std::uint64_t experiment = kExperiment;
@@ -218,6 +246,11 @@ struct TrialResult {
   // With online_first_visit: whether visit 1 stopped on its rule (false: it ran to its cap), its
   // exact self-crossing count S (the pilot estimate is length1^2 / (pi S)) and the batch-means
   // variance of S at its last check.
+  // The share of length1 length2 whose element pairs the count covers: 1 for two visits; below 1
+  // for two markers (two_markers.hpp), whose estimate is 2 pair_share L1 L2 / (pi N).
+  double pair_share = 1.0;
+  // With precision_millionths (any rule): wall encounters over both visits (WallEncounters).
+  std::uint64_t wall_encounters = 0;
   bool first_visit_reached = false;
   std::uint64_t self_crossings = 0;
   double variance_self = 0;

@@ -163,4 +163,13 @@ bool precision_met(std::span<const std::uint64_t, PrecisionMonitor::kBatches> ro
 // six decimals).
 std::uint32_t parse_precision(std::string_view text);
 
+// How a run with a precision lays its trail (issue 17; `antkit buffon --rule`): two alternating
+// markers in one walk (two_markers.hpp; the default, the least trail), an online first visit
+// then visit 2 (FirstVisitMonitor), or a fixed first visit then visit 2 (issue 8).
+enum class PrecisionRule { markers, online, fixed };
+// "markers", "online" or "fixed", exactly; anything else throws InputError("--rule").
+PrecisionRule parse_rule(std::string_view text);
+// The name parse_rule reads.
+std::string_view rule_name(PrecisionRule rule) noexcept;
+
 } // namespace antkit::buffon
