@@ -17,11 +17,11 @@
 // the estimate, checked every 10 000 steps. --rule says how the trail is laid (issue 17):
 //  * markers (the default): one walk lays two markers in alternate 1000-step pieces and stops when
 //    the pair's crossings meet P (two_markers.hpp); length1/length2 are the two markers' trails,
-//    capped together by --max-steps (default 2 --steps).
+//    capped together by --max-steps (default 20 000 000 steps, far more than P >= 0.05 needs).
 //  * online: visit 1 decides its own length from its self-crossings (stopping.hpp,
 //    FirstVisitMonitor) and stops when a visit 2 of its length would meet P; visit 2 then runs
 //    until P is met. --max-steps N is the budget of both visits together (visit 1 at most N / 2,
-//    visit 2 what is left); without it visit 1 is capped by --steps and visit 2 by --max-steps2.
+//    visit 2 what is left; default 20 000 000). --steps and --max-steps2 are not used.
 //  * fixed (issue 8, item 5): visit 1 runs --steps, visit 2 until P is met or --max-steps2
 //    (default --steps).
 // markers is the default because on 60 random polygons with holes it reached P = 0.1 with 0.76
@@ -127,6 +127,9 @@ void write_svg(const std::string& path, const geometry::Arena& arena,
   svg.save(path);
 }
 
+// The default --max-steps of --rule markers and online.
+constexpr std::int64_t kDefaultBudget = 20000000;
+
 void run(const BuffonCommand& c) {
   antkit::cli::check_buffon_run_size(c.trials, c.steps, c.threads);
   if (c.max_steps2 != 0 && !c.precision_given)
@@ -142,10 +145,10 @@ void run(const BuffonCommand& c) {
   if (c.max_steps != 0 && !online1 && !markers)
     throw InputError("--max-steps", "--max-steps (both visits' budget) needs --rule online or "
                                     "markers");
-  if (c.max_steps2 != 0 && markers)
-    throw InputError("--max-steps2", "--max-steps2 caps a visit 2, which --rule markers (the "
-                                     "default) does not have; give --max-steps, or --rule fixed "
-                                     "or online");
+  if (c.max_steps2 != 0 && (markers || online1))
+    throw InputError("--max-steps2", "--max-steps2 caps visit 2 of --rule fixed; --rule markers "
+                                     "(the default) and online take --max-steps, the budget of "
+                                     "both visits");
   if (c.max_steps < 0 || c.max_steps == 1 || c.max_steps > 200000000)
     throw InputError("--max-steps", "the budget for both visits must be in [2, 200000000]");
   if (!(c.width >= 0.01 && c.width <= 10))
@@ -170,7 +173,9 @@ void run(const BuffonCommand& c) {
     params.precision_millionths = precision;
     params.visit2_steps = c.max_steps2;
     params.online_first_visit = online1;
-    params.total_steps = c.max_steps;
+    // markers and online stop on P: without --max-steps their budget is generous (P = 0.05 in
+    // a 31 416-unit^2 arena takes about 1.3 M steps online), so that asking for P gets P.
+    params.total_steps = c.max_steps != 0 ? c.max_steps : (online1 || markers) ? kDefaultBudget : 0;
   }
 
   const auto count = static_cast<std::uint64_t>(c.trials);
@@ -313,14 +318,15 @@ void register_buffon(CLI::App& app) {
       "batch-means variance) is within this relative precision P in (0, 1), at most six "
       "decimals; checked every 10000 steps; how the trail is laid is --rule's");
   sub->add_option("--max-steps2", options->max_steps2,
-                  "With --rule fixed or online: visit 2's step cap (default: --steps)");
+                  "With --rule fixed: visit 2's step cap (default: --steps)");
   auto* rule = sub->add_option(
       "--rule", options->rule,
       "With --precision: 'markers' (one walk lays two alternating markers and stops when their "
       "crossings meet P; the default: the least trail), 'online' (visit 1 stops when its "
       "self-crossings say a visit 2 of its length meets P) or 'fixed' (visit 1 runs --steps)");
   sub->add_option("--max-steps", options->max_steps,
-                  "With --rule online or markers: the step budget of both visits together");
+                  "With --rule online or markers: the step budget of both visits together "
+                  "(default 20000000)");
   sub->add_option("--svg", options->svg, "Draw trial 0's trails to this SVG file");
   antkit::cli::add_format_option(*sub, options->format);
   sub->callback([options, precision, rule] {

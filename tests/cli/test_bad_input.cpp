@@ -193,7 +193,7 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"buffon --arena circle:d=10 --precision 0.1 --rule fixed --max-steps 1000",
        "--max-steps:", "--rule online or markers"},
       {"buffon --arena circle:d=10 --precision 0.1 --max-steps2 1000",
-       "--max-steps2:", "does not have"},
+       "--max-steps2:", "--rule fixed"},
       {"buffon --arena circle:d=10 --precision 0.1 --rule online --max-steps 1",
        "--max-steps:", "[2, 200000000]"},
       {"buffon --arena {D}/junk.wkt --svg {D}/out.svg", "{D}/junk.wkt:1:1:", "POLYGON"},

@@ -5,7 +5,12 @@
 #include "run_antkit.hpp"
 
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <unistd.h>
 
 using antkit::test::run_antkit;
 
@@ -147,4 +152,30 @@ TEST_CASE("antkit buffon: a budget too small says so and reports the precision r
       CHECK(t["precision_reached"].get<double>() > 0.01);
     }
   }
+}
+
+TEST_CASE("antkit buffon --precision 0.1 on a trapezoid with two pillars gets 0.1 by default") {
+  // The issue's new user: a 6368-unit^2 trapezoid with two 4 x 4 pillars, 10 trials, P = 0.1, no
+  // other option. Before issue 17 no trial reached P (the 50 000-step first visit was too short)
+  // and the estimates ranged over 0.65 to 1.6 times the area.
+  const auto wkt = std::filesystem::temp_directory_path() /
+                   ("antkit-trapezoid-" + std::to_string(::getpid()) + ".wkt");
+  std::ofstream(wkt) << "POLYGON((0 0, 100 0, 80 80, 20 80, 0 0), (30 30, 30 34, 34 34, 34 30, "
+                        "30 30), (60 40, 60 44, 64 44, 64 40, 60 40))\n";
+  const auto r = run_antkit("buffon --arena " + wkt.string() +
+                            " --trials 10 --threads 2 --precision 0.1 --format json");
+  std::filesystem::remove(wkt);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const double area = j["arena"]["area"].get<double>();
+  CHECK(area == 6368);
+  CHECK(j["summary"]["reached_precision"].get<int>() == 10);
+  int within = 0;
+  for (const auto& t : j["trials"]) {
+    const double e = std::abs(t["area_corrected"].get<double>() / area - 1);
+    INFO("trial " << t["trial"] << ": corrected " << t["area_corrected"] << ", error " << e);
+    CHECK(e <= 0.2); // 2 P for a trial that reached P
+    within += e <= 0.1 ? 1 : 0;
+  }
+  CHECK(within >= 9);
 }
