@@ -1,8 +1,13 @@
 // Buffon's-needle measurement: simulated robot steps per second (sensing, behaviour, motion and
 // pheromone, one core), one whole trial, and the exact crossing count of two default trails.
+#include <antkit/buffon/crossing_counter.hpp>
 #include <antkit/buffon/measurement.hpp>
+#include <antkit/buffon/stopping.hpp>
+#include <antkit/buffon/two_markers.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <benchmark/benchmark.h>
+#include <optional>
+#include <vector>
 
 namespace {
 
@@ -119,6 +124,55 @@ BENCHMARK(BM_BuffonVisitSteps)
     ->Args({1, 20})
     ->Unit(benchmark::kMillisecond);
 
+// Issue 17's online bookkeeping beside BM_BuffonVisitSteps/0 (laying only): a visit that also
+// counts its exact self-crossings (SelfCrossingCounter), feeds FirstVisitMonitor and counts wall
+// encounters (range(0) == 0), or a two-marker walk that tests each step against the other marker
+// and inserts it into its own (range(0) == 1). The precision is 1 ppm, so no check stops the visit:
+// every iteration is the full 50 000 steps, as in BM_BuffonVisitSteps. items = robot steps.
+void BM_BuffonOnlineSteps(benchmark::State& state) {
+  static const buffon::World small(
+      antkit::geometry::build_arena_spec("circle:d=20").arena.walls_fx());
+  const auto& w = state.range(1) == 20 ? small : standard_world();
+  buffon::TrialParams p;
+  p.precision_millionths = 1;
+  buffon::PheromoneRaster raster(w.lower(), w.upper(), p.width);
+  std::uint64_t trial = 0;
+  std::vector<std::uint32_t> crossed;
+  for (auto _ : state) {
+    antkit::kernel::TraceHash h;
+    if (state.range(0) == 0) {
+      std::optional<buffon::SelfCrossingCounter> self;
+      buffon::FirstVisitMonitor monitor(p.precision_millionths);
+      buffon::WallEncounters encounters;
+      auto log = buffon::run_visit(w, p, trial++, 1, h,
+                                   [&](const buffon::Pose& pose, const buffon::Observation& o) {
+                                     raster.lay(pose.position);
+                                     encounters.observe(o);
+                                     if (!self) {
+                                       self.emplace(w.lower(), w.upper(), pose.position);
+                                       return true;
+                                     }
+                                     crossed.clear();
+                                     self->add(pose.position, &crossed);
+                                     for (const std::uint32_t s : crossed) monitor.crossing(s);
+                                     return !monitor.end_step();
+                                   });
+      benchmark::DoNotOptimize(log.length_raw);
+      benchmark::DoNotOptimize(monitor.count());
+    } else {
+      p.total_steps = p.steps;
+      benchmark::DoNotOptimize(buffon::run_two_marker_trial(w, p, trial++).hash);
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * p.steps);
+}
+BENCHMARK(BM_BuffonOnlineSteps)
+    ->Args({0, 100})
+    ->Args({1, 100})
+    ->Args({0, 20})
+    ->Args({1, 20})
+    ->Unit(benchmark::kMillisecond);
+
 // A whole default trial (two visits, BC, exact crossings, hash): items = robot steps.
 void BM_BuffonTrial(benchmark::State& state) {
   const auto& w = standard_world();
@@ -128,5 +182,24 @@ void BM_BuffonTrial(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 2 * p.steps);
 }
 BENCHMARK(BM_BuffonTrial)->Unit(benchmark::kMillisecond);
+
+// Issue 17's trials beside BM_BuffonTrial, the same 2 x 50 000 steps on the same arena, with a
+// precision (1 ppm) that no check meets, so every trial runs its whole budget: the online first
+// visit (range(0) == 0: self-crossings and FirstVisitMonitor in visit 1, online crossings and
+// PrecisionMonitor in visit 2, wall encounters) and two markers (range(0) == 1). items = steps.
+void BM_BuffonTrialOnline(benchmark::State& state) {
+  const auto& w = standard_world();
+  buffon::TrialParams p;
+  p.precision_millionths = 1;
+  p.total_steps = 2 * p.steps;
+  p.online_first_visit = state.range(0) == 0;
+  std::uint64_t trial = 0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(state.range(0) == 0
+                                 ? buffon::run_trial(w, p, trial++).hash
+                                 : buffon::run_two_marker_trial(w, p, trial++).hash);
+  state.SetItemsProcessed(state.iterations() * 2 * p.steps);
+}
+BENCHMARK(BM_BuffonTrialOnline)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 } // namespace

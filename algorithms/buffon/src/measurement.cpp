@@ -131,9 +131,9 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
   if (!online1) {
     first = run_visit(
         world, params1, trial, 1, hash,
-        [&](const Pose& p) {
+        [&](const Pose& p, const Observation& o) {
           raster.lay(p.position);
-          if (count_walls) encounters.observe(world.sense(p, nullptr));
+          if (count_walls) encounters.observe(o);
           return true;
         },
         std::move(scratch.trail1));
@@ -144,9 +144,9 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
     std::vector<std::uint32_t> crossed;
     first = run_visit(
         world, params1, trial, 1, hash,
-        [&](const Pose& p) {
+        [&](const Pose& p, const Observation& o) {
           raster.lay(p.position);
-          encounters.observe(world.sense(p, nullptr));
+          encounters.observe(o);
           if (!self) {
             self.emplace(world.lower(), world.upper(), p.position); // the start pose
             return true;
@@ -187,9 +187,9 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
     bool started = false;
     second = run_visit(
         world, params2, trial, 2, hash,
-        [&](const Pose& p) {
+        [&](const Pose& p, const Observation& o) {
           if (detector.update(raster.at(p.position))) ++bc;
-          encounters.observe(world.sense(p, nullptr));
+          encounters.observe(o);
           if (!std::exchange(started, true)) {
             previous = p.position; // the start pose: no segment yet
             return true;

@@ -30,59 +30,60 @@ TrialResult run_two_marker_trial(const World& world, const TrialParams& params,
   std::optional<FxPoint> previous;
   bool reached = false;
   double shares[2] = {0, 0}; // A's and B's variance shares at the last check (reporting only)
-  const VisitLog log = run_visit(world, walk, trial, 3, hash, [&](const Pose& p) {
-    encounters.observe(world.sense(p, nullptr));
-    if (!previous) {
-      previous = p.position;
-      return true;
-    }
-    const FxPoint a = *previous, b = p.position;
-    previous = b;
-    const std::int64_t piece = step / kSwitchSteps;
-    const int m = static_cast<int>(piece % 2), other = 1 - m;
-    auto& own = pieces[m];
-    if (own.size() <= static_cast<std::size_t>(piece / 2)) own.push_back(0);
-    crossed.clear();
-    index[other].cross(a, b, &crossed);
-    for (const std::uint32_t id : crossed) {
-      // The other marker's piece, in walk order; pieces close in time are left out.
-      const std::int64_t there = 2 * static_cast<std::int64_t>(id / kSwitchSteps) + other;
-      if (piece - there <= kNearPieces) continue;
-      ++own.back();
-      ++pieces[other][id / kSwitchSteps];
-      ++n;
-    }
-    index[m].insert(a, b);
-    if (params.keep_trails) {
-      if (step % kSwitchSteps == 0) trails[m].push_back(a); // a piece begins
-      trails[m].push_back(b);
-    }
-    ++step;
-    if (step % (2 * kK * kSwitchSteps) != 0) return true;
-    // A check: each trail has 10 m pieces; rows are A's runs of m pieces, columns B's.
-    std::uint64_t sums[2][kK] = {};
-    for (int t = 0; t < 2; ++t) {
-      const std::size_t per_run = pieces[t].size() / kK;
-      for (std::size_t q = 0; q < pieces[t].size(); ++q) sums[t][q / per_run] += pieces[t][q];
-    }
-    for (int t = 0; t < 2; ++t) {
-      double squares = 0;
-      for (const std::uint64_t v : sums[t])
-        squares += static_cast<double>(v) * static_cast<double>(v);
-      const double total = static_cast<double>(n);
-      shares[t] = (kK * squares - total * total) / (kK - 1);
-    }
-    reached = precision_met(sums[0], sums[1], params.precision_millionths);
-    return !reached;
-  });
+  const VisitLog log =
+      run_visit(world, walk, trial, 3, hash, [&](const Pose& p, const Observation& o) {
+        encounters.observe(o);
+        if (!previous) {
+          previous = p.position;
+          return true;
+        }
+        const FxPoint a = *previous, b = p.position;
+        previous = b;
+        const std::int64_t piece = step / kSwitchSteps;
+        const int m = static_cast<int>(piece % 2), other = 1 - m;
+        auto& own = pieces[m];
+        if (own.size() <= static_cast<std::size_t>(piece / 2)) own.push_back(0);
+        crossed.clear();
+        index[other].cross(a, b, &crossed);
+        for (const std::uint32_t id : crossed) {
+          // The other marker's piece, in walk order; pieces close in time are left out.
+          const std::int64_t there = 2 * static_cast<std::int64_t>(id / kSwitchSteps) + other;
+          if (piece - there <= kNearPieces) continue;
+          ++own.back();
+          ++pieces[other][id / kSwitchSteps];
+          ++n;
+        }
+        index[m].insert(a, b);
+        if (params.keep_trails) {
+          if (step % kSwitchSteps == 0) trails[m].push_back(a); // a piece begins
+          trails[m].push_back(b);
+        }
+        ++step;
+        if (step % (2 * kK * kSwitchSteps) != 0) return true;
+        // A check: each trail has 10 m pieces; rows are A's runs of m pieces, columns B's.
+        std::uint64_t sums[2][kK] = {};
+        for (int t = 0; t < 2; ++t) {
+          const std::size_t per_run = pieces[t].size() / kK;
+          for (std::size_t q = 0; q < pieces[t].size(); ++q) sums[t][q / per_run] += pieces[t][q];
+        }
+        for (int t = 0; t < 2; ++t) {
+          double squares = 0;
+          for (const std::uint64_t v : sums[t])
+            squares += static_cast<double>(v) * static_cast<double>(v);
+          const double total = static_cast<double>(n);
+          shares[t] = (kK * squares - total * total) / (kK - 1);
+        }
+        reached = precision_met(sums[0], sums[1], params.precision_millionths);
+        return !reached;
+      });
   // Lengths: each step's length is the walk's, attributed to the piece (and so the marker) it
   // laid; the same integer roots as run_visit's total.
   std::vector<double> piece_length;
   for (std::size_t s = 1; s < log.trail.size(); ++s) {
     const std::int64_t dx = std::int64_t{log.trail[s].x.raw()} - log.trail[s - 1].x.raw();
     const std::int64_t dy = std::int64_t{log.trail[s].y.raw()} - log.trail[s - 1].y.raw();
-    const auto root =
-        static_cast<std::int64_t>(isqrt64(static_cast<std::uint64_t>(dx * dx + dy * dy)));
+    const auto root = static_cast<std::int64_t>(
+        detail::exact_floor_sqrt(static_cast<std::uint64_t>(dx * dx + dy * dy)));
     const auto k = static_cast<std::size_t>((static_cast<std::int64_t>(s) - 1) / kSwitchSteps);
     lengths[k % 2] += root;
     if (piece_length.size() <= k) piece_length.push_back(0);

@@ -10,6 +10,7 @@
 // buckets its bounding box covers, each at most once (a per-segment stamp). Segments outside the
 // grid cannot cross any of the finished trail's. Deterministic: the count is a property of the two
 // polylines only.
+#include <algorithm>
 #include <antkit/kernel/segment.hpp>
 #include <cstdint>
 #include <span>
@@ -43,13 +44,24 @@ private:
 
 namespace antkit::buffon {
 
-// A growing set of segments, bucketed as CrossingCounter does (0.5-unit squares) over a box given
-// up front (the arena's bounding box), that answers which of its segments a new segment crosses
-// properly. A point outside the box is clamped to the border buckets, which keeps the answers exact
-// (clamping is monotone, so two crossing segments still share a bucket). The online counts of
-// issue 17 (a visit's self-crossings, two markers' crossings) are built on it.
+// A growing set of segments that answers which of them a new segment crosses properly: the online
+// counts of issue 17 (a visit's self-crossings, two markers' crossings) are built on it, so it is
+// on every step's path and is built for that.
+//  * Square buckets of 2^kShift raw over a box given up front (the arena's bounding box; coarser
+//    buckets when the box would need more than 2^22). A point outside the box is clamped to the
+//    border buckets, which keeps the answers exact (clamping is monotone).
+//  * A trail passes through a bucket in runs of consecutive segments, so a bucket stores runs of
+//    ids (first, count) with the run's bounding box: adding the next segment of a run is an
+//    increment and four min/max, and a query skips a run whose box misses its own with four
+//    comparisons, or reads the run's segments in order from one array.
+//  * A pair of segments whose bounding boxes overlap is tested in exactly one bucket, the one
+//    holding the lower-left corner of the boxes' intersection (which both boxes contain), so no
+//    per-query stamps are needed; boxes that miss are rejected with four comparisons before the
+//    exact predicate.
 class GrowingTrailIndex {
 public:
+  static constexpr int kShift = 15; // buckets of 2^15 raw = 0.5 units
+
   GrowingTrailIndex(kernel::FxPoint lower, kernel::FxPoint upper);
   // Adds segment (a, b); its id is the number of segments added before it. Throws InputError for
   // more than 2^32 - 2 segments.
@@ -57,20 +69,24 @@ public:
   // The number of the set's segments that (a, b) crosses properly; with `crossed`, their ids are
   // appended to it (in bucket-scan order).
   std::uint64_t cross(kernel::FxPoint a, kernel::FxPoint b,
-                      std::vector<std::uint32_t>* crossed = nullptr);
+                      std::vector<std::uint32_t>* crossed = nullptr) const;
   [[nodiscard]] std::uint64_t size() const noexcept { return segments_.size(); }
 
 private:
-  static constexpr int kBucketShift = 15;
-  struct Box {
-    std::int64_t i0, i1, j0, j1;
+  struct Run {
+    std::uint32_t first, count;  // segments first .. first + count - 1
+    std::int32_t x0, y0, x1, y1; // the run's bounding box, raw: a query skips a run that misses
   };
-  [[nodiscard]] Box box_of(kernel::FxPoint a, kernel::FxPoint b) const noexcept;
-  std::vector<kernel::FxSegment> segments_;
+  [[nodiscard]] std::int64_t column(std::int64_t x) const noexcept {
+    return std::clamp<std::int64_t>((x >> shift_) - bx0_, 0, cols_ - 1);
+  }
+  [[nodiscard]] std::int64_t row(std::int64_t y) const noexcept {
+    return std::clamp<std::int64_t>((y >> shift_) - by0_, 0, rows_ - 1);
+  }
+  int shift_ = kShift;
   std::int64_t bx0_ = 0, by0_ = 0, cols_ = 1, rows_ = 1;
-  std::vector<std::vector<std::uint32_t>> buckets_;
-  std::vector<std::uint32_t> stamp_;
-  std::uint32_t query_ = 0;
+  std::vector<kernel::FxSegment> segments_;
+  std::vector<std::vector<Run>> buckets_;
 };
 
 // Online exact self-crossing count (issue 17): the proper crossings of a growing polyline (the
@@ -95,7 +111,7 @@ public:
   SelfCrossingCounter(kernel::FxPoint lower, kernel::FxPoint upper, kernel::FxPoint first);
   // Extends the polyline to `next`; returns the number of proper crossings of the new segment with
   // the segments at least kGap before it, appending their indices to `crossed` when given. Throws
-  // InputError for more than 2^32 - 2 segments.
+  // InputError for more than 2^31 - 1 segments.
   std::uint64_t add(kernel::FxPoint next, std::vector<std::uint32_t>* crossed = nullptr);
   // Segments so far.
   [[nodiscard]] std::uint64_t segments() const noexcept { return points_.size() - 1; }

@@ -30,11 +30,13 @@
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/random.hpp>
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 #include <functional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -181,9 +183,9 @@ private:
 // For a walk spread evenly over the region its centre explores, encounters per unit of trail are
 // proportional to that region's perimeter over its area (Crofton: a path crosses a fixed curve of
 // length P on average 2 L P / (pi A) times), which is what the erosion bias needs. The runs feed it
-// the noise-free readings at each pose (World::sense without a stream): the count is bookkeeping
-// for the estimate, not a decision, and a real robot's thresholds with hysteresis are robust to
-// the small noise its sensors have.
+// the readings the behaviour acts on at each step (with their noise, when the body has any: the
+// hysteresis keeps small noise from counting twice; large noise would inflate the count, and the
+// correction was fitted without noise).
 class WallEncounters {
 public:
   void observe(const Observation& obs) noexcept {
@@ -260,7 +262,7 @@ struct TrialResult {
 // once for the start); the visit ends early, after that call, when on_step returns false. Exposed
 // for the RS baseline and the tests. on_step is any callable taking const Pose& and returning
 // bool (a template parameter rather than std::function, so that laying or sensing the pheromone
-// is inlined into the step loop).
+// is inlined into the step loop). It may also take the step's Observation as a second argument.
 struct VisitLog {
   std::vector<FxPoint> trail; // start and every step's position
   std::int64_t length_raw = 0;
@@ -312,6 +314,16 @@ inline std::uint64_t step_length_raw(std::uint64_t n2, Fx forward) noexcept {
   return root;
 }
 
+// floor(sqrt(n)) exactly, for n < 2^52: the binary64 root is within one of it (n and the
+// correctly rounded root are exact there), and the two loops make it exact; the double is only
+// the first guess, so the result is the same integer on every platform.
+inline std::uint64_t exact_floor_sqrt(std::uint64_t n) noexcept {
+  auto r = static_cast<std::uint64_t>(std::sqrt(static_cast<double>(n)));
+  while (r * r > n) --r;
+  while ((r + 1) * (r + 1) <= n) ++r;
+  return r;
+}
+
 inline std::uint64_t hash_word(std::int32_t lo, std::int32_t hi) noexcept {
   return static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) |
          (static_cast<std::uint64_t>(static_cast<std::uint32_t>(hi)) << 32);
@@ -332,7 +344,17 @@ VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t 
   log.trail.clear();
   log.trail.reserve(static_cast<std::size_t>(params.steps) + 1);
   log.trail.push_back(pose.position);
-  bool more = on_step(std::as_const(pose));
+  // on_step(pose) or on_step(pose, observation): the second form also gets the readings the
+  // behaviour acted on in the step just taken (all zero for the start pose), so that bookkeeping
+  // on them (WallEncounters) costs no second sense().
+  constexpr bool with_obs = std::is_invocable_v<OnStep&, const Pose&, const Observation&>;
+  const auto call = [&on_step](const Pose& p, const Observation& o) {
+    if constexpr (with_obs)
+      return static_cast<bool>(on_step(p, o));
+    else
+      return static_cast<bool>(on_step(p));
+  };
+  bool more = call(std::as_const(pose), Observation{});
   for (std::int64_t s = 0; more && s < params.steps; ++s) {
     const Observation obs = world.sense(pose, &noise);
     const Command cmd = behaviour.step(obs);
@@ -344,7 +366,7 @@ VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t 
     log.length_raw += static_cast<std::int64_t>(
         detail::step_length_raw(static_cast<std::uint64_t>(dx * dx + dy * dy), forward));
     log.trail.push_back(pose.position);
-    more = on_step(std::as_const(pose));
+    more = call(std::as_const(pose), obs);
     hash.add_u64(detail::hash_word(pose.position.x.raw(), pose.position.y.raw()));
     hash.add_u64(
         detail::hash_word(static_cast<std::int32_t>(pose.heading.raw()), behaviour.r().raw()));
