@@ -179,3 +179,30 @@ TEST_CASE("antkit buffon --precision 0.1 on a trapezoid with two pillars gets 0.
   }
   CHECK(within >= 9);
 }
+
+TEST_CASE("antkit buffon-cost --quick writes the table, the fits and the figure as SVG and PNG") {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("antkit-buffon-cost-" + std::to_string(::getpid()));
+  const auto r = run_antkit("buffon-cost --quick --trials 1 --threads 2 --out " + dir.string());
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  std::ifstream csv(dir / "precision_cost.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  CHECK(header == "arena,family,area,precision,method,trials,reached,median,q1,q3");
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  CHECK(rows == 36); // 6 arenas x 2 precisions x 3 methods
+  std::ifstream fits(dir / "precision_cost_fits.csv");
+  std::getline(fits, header);
+  CHECK(header == "method,precision,exponent,coefficient,points");
+  std::ifstream png(dir / "precision_cost.png", std::ios::binary);
+  char magic[8] = {};
+  png.read(magic, 8);
+  CHECK(std::string(magic + 1, 3) == "PNG");
+  std::ifstream svg(dir / "precision_cost.svg");
+  std::getline(svg, line);
+  CHECK(line.find("<?xml") == 0);
+  CHECK(r.out.find("markers") != std::string::npos);
+  std::filesystem::remove_all(dir);
+}

@@ -1,7 +1,9 @@
 // Buffon counts at trail-length checkpoints and the RS baseline (checkpoints.hpp).
 #include <algorithm>
 #include <antkit/buffon/checkpoints.hpp>
+#include <antkit/buffon/stopping.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <cmath>
 
 namespace antkit::buffon {
 
@@ -149,6 +151,36 @@ Footprint rs_footprint(std::span<const FxPoint> trail) {
       out.cells += cell == 0 ? 1 : 0;
       cell = 1;
     });
+  return out;
+}
+
+RsCost rs_cost_to_precision(const World& world, const TrialParams& params, std::uint64_t trial,
+                            double area, std::uint32_t precision_millionths,
+                            std::int64_t max_steps) {
+  if (precision_millionths < 1 || precision_millionths >= kPrecisionDenominator)
+    throw kernel::InputError("--precision", "the relative precision must be in (0, 1)");
+  const std::int64_t cell = Fx::from_ratio(1, 10).raw();
+  const double cell_area =
+      static_cast<double>(cell) * static_cast<double>(cell) / 65536.0 / 65536.0;
+  const double p = static_cast<double>(precision_millionths) / kPrecisionDenominator;
+  // The first whole number of cells whose area reaches (1 - P) area: computed once, so the stop is
+  // an integer comparison in the walk.
+  const auto target = static_cast<std::uint64_t>(std::ceil((1.0 - p) * area / cell_area));
+  ByteRaster rs(world.lower(), world.upper(), cell, 0);
+  TrialParams walk = params;
+  walk.steps = max_steps;
+  kernel::TraceHash unused;
+  std::uint64_t marked = 0;
+  RsCost out;
+  const VisitLog log = run_visit(world, walk, trial, 3, unused, [&](const Pose& pose) {
+    rs.disk(pose.position, kBodyRadius.raw(), [&marked](std::uint8_t& c) {
+      marked += c == 0 ? 1 : 0;
+      c = 1;
+    });
+    return marked < target;
+  });
+  out.length_raw = log.length_raw;
+  out.reached = marked >= target;
   return out;
 }
 

@@ -44,4 +44,19 @@ struct Footprint {
 };
 Footprint rs_footprint(std::span<const FxPoint> trail);
 
+// RS's cost of a precision (issue 17, the cost-of-precision table): the same walk as
+// run_checkpoints' RS (visit 3 of the trial's streams, cells of side 0.1 under the body), run
+// until its estimate cells * cell^2 is within a relative P of `area`, i.e. at least (1 - P) area
+// (RS only ever under-estimates: it marks what the body has covered), or for `max_steps` steps.
+// RS has no stopping rule of its own, so this is an oracle stop, the most favourable reading of
+// RS: the trail length at which its estimate first meets P. Throws InputError("--precision") for
+// P outside (0, 1).
+struct RsCost {
+  std::int64_t length_raw = 0; // the walk's length when it stopped
+  bool reached = false;        // false: max_steps ran out first
+};
+RsCost rs_cost_to_precision(const World& world, const TrialParams& params, std::uint64_t trial,
+                            double area, std::uint32_t precision_millionths,
+                            std::int64_t max_steps);
+
 } // namespace antkit::buffon

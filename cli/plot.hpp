@@ -1,0 +1,46 @@
+#pragma once
+// Log-log figures drawn with Cairo, one drawing code path for both SVG and PNG (issue 17's cost
+// of precision; the `reproduce` report of issue 15 can reuse it): panels side by side sharing
+// their axes, decade ticks with labels, series as points joined by lines with interquartile bars,
+// a legend per panel naming every colour, a title, axis labels and a caption line.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace antkit::cli {
+
+struct PlotPoint {
+  double x = 0, y = 0;
+  std::optional<double> lo, hi; // an error bar from lo to hi, when both are given
+};
+
+struct PlotSeries {
+  std::string name;   // the legend's text
+  std::string colour; // "#rrggbb"
+  bool dashed = false;
+  bool hollow = false; // open markers (and no line)
+  std::vector<PlotPoint> points;
+};
+
+struct PlotPanel {
+  std::string title;
+  std::string note; // a line inside the plot's lower right corner (e.g. fitted exponents)
+  std::vector<PlotSeries> series;
+  // The legend: one entry per series when empty; otherwise these entries (name, colour and style
+  // of each; their points are not drawn), for a figure whose series combine a colour and a style.
+  std::vector<PlotSeries> legend;
+};
+
+struct LogLogFigure {
+  std::string title, x_label, y_label, caption;
+  std::vector<PlotPanel> panels;
+};
+
+// Writes the figure to `svg` and `png` (each written to a temporary name in the same directory,
+// then renamed, so no partial file is left). Throws kernel::InputError(path, ...) when a file
+// cannot be written, or when there is no positive point to draw.
+void save_figure(const LogLogFigure& figure, const std::filesystem::path& svg,
+                 const std::filesystem::path& png);
+
+} // namespace antkit::cli
