@@ -81,7 +81,7 @@ std::optional<Polygon> make_polygon(std::uint64_t k) {
 }
 
 struct Outcome {
-  double area = 0, raw = 0, corrected = 0, total_length = 0;
+  double area = 0, raw = 0, corrected = 0, total_length = 0, ratio21 = 0; // ratio21: L2 / L1
   bool reached = false;
   [[nodiscard]] double error() const { return std::abs(corrected / area - 1); }
 };
@@ -105,6 +105,7 @@ Outcome run(const Polygon& g, std::uint64_t k, std::uint32_t p, bool markers) {
   o.raw = cf.area ? *cf.area : 0.0;
   o.corrected = o.raw * buffon::erosion_factor(t.wall_encounters, l1 + l2);
   o.total_length = l1 + l2;
+  o.ratio21 = l1 > 0 ? l2 / l1 : 0.0;
   o.reached = t.reached_precision;
   return o;
 }
@@ -161,7 +162,15 @@ void check_targets(const std::vector<Outcome>& v, std::uint32_t p, const char* r
 TEST_CASE("random polygons with holes: the corrected estimate meets P with either rule", "[slow]") {
   const auto gs = polygons(60);
   for (const std::uint32_t p : {100000u, 200000u}) {
-    check_targets(run_all(gs, p, false), p, "online");
+    const auto online = run_all(gs, p, false);
+    check_targets(online, p, "online");
+    // The online rule aims at equal visits (stopping.hpp): the median of visit 2 / visit 1.
+    std::vector<double> ratios;
+    for (const auto& o : online) ratios.push_back(o.ratio21);
+    const double median = buffon::quantile(ratios, 0.5);
+    INFO("online P " << p / 1e6 << ": median visit 2 / visit 1 " << median);
+    CHECK(median > 0.5);
+    CHECK(median < 2.0);
     check_targets(run_all(gs, p, true), p, "markers");
   }
 }
