@@ -149,8 +149,8 @@ void run(const BuffonCommand& c) {
     throw InputError("--max-steps2", "--max-steps2 caps visit 2 of --rule fixed; --rule markers "
                                      "(the default) and online take --max-steps, the budget of "
                                      "both visits");
-  if (c.max_steps < 0 || c.max_steps == 1 || c.max_steps > 200000000)
-    throw InputError("--max-steps", "the budget for both visits must be in [2, 200000000]");
+  if (c.max_steps < 0 || c.max_steps == 1 || c.max_steps > 100000000)
+    throw InputError("--max-steps", "the budget for both visits must be in [2, 100000000]");
   if (!(c.width >= 0.01 && c.width <= 10))
     throw InputError("--width", "the trail width must be in [0.01, 10] units");
   if (!(c.noise >= 0 && c.noise <= 1))

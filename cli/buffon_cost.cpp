@@ -65,8 +65,8 @@ void run(const CostCommand& c) {
     throw InputError("--trials", "the number of trials must be in [1, 100000]");
   if (c.threads < 1 || c.threads > 256)
     throw InputError("--threads", "the number of threads must be in [1, 256]");
-  if (c.max_steps < 2 || c.max_steps > 200000000)
-    throw InputError("--max-steps", "the budget per trial must be in [2, 200000000]");
+  if (c.max_steps < 2 || c.max_steps > 100000000)
+    throw InputError("--max-steps", "the budget per trial must be in [2, 100000000]");
   std::error_code ec;
   std::filesystem::create_directories(c.out, ec);
   if (ec || !std::filesystem::is_directory(c.out))

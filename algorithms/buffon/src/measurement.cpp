@@ -88,6 +88,11 @@ std::uint64_t PheromoneRaster::marked() const {
   return n;
 }
 
+void detail::check_total_steps(std::int64_t steps) {
+  if (steps < 2 || steps > 100000000)
+    throw kernel::InputError("--max-steps", "the budget for both visits must be in [2, 100000000]");
+}
+
 void detail::check_visit_steps(std::int64_t steps) {
   if (steps < 0 || steps > 100000000)
     throw kernel::InputError("--steps", "the steps per visit must be in [0, 100000000]");
@@ -118,11 +123,10 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
   PheromoneRaster raster(world.lower(), world.upper(), params.width, std::move(scratch.raster));
   const bool online1 = params.online_first_visit;
   if (online1 && params.precision_millionths == 0)
-    throw kernel::InputError("--first-visit", "an online first visit needs --precision");
+    throw kernel::InputError("--rule", "an online first visit needs --precision");
   if (params.total_steps != 0 && !online1)
     throw kernel::InputError("--max-steps", "a budget for both visits needs an online first visit");
-  if (online1 && params.total_steps != 0 && params.total_steps < 2)
-    throw kernel::InputError("--max-steps", "the budget for both visits must be at least 2 steps");
+  if (params.total_steps != 0) detail::check_total_steps(params.total_steps);
   WallEncounters encounters; // with precision_millionths only (bookkeeping for the estimate)
   const bool count_walls = params.precision_millionths != 0;
   TrialParams params1 = params;

@@ -75,7 +75,7 @@ CostTable precision_cost(std::span<const CostArena> arenas, const CostParams& c,
       throw kernel::InputError("--precision", "the relative precision must be in (0, 1)");
   if (c.trials < 1 || c.trials > 100000)
     throw kernel::InputError("--trials", "the number of trials must be in [1, 100000]");
-  if (c.budget < 2) throw kernel::InputError("--max-steps", "the budget must be at least 2 steps");
+  detail::check_total_steps(c.budget);
   CostTable out;
   const std::size_t total = arenas.size() * c.precisions.size() * c.methods.size();
   for (std::size_t ai = 0; ai < arenas.size(); ++ai)

@@ -14,7 +14,7 @@ TrialResult run_two_marker_trial(const World& world, const TrialParams& params,
   constexpr int kK = PrecisionMonitor::kBatches;
   TrialParams walk = params;
   walk.steps = params.total_steps != 0 ? params.total_steps : 2 * params.steps;
-  detail::check_visit_steps(walk.steps);
+  detail::check_total_steps(walk.steps);
   TrialResult result;
   result.trial = trial;
   kernel::TraceHash hash(params.seed);

@@ -226,7 +226,8 @@ struct TrialParams {
   bool online_first_visit = false;
   // With online_first_visit, when non-zero: the budget of both visits together. Visit 1 is capped
   // at half of it (the rule aims at equal visits, so a visit 1 that needs more leaves visit 2 too
-  // little) and visit 2 at what visit 1 left; `steps` and visit2_steps are then not used.
+  // little) and visit 2 at what visit 1 left; `steps` and visit2_steps are then not used. At most
+  // 100 000 000 (InputError "--max-steps" otherwise).
   std::int64_t total_steps = 0;
 };
 
@@ -292,6 +293,8 @@ std::uint64_t isqrt64(std::uint64_t n) noexcept;
 namespace detail {
 // Throws InputError("--steps") unless 0 <= steps <= 100000000.
 void check_visit_steps(std::int64_t steps);
+// Throws InputError("--max-steps") unless 2 <= steps <= 100000000 (a budget of both visits).
+void check_total_steps(std::int64_t steps);
 
 // The exact floor square root of a step's squared length n2, started from the commanded forward
 // distance (the step's length is within a few raw units of it) and corrected by +/- 1 per

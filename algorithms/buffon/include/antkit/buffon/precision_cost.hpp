@@ -63,7 +63,8 @@ struct CostTable {
 };
 
 // Throws InputError for no arena, no precision, a precision outside (0, 1), trials outside
-// [1, 100000] or a budget below 2. `progress(done, total)` is called after each point.
+// [1, 100000] or a budget outside [2, 100000000]. `progress(done, total)` is called after each
+// point.
 CostTable precision_cost(std::span<const CostArena> arenas, const CostParams& params,
                          const std::function<void(std::size_t, std::size_t)>& progress = {});
 
