@@ -19,6 +19,7 @@
 // Exit status: 0 all match, 1 a mismatch or a missing golden line, 2 bad usage or input.
 #include <algorithm>
 #include <antkit/buffon/measurement.hpp>
+#include <antkit/buffon/two_markers.hpp>
 #include <antkit/kernel/angle.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -164,6 +165,51 @@ void add_buffon(std::vector<Scenario>& out) {
                return all.finish();
              }});
       }
+  // Issue 17's rules on seed 1 of each arena: the online first visit (self-crossings and the
+  // pilot's exact test decide where visit 1 ends) and two markers (one walk, exact floor roots
+  // seeded by binary64 for the piece lengths, the pair's table and its exact test).
+  for (const auto& [arena, walls] : arenas)
+    for (const bool markers : {false, true}) {
+      const std::string name =
+          std::string("buffon/") + arena + "/seed1/" + (markers ? "markers0.2" : "online0.2");
+      out.push_back(
+          {name, [walls = walls, markers](unsigned threads, Trace& trace) {
+             const buffon::World world(walls());
+             buffon::TrialParams p;
+             p.precision_millionths = 200000;
+             p.total_steps = 60000;
+             p.online_first_visit = !markers;
+             if (trace.on()) {
+               // The walks pose by pose to their caps (the rules only decide where the
+               // hashed runs stop reading them).
+               for (std::uint64_t t = 0; t < kBuffonTrials; ++t)
+                 for (const int visit : markers ? std::vector<int>{3} : std::vector<int>{1, 2}) {
+                   kernel::TraceHash unused;
+                   buffon::TrialParams q = p;
+                   q.steps = 30000;
+                   buffon::run_visit(world, q, t, visit, unused, [&](const buffon::Pose& pose) {
+                     trace.step("trial " + std::to_string(t) + " visit " + std::to_string(visit) +
+                                " x " + std::to_string(pose.position.x.raw()) + " y " +
+                                std::to_string(pose.position.y.raw()));
+                     return true;
+                   });
+                 }
+             }
+             // Each trial's hash and both trails' lengths (the markers' lengths come from
+             // exact roots seeded in binary64).
+             std::vector<std::uint64_t> words(3 * kBuffonTrials);
+             buffon::parallel_for(kBuffonTrials, threads, [&](std::uint64_t t) {
+               const auto r = markers ? buffon::run_two_marker_trial(world, p, t)
+                                      : buffon::run_trial(world, p, t);
+               words[3 * t] = r.hash;
+               words[3 * t + 1] = static_cast<std::uint64_t>(r.length1_raw);
+               words[3 * t + 2] = static_cast<std::uint64_t>(r.length2_raw);
+             });
+             kernel::TraceHash all;
+             for (const std::uint64_t w : words) all.add_u64(w);
+             return all.finish();
+           }});
+    }
 }
 
 void add_los(std::vector<Scenario>& out, MapShelf& shelf) {
