@@ -180,7 +180,13 @@ void run(const CostCommand& c) {
     figure.panels.push_back(std::move(panel));
   }
   const std::filesystem::path dir(c.out);
-  antkit::cli::save_figure(figure, dir / "precision_cost.svg", dir / "precision_cost.png");
+  try {
+    antkit::cli::save_figure(figure, dir / "precision_cost.svg", dir / "precision_cost.png");
+  } catch (...) {
+    antkit::cli::release_drawing_caches();
+    throw;
+  }
+  antkit::cli::release_drawing_caches();
   geometry::write_file_atomic(dir / "precision_cost.csv", csv.str());
   geometry::write_file_atomic(dir / "precision_cost_fits.csv", fits.str());
 

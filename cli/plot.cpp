@@ -7,6 +7,7 @@
 #include <cairo.h>
 #include <cmath>
 #include <cstdio>
+#include <fontconfig/fontconfig.h>
 #include <limits>
 #include <memory>
 #include <string>
@@ -250,6 +251,13 @@ void publish(const std::filesystem::path& tmp, const std::filesystem::path& path
 }
 
 } // namespace
+
+void release_drawing_caches() noexcept {
+  // Cairo's font caches hold fontconfig objects; fontconfig's configuration is global. Both are
+  // rebuilt on the next use.
+  cairo_debug_reset_static_data();
+  FcFini();
+}
 
 void save_figure(const LogLogFigure& figure, const std::filesystem::path& svg,
                  const std::filesystem::path& png) {
