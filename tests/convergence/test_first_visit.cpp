@@ -7,6 +7,7 @@
 #include <antkit/buffon/estimate.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/stopping.hpp>
+#include <antkit/buffon/two_markers.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/kernel/segment.hpp>
@@ -233,4 +234,60 @@ TEST_CASE("online first visit: the trial's S is visit 1's self-crossing count an
   // Misuse is a located error.
   params.precision_millionths = 0;
   CHECK_THROWS_AS(buffon::run_trial(world, params, 0), antkit::kernel::InputError);
+}
+
+TEST_CASE("two markers: N is the brute-force count of the crossings of pieces more than "
+          "kNearPieces apart",
+          "[unit]") {
+  // 12 000 steps at a precision no check meets: 12 pieces of 1000 steps, A the even ones (walk
+  // order), B the odd. The trails come back piece by piece (1001 points each).
+  const auto arena = antkit::geometry::build_arena_spec("circle:d=20").arena;
+  const buffon::World world(arena.walls_fx());
+  buffon::TrialParams params;
+  params.precision_millionths = 1;
+  params.total_steps = 12000;
+  params.keep_trails = true;
+  const auto t = buffon::run_two_marker_trial(world, params, 0);
+  CHECK(t.steps1 == 6000);
+  CHECK(t.steps2 == 6000);
+  CHECK_FALSE(t.reached_precision);
+  REQUIRE(t.trail1.size() == 6 * 1001);
+  REQUIRE(t.trail2.size() == 6 * 1001);
+  auto piece = [&](const std::vector<FxPoint>& trail, std::size_t q) {
+    return std::vector<FxPoint>(trail.begin() + static_cast<std::ptrdiff_t>(q * 1001),
+                                trail.begin() + static_cast<std::ptrdiff_t>((q + 1) * 1001));
+  };
+  std::uint64_t expected = 0, near = 0;
+  double all_pairs = 0, counted_pairs = 0;
+  auto length = [](const std::vector<FxPoint>& p) {
+    double l = 0;
+    for (std::size_t i = 1; i < p.size(); ++i)
+      l += std::floor(std::sqrt(std::pow(double(p[i].x.raw() - p[i - 1].x.raw()), 2) +
+                                std::pow(double(p[i].y.raw() - p[i - 1].y.raw()), 2)));
+    return l;
+  };
+  for (std::size_t qa = 0; qa < 6; ++qa)
+    for (std::size_t qb = 0; qb < 6; ++qb) {
+      const auto a = piece(t.trail1, qa), b = piece(t.trail2, qb);
+      const std::uint64_t n = antkit::kernel::count_proper_crossings(a, b);
+      const auto ka = static_cast<std::int64_t>(2 * qa), kb = static_cast<std::int64_t>(2 * qb + 1);
+      const double product = length(a) * length(b);
+      all_pairs += product;
+      if (std::abs(ka - kb) > buffon::kNearPieces) {
+        expected += n;
+        counted_pairs += product;
+      } else {
+        near += n;
+      }
+    }
+  INFO("crossings counted " << expected << ", left out (pieces close in time) " << near);
+  CHECK(t.crossings_exact == expected);
+  CHECK(near > 0); // the exclusion has something to leave out here
+  CHECK(t.pair_share == Approx(counted_pairs / all_pairs).epsilon(1e-9));
+  // The lengths are the pieces' exact floor roots, summed per marker.
+  double l1 = 0, l2 = 0;
+  for (std::size_t q = 0; q < 6; ++q)
+    l1 += length(piece(t.trail1, q)), l2 += length(piece(t.trail2, q));
+  CHECK(static_cast<double>(t.length1_raw) == l1);
+  CHECK(static_cast<double>(t.length2_raw) == l2);
 }
