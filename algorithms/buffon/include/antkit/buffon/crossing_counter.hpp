@@ -40,10 +40,6 @@ private:
   std::uint32_t query_ = 0;
 };
 
-} // namespace antkit::buffon
-
-namespace antkit::buffon {
-
 // A growing set of segments that answers which of them a new segment crosses properly: the online
 // counts of issue 17 (a visit's self-crossings, two markers' crossings) are built on it, so it is
 // on every step's path and is built for that.
@@ -97,7 +93,8 @@ private:
 //
 // The freshly laid stretch is excluded: a new segment is tested only against the segments at least
 // kGap before it (segment i joins points i and i + 1; segment j is tested against i <= j - kGap).
-// kGap = 25 steps is one unit of trail at full speed (0.04 per step), the robot's diameter: a
+// kGap = 25 steps is about one unit of trail (a step is 0.034 on average and at most 0.043), the
+// robot's diameter: a
 // crossing of a stretch still under the body is not one the detector at the centre could sense
 // (it has not left the band), and pairs of elements that close along the curve are not the
 // independent pairs the law counts. The choice is ours; the paper is silent.
@@ -111,7 +108,7 @@ public:
   SelfCrossingCounter(kernel::FxPoint lower, kernel::FxPoint upper, kernel::FxPoint first);
   // Extends the polyline to `next`; returns the number of proper crossings of the new segment with
   // the segments at least kGap before it, appending their indices to `crossed` when given. Throws
-  // InputError for more than 2^31 - 1 segments.
+  // InputError for more than 2^32 - 2 segments.
   std::uint64_t add(kernel::FxPoint next, std::vector<std::uint32_t>* crossed = nullptr);
   // Segments so far.
   [[nodiscard]] std::uint64_t segments() const noexcept { return points_.size() - 1; }
