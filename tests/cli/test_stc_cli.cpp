@@ -1,8 +1,8 @@
 // `antkit stc` and `antkit stc-noise`, run as the real executable (issue 3).
 #include "run_antkit.hpp"
-#include "stc_checkers.hpp"
 
 #include <antkit/maps/map_io.hpp>
+#include <antkit/testing/stc.hpp>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -53,7 +53,7 @@ const std::vector<std::string> kSharedMaps{"movingai/Berlin_1_256.map",
 TEST_CASE("antkit stc covers every shared map with every variant - invariants checked on the "
           "printed path",
           "[cli][stc]") {
-  antkit::test::StcTourChecker checker;
+  antkit::testing::StcTourChecker checker;
   for (const auto& name : kSharedMaps) {
     const std::string file = shared_map(name);
     const auto map = antkit::maps::load_map(file);

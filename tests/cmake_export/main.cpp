@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdio>
 
+bool consumer_property(); // property.cpp: rapidcheck over antkit::testing
+
 int main() {
   antkit::kernel::Grid<std::uint8_t> grid(4, 3, 0);
   grid[{1, 2}] = 7;
@@ -40,5 +42,7 @@ int main() {
       "consumer: grid %zu cells, draw %u, supercover %zu cells, arena area %.4f, hash %s: %s\n",
       grid.size(), draw, cells.size(), arena.area(),
       antkit::kernel::hash_hex(hash.finish()).c_str(), ok ? "ok" : "FAILED");
-  return ok ? 0 : 1;
+  const bool property_ok = consumer_property();
+  std::printf("consumer: antkit::testing property: %s\n", property_ok ? "ok" : "FAILED");
+  return ok && property_ok ? 0 : 1;
 }

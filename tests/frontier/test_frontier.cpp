@@ -1,10 +1,9 @@
 // The frontier component: the incremental set against its definition, and the planner against a
 // brute-force evaluation of g = w1 I - w2 D + w3 lambda over every reachable frontier cell.
-#include "los_checkers.hpp"
-
 #include <antkit/frontier/frontier_map.hpp>
 #include <antkit/frontier/planner.hpp>
 #include <antkit/kernel/random.hpp>
+#include <antkit/testing/los.hpp>
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <rapidcheck.h>
@@ -65,7 +64,7 @@ TEST_CASE("frontier set: every 3x3 knowledge grid built cell by cell matches the
     for (int i = 0; i < 9; ++i) {
       m.set({i % 3, i / 3}, static_cast<Knowledge>(rest % 3));
       rest /= 3;
-      const std::string err = antkit::test::check_frontier_set(m);
+      const std::string err = antkit::testing::check_frontier_set(m);
       if (!err.empty()) {
         INFO("grid code " << code << ": " << err);
         REQUIRE(err.empty());
@@ -84,7 +83,7 @@ TEST_CASE("frontier set: any sequence of updates keeps the set equal to the defi
     FrontierMap m(w, h);
     for (const auto& [x, y, k] : ops) {
       m.set({x, y}, static_cast<Knowledge>(k));
-      const std::string err = antkit::test::check_frontier_set(m);
+      const std::string err = antkit::testing::check_frontier_set(m);
       RC_ASSERT(err.empty());
     }
   });

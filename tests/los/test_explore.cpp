@@ -1,11 +1,10 @@
 // Two-robot LOS exploration (issue 5): the rules' soundness, exhaustively on small grids and by
 // properties on larger ones, completion, determinism, and worked examples.
-#include "los_checkers.hpp"
-
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/random.hpp>
 #include <antkit/los/explore.hpp>
 #include <antkit/los/fast_wall_follow.hpp>
+#include <antkit/testing/los.hpp>
 #include <catch2/catch.hpp>
 #include <rapidcheck.h>
 #include <rapidcheck/catch.h>
@@ -54,7 +53,7 @@ std::size_t check_every_map(std::int32_t w, std::int32_t h) {
         continue;
       }
       for (const auto& options : kVariants) {
-        const std::string err = antkit::test::check_run(g, start[0], start[1], options);
+        const std::string err = antkit::testing::check_run(g, start[0], start[1], options);
         ++runs;
         if (!err.empty()) {
           INFO(w << "x" << h << " map bits " << bits << ", start cell " << i << ", algorithm "
@@ -99,8 +98,8 @@ TEST_CASE("random maps up to 40x40: sound and monotone and complete", "[property
       RC_DISCARD("no place for two robots");
     }
     const auto pair = los::start_pair(g, start);
-    const std::string err =
-        antkit::test::check_run(g, pair[0], pair[1], kVariants[static_cast<std::size_t>(variant)]);
+    const std::string err = antkit::testing::check_run(
+        g, pair[0], pair[1], kVariants[static_cast<std::size_t>(variant)]);
     RC_ASSERT(err.empty());
   });
 }
@@ -130,7 +129,7 @@ TEST_CASE("empty 25x25 room: fast wall-follow sweeps it while tracing the walls"
   CHECK(pair[0] == Cell{0, 24});
   CHECK(pair[1] == Cell{1, 24});
   const auto r = los::explore(g, pair[0], pair[1], {});
-  CHECK(antkit::test::check_complete(g, r).empty());
+  CHECK(antkit::testing::check_complete(g, r).empty());
   CHECK(r.explored == 625);
   CHECK(r.unobservable == 0);
   CHECK(r.sight_losses == 0);

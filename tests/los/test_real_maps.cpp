@@ -1,10 +1,10 @@
 // Every real map in ../shared/maps (MovingAI and ROS, up to 530x481 and ~600x600 cells): both
 // algorithms finish, the final map is sound, and every observable cell is explored.
-#include "los_checkers.hpp"
 #include "run_antkit.hpp"
 
 #include <antkit/los/explore.hpp>
 #include <antkit/maps/map_io.hpp>
+#include <antkit/testing/los.hpp>
 #include <catch2/catch.hpp>
 #include <filesystem>
 
@@ -27,8 +27,8 @@ TEST_CASE("real maps: both algorithms complete soundly", "[slow]") {
       options.algorithm = algo;
       const auto r = los::explore(map.cells, pair[0], pair[1], options);
       INFO(path.filename().string() << ", algorithm " << static_cast<int>(algo));
-      CHECK(antkit::test::check_sound(map.cells, r.cells).empty());
-      CHECK(antkit::test::check_complete(map.cells, r).empty());
+      CHECK(antkit::testing::check_sound(map.cells, r.cells).empty());
+      CHECK(antkit::testing::check_complete(map.cells, r).empty());
       CHECK(r.explored + r.unobservable == map.cells.size());
     }
   }

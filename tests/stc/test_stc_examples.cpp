@@ -1,5 +1,4 @@
 // Worked examples, errors and golden hashes of the STC variants (issue 3).
-#include "stc_checkers.hpp"
 #include "stc_test_maps.hpp"
 
 #include <antkit/kernel/input_error.hpp>
@@ -8,6 +7,7 @@
 #include <antkit/stc/offline.hpp>
 #include <antkit/stc/online.hpp>
 #include <antkit/stc/world.hpp>
+#include <antkit/testing/stc.hpp>
 #include <catch2/catch.hpp>
 
 using antkit::kernel::Cell;
@@ -64,7 +64,7 @@ TEST_CASE("a child in the start's last direction: the tour ends outside the star
 TEST_CASE("an odd width or height: the last column or row belongs to no cell and is never entered",
           "[stc]") {
   const OccupancyGrid map(5, 7, Occupancy::Free); // 2 x 3 cells, column 4 and row 6 left over
-  antkit::test::StcTourChecker checker;
+  antkit::testing::StcTourChecker checker;
   for (Variant v : kExact) {
     INFO(variant_name(v));
     const RunResult r = run_stc(map, {2, 2}, v);
@@ -103,7 +103,7 @@ TEST_CASE("full covers the free sub-cells of partially blocked cells and counts 
   const RunResult exact = run_stc(map, {0, 0}, Variant::Offline);
   CHECK(exact.reachable_subcells == 4);
   const RunResult full = run_stc(map, {0, 0}, Variant::Full);
-  antkit::test::StcTourChecker checker;
+  antkit::testing::StcTourChecker checker;
   const auto check = checker.check_full(map, {0, 0}, full.path, full.repeats);
   INFO(check);
   CHECK(check.ok);
@@ -158,7 +158,7 @@ TEST_CASE("a deep spanning tree does not recurse: a serpentine of 128 x 128 cell
         for (int dy = 0; dy < 2; ++dy)
           for (int dx = 0; dx < 2; ++dx) map[{2 * cx + dx, wall + dy}] = Occupancy::Blocked;
   }
-  antkit::test::StcTourChecker checker;
+  antkit::testing::StcTourChecker checker;
   const SpanningTree tree(map, {0, 0});
   CHECK(tree.cells() == n * n + (n - 1));
   const std::vector<Cell> path = tree.tour();

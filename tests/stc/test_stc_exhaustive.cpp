@@ -1,9 +1,9 @@
 // Exhaustive small-scope checks of issue 3: every map up to 4 x 4 cells with every start.
-#include "stc_checkers.hpp"
 #include "stc_test_maps.hpp"
 
 #include <antkit/stc/offline.hpp>
 #include <antkit/stc/world.hpp>
+#include <antkit/testing/stc.hpp>
 #include <catch2/catch.hpp>
 
 using antkit::kernel::Cell;
@@ -18,7 +18,7 @@ namespace {
 // it move for move. Returns the number of (map, start) pairs checked.
 std::int64_t exhaust(int cw, int ch, const std::vector<Variant>& others) {
   OccupancyGrid map(2 * cw, 2 * ch, Occupancy::Free);
-  antkit::test::StcTourChecker checker;
+  antkit::testing::StcTourChecker checker;
   StcWorld world;
   std::int64_t pairs = 0;
   const std::uint32_t maps = 1u << (cw * ch);
@@ -38,7 +38,7 @@ std::int64_t exhaust(int cw, int ch, const std::vector<Variant>& others) {
         for (Variant v : others) {
           const RunResult r = run_stc(world, map, start, v);
           const auto same =
-              antkit::test::check_same_tour(offline.path, r.path, std::string(variant_name(v)));
+              antkit::testing::check_same_tour(offline.path, r.path, std::string(variant_name(v)));
           if (!same.ok) {
             INFO("map " << cw << "x" << ch << " cells, blocked mask " << mask << ", start ("
                         << start.x << ", " << start.y << "): " << same);
@@ -82,7 +82,7 @@ TEST_CASE("every 4 x 4 cell map - every start: invariants 1-5 for all exact vari
 TEST_CASE("full: every sub-cell map of 2 x 2 cells (4 x 4 sub-cells) - every free start",
           "[stc][proof]") {
   OccupancyGrid map(4, 4, Occupancy::Free);
-  antkit::test::StcTourChecker checker;
+  antkit::testing::StcTourChecker checker;
   StcWorld world;
   std::int64_t runs = 0;
   for (std::uint32_t mask = 0; mask < (1u << 16); ++mask) {

@@ -4,11 +4,11 @@
 // (SpanningTree::advance, one sub-cell per step) and the tour of online STC (an independent
 // depth-first search with the same neighbour order, run in the world), on random maps large enough
 // to cross the 64 x 64-cell tiles of the tree's memory, with odd sizes and blocked border cells.
-#include "stc_checkers.hpp"
 #include "stc_test_maps.hpp"
 
 #include <antkit/stc/offline.hpp>
 #include <antkit/stc/world.hpp>
+#include <antkit/testing/stc.hpp>
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 #include <string>
@@ -99,17 +99,17 @@ TEST_CASE("offline fast paths: tour() and the search's own tour equal the cursor
     // The tour emitted by the search itself, and the tree it leaves, are the same.
     std::vector<SubCell> fused;
     const SpanningTree walked(m.map, m.start, [&](SubCell s) { fused.push_back(s); });
-    const auto same_fused = antkit::test::check_same_tour(fast, fused, "search's tour");
+    const auto same_fused = antkit::testing::check_same_tour(fast, fused, "search's tour");
     RC_ASSERT(same_fused.describe() == "ok");
     RC_ASSERT(walked.cells() == tree.cells());
     RC_ASSERT(walked.tour() == fast);
-    const auto same_cursor = antkit::test::check_same_tour(cursor_tour(tree), fast, "tour()");
+    const auto same_cursor = antkit::testing::check_same_tour(cursor_tour(tree), fast, "tour()");
     RC_ASSERT(same_cursor.describe() == "ok");
     RunOptions options;
     const RunResult online = run_stc(m.map, m.start, Variant::Online, options);
-    const auto same_online = antkit::test::check_same_tour(online.path, fast, "offline tour()");
+    const auto same_online = antkit::testing::check_same_tour(online.path, fast, "offline tour()");
     RC_ASSERT(same_online.describe() == "ok");
-    antkit::test::StcTourChecker checker;
+    antkit::testing::StcTourChecker checker;
     const auto check = checker.check_exact(m.map, m.start, fast);
     RC_ASSERT(check.describe() == "ok");
     // Every in-tree cell's parent is in the tree and names it as a child (the search's bytes).

@@ -1,19 +1,18 @@
 // Invariants 1-5 of issue 3 on random maps (rapidcheck).
-#include "stc_checkers.hpp"
-#include "stc_test_maps.hpp"
-
 #include <antkit/stc/world.hpp>
+#include <antkit/testing/generators.hpp>
+#include <antkit/testing/stc.hpp>
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
 using namespace antkit::stc;
-using antkit::stc::testing::random_map;
+namespace gen = antkit::testing::gen;
 
 TEST_CASE("exact variants: invariants 1-4 on random maps - and all four give the same tour",
           "[stc][property]") {
   rc::prop("offline, online, ant and ant-edge", [] {
-    const auto [map, start] = *random_map(/*partial_cells=*/true, /*start_in_free_cell=*/true);
-    antkit::test::StcTourChecker checker;
+    const auto [map, start] = *gen::stc_case({.partial_cells = true, .start_in_free_cell = true});
+    antkit::testing::StcTourChecker checker;
     const RunResult offline = run_stc(map, start, Variant::Offline);
     const auto check = checker.check_exact(map, start, offline.path);
     RC_ASSERT(check.describe() == "ok");
@@ -22,7 +21,7 @@ TEST_CASE("exact variants: invariants 1-4 on random maps - and all four give the
     for (Variant v : {Variant::Online, Variant::Ant, Variant::AntEdge}) {
       const RunResult r = run_stc(map, start, v);
       const auto same =
-          antkit::test::check_same_tour(offline.path, r.path, std::string(variant_name(v)));
+          antkit::testing::check_same_tour(offline.path, r.path, std::string(variant_name(v)));
       RC_ASSERT(same.describe() == "ok");
       RC_ASSERT(r.hash == offline.hash);
       RC_ASSERT(r.closed && !r.refused);
@@ -34,8 +33,8 @@ TEST_CASE("full: every reachable free sub-cell at least once - moves 4-adjacent 
           "or next to the start - repeats reported right",
           "[stc][property]") {
   rc::prop("full", [] {
-    const auto [map, start] = *random_map(/*partial_cells=*/true, /*start_in_free_cell=*/false);
-    antkit::test::StcTourChecker checker;
+    const auto [map, start] = *gen::stc_case({.partial_cells = true, .start_in_free_cell = false});
+    antkit::testing::StcTourChecker checker;
     const RunResult r = run_stc(map, start, Variant::Full);
     const auto check = checker.check_full(map, start, r.path, r.repeats);
     RC_ASSERT(check.describe() == "ok");
@@ -50,7 +49,7 @@ TEST_CASE("full: every reachable free sub-cell at least once - moves 4-adjacent 
 TEST_CASE("marker noise: a noisy run never leaves the free sub-cells and its counts add up",
           "[stc][property]") {
   rc::prop("ant and ant-edge under noise", [] {
-    const auto [map, start] = *random_map(/*partial_cells=*/true, /*start_in_free_cell=*/true);
+    const auto [map, start] = *gen::stc_case({.partial_cells = true, .start_in_free_cell = true});
     const auto ppm = *rc::gen::inRange<std::uint32_t>(0, 300'001);
     const auto seed = *rc::gen::arbitrary<std::uint64_t>();
     for (Variant v : {Variant::Ant, Variant::AntEdge}) {
@@ -66,6 +65,20 @@ TEST_CASE("marker noise: a noisy run never leaves the free sub-cells and its cou
         RC_ASSERT(map[r.path[i]] == antkit::kernel::Occupancy::Free);
       }
       RC_ASSERT(run_stc(map, start, v, o).hash == r.hash); // reproducible
+    }
+  });
+}
+
+TEST_CASE("exact variants: invariants 1-4 on mazes, rooms and combs", "[stc][property]") {
+  rc::prop("offline and ant-edge on antkit::testing's structured maps", [] {
+    const auto [map, start] =
+        *gen::stc_case_from(gen::any_grid_map({.max_width = 12, .max_height = 12}));
+    antkit::testing::StcTourChecker checker;
+    for (Variant v : {Variant::Offline, Variant::AntEdge}) {
+      const RunResult r = run_stc(map, start, v);
+      const auto check = checker.check_exact(map, start, r.path);
+      RC_ASSERT(check.describe() == "ok");
+      RC_ASSERT(r.returned_to_start && r.repeats == 0);
     }
   });
 }

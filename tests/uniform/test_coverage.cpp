@@ -1,9 +1,8 @@
 // The three algorithms of paper 004 (and coordinated A*) run in the simulated world: worked
 // examples, invariants on random maps, determinism and golden hashes.
-#include "uniform_checkers.hpp"
-
 #include <antkit/algorithms/controller.hpp>
 #include <antkit/kernel/random.hpp>
+#include <antkit/testing/uniform.hpp>
 #include <antkit/uniform/controllers.hpp>
 #include <antkit/uniform/coverage.hpp>
 #include <antkit/uniform/scenario.hpp>
@@ -155,7 +154,7 @@ TEST_CASE("A* (plain and coordinated) and frontier view every viewable free cell
 
       RC_LOG() << algorithm_name(algo) << '\n';
       CoverageWorld checked(c.map, c.poses, c.range);
-      const auto check = test::check_uniform_run(checked, algo, 9, 2, 100'000);
+      const auto check = testing::check_uniform_run(checked, algo, 9, 2, 100'000);
       if (!check.ok) RC_FAIL(check.what);
       RC_ASSERT(check.result.stop == StopReason::Complete);
       RC_ASSERT(check.result.viewed == check.result.viewable);
@@ -177,7 +176,7 @@ TEST_CASE("RW and PM break no rule, and PM stops only when every robot has cease
     RC_LOG() << c.what;
     for (const auto algo : {Algorithm::RandomWanderer, Algorithm::PrimaryMovement}) {
       CoverageWorld checked(c.map, c.poses, c.range);
-      const auto check = test::check_uniform_run(checked, algo, 4, 0, 300);
+      const auto check = testing::check_uniform_run(checked, algo, 4, 0, 300);
       if (!check.ok) RC_FAIL(check.what);
       RC_ASSERT(check.result.viewed <= check.result.viewable);
       if (algo == Algorithm::RandomWanderer)

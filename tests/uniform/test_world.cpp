@@ -1,8 +1,7 @@
 // The simulated world: the sensor footprint, line of sight, viewing and movement rules.
-#include "uniform_checkers.hpp"
-
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/kernel/raster.hpp>
+#include <antkit/testing/uniform.hpp>
 #include <antkit/uniform/world.hpp>
 #include <catch2/catch.hpp>
 #include <climits>
@@ -108,7 +107,7 @@ TEST_CASE("the first views are the union of brute-force views, and viewable is t
     const CoverageWorld world(g, poses, r);
     kernel::Grid<std::uint8_t> expected(w, h, 0);
     for (const auto& p : poses) {
-      const auto v = test::brute_force_view(g, p.cell, r);
+      const auto v = testing::brute_force_view(g, p.cell, r);
       for (std::size_t k = 0; k < g.size(); ++k) expected.cells()[k] |= v.cells()[k];
     }
     RC_ASSERT(world.viewed() == expected);

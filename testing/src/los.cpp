@@ -1,10 +1,9 @@
-#include "los_checkers.hpp"
-
 #include <algorithm>
+#include <antkit/testing/los.hpp>
 #include <cstdlib>
 #include <string>
 
-namespace antkit::test {
+namespace antkit::testing {
 
 using kernel::Cell;
 using los::CellState;
@@ -108,4 +107,4 @@ std::string check_run(const kernel::OccupancyGrid& truth, Cell a, Cell b,
   return error;
 }
 
-} // namespace antkit::test
+} // namespace antkit::testing

@@ -1,10 +1,9 @@
-#include "stc_checkers.hpp"
-
 #include <algorithm>
+#include <antkit/testing/stc.hpp>
 #include <array>
 #include <sstream>
 
-namespace antkit::test {
+namespace antkit::testing {
 
 using kernel::Cell;
 using kernel::Occupancy;
@@ -187,4 +186,4 @@ StcCheck check_same_tour(std::span<const Cell> expected, std::span<const Cell> a
   return {};
 }
 
-} // namespace antkit::test
+} // namespace antkit::testing

@@ -7,7 +7,7 @@
 #include <antkit/los/explore.hpp>
 #include <string>
 
-namespace antkit::test {
+namespace antkit::testing {
 
 // Soundness: S, LOS and S+LOS cells are free in the true map; O cells are blocked (or unknown,
 // which the model treats as an obstacle).
@@ -30,4 +30,4 @@ std::string check_complete(const kernel::OccupancyGrid& truth, const los::Explor
 std::string check_run(const kernel::OccupancyGrid& truth, kernel::Cell a, kernel::Cell b,
                       const los::ExploreOptions& options, los::ExploreResult* out = nullptr);
 
-} // namespace antkit::test
+} // namespace antkit::testing

@@ -1,12 +1,11 @@
-#include "uniform_checkers.hpp"
-
 #include <antkit/kernel/raster.hpp>
+#include <antkit/testing/uniform.hpp>
 #include <antkit/uniform/controllers.hpp>
 #include <antkit/uniform/frontier_coverage.hpp>
 #include <sstream>
 #include <vector>
 
-namespace antkit::test {
+namespace antkit::testing {
 
 using kernel::Cell;
 using kernel::Occupancy;
@@ -180,4 +179,4 @@ UniformRunCheck check_uniform_run(CoverageWorld& world, Algorithm algorithm, std
   return {};
 }
 
-} // namespace antkit::test
+} // namespace antkit::testing

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-namespace antkit::test {
+namespace antkit::testing {
 
 struct StcCheck {
   bool ok = true;
@@ -57,4 +57,4 @@ private:
 StcCheck check_same_tour(std::span<const kernel::Cell> expected,
                          std::span<const kernel::Cell> actual, const std::string& what);
 
-} // namespace antkit::test
+} // namespace antkit::testing

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-namespace antkit::test {
+namespace antkit::testing {
 
 struct UniformRunCheck {
   bool ok = true;
@@ -35,4 +35,4 @@ UniformRunCheck check_uniform_run(uniform::CoverageWorld& world, uniform::Algori
 kernel::Grid<std::uint8_t> brute_force_view(const kernel::OccupancyGrid& map, kernel::Cell from,
                                             std::int32_t range);
 
-} // namespace antkit::test
+} // namespace antkit::testing
