@@ -19,8 +19,8 @@ std::string text(Cell c) {
   return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")";
 }
 
-bool adjacent(Cell a, Cell b) {
-  const int dx = a.x - b.x, dy = a.y - b.y;
+bool adjacent(Cell a, Cell b) { // in 64 bits: a tour read from a file may hold any coordinates
+  const std::int64_t dx = std::int64_t{a.x} - b.x, dy = std::int64_t{a.y} - b.y;
   return (dx == 0 && (dy == 1 || dy == -1)) || (dy == 0 && (dx == 1 || dx == -1));
 }
 

@@ -103,6 +103,17 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
   write(d / "empty.jsonl", "");
   write(d / "header.jsonl", "{\"antkit_log\":1}\n");
   write(d / "nested.jsonl", std::string(4096, '[') + "\n");
+  // tours (antkit check stc)
+  write(d / "tour_text.csv", "zero,one\n");
+  write(d / "tour_row.csv", "x,y\n0,0\n1,zero\n");
+  write(d / "tour_empty.csv", "");
+  write(d / "tour_ok.csv", "0,0\n1,0\n");
+  write(d / "tour_syntax.json", "[[0,0],\n[1,0,]");
+  write(d / "tour_shape.json", "{\"path\": [[0,0],[1,0,2]]}");
+  write(d / "tour_float.json", "[[0,0.5]]");
+  write(d / "tour_nopath.json", "{\"start\": [0,0]}");
+  write(d / "tour_startoff.json", "{\"path\": [[0,0]], \"start\": [5000,0]}");
+  write(d / "tour_junk.json", "[" + junk(200, 7));
   const auto inputs = listing(dir);
 
   const std::string bin = junk(12, 6);
@@ -127,6 +138,24 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"map info", "FILE is required", ""},
       {"map convert {M} {D}/out.bmp", "{D}/out.bmp:", "unknown map extension"},
       {"map convert {D}/junk.map {D}/out.map", "{D}/junk.map:1:1:", "type octile"},
+      // check stc
+      {"check stc --map {M} --path {D}/tour_text.csv", "{D}/tour_text.csv:1:1:", "expected x,y"},
+      {"check stc --map {M} --path {D}/tour_row.csv", "{D}/tour_row.csv:3:3:", "expected y"},
+      {"check stc --map {M} --path {D}/tour_empty.csv", "{D}/tour_empty.csv:", "no tour"},
+      {"check stc --map {M} --path {D}/absent.csv", "{D}/absent.csv:", "cannot open"},
+      {"check stc --map {M} --path {D}/tour_syntax.json", "{D}/tour_syntax.json:2:6:", "JSON"},
+      {"check stc --map {M} --path {D}/tour_shape.json", "{D}/tour_shape.json:", "path[1]"},
+      {"check stc --map {M} --path {D}/tour_float.json", "{D}/tour_float.json:", "not whole"},
+      {"check stc --map {M} --path {D}/tour_nopath.json", "{D}/tour_nopath.json:", "no \"path\""},
+      {"check stc --map {M} --path {D}/tour_startoff.json", "{D}/tour_startoff.json:", "outside"},
+      {"check stc --map {M} --path {D}/tour_junk.json", "{D}/tour_junk.json:1:", "JSON"},
+      {"check stc --map {D}/junk.map --path {D}/tour_ok.csv", "{D}/junk.map:1:1:", ""},
+      {"check stc --map {M} --path {D}/tour_ok.csv --start 9999,0", "--start:", "outside"},
+      {"check stc --map {M} --path {D}/tour_ok.csv --start 1", "--start:", "X,Y"},
+      {"check stc --map {M} --path {D}/tour_ok.csv --format xml", "--format:", "xml"},
+      {"check stc --map {M}", "--path is required", ""},
+      {"check stc --map {M} --path ''", "--path:", "empty value"},
+      {"check", "A subcommand is required", ""},
       // stc and stc-noise
       {"stc --map {D}/junk.map --variant ant --svg {D}/out.svg", "{D}/junk.map:1:1:", ""},
       {"stc --map {D}/blocked.map --variant ant --svg {D}/out.svg", "{D}/blocked.map:", "no free"},

@@ -1,0 +1,411 @@
+#include <antkit/kernel/input_error.hpp>
+#include <antkit/maps/map_io.hpp>
+#include <antkit/testing/stc_audit.hpp>
+#include <array>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+namespace antkit::testing {
+
+using kernel::Cell;
+using kernel::InputError;
+using kernel::Occupancy;
+using kernel::OccupancyGrid;
+
+namespace {
+
+constexpr std::size_t kMaxPositions = std::size_t{1} << 28;
+constexpr std::size_t kMissedSample = 16;
+constexpr std::array<Cell, 4> kSteps{{{1, 0}, {0, -1}, {-1, 0}, {0, 1}}};
+
+std::int64_t manhattan(Cell a, Cell b) {
+  return std::llabs(std::int64_t{a.x} - b.x) + std::llabs(std::int64_t{a.y} - b.y);
+}
+
+bool in_cell_area(const OccupancyGrid& map, Cell s) {
+  return s.x >= 0 && s.y >= 0 && s.x < map.width() / 2 * 2 && s.y < map.height() / 2 * 2;
+}
+
+bool cell_free(const OccupancyGrid& map, Cell cell) {
+  if (cell.x < 0 || cell.y < 0 || cell.x >= map.width() / 2 || cell.y >= map.height() / 2)
+    return false;
+  for (int q = 0; q < 4; ++q)
+    if (map[{2 * cell.x + (q & 1), 2 * cell.y + (q >> 1)}] != Occupancy::Free) return false;
+  return true;
+}
+
+// The sub-cells the rule asks for, by a breadth-first search of our own (1 = allowed).
+std::vector<std::uint8_t> allowed_set(const OccupancyGrid& map, Cell start, TourRule rule,
+                                      std::int64_t& count) {
+  std::vector<std::uint8_t> allowed(map.size(), 0);
+  count = 0;
+  if (!in_cell_area(map, start) || map[start] != Occupancy::Free) return allowed;
+  std::vector<Cell> queue;
+  if (rule == TourRule::ExactlyOnce) {
+    const Cell root{start.x / 2, start.y / 2};
+    if (!cell_free(map, root)) return allowed;
+    std::vector<std::uint8_t> seen(
+        static_cast<std::size_t>(map.width() / 2) * static_cast<std::size_t>(map.height() / 2), 0);
+    auto at = [&](Cell c) -> std::uint8_t& {
+      return seen[static_cast<std::size_t>(c.y) * static_cast<std::size_t>(map.width() / 2) +
+                  static_cast<std::size_t>(c.x)];
+    };
+    at(root) = 1;
+    queue.push_back(root);
+    for (std::size_t i = 0; i < queue.size(); ++i) {
+      const Cell c = queue[i];
+      for (int q = 0; q < 4; ++q) allowed[map.index({2 * c.x + (q & 1), 2 * c.y + (q >> 1)})] = 1;
+      for (const Cell d : kSteps) {
+        const Cell n = c + d;
+        if (cell_free(map, n) && !at(n)) {
+          at(n) = 1;
+          queue.push_back(n);
+        }
+      }
+    }
+    count = 4 * static_cast<std::int64_t>(queue.size());
+    return allowed;
+  }
+  allowed[map.index(start)] = 1;
+  queue.push_back(start);
+  for (std::size_t i = 0; i < queue.size(); ++i)
+    for (const Cell d : kSteps) {
+      const Cell n = queue[i] + d;
+      if (in_cell_area(map, n) && map[n] == Occupancy::Free && !allowed[map.index(n)]) {
+        allowed[map.index(n)] = 1;
+        queue.push_back(n);
+      }
+    }
+  count = static_cast<std::int64_t>(queue.size());
+  return allowed;
+}
+
+// Line and column (from 1, column in bytes) of byte offset `pos` of `text`.
+std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size_t pos) {
+  pos = std::min(pos, text.size());
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < pos; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+// The JSON forms, read by nlohmann's SAX interface: no document is built, so a tour of millions
+// of positions costs its own vector only.
+class TourSax : public nlohmann::json_sax<nlohmann::json> {
+public:
+  TourSax(std::string_view text, const std::string& source, TourFile& out)
+      : text_(text), source_(source), out_(out) {}
+
+  bool null() override { return value("null"); }
+  bool boolean(bool) override { return value("a boolean"); }
+  bool number_integer(number_integer_t v) override { return integer(v); }
+  bool number_unsigned(number_unsigned_t v) override {
+    return v > static_cast<number_unsigned_t>(std::numeric_limits<std::int64_t>::max())
+               ? integer(std::numeric_limits<std::int64_t>::max())
+               : integer(static_cast<std::int64_t>(v));
+  }
+  bool number_float(number_float_t, const string_t&) override {
+    return value("a number that is not whole");
+  }
+  bool string(string_t&) override { return value("a string"); }
+  bool binary(binary_t&) override { return value("binary data"); }
+  bool start_object(std::size_t) override {
+    if (frames_.empty()) {
+      frames_.push_back({Role::Top, 0});
+      return true;
+    }
+    value("an object");
+    frames_.push_back({Role::Ignore, 0});
+    return true;
+  }
+  bool key(string_t& k) override {
+    if (frames_.size() == 1 && frames_.back().role == Role::Top) {
+      key_ = k;
+      if ((k == "path" && seen_path_) || (k == "start" && seen_start_))
+        fail("", "\"" + k + "\" appears twice");
+    }
+    return true;
+  }
+  bool end_object() override {
+    if (frames_.back().role == Role::Top && !seen_path_)
+      fail("", "no \"path\": expected [[x, y], ...] or an object with \"path\", as antkit stc "
+               "prints it");
+    frames_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    if (frames_.empty()) {
+      frames_.push_back({Role::Path, 0});
+      seen_path_ = true;
+      return true;
+    }
+    Frame& parent = frames_.back();
+    if (parent.role == Role::Top && key_ == "path") {
+      seen_path_ = true;
+      frames_.push_back({Role::Path, 0});
+    } else if (parent.role == Role::Top && key_ == "start") {
+      seen_start_ = true;
+      frames_.push_back({Role::Start, 0});
+    } else if (parent.role == Role::Path) {
+      if (out_.path.size() >= kMaxPositions) fail(where(), "more than 2^28 positions");
+      frames_.push_back({Role::Pair, 0});
+    } else if (parent.role == Role::Pair || parent.role == Role::Start) {
+      value("an array");
+    } else {
+      frames_.push_back({Role::Ignore, 0});
+    }
+    return true;
+  }
+  bool end_array() override {
+    const Frame f = frames_.back();
+    if ((f.role == Role::Pair || f.role == Role::Start) && f.count != 2)
+      fail(where(),
+           "expected [x, y], two whole numbers; this array has " + std::to_string(f.count));
+    if (f.role == Role::Pair) out_.path.push_back(pair_);
+    if (f.role == Role::Start) out_.start = pair_;
+    frames_.pop_back();
+    return true;
+  }
+  bool parse_error(std::size_t position, const std::string&,
+                   const nlohmann::detail::exception& e) override {
+    const auto [line, column] = line_column(text_, position == 0 ? 0 : position - 1);
+    std::string what = e.what();
+    // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 1, column
+    // 3: "; keep what follows.
+    if (const auto colon = what.find(": ");
+        colon != std::string::npos && what.compare(0, 15, "[json.exception") == 0)
+      what = what.substr(colon + 2);
+    throw InputError(source_, line, column, "JSON: " + what);
+  }
+
+private:
+  enum class Role : std::uint8_t { Top, Path, Pair, Start, Ignore };
+  struct Frame {
+    Role role;
+    int count;
+  };
+
+  std::string where() const {
+    for (auto it = frames_.rbegin(); it != frames_.rend(); ++it)
+      if (it->role == Role::Start) return "start";
+    return "path[" + std::to_string(out_.path.size()) + "]";
+  }
+  [[noreturn]] void fail(const std::string& at, const std::string& message) const {
+    throw InputError(source_, at.empty() ? message : at + ": " + message);
+  }
+  bool value(const std::string& what) {
+    if (frames_.empty()) fail("", "expected [[x, y], ...] or an object with \"path\", not " + what);
+    const Role r = frames_.back().role;
+    if (r == Role::Pair || r == Role::Start) fail(where(), "expected a whole number, not " + what);
+    if (r == Role::Path) fail(where(), "expected [x, y], not " + what);
+    if (r == Role::Top && (key_ == "path" || key_ == "start"))
+      fail(key_, "expected " + std::string(key_ == "path" ? "[[x, y], ...]" : "[x, y]") + ", not " +
+                     what);
+    return true;
+  }
+  bool integer(std::int64_t v) {
+    Frame& f = frames_.empty() ? dummy_ : frames_.back();
+    if (f.role != Role::Pair && f.role != Role::Start) return value("a number");
+    if (v < std::numeric_limits<std::int32_t>::min() ||
+        v > std::numeric_limits<std::int32_t>::max())
+      fail(where(), std::to_string(v) + " is outside [-2^31, 2^31)");
+    if (f.count < 2) (f.count == 0 ? pair_.x : pair_.y) = static_cast<std::int32_t>(v);
+    ++f.count;
+    return true;
+  }
+
+  std::string_view text_;
+  const std::string& source_;
+  TourFile& out_;
+  std::vector<Frame> frames_;
+  Frame dummy_{Role::Ignore, 0};
+  std::string key_;
+  bool seen_path_ = false, seen_start_ = false;
+  Cell pair_{};
+};
+
+bool blank(char c) {
+  return c == ' ' || c == '\t';
+}
+
+// CSV: "x,y" per line.
+TourFile read_csv(std::string_view text, const std::string& source) {
+  TourFile out;
+  std::size_t line = 0, pos = 0;
+  bool first = true;
+  while (pos < text.size()) {
+    ++line;
+    const std::size_t end = std::min(text.find('\n', pos), text.size());
+    std::string_view l = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    std::size_t i = 0;
+    auto col = [&] { return i + 1; };
+    auto skip = [&] {
+      while (i < l.size() && blank(l[i])) ++i;
+    };
+    skip();
+    if (i == l.size()) continue; // blank line
+    if (first) {
+      first = false;
+      std::string compact;
+      for (const char c : l)
+        if (!blank(c)) compact += c;
+      if (compact == "x,y") continue;
+    }
+    std::array<std::int32_t, 2> v{};
+    for (int k = 0; k < 2; ++k) {
+      skip();
+      const std::size_t from = i;
+      if (i < l.size() && (l[i] == '-' || l[i] == '+')) ++i;
+      std::int64_t n = 0;
+      const std::size_t digits = i;
+      while (i < l.size() && l[i] >= '0' && l[i] <= '9') {
+        n = n * 10 + (l[i] - '0');
+        if (n > std::int64_t{1} << 31) {
+          i = from;
+          throw InputError(source, line, col(), "a coordinate outside [-2^31, 2^31)");
+        }
+        ++i;
+      }
+      if (i == digits) {
+        i = from;
+        throw InputError(source, line, col(),
+                         k == 0 ? "expected x,y (two whole numbers)"
+                                : "expected y after the comma");
+      }
+      if (l[from] == '-') n = -n;
+      if (n > std::numeric_limits<std::int32_t>::max()) {
+        i = from;
+        throw InputError(source, line, col(), "a coordinate outside [-2^31, 2^31)");
+      }
+      v[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(n);
+      skip();
+      if (k == 0) {
+        if (i == l.size() || l[i] != ',') throw InputError(source, line, col(), "expected ','");
+        ++i;
+      }
+    }
+    if (i != l.size()) throw InputError(source, line, col(), "unexpected text after x,y");
+    if (out.path.size() >= kMaxPositions)
+      throw InputError(source, line, 1, "more than 2^28 positions");
+    out.path.push_back({v[0], v[1]});
+  }
+  return out;
+}
+
+} // namespace
+
+std::string_view tour_rule_name(TourRule rule) noexcept {
+  return rule == TourRule::ExactlyOnce ? "exactly-once" : "coverage";
+}
+
+StcAudit audit_stc_tour(const OccupancyGrid& map, Cell start, std::span<const Cell> path,
+                        TourRule rule) {
+  StcAudit a;
+  a.rule = rule;
+  if (path.size() > 1 && path.back() == path.front()) {
+    a.closed_form = true;
+    path = path.first(path.size() - 1);
+  }
+  a.positions = static_cast<std::int64_t>(path.size());
+  const std::vector<std::uint8_t> allowed = allowed_set(map, start, rule, a.reachable);
+  std::vector<std::uint8_t> seen(map.size(), 0);
+  std::int64_t distinct = 0;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const Cell s = path[i];
+    if (i > 0 && manhattan(path[i - 1], s) != 1) ++a.illegal_moves;
+    if (!map.in_bounds(s) || !allowed[map.index(s)]) {
+      ++a.off_limits;
+      if (map.in_bounds(s) && !seen[map.index(s)]++) ++distinct;
+      continue;
+    }
+    if (seen[map.index(s)]++) {
+      ++a.repeats;
+    } else {
+      ++a.covered;
+      ++distinct;
+    }
+  }
+  a.missed = a.reachable - a.covered;
+  for (std::int32_t y = 0; y < map.height() && a.missed_sample.size() < kMissedSample; ++y)
+    for (std::int32_t x = 0; x < map.width() && a.missed_sample.size() < kMissedSample; ++x)
+      if (allowed[map.index({x, y})] && !seen[map.index({x, y})]) a.missed_sample.push_back({x, y});
+  a.end_distance = path.empty() ? 0 : manhattan(path.back(), start);
+  StcTourChecker checker;
+  a.first = rule == TourRule::ExactlyOnce
+                ? checker.check_exact(map, start, path)
+                : checker.check_full(map, start, path, a.positions - distinct);
+  return a;
+}
+
+TourFile read_tour(std::string_view text, const std::string& source) {
+  std::size_t i = 0;
+  while (i < text.size() && (blank(text[i]) || text[i] == '\n' || text[i] == '\r')) ++i;
+  if (i == text.size()) throw InputError(source, "empty: no tour");
+  if (text[i] != '[' && text[i] != '{') return read_csv(text, source);
+  TourFile out;
+  TourSax sax(text, source, out);
+  nlohmann::json::sax_parse(text.begin(), text.end(), &sax);
+  return out;
+}
+
+TourFile read_tour_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "cannot open the tour file for reading");
+  constexpr std::size_t kMaxBytes = std::size_t{1} << 30;
+  std::string text;
+  std::array<char, 65536> buf{};
+  while (in.read(buf.data(), buf.size()) || in.gcount() > 0) {
+    text.append(buf.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxBytes) throw InputError(path.string(), "tour file larger than 1 GiB");
+  }
+  if (in.bad()) throw InputError(path.string(), "read error");
+  return read_tour(text, path.string());
+}
+
+StcCheckReport check_stc_files(const StcCheckRequest& request) {
+  const maps::GridMap map = maps::load_map(request.map_file);
+  const TourFile tour = read_tour_file(request.tour_file);
+  StcCheckReport r;
+  r.width = map.cells.width();
+  r.height = map.cells.height();
+  auto require_free = [&](Cell s, const std::string& where) {
+    if (!map.cells.in_bounds(s))
+      throw InputError(where, "the start (" + std::to_string(s.x) + ", " + std::to_string(s.y) +
+                                  ") is outside the " + std::to_string(r.width) + "x" +
+                                  std::to_string(r.height) + " map");
+    if (map.cells[s] != Occupancy::Free)
+      throw InputError(where, "the start (" + std::to_string(s.x) + ", " + std::to_string(s.y) +
+                                  ") is not a free sub-cell of the map");
+  };
+  if (request.start) {
+    r.start = *request.start;
+    r.start_from = "--start";
+    require_free(r.start, "--start");
+  } else if (tour.start) {
+    r.start = *tour.start;
+    r.start_from = "tour file";
+    require_free(r.start, request.tour_file);
+  } else if (map.start) {
+    r.start = *map.start;
+    r.start_from = "map";
+  } else if (!tour.path.empty()) {
+    r.start = tour.path.front();
+    r.start_from = "first position";
+  } else {
+    throw InputError(request.tour_file, "the tour is empty and no start is given");
+  }
+  r.audit = audit_stc_tour(map.cells, r.start, tour.path, request.rule);
+  return r;
+}
+
+} // namespace antkit::testing

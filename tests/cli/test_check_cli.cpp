@@ -1,0 +1,117 @@
+// `antkit check stc`, run as the real executable (issue 18): antkit's own tours pass, another
+// planner's path converted from row/column pairs passes, and a damaged tour exits 1 with every
+// violation counted in the report.
+#include "run_antkit.hpp"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <unistd.h>
+
+using antkit::test::run_antkit;
+using antkit::test::shared_map;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch() {
+  const auto dir = fs::temp_directory_path() / ("antkit-check-cli-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+fs::path write(const std::string& name, const std::string& text) {
+  const auto path = scratch() / name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+} // namespace
+
+TEST_CASE("antkit check stc: every variant's own output passes its rule on shared maps",
+          "[cli][check]") {
+  for (const char* name :
+       {"movingai/maze-32-32-2.map", "movingai/room-32-32-4.map", "ros/turtlebot3_world.yaml"}) {
+    const std::string map = shared_map(name);
+    for (const char* variant : {"offline", "ant-edge", "full"}) {
+      INFO(name << " " << variant);
+      const auto tour = run_antkit("stc --map " + map + " --variant " + variant + " --format json");
+      REQUIRE(tour.status == 0);
+      const auto file = write("tour.json", tour.out);
+      const bool full = std::string(variant) == "full";
+      const auto r = run_antkit("check stc --map " + map + " --path " + file.string() +
+                                (full ? " --coverage" : "") + " --format json");
+      INFO(r.err);
+      REQUIRE(r.status == 0);
+      const auto j = nlohmann::json::parse(r.out);
+      const auto stc = nlohmann::json::parse(tour.out);
+      CHECK(j.at("ok") == true);
+      CHECK(j.at("rule") == (full ? "coverage" : "exactly-once"));
+      CHECK(j.at("start") == stc.at("start"));
+      CHECK(j.at("start_from") == "tour file");
+      CHECK(j.at("reachable_subcells") == stc.at("reachable_subcells"));
+      CHECK(j.at("covered") == stc.at("covered"));
+      // Full-STC may end on its start (a repeat to antkit stc); the check reads a tour that ends
+      // on its start as closed, that return not a repeat. Exact tours end next to the start.
+      const bool closed = j.at("closed_form").get<bool>();
+      CHECK((full || !closed));
+      CHECK(j.at("repeats").get<int>() + (closed ? 1 : 0) == stc.at("repeats").get<int>());
+      CHECK(j.at("first_violation").is_null());
+      if (full) { // Full-STC does not promise exactly once: the strict rule refuses it
+        const auto strict = run_antkit("check stc --map " + map + " --path " + file.string());
+        CHECK(strict.status == 1);
+        CHECK(strict.err.rfind("antkit: check failed: ", 0) == 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("antkit check stc: another planner's row/column pairs, converted to CSV, pass",
+          "[cli][check]") {
+  // A 4 x 4 free map (2 x 2 cells) and a tour around it given as (row, column) pairs, as many
+  // planners print them; README's conversion swaps them into x,y lines.
+  const auto map = write("square.txt", "....\n....\n....\n....\n");
+  const int rows_cols[][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {1, 3}, {2, 3}, {3, 3}, {3, 2},
+                              {3, 1}, {3, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {1, 1}, {1, 0}};
+  std::string csv = "x,y\n";
+  for (const auto& rc : rows_cols)
+    csv += std::to_string(rc[1]) + "," + std::to_string(rc[0]) + "\n";
+  const auto path = write("tour.csv", csv);
+  const auto r =
+      run_antkit("check stc --map " + map.string() + " --path " + path.string() + " --format json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j.at("reachable_subcells") == 16);
+  CHECK(j.at("start") == nlohmann::json::array({0, 0}));
+  CHECK(j.at("start_from") == "first position");
+  CHECK(j.at("end_distance") == 1);
+}
+
+TEST_CASE("antkit check stc: a damaged tour exits 1 and its report counts every violation",
+          "[cli][check]") {
+  const auto map = write("square.txt", "....\n....\n....\n....\n");
+  // A tour of that square with one step off the map at (4, 1) (then a jump back), (3, 3) skipped
+  // by a diagonal jump, (1, 2) doubled, and cut before its last two positions (1, 1), (0, 1).
+  const auto path = write("damaged.csv", "0,0\n1,0\n2,0\n3,0\n3,1\n4,1\n3,2\n2,3\n1,3\n0,3\n"
+                                         "0,2\n1,2\n1,2\n2,2\n2,1\n");
+  const auto r =
+      run_antkit("check stc --map " + map.string() + " --path " + path.string() + " --format json");
+  REQUIRE(r.status == 1);
+  CHECK(r.err == "antkit: check failed: " + path.string() +
+                     ": invariant 2 moves broken at step 5, sub-cell (4, 1): not a free sub-cell "
+                     "inside the cell area\n");
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j.at("ok") == false);
+  CHECK(j.at("positions") == 15);
+  CHECK(j.at("off_limits") == 1);
+  CHECK(j.at("repeats") == 1);
+  CHECK(j.at("illegal_moves") == 3); // (4,1)->(3,2), (3,2)->(2,3), (1,2)->(1,2)
+  CHECK(j.at("missed") == 3);        // (3, 3), (1, 1), (0, 1)
+  CHECK(j.at("missed_sample") == nlohmann::json::parse("[[0,1],[1,1],[3,3]]"));
+  CHECK(j.at("end_distance") == 3);
+  CHECK(j.at("first_violation").at("rule") == "2 moves");
+  CHECK(j.at("first_violation").at("step") == 5);
+}
