@@ -2,6 +2,8 @@
 // (testing/include/antkit/testing/); this file parses options, calls one function and prints.
 //
 //   antkit check stc --map F --path P [--start X,Y] [--coverage] [--format table|json]
+//   antkit check explore --map F --cells C [--format table|json]
+//   antkit check cover --map F --log L [--sensor R] [--format table|json]
 //
 // Exit status: 0 the output keeps every rule, 1 a rule is broken (the report is printed, then the
 // first broken rule on stderr), 2 bad input (a malformed map or tour file, a start off the map).
@@ -9,9 +11,14 @@
 #include "output.hpp"
 
 #include <antkit/algorithms/options.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <antkit/los/cell_state.hpp>
+#include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
+#include <antkit/uniform/world.hpp>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace {
@@ -71,6 +78,80 @@ void run_stc(const StcCheckCommand& c) {
   if (!a.ok()) throw antkit::cli::CheckFailed(c.path + ": " + a.first.describe());
 }
 
+struct ExploreCheckCommand {
+  std::string map, cells;
+  Format format = Format::Table;
+};
+
+void run_explore(const ExploreCheckCommand& c) {
+  const auto r = testing::check_explore_files(c.map, c.cells);
+  const auto& a = r.audit;
+  nlohmann::json j;
+  j["check"] = "explore";
+  j["ok"] = a.ok();
+  j["map"] = c.map;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  nlohmann::json states;
+  for (const auto s :
+       {antkit::los::CellState::F, antkit::los::CellState::S, antkit::los::CellState::LOS,
+        antkit::los::CellState::S_LOS, antkit::los::CellState::NLOS, antkit::los::CellState::O})
+    states[std::string(1, antkit::los::code(s))] = a.by_state[static_cast<std::size_t>(s)];
+  j["states"] = std::move(states);
+  j["free_cells"] = a.free_cells;
+  j["known_free"] = a.known_free;
+  j["known_free_not_free"] = a.known_free_not_free;
+  j["obstacle_but_free"] = a.obstacle_but_free;
+  j["first_violation"] = a.ok() ? nlohmann::json(nullptr) : nlohmann::json(a.first);
+  antkit::cli::emit(j, c.format, std::cout);
+  if (!a.ok()) throw antkit::cli::CheckFailed(c.cells + ": " + a.first);
+}
+
+struct CoverCheckCommand {
+  std::string map, log;
+  std::int64_t sensor = -1;
+  Format format = Format::Table;
+};
+
+void run_cover(const CoverCheckCommand& c) {
+  std::optional<std::int32_t> sensor;
+  if (c.sensor != -1) {
+    if (c.sensor < 0 || c.sensor > antkit::uniform::kMaxSensorRange)
+      throw antkit::kernel::InputError("--sensor",
+                                       "expected a sensor distance in [0, " +
+                                           std::to_string(antkit::uniform::kMaxSensorRange) +
+                                           "] cells, not " + std::to_string(c.sensor));
+    sensor = static_cast<std::int32_t>(c.sensor);
+  }
+  const auto r = testing::check_cover_files(c.map, c.log, sensor);
+  const auto& a = r.audit;
+  nlohmann::json j;
+  j["check"] = "cover";
+  j["ok"] = a.ok();
+  j["map"] = c.map;
+  j["sensor"] = r.sensor;
+  j["sensor_from"] = r.sensor_from;
+  j["ticks"] = a.ticks;
+  j["robots"] = a.robots;
+  j["moves"] = a.moves;
+  j["turns"] = a.turns;
+  j["illegal_moves"] = a.illegal_moves;
+  j["bad_turns"] = a.bad_turns;
+  j["collisions"] = a.collisions;
+  j["viewed"] = a.viewed;
+  j["viewable"] = a.viewable;
+  j["coverage"] = a.viewable == 0
+                      ? 0.0
+                      : 100.0 * static_cast<double>(a.viewed) / static_cast<double>(a.viewable);
+  j["claim_viewed"] = r.claim_viewed ? nlohmann::json(*r.claim_viewed) : nlohmann::json(nullptr);
+  j["claim_viewable"] =
+      r.claim_viewable ? nlohmann::json(*r.claim_viewable) : nlohmann::json(nullptr);
+  j["claims_match"] = a.claims_match;
+  j["first_violation"] = a.ok() ? nlohmann::json(nullptr) : nlohmann::json(a.first);
+  antkit::cli::emit(j, c.format, std::cout);
+  if (!a.ok()) throw antkit::cli::CheckFailed(c.log + ": " + a.first);
+}
+
 void register_check(CLI::App& app) {
   auto* check = app.add_subcommand(
       "check", "Check a planner's output against the map: the invariants of antkit's own tests, "
@@ -94,6 +175,34 @@ void register_check(CLI::App& app) {
                 "boustrophedon), instead of exactly once");
   antkit::cli::add_format_option(*stc, s->format);
   stc->callback([s] { run_stc(*s); });
+
+  auto e = std::make_shared<ExploreCheckCommand>();
+  auto* explore = check->add_subcommand(
+      "explore", "Check LOS exploration cell states against the true map: S, LOS and S+LOS "
+                 "cells free, O cells not free");
+  explore->add_option("--map", e->map, "The true map (MovingAI .map, ROS .yaml, ASCII .txt)")
+      ->required();
+  explore
+      ->add_option("--cells", e->cells,
+                   "The cell states: antkit explore's JSON output, a JSON array of rows, or "
+                   "text rows of F S L B N O")
+      ->required();
+  antkit::cli::add_format_option(*explore, e->format);
+  explore->callback([e] { run_explore(*e); });
+
+  auto v = std::make_shared<CoverCheckCommand>();
+  auto* cover = check->add_subcommand(
+      "cover", "Check a coverage run's trace: legal moves and turns, no two robots on one cell, "
+               "and the coverage it claims recomputed from its poses");
+  cover->add_option("--map", v->map, "The map (MovingAI .map, ROS .yaml, ASCII .txt)")->required();
+  cover
+      ->add_option("--log", v->log,
+                   "The trace: tick,robot,x,y,bearing per line (antkit cover --trace)")
+      ->required();
+  cover->add_option("--sensor", v->sensor,
+                    "Sensor distance in cells (default: the trace's '# sensor:' line)");
+  antkit::cli::add_format_option(*cover, v->format);
+  cover->callback([v] { run_cover(*v); });
 }
 
 const antkit::cli::Registration reg{"check", &register_check};

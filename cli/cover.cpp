@@ -2,7 +2,7 @@
 //   antkit cover (--map FILE | --size WxH --density P) [--seed S]
 //                --algo rw|pm|astar|astar-coord|frontier
 //                [--robots N] [--sensor R] [--limit T] [--trial K] [--format table|json]
-//                [--svg FILE]
+//                [--svg FILE] [--trace FILE]
 // Prints {"algo", "robots", "coverage", "viewed", "viewable", "movements", "moves", "hash", ...}.
 // Maps: Blocked and Unknown cells both block sight and movement, and only Free cells count for
 // coverage. A map's start cell ('S' in ASCII maps) is robot 0's start.
@@ -11,6 +11,7 @@
 #include "svg.hpp"
 
 #include <algorithm>
+#include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/uniform/coverage.hpp>
@@ -43,6 +44,7 @@ struct CoverOptions {
   std::int64_t sensor = 5;
   std::int64_t limit = -1; // default: 10 * W * H
   std::string svg;
+  std::string trace;
   Format format = Format::Table;
 };
 
@@ -116,7 +118,27 @@ nlohmann::json run_cover(const CoverOptions& o) {
   const std::int64_t cells = std::int64_t{grid.width()} * grid.height();
   const auto limit = static_cast<std::uint64_t>(o.limit >= 0 ? o.limit : 10 * cells);
   uniform::CoverageWorld world(std::move(grid), poses, static_cast<std::int32_t>(o.sensor));
-  const auto r = uniform::run_coverage(world, *algo, o.seed, o.trial, limit);
+  uniform::CoverageResult r;
+  if (o.trace.empty()) {
+    r = uniform::run_coverage(world, *algo, o.seed, o.trial, limit);
+  } else {
+    // The trace `antkit check cover` reads (testing/include/antkit/testing/run_audit.hpp): the
+    // poses after every tick, streamed into a temporary file that replaces --trace only whole.
+    antkit::geometry::write_file_atomic(o.trace, [&](std::ostream& out) {
+      out << "# antkit cover trace: the poses after each tick (tick 0: the start)\n"
+          << "# sensor: " << o.sensor << "\ntick,robot,x,y,bearing\n";
+      const uniform::TickObserver observer = [&out](const uniform::CoverageWorld& w,
+                                                    std::uint64_t tick) {
+        for (std::size_t i = 0; i < w.robot_count(); ++i) {
+          const auto& p = w.robot(i);
+          out << tick << ',' << i << ',' << p.cell.x << ',' << p.cell.y << ',' << int{p.bearing}
+              << '\n';
+        }
+      };
+      r = uniform::run_coverage(world, *algo, o.seed, o.trial, limit, observer);
+      out << "# claim viewed: " << r.viewed << "\n# claim viewable: " << r.viewable << '\n';
+    });
+  }
   if (!o.svg.empty()) write_svg(o.svg, world);
 
   nlohmann::json j;
@@ -157,6 +179,9 @@ void register_cover(CLI::App& app) {
   sub->add_option("--sensor", o->sensor, "Sensor distance in cells (default 5)");
   sub->add_option("--limit", o->limit, "Time limit in ticks (default 10 * W * H)");
   sub->add_option("--svg", o->svg, "Write the final state as SVG");
+  sub->add_option("--trace", o->trace,
+                  "Write every robot's pose after every tick as CSV (tick,robot,x,y,bearing), "
+                  "with the sensor and the coverage claimed, for antkit check cover");
   antkit::cli::add_format_option(*sub, o->format);
   sub->callback([o] { antkit::cli::emit(run_cover(*o), o->format, std::cout); });
 }

@@ -114,6 +114,15 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
   write(d / "tour_nopath.json", "{\"start\": [0,0]}");
   write(d / "tour_startoff.json", "{\"path\": [[0,0]], \"start\": [5000,0]}");
   write(d / "tour_junk.json", "[" + junk(200, 7));
+  // cell states (check explore) and coverage traces (check cover)
+  write(d / "cells_ragged.txt", "FS\nF\n");
+  write(d / "cells_char.txt", "FS\nFQ\n");
+  write(d / "cells_small.txt", "FS\nFS\n");
+  write(d / "cells_nocells.json", "{\"algo\": 1}");
+  write(d / "trace_order.csv", "0,0,0,0,0\n0,2,0,0,0\n");
+  write(d / "trace_bearing.csv", "# sensor: 2\n0,0,0,0,9\n");
+  write(d / "trace_nosensor.csv", "0,0,1,1,0\n");
+  write(d / "trace_short.csv", "# sensor: 2\n0,0,1,1,0\n0,1,2,1,0\n1,0,1,1,0\n");
   const auto inputs = listing(dir);
 
   const std::string bin = junk(12, 6);
@@ -156,6 +165,24 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"check stc --map {M}", "--path is required", ""},
       {"check stc --map {M} --path ''", "--path:", "empty value"},
       {"check", "A subcommand is required", ""},
+      {"check explore --map {M} --cells {D}/cells_ragged.txt",
+       "{D}/cells_ragged.txt:2:1:", "row 1"},
+      {"check explore --map {M} --cells {D}/cells_char.txt", "{D}/cells_char.txt:2:2:", "'Q'"},
+      {"check explore --map {M} --cells {D}/cells_small.txt", "{D}/cells_small.txt:", "2x2"},
+      {"check explore --map {M} --cells {D}/cells_nocells.json",
+       "{D}/cells_nocells.json:", "no \"cells\""},
+      {"check explore --map {M} --cells {D}/absent.txt", "{D}/absent.txt:", "cannot open"},
+      {"check explore --map {M}", "--cells is required", ""},
+      {"check cover --map {M} --log {D}/trace_order.csv --sensor 2",
+       "{D}/trace_order.csv:2:1:", "robot 1"},
+      {"check cover --map {M} --log {D}/trace_bearing.csv",
+       "{D}/trace_bearing.csv:2:9:", "outside [0, 7]"},
+      {"check cover --map {M} --log {D}/trace_nosensor.csv", "{D}/trace_nosensor.csv:", "--sensor"},
+      {"check cover --map {M} --log {D}/trace_short.csv", "{D}/trace_short.csv:", "1 of 2"},
+      {"check cover --map {M} --log {D}/trace_nosensor.csv --sensor 256", "--sensor:", "255"},
+      {"check cover --map {M} --log {D}/trace_nosensor.csv --sensor x",
+       "Could not convert: --sensor", ""},
+      {"cover --map {M} --algo rw --trace {D}/nodir/trace.csv", "{D}/nodir/trace.csv", ""},
       // stc and stc-noise
       {"stc --map {D}/junk.map --variant ant --svg {D}/out.svg", "{D}/junk.map:1:1:", ""},
       {"stc --map {D}/blocked.map --variant ant --svg {D}/out.svg", "{D}/blocked.map:", "no free"},

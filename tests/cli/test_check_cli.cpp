@@ -115,3 +115,66 @@ TEST_CASE("antkit check stc: a damaged tour exits 1 and its report counts every 
   CHECK(j.at("first_violation").at("rule") == "2 moves");
   CHECK(j.at("first_violation").at("step") == 5);
 }
+
+TEST_CASE("antkit check cover: antkit cover's traces pass, recomputed coverage equal to the "
+          "reported",
+          "[cli][check]") {
+  const std::string map = shared_map("movingai/room-32-32-4.map");
+  for (const char* algo : {"rw", "pm", "astar", "astar-coord", "frontier"}) {
+    INFO(algo);
+    const auto trace = scratch() / "trace.csv";
+    const auto run =
+        run_antkit("cover --map " + map + " --algo " + algo +
+                   " --robots 3 --sensor 4 --limit 500 --format json --trace " + trace.string());
+    REQUIRE(run.status == 0);
+    const auto r =
+        run_antkit("check cover --map " + map + " --log " + trace.string() + " --format json");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    const auto c = nlohmann::json::parse(run.out);
+    CHECK(j.at("ok") == true);
+    CHECK(j.at("sensor") == 4);
+    CHECK(j.at("sensor_from") == "trace");
+    CHECK(j.at("viewed") == c.at("viewed"));
+    CHECK(j.at("viewable") == c.at("viewable"));
+    CHECK(j.at("claims_match") == true);
+    CHECK(j.at("ticks") == c.at("movements").get<int>() + 1);
+    CHECK(j.at("robots") == 3);
+    // The same trace read with a larger sensor than the run's: the claim no longer holds
+    // unless the run had already viewed everything.
+    const auto wider = run_antkit("check cover --map " + map + " --log " + trace.string() +
+                                  " --sensor 6 --format json");
+    const auto w = nlohmann::json::parse(wider.out);
+    CHECK(wider.status == (w.at("viewed") == c.at("viewed") ? 0 : 1));
+  }
+}
+
+TEST_CASE("antkit check explore: antkit explore's states pass, and a wrong state exits 1",
+          "[cli][check]") {
+  const std::string map = shared_map("movingai/maze-32-32-2.map");
+  for (const char* algo : {"fast-wall-follow", "frontier"}) {
+    INFO(algo);
+    const auto run = run_antkit("explore --map " + map + " --algo " + algo + " --format json");
+    REQUIRE(run.status == 0);
+    const auto cells = write("cells.json", run.out);
+    const auto r =
+        run_antkit("check explore --map " + map + " --cells " + cells.string() + " --format json");
+    REQUIRE(r.status == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j.at("ok") == true);
+    CHECK(j.at("known_free_not_free") == 0);
+    CHECK(j.at("obstacle_but_free") == 0);
+  }
+  // Every cell marked S: each blocked cell of the maze is a violation.
+  std::string rows;
+  for (int y = 0; y < 32; ++y) rows += std::string(32, 'S') + "\n";
+  const auto bad = write("all-s.txt", rows);
+  const auto r =
+      run_antkit("check explore --map " + map + " --cells " + bad.string() + " --format json");
+  REQUIRE(r.status == 1);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j.at("known_free") == 1024);
+  CHECK(j.at("known_free_not_free") == 1024 - j.at("free_cells").get<int>());
+  CHECK(r.err.find("is marked S but is not free") != std::string::npos);
+}

@@ -42,14 +42,15 @@ std::string_view stop_reason_name(StopReason r) noexcept {
 namespace {
 
 template <class Team>
-CoverageResult run_team(CoverageWorld& world, Team& team, Algorithm algorithm,
-                        std::uint64_t limit) {
+CoverageResult run_team(CoverageWorld& world, Team& team, Algorithm algorithm, std::uint64_t limit,
+                        const TickObserver* observer) {
   CoverageResult out;
   out.algorithm = algorithm;
   out.robots = world.robot_count();
   kernel::TraceHash hash;
   hash.add_u8(static_cast<std::uint8_t>(algorithm)).add_u64(world.robot_count());
   world.hash_state(hash);
+  if (observer) (*observer)(world, 0);
   for (;;) {
     if (world.complete()) {
       out.stop = StopReason::Complete;
@@ -91,6 +92,7 @@ CoverageResult run_team(CoverageWorld& world, Team& team, Algorithm algorithm,
     }
     ++out.movements;
     world.hash_state(hash);
+    if (observer) (*observer)(world, out.movements);
   }
   out.viewed = world.viewed_free();
   out.viewable = world.viewable();
@@ -100,28 +102,43 @@ CoverageResult run_team(CoverageWorld& world, Team& team, Algorithm algorithm,
 
 } // namespace
 
-CoverageResult run_coverage(CoverageWorld& world, Algorithm algorithm, std::uint64_t seed,
-                            std::uint64_t trial, std::uint64_t limit) {
+namespace {
+
+CoverageResult run_with(CoverageWorld& world, Algorithm algorithm, std::uint64_t seed,
+                        std::uint64_t trial, std::uint64_t limit, const TickObserver* observer) {
   switch (algorithm) {
   case Algorithm::RandomWanderer: {
     RandomWanderer team(seed, trial, world.robot_count());
-    return run_team(world, team, algorithm, limit);
+    return run_team(world, team, algorithm, limit, observer);
   }
   case Algorithm::PrimaryMovement: {
     PrimaryMovement team(world.robot_count());
-    return run_team(world, team, algorithm, limit);
+    return run_team(world, team, algorithm, limit, observer);
   }
   case Algorithm::AStar:
   case Algorithm::CoordinatedAStar: {
     AStarCoverage team(seed, trial, world.robot_count(), algorithm == Algorithm::CoordinatedAStar);
-    return run_team(world, team, algorithm, limit);
+    return run_team(world, team, algorithm, limit, observer);
   }
   case Algorithm::Frontier: {
     FrontierCoverage team(seed, trial, world);
-    return run_team(world, team, algorithm, limit);
+    return run_team(world, team, algorithm, limit, observer);
   }
   }
   return {};
+}
+
+} // namespace
+
+CoverageResult run_coverage(CoverageWorld& world, Algorithm algorithm, std::uint64_t seed,
+                            std::uint64_t trial, std::uint64_t limit) {
+  return run_with(world, algorithm, seed, trial, limit, nullptr);
+}
+
+CoverageResult run_coverage(CoverageWorld& world, Algorithm algorithm, std::uint64_t seed,
+                            std::uint64_t trial, std::uint64_t limit,
+                            const TickObserver& observer) {
+  return run_with(world, algorithm, seed, trial, limit, observer ? &observer : nullptr);
 }
 
 } // namespace antkit::uniform

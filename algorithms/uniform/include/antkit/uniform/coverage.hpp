@@ -16,6 +16,7 @@
 // canonical state (CoverageWorld::hash_state) before the first tick and after every tick.
 #include <antkit/uniform/world.hpp>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string_view>
 
@@ -51,5 +52,11 @@ struct CoverageResult {
 // ticks. `seed` and `trial` key the controllers' streams.
 CoverageResult run_coverage(CoverageWorld& world, Algorithm algorithm, std::uint64_t seed,
                             std::uint64_t trial, std::uint64_t limit);
+
+// The same, calling `observer` with the starting poses (tick 0) and after every tick (1, 2, ...):
+// what `antkit cover --trace` writes. The run and its hash are the same as without it.
+using TickObserver = std::function<void(const CoverageWorld& world, std::uint64_t tick)>;
+CoverageResult run_coverage(CoverageWorld& world, Algorithm algorithm, std::uint64_t seed,
+                            std::uint64_t trial, std::uint64_t limit, const TickObserver& observer);
 
 } // namespace antkit::uniform
