@@ -183,6 +183,16 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"check cover --map {M} --log {D}/trace_nosensor.csv --sensor x",
        "Could not convert: --sensor", ""},
       {"cover --map {M} --algo rw --trace {D}/nodir/trace.csv", "{D}/nodir/trace.csv", ""},
+      // campaign
+      {"campaign buffon --cases 10 --out {D}/camp", "FAMILY:", "'buffon'"},
+      {"campaign stc --cases 0 --out {D}/camp", "--cases:", "at least one"},
+      {"campaign stc --cases 10 --max-size 0x4 --out {D}/camp", "--max-size:", "1x1"},
+      {"campaign stc --cases 10 --max-size 8 --out {D}/camp", "--max-size:", "WxH"},
+      {"campaign los --cases 10 --variants frontier,zigzag --out {D}/camp",
+       "--variants:", "'zigzag'"},
+      {"campaign uniform --cases 10 --threads 0 --out {D}/camp", "--threads:", "1 to 256"},
+      {"campaign uniform --cases 10 --time -1 --out {D}/camp", "--time:", "0 or more"},
+      {"campaign stc --cases 10", "--out is required", ""},
       // stc and stc-noise
       {"stc --map {D}/junk.map --variant ant --svg {D}/out.svg", "{D}/junk.map:1:1:", ""},
       {"stc --map {D}/blocked.map --variant ant --svg {D}/out.svg", "{D}/blocked.map:", "no free"},

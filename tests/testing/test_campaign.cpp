@@ -1,0 +1,130 @@
+// antkit campaign's engine (testing/campaign): case i is case i whatever runs it, the outputs
+// depend on the options only, a failing case shrinks to a minimal map with a command that
+// reproduces it, and a time limit stops at a case boundary.
+#include <antkit/campaign/campaign.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <antkit/maps/map_io.hpp>
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+namespace {
+
+using namespace antkit;
+namespace fs = std::filesystem;
+
+campaign::Options options(campaign::Family f, std::uint64_t cases, unsigned threads) {
+  campaign::Options o;
+  o.family = f;
+  o.cases = cases;
+  o.threads = threads;
+  o.max_width = 10;
+  o.max_height = 10;
+  return o;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+} // namespace
+
+TEST_CASE("campaign: every family's cases keep their invariants, the same for any thread count",
+          "[testing][campaign]") {
+  for (const auto f : {campaign::Family::Stc, campaign::Family::Los, campaign::Family::Uniform}) {
+    INFO(campaign::family_name(f));
+    const auto one = campaign::run(options(f, 150, 1));
+    const auto three = campaign::run(options(f, 150, 3));
+    CHECK(one.failures.empty());
+    CHECK(one.cases_run == 150u);
+    CHECK(one.moves > 0u);
+    CHECK(one.moves == three.moves);
+    CHECK(one.vacuous == three.vacuous);
+    // Case i is case i: the first 150 cases are cases 0..89 and 90..149 run apart.
+    auto head = options(f, 90, 2);
+    auto tail = options(f, 60, 1);
+    tail.first = 90;
+    CHECK(campaign::run(head).moves + campaign::run(tail).moves == one.moves);
+  }
+}
+
+TEST_CASE("campaign: a failing rule shrinks to the smallest map that breaks it",
+          "[testing][campaign]") {
+  // A rule about the width alone: the shrunk map is the narrowest that breaks it, one row high.
+  auto o = options(campaign::Family::Los, 40, 2);
+  o.extra_rule = [](const kernel::OccupancyGrid& m) {
+    return m.width() > 3 ? "wider than 3 cells" : "";
+  };
+  const auto r = campaign::run(o);
+  REQUIRE(!r.failures.empty());
+  for (const auto& f : r.failures) {
+    CHECK(f.variant == "extra rule");
+    CHECK(f.rule == "wider than 3 cells");
+    CHECK(f.map.width() == 4);
+    CHECK(f.map.height() == 1);
+  }
+  // The failures are reduced in case order, and are the same with one thread.
+  auto o1 = o;
+  o1.threads = 1;
+  const auto r1 = campaign::run(o1);
+  REQUIRE(r1.failures.size() == r.failures.size());
+  for (std::size_t i = 0; i < r.failures.size(); ++i) {
+    CHECK(r1.failures[i].case_index == r.failures[i].case_index);
+    CHECK(r1.failures[i].map.cells() == r.failures[i].map.cells());
+    if (i > 0) CHECK(r.failures[i - 1].case_index < r.failures[i].case_index);
+  }
+  // The outputs: a MovingAI map per failure that reads back as the shrunk map, and its command.
+  const fs::path dir =
+      fs::temp_directory_path() / ("antkit-campaign-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::string summary = campaign::write_outputs(o, r, dir);
+  CHECK(slurp(dir / "summary.json") == summary);
+  const auto& f = r.failures.front();
+  const std::string name = "case-" + std::to_string(f.case_index) + ".map";
+  CHECK(maps::load_map(dir / name).cells.cells() == f.map.cells());
+  CHECK(summary.find("\"command\": \"antkit explore --map " + name + " --algo fast-wall-follow") !=
+        std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("campaign: STC cases shrink too, and their command names the variant and the start",
+          "[testing][campaign]") {
+  auto o = options(campaign::Family::Stc, 30, 1);
+  o.variants = {"ant-edge"};
+  o.extra_rule = [](const kernel::OccupancyGrid& m) {
+    return m.height() >= 6 ? "six sub-cells high or more" : "";
+  };
+  const auto r = campaign::run(o);
+  REQUIRE(!r.failures.empty());
+  for (const auto& f : r.failures) {
+    CHECK(f.map.height() == 6);
+    CHECK(f.map.width() <= 3);
+    CHECK(f.command == "antkit stc --map {MAP} --variant ant-edge --start " +
+                           std::to_string(f.start.x) + "," + std::to_string(f.start.y));
+  }
+}
+
+TEST_CASE("campaign: a time limit stops at a case boundary, and bad options are refused",
+          "[testing][campaign]") {
+  auto o = options(campaign::Family::Uniform, 100000, 1);
+  o.time_limit_s = 1e-9;
+  const auto r = campaign::run(o);
+  CHECK(r.stopped_by_time);
+  CHECK(r.cases_run < o.cases);
+  CHECK(r.cases_run % 64 == 0);
+  auto bad = options(campaign::Family::Stc, 10, 1);
+  bad.variants = {"zigzag"};
+  CHECK_THROWS_WITH(campaign::run(bad),
+                    "--variants: 'zigzag' is not a stc variant; expected some of offline, online, "
+                    "ant, ant-edge, full");
+  bad = options(campaign::Family::Los, 0, 1);
+  CHECK_THROWS_AS(campaign::run(bad), kernel::InputError);
+  bad = options(campaign::Family::Los, 10, 0);
+  CHECK_THROWS_AS(campaign::run(bad), kernel::InputError);
+}
