@@ -1,8 +1,11 @@
 // `antkit campaign`: property campaigns on antkit's own kernels (issue 18). The engine is
 // antkit_campaign (testing/campaign/); this file parses options, calls it, prints.
 //
-//   antkit campaign stc|los|uniform --cases N --out DIR [--seed S] [--first I] [--max-size WxH]
-//                   [--variants a,b,...] [--time T] [--threads T] [--format table|json]
+//   antkit campaign stc|los|uniform|buffon --cases N --out DIR [--seed S] [--first I] [--max-size
+//   WxH]
+//                   [--variants a,b,...] [--time T] [--threads T] [--plant max-width=N]
+//                   [--format table|json]
+//   mpirun -n K antkit campaign ...       (the cases split across K ranks, the same output files)
 //
 // DIR/summary.json and a MovingAI map per failing case (shrunk, with the command that reproduces
 // it) hold only what the options determine; timings (cases per second) go to standard output and,
@@ -14,12 +17,16 @@
 
 #include <antkit/algorithms/options.hpp>
 #include <antkit/campaign/campaign.hpp>
+#if ANTKIT_HAVE_MPI
+#include <antkit/campaign/mpi.hpp>
+#endif
 #include <antkit/kernel/input_error.hpp>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unistd.h>
 
@@ -38,6 +45,7 @@ struct CampaignCommand {
   std::string variants;
   double time = 0;
   std::int64_t threads = 1;
+  std::string plant;
   std::string out;
   Format format = Format::Table;
 };
@@ -67,22 +75,39 @@ campaign::Options options_of(const CampaignCommand& c) {
   if (c.threads < 1 || c.threads > 256)
     throw InputError("--threads", "expected 1 to 256 threads, not " + std::to_string(c.threads));
   o.threads = static_cast<unsigned>(c.threads);
+  if (!c.plant.empty() && o.family == campaign::Family::Buffon)
+    throw InputError("--plant", "a planted rule is about grid maps: stc, los or uniform");
+  if (!c.plant.empty()) { // a planted failure: maps wider than N break it
+    constexpr std::string_view kKey = "max-width=";
+    if (c.plant.rfind(kKey, 0) != 0)
+      throw InputError("--plant", "'" + c.plant + "' is not a rule to plant; expected max-width=N");
+    const auto n =
+        antkit::algorithms::parse_integer("--plant", c.plant.substr(kKey.size()), "a width");
+    if (n < 0 || n > 1024) throw InputError("--plant", "expected a width in [0, 1024]");
+    o.extra_rule = [n](const antkit::kernel::OccupancyGrid& m) {
+      return m.width() > n ? "wider than " + std::to_string(n) + " cells (planted)" : "";
+    };
+    o.extra_rule_name = c.plant;
+  }
   campaign::validate(o);
   return o;
 }
 
+void make_out_dir(const std::string& dir) {
+  std::error_code ec; // refuse an output directory that cannot be made before running, not after
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw InputError("--out", "cannot create the directory " + dir);
+}
+
 void run(const CampaignCommand& c) {
   const campaign::Options o = options_of(c);
-  std::error_code ec; // refuse an output directory that cannot be made before running, not after
-  std::filesystem::create_directories(c.out, ec);
-  if (ec || !std::filesystem::is_directory(c.out))
-    throw InputError("--out", "cannot create the directory " + c.out);
   const bool tty = ::isatty(STDERR_FILENO) == 1;
   const auto started = std::chrono::steady_clock::now();
   auto seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   };
-  const auto result = campaign::run(o, [&](std::uint64_t done, std::uint64_t total) {
+  const campaign::Progress progress = [&](std::uint64_t done, std::uint64_t total) {
     if (!tty) return;
     const double s = seconds(), rate = static_cast<double>(done) / std::max(s, 1e-9);
     const int filled =
@@ -93,7 +118,35 @@ void run(const CampaignCommand& c) {
               << total << ", " << std::fixed << std::setprecision(0) << rate << " cases/s, about "
               << static_cast<double>(total - done) / std::max(rate, 1e-9) << " s left   "
               << std::defaultfloat << std::setprecision(6) << std::flush;
-  });
+  };
+  campaign::Result result;
+  int ranks = 1;
+#if ANTKIT_HAVE_MPI
+  // Under mpirun: every rank runs its share, rank 0 gathers, writes and prints (mpi.hpp).
+  std::optional<campaign::mpi::Session> session;
+  if (campaign::mpi::launched()) {
+    session.emplace();
+    ranks = session->size();
+    bool made = true;
+    if (session->rank() == 0) {
+      try {
+        make_out_dir(c.out);
+      } catch (const InputError&) {
+        made = false;
+      }
+    }
+    if (!session->all(made)) {
+      if (session->rank() == 0) make_out_dir(c.out); // throws the located error
+      return;
+    }
+    result = campaign::mpi::run(*session, o, progress);
+    if (session->rank() != 0) return;
+  } else
+#endif
+  {
+    make_out_dir(c.out);
+    result = campaign::run(o, progress);
+  }
   const double elapsed = seconds();
   if (tty) std::cerr << '\n';
   campaign::write_outputs(o, result, c.out);
@@ -108,6 +161,7 @@ void run(const CampaignCommand& c) {
   j["cases_per_second"] = static_cast<double>(result.cases_run) / std::max(elapsed, 1e-9);
   j["moves_per_second"] = static_cast<double>(result.moves) / std::max(elapsed, 1e-9);
   j["threads"] = o.threads;
+  j["ranks"] = ranks;
   j["summary"] = (std::filesystem::path(c.out) / "summary.json").string();
   antkit::cli::emit(j, c.format, std::cout);
   if (result.stopped_by_time)
@@ -126,7 +180,7 @@ void register_campaign(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "campaign", "Run a property campaign: generated maps, every variant of a family, every "
                   "invariant checked, failing cases shrunk to minimal maps");
-  sub->add_option("family", c->family, "stc, los or uniform")->required();
+  sub->add_option("family", c->family, "stc, los, uniform or buffon")->required();
   sub->add_option("--cases", c->cases, "Number of cases")->required();
   sub->add_option("--out", c->out, "Output directory (summary.json, shrunk failing maps)")
       ->required();
@@ -136,7 +190,10 @@ void register_campaign(CLI::App& app) {
                   "Largest map, WxH (stc: cells of 2 x 2 sub-cells; default 32x32)");
   sub->add_option("--variants", c->variants, "Comma-separated variants (default: all)");
   sub->add_option("--time", c->time, "Stop at a case boundary after this many seconds");
-  sub->add_option("--threads", c->threads, "Threads that check cases (default 1)");
+  sub->add_option("--threads", c->threads, "Threads that check cases (default 1; per MPI rank)");
+  sub->add_option("--plant", c->plant,
+                  "Plant a failing rule, max-width=N (maps wider than N break it), to see the "
+                  "shrinking and the failure outputs at work");
   antkit::cli::add_format_option(*sub, c->format);
   sub->callback([c] { run(*c); });
 }

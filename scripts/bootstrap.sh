@@ -13,6 +13,7 @@ packages=(
   catch2 librapidcheck-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev jq
   libz3-dev coq libcairo2-dev
   g++-s390x-linux-gnu qemu-user
+  libopenmpi-dev openmpi-bin
 )
 
 missing=()

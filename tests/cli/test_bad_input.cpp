@@ -184,7 +184,8 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
        "Could not convert: --sensor", ""},
       {"cover --map {M} --algo rw --trace {D}/nodir/trace.csv", "{D}/nodir/trace.csv", ""},
       // campaign
-      {"campaign buffon --cases 10 --out {D}/camp", "FAMILY:", "'buffon'"},
+      {"campaign rs --cases 10 --out {D}/camp", "FAMILY:", "'rs'"},
+      {"campaign buffon --cases 10 --plant max-width=3 --out {D}/camp", "--plant:", "grid maps"},
       {"campaign stc --cases 0 --out {D}/camp", "--cases:", "at least one"},
       {"campaign stc --cases 10 --max-size 0x4 --out {D}/camp", "--max-size:", "1x1"},
       {"campaign stc --cases 10 --max-size 8 --out {D}/camp", "--max-size:", "WxH"},
@@ -193,6 +194,9 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"campaign uniform --cases 10 --threads 0 --out {D}/camp", "--threads:", "1 to 256"},
       {"campaign uniform --cases 10 --time -1 --out {D}/camp", "--time:", "0 or more"},
       {"campaign stc --cases 10", "--out is required", ""},
+      {"campaign los --cases 10 --plant width=3 --out {D}/camp", "--plant:", "max-width=N"},
+      {"campaign los --cases 10 --plant max-width=x --out {D}/camp", "--plant:", "'x'"},
+      {"campaign los --cases 10 --plant max-width=2000 --out {D}/camp", "--plant:", "[0, 1024]"},
       // stc and stc-noise
       {"stc --map {D}/junk.map --variant ant --svg {D}/out.svg", "{D}/junk.map:1:1:", ""},
       {"stc --map {D}/blocked.map --variant ant --svg {D}/out.svg", "{D}/blocked.map:", "no free"},

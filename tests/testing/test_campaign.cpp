@@ -37,19 +37,23 @@ std::string slurp(const fs::path& p) {
 
 TEST_CASE("campaign: every family's cases keep their invariants, the same for any thread count",
           "[testing][campaign]") {
-  for (const auto f : {campaign::Family::Stc, campaign::Family::Los, campaign::Family::Uniform}) {
+  for (const auto f : {campaign::Family::Stc, campaign::Family::Los, campaign::Family::Uniform,
+                       campaign::Family::Buffon}) {
     INFO(campaign::family_name(f));
-    const auto one = campaign::run(options(f, 150, 1));
-    const auto three = campaign::run(options(f, 150, 3));
+    const std::uint64_t n = f == campaign::Family::Buffon ? 24 : 150; // buffon's cases are long
+    const auto one = campaign::run(options(f, n, 1));
+    const auto three = campaign::run(options(f, n, 3));
     CHECK(one.failures.empty());
-    CHECK(one.cases_run == 150u);
+    CHECK(one.cases_run == n);
     CHECK(one.moves > 0u);
+    CHECK(one.vacuous < n / 2);
     CHECK(one.moves == three.moves);
     CHECK(one.vacuous == three.vacuous);
-    // Case i is case i: the first 150 cases are cases 0..89 and 90..149 run apart.
-    auto head = options(f, 90, 2);
-    auto tail = options(f, 60, 1);
-    tail.first = 90;
+    // Case i is case i: the first n cases are cases 0..k-1 and k..n-1 run apart.
+    const std::uint64_t k = n * 3 / 5;
+    auto head = options(f, k, 2);
+    auto tail = options(f, n - k, 1);
+    tail.first = k;
     CHECK(campaign::run(head).moves + campaign::run(tail).moves == one.moves);
   }
 }
@@ -127,4 +131,57 @@ TEST_CASE("campaign: a time limit stops at a case boundary, and bad options are 
   CHECK_THROWS_AS(campaign::run(bad), kernel::InputError);
   bad = options(campaign::Family::Los, 10, 0);
   CHECK_THROWS_AS(campaign::run(bad), kernel::InputError);
+}
+
+TEST_CASE("campaign: ranks split the cases and merge into the one-process result",
+          "[testing][campaign]") {
+  auto o = options(campaign::Family::Los, 200, 1);
+  o.extra_rule = [](const kernel::OccupancyGrid& m) { return m.width() > 8 ? "wide" : ""; };
+  const auto whole = campaign::run(o);
+  REQUIRE(!whole.failures.empty());
+  std::vector<campaign::Result> parts;
+  for (std::uint32_t r = 0; r < 3; ++r) {
+    auto part = o;
+    part.rank = r;
+    part.ranks = 3;
+    parts.push_back(campaign::run(part));
+    CHECK(parts.back().cases_run == 200u);
+  }
+  const auto merged = campaign::merge(parts);
+  CHECK(merged.moves == whole.moves);
+  CHECK(merged.vacuous == whole.vacuous);
+  REQUIRE(merged.failures.size() == whole.failures.size());
+  for (std::size_t i = 0; i < whole.failures.size(); ++i) {
+    // Through text and back, as the MPI gather carries them.
+    const auto f = campaign::deserialize(campaign::serialize(merged.failures[i]));
+    CHECK(f.case_index == whole.failures[i].case_index);
+    CHECK(f.map.cells() == whole.failures[i].map.cells());
+    CHECK(f.start == whole.failures[i].start);
+    CHECK(f.command == whole.failures[i].command);
+    CHECK(f.rule == whole.failures[i].rule);
+    CHECK(f.shrink_steps == whole.failures[i].shrink_steps);
+  }
+}
+
+TEST_CASE("campaign: a Buffon failure is written as its WKT arena with its command",
+          "[testing][campaign]") {
+  campaign::Options o;
+  o.family = campaign::Family::Buffon;
+  campaign::Result r;
+  r.cases_run = 5;
+  campaign::Failure f;
+  f.case_index = 3;
+  f.variant = "fixed";
+  f.rule = "a planted rule";
+  f.arena_wkt = "POLYGON ((0 0, 30 0, 30 30, 0 30, 0 0))";
+  f.command = "antkit buffon --arena {MAP} --trials 1 --seed 9 --width 0.100 --steps 40";
+  r.failures.push_back(campaign::deserialize(campaign::serialize(f)));
+  const fs::path dir =
+      fs::temp_directory_path() / ("antkit-campaign-b-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::string summary = campaign::write_outputs(o, r, dir);
+  CHECK(slurp(dir / "case-3.wkt") == f.arena_wkt + "\n");
+  CHECK(summary.find("\"command\": \"antkit buffon --arena case-3.wkt --trials 1 --seed 9") !=
+        std::string::npos);
+  fs::remove_all(dir);
 }

@@ -1,8 +1,11 @@
 #include <algorithm>
+#include <antkit/buffon/measurement.hpp>
 #include <antkit/campaign/campaign.hpp>
 #include <antkit/geometry/atomic_file.hpp>
+#include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/kernel/random.hpp>
+#include <antkit/kernel/segment.hpp>
 #include <antkit/los/explore.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
@@ -54,8 +57,7 @@ gen::MapLimits grid_limits(const Options& o) {
   return {.min_width = 1, .max_width = o.max_width, .min_height = 1, .max_height = o.max_height};
 }
 
-// ---- STC
-// ------------------------------------------------------------------------------------------
+// ---- STC ----
 
 struct StcFamily {
   using Value = gen::StcCase;
@@ -115,8 +117,7 @@ struct StcFamily {
   }
 };
 
-// ---- LOS
-// ------------------------------------------------------------------------------------------
+// ---- LOS ----
 
 struct LosFamily {
   using Value = OccupancyGrid;
@@ -164,8 +165,7 @@ struct LosFamily {
   }
 };
 
-// ---- Uniform coverage
-// -----------------------------------------------------------------------------
+// ---- Uniform coverage ----
 
 struct UniformCase {
   OccupancyGrid map;
@@ -233,8 +233,127 @@ struct UniformFamily {
   }
 };
 
-// ---- The loop
-// ---------------------------------------------------------------------------------------
+// ---- Buffon ----
+
+struct BuffonCase {
+  gen::ArenaCase arena;
+  std::int64_t steps;       // per visit (fixed, precision) or half the budget (online)
+  std::int32_t width_milli; // the trail width in thousandths of a unit
+  std::uint64_t seed;
+};
+
+// Strictly inside the arena by the even-odd rule over its walls (a horizontal ray to +x; a wall
+// counts when it straddles the ray's height, half-open, and crosses right of the point), exact.
+bool inside(std::span<const kernel::FxSegment> walls, kernel::FxPoint p) {
+  bool in = false;
+  const std::int64_t px = p.x.raw(), py = p.y.raw();
+  for (const auto& w : walls) {
+    const std::int64_t ax = w.a.x.raw(), ay = w.a.y.raw(), bx = w.b.x.raw(), by = w.b.y.raw();
+    if ((ay > py) == (by > py)) continue;
+    // The wall's x at height py is right of px when (ax - px)(by - ay) + (py - ay)(bx - ax) has
+    // the sign of by - ay.
+    using wide = kernel::detail::segment_wide;
+    const wide lhs =
+        static_cast<wide>(ax - px) * (by - ay) + static_cast<wide>(py - ay) * (bx - ax);
+    if ((by > ay) ? lhs > 0 : lhs < 0) in = !in;
+  }
+  return in;
+}
+
+struct BuffonFamily {
+  using Value = BuffonCase;
+  struct Context {};
+  std::vector<std::string> variants;
+
+  explicit BuffonFamily(std::vector<std::string> names) : variants(std::move(names)) {}
+  static rc::Gen<Value> generator(const Options&) {
+    return rc::gen::exec([] { // a braced list draws left to right
+      return BuffonCase{*gen::arena_with_holes(), *rc::gen::inRange<std::int64_t>(10, 2001),
+                        *rc::gen::inRange<std::int32_t>(50, 501),
+                        *rc::gen::inRange<std::uint64_t>(1, std::uint64_t{1} << 32)};
+    });
+  }
+  static buffon::TrialParams params(const Value& c, const std::string& variant) {
+    buffon::TrialParams p;
+    p.seed = c.seed;
+    p.steps = c.steps;
+    p.width = kernel::Fx::from_ratio(c.width_milli, 1000);
+    p.keep_trails = true;
+    if (variant != "fixed") {
+      p.precision_millionths = 200000;
+      p.visit2_steps = c.steps;
+    }
+    if (variant == "online") {
+      p.online_first_visit = true;
+      p.total_steps = 2 * c.steps;
+    }
+    return p;
+  }
+  Broken check(const Value& c, Context&, std::uint64_t& moves) const {
+    const buffon::World world(c.arena.arena.walls_fx());
+    for (const auto& name : variants) {
+      buffon::TrialResult r;
+      try {
+        r = buffon::run_trial(world, params(c, name), 0);
+      } catch (const InputError&) {
+        // The paper's start (0.83 above the midpoint of the lowest wall) is not clear in this
+        // arena: no trial to check (a vacuous case).
+        return std::nullopt;
+      }
+      moves += static_cast<std::uint64_t>(r.steps1 + r.steps2);
+      // The crossing count against the plain pair loop over every pair of segments.
+      std::uint64_t pairs = 0;
+      for (std::size_t i = 1; i < r.trail1.size(); ++i)
+        for (std::size_t j = 1; j < r.trail2.size(); ++j)
+          pairs += kernel::properly_cross({r.trail1[i - 1], r.trail1[i]},
+                                          {r.trail2[j - 1], r.trail2[j]});
+      if (pairs != r.crossings_exact)
+        return std::pair{name, "crossings_exact is " + std::to_string(r.crossings_exact) +
+                                   ", the pair loop counts " + std::to_string(pairs)};
+      for (const auto* trail : {&r.trail1, &r.trail2})
+        for (std::size_t i = 0; i < trail->size(); ++i) {
+          const auto q = (*trail)[i];
+          if (!world.clear(q) || !inside(world.walls(), q))
+            return std::pair{name, std::string("visit ") + (trail == &r.trail1 ? "1" : "2") +
+                                       ", point " + std::to_string(i) +
+                                       ": the body is not clear of the walls inside the arena"};
+        }
+      const bool steps_ok = name == "online" ? r.steps1 + r.steps2 <= 2 * c.steps
+                                             : r.steps1 <= c.steps && r.steps2 <= c.steps;
+      if (r.length1_raw < 0 || r.length2_raw < 0 || r.steps1 < 0 || r.steps2 < 0 || !steps_ok)
+        return std::pair{name, std::string("a visit's length or step count out of range")};
+    }
+    return std::nullopt;
+  }
+  static const OccupancyGrid& map(const Value&) {
+    static const OccupancyGrid none;
+    return none;
+  }
+  static Cell start(const Value&) { return {}; }
+  std::string command(const Value& c, const std::string& name) const {
+    const std::string& variant = name == "extra rule" ? variants.front() : name;
+    const std::string width = std::to_string(c.width_milli / 1000) + "." +
+                              std::to_string(1000 + c.width_milli % 1000).substr(1);
+    const std::string cmd = "antkit buffon --arena {MAP} --trials 1 --seed " +
+                            std::to_string(c.seed) + " --width " + width;
+    if (variant == "fixed") return cmd + " --steps " + std::to_string(c.steps);
+    if (variant == "precision")
+      return cmd + " --steps " + std::to_string(c.steps) + " --precision 0.2 --rule fixed " +
+             "--max-steps2 " + std::to_string(c.steps);
+    return cmd + " --precision 0.2 --rule online --max-steps " + std::to_string(2 * c.steps);
+  }
+};
+
+template <class F>
+std::string arena_text(const typename F::Value&) {
+  return {};
+}
+template <>
+std::string arena_text<BuffonFamily>(const BuffonCase& c) {
+  return c.arena.wkt;
+}
+
+// ---- The loop ----
 
 template <class F>
 Broken check_with_extra(const F& family, const Options& o, const typename F::Value& v,
@@ -279,6 +398,7 @@ Failure shrink(const F& family, const Options& o, std::uint64_t index, Broken br
   f.map = F::map(value);
   f.start = F::start(value);
   f.command = family.command(value, broken->first);
+  f.arena_wkt = arena_text<F>(value);
   f.shrink_steps = steps;
   return f;
 }
@@ -296,22 +416,30 @@ Result run_family(const F& family, const Options& o, const Progress& progress) {
   std::vector<Broken> broken;
   std::vector<std::uint64_t> moves(threads, 0), vacuous(threads, 0);
   auto last_report = started;
+  const std::uint64_t ranks = std::max<std::uint32_t>(1, o.ranks);
+  std::vector<std::uint64_t> mine; // this rank's cases of the batch
   for (std::uint64_t done = 0; done < o.cases;) {
-    if (o.time_limit_s > 0 &&
-        std::chrono::duration<double>(Clock::now() - started).count() >= o.time_limit_s) {
-      out.stopped_by_time = true;
-      break;
+    if (o.time_limit_s > 0) {
+      const bool late =
+          std::chrono::duration<double>(Clock::now() - started).count() >= o.time_limit_s;
+      if (o.stop_together ? o.stop_together(late) : late) {
+        out.stopped_by_time = true;
+        break;
+      }
     }
-    const std::uint64_t n = std::min(batch, o.cases - done);
+    const std::uint64_t span = std::min(batch * ranks, o.cases - done);
+    mine.clear();
+    for (std::uint64_t g = done; g < done + span; ++g)
+      if (g % ranks == o.rank) mine.push_back(o.first + g);
+    const std::uint64_t n = mine.size();
     // rapidcheck's generation context is process-wide, so cases are generated here, in order, and
     // only checked in parallel.
     values.clear();
-    for (std::uint64_t k = 0; k < n; ++k) {
+    for (const std::uint64_t index : mine) {
       try {
-        values.push_back(gen(case_random(o, o.first + done + k), kSize).value());
+        values.push_back(gen(case_random(o, index), kSize).value());
       } catch (const rc::GenerationFailure&) {
-        throw std::logic_error("campaign: a generator gave up on case " +
-                               std::to_string(o.first + done + k));
+        throw std::logic_error("campaign: a generator gave up on case " + std::to_string(index));
       }
     }
     broken.assign(n, std::nullopt);
@@ -323,7 +451,7 @@ Result run_family(const F& family, const Options& o, const Progress& progress) {
         if (moves[t] == before) ++vacuous[t];
       }
     };
-    if (threads == 1 || n == 1) {
+    if (threads == 1 || n <= 1) {
       work(0);
     } else {
       std::vector<std::thread> pool;
@@ -332,8 +460,8 @@ Result run_family(const F& family, const Options& o, const Progress& progress) {
       for (auto& th : pool) th.join();
     }
     for (std::uint64_t k = 0; k < n; ++k)
-      if (broken[k]) out.failures.push_back(shrink(family, o, o.first + done + k, broken[k]));
-    done += n;
+      if (broken[k]) out.failures.push_back(shrink(family, o, mine[k], broken[k]));
+    done += span;
     out.cases_run = done;
     if (progress &&
         (Clock::now() - last_report > std::chrono::milliseconds(250) || done == o.cases)) {
@@ -351,7 +479,7 @@ Result run_family(const F& family, const Options& o, const Progress& progress) {
 } // namespace
 
 std::optional<Family> parse_family(std::string_view name) noexcept {
-  for (const Family f : {Family::Stc, Family::Los, Family::Uniform})
+  for (const Family f : {Family::Stc, Family::Los, Family::Uniform, Family::Buffon})
     if (family_name(f) == name) return f;
   return std::nullopt;
 }
@@ -364,6 +492,8 @@ std::string_view family_name(Family family) noexcept {
     return "los";
   case Family::Uniform:
     return "uniform";
+  case Family::Buffon:
+    return "buffon";
   }
   return "?";
 }
@@ -376,6 +506,8 @@ std::vector<std::string> family_variants(Family family) {
     return {"fast-wall-follow", "frontier", "frontier-nolos"};
   case Family::Uniform:
     return {"rw", "pm", "astar", "astar-coord", "frontier"};
+  case Family::Buffon:
+    return {"fixed", "precision", "online"};
   }
   return {};
 }
@@ -390,6 +522,7 @@ void validate(const Options& o) {
                                        std::to_string(kMaxSide));
   if (!(o.time_limit_s >= 0) || o.time_limit_s > 1e9)
     throw InputError("--time", "expected a time in seconds, 0 or more");
+  if (o.ranks < 1 || o.rank >= o.ranks) throw std::logic_error("campaign: rank out of range");
   if (o.threads < 1 || o.threads > 256)
     throw InputError("--threads", "expected 1 to 256 threads, not " + std::to_string(o.threads));
   const auto known = family_variants(o.family);
@@ -412,8 +545,67 @@ Result run(const Options& options, const Progress& progress) {
     return run_family(LosFamily(names), options, progress);
   case Family::Uniform:
     return run_family(UniformFamily(names), options, progress);
+  case Family::Buffon:
+    return run_family(BuffonFamily(names), options, progress);
   }
   return {};
+}
+
+Result merge(const std::vector<Result>& parts) {
+  Result out;
+  if (parts.empty()) return out;
+  out.cases_run = parts.front().cases_run;
+  out.stopped_by_time = parts.front().stopped_by_time;
+  for (const auto& p : parts) {
+    if (p.cases_run != out.cases_run || p.stopped_by_time != out.stopped_by_time)
+      throw std::logic_error("campaign: ranks ran different cases");
+    out.moves += p.moves;
+    out.vacuous += p.vacuous;
+    out.failures.insert(out.failures.end(), p.failures.begin(), p.failures.end());
+  }
+  std::stable_sort(out.failures.begin(), out.failures.end(),
+                   [](const Failure& a, const Failure& b) { return a.case_index < b.case_index; });
+  return out;
+}
+
+std::string serialize(const Failure& f) {
+  nlohmann::json j;
+  j["case"] = f.case_index;
+  j["variant"] = f.variant;
+  j["rule"] = f.rule;
+  j["width"] = f.map.width();
+  j["height"] = f.map.height();
+  std::string cells(f.map.size(), '.');
+  for (std::size_t i = 0; i < f.map.size(); ++i)
+    cells[i] = f.map.cells()[i] == kernel::Occupancy::Free      ? '.'
+               : f.map.cells()[i] == kernel::Occupancy::Blocked ? '@'
+                                                                : '?';
+  j["cells"] = std::move(cells);
+  j["start"] = {f.start.x, f.start.y};
+  j["command"] = f.command;
+  j["shrink_steps"] = f.shrink_steps;
+  j["arena"] = f.arena_wkt;
+  return j.dump();
+}
+
+Failure deserialize(std::string_view text) {
+  const auto j = nlohmann::json::parse(text);
+  Failure f;
+  f.case_index = j.at("case").get<std::uint64_t>();
+  f.variant = j.at("variant").get<std::string>();
+  f.rule = j.at("rule").get<std::string>();
+  f.map = OccupancyGrid(j.at("width").get<std::int32_t>(), j.at("height").get<std::int32_t>(),
+                        kernel::Occupancy::Free);
+  const auto cells = j.at("cells").get<std::string>();
+  for (std::size_t i = 0; i < f.map.size() && i < cells.size(); ++i)
+    f.map.cells()[i] = cells[i] == '.'   ? kernel::Occupancy::Free
+                       : cells[i] == '@' ? kernel::Occupancy::Blocked
+                                         : kernel::Occupancy::Unknown;
+  f.start = {j.at("start").at(0).get<std::int32_t>(), j.at("start").at(1).get<std::int32_t>()};
+  f.command = j.at("command").get<std::string>();
+  f.shrink_steps = j.at("shrink_steps").get<std::uint64_t>();
+  f.arena_wkt = j.at("arena").get<std::string>();
+  return f;
 }
 
 std::string write_outputs(const Options& o, const Result& r, const std::filesystem::path& dir) {
@@ -432,12 +624,18 @@ std::string write_outputs(const Options& o, const Result& r, const std::filesyst
   j["variants"] = o.variants.empty() ? family_variants(o.family) : o.variants;
   j["moves_checked"] = r.moves;
   j["vacuous_cases"] = r.vacuous;
+  if (!o.extra_rule_name.empty()) j["planted_rule"] = o.extra_rule_name;
   nlohmann::json failures = nlohmann::json::array();
   for (const auto& f : r.failures) {
-    const std::string name = "case-" + std::to_string(f.case_index) + ".map";
-    maps::GridMap m;
-    m.cells = f.map;
-    maps::save_map(dir / name, m);
+    const bool arena = !f.arena_wkt.empty();
+    const std::string name = "case-" + std::to_string(f.case_index) + (arena ? ".wkt" : ".map");
+    if (arena) {
+      geometry::write_file_atomic(dir / name, f.arena_wkt + "\n");
+    } else {
+      maps::GridMap m;
+      m.cells = f.map;
+      maps::save_map(dir / name, m);
+    }
     std::string command = f.command;
     command.replace(command.find("{MAP}"), 5, name);
     failures.push_back({{"case", f.case_index},

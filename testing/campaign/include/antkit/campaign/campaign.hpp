@@ -23,12 +23,14 @@
 
 namespace antkit::campaign {
 
-enum class Family : std::uint8_t { Stc = 1, Los = 2, Uniform = 3 };
+enum class Family : std::uint8_t { Stc = 1, Los = 2, Uniform = 3, Buffon = 4 };
 
 [[nodiscard]] std::optional<Family> parse_family(std::string_view name) noexcept;
 [[nodiscard]] std::string_view family_name(Family family) noexcept;
 // Every variant of a family, in the order they run: stc offline, online, ant, ant-edge, full;
-// los fast-wall-follow, frontier, frontier-nolos; uniform rw, pm, astar, astar-coord, frontier.
+// los fast-wall-follow, frontier, frontier-nolos; uniform rw, pm, astar, astar-coord, frontier;
+// buffon fixed, precision, online (two visits of a drawn length; visit 2 on the stopping rule at
+// P = 0.2; visit 1 deciding its own length too).
 [[nodiscard]] std::vector<std::string> family_variants(Family family);
 
 struct Options {
@@ -36,14 +38,22 @@ struct Options {
   std::uint64_t cases = 1000;
   std::uint64_t first = 0; // the case indices are first, first + 1, ..., first + cases - 1
   std::uint64_t seed = 1;
-  // The largest map: stc in cells (each 2 x 2 sub-cells), the others in grid cells.
+  // The largest map: stc in cells (each 2 x 2 sub-cells), los and uniform in grid cells; buffon's
+  // arenas are antkit::testing's arenas with holes (radius 60 to 100 units) whatever this says.
   std::int32_t max_width = 32, max_height = 32;
   std::vector<std::string> variants; // empty: all of the family's
   double time_limit_s = 0;           // 0: none
   unsigned threads = 1;
-  // An extra rule every case must keep (empty string: it holds). For tests of the shrinking,
-  // which need a property that fails; not an option of the command.
+  // An extra rule every case must keep (empty string: it holds): a planted failure, to see the
+  // shrinking and the failure outputs at work (tests; `--plant max-width=N` of the command).
   std::function<std::string(const kernel::OccupancyGrid&)> extra_rule;
+  std::string extra_rule_name; // what the summary calls it (empty: none)
+  // One process of several (MPI ranks): this one runs the cases whose index, counted from
+  // `first`, is rank modulo ranks. The result then holds this rank's moves, vacuous cases and
+  // failures; gather them with merge(). `stop_together(local)` must return whether any rank wants
+  // to stop; it is called at every batch boundary, by every rank, when there is a time limit.
+  std::uint32_t rank = 0, ranks = 1;
+  std::function<bool(bool)> stop_together;
 };
 
 // Throws kernel::InputError naming the option for a value out of range or an unknown variant.
@@ -53,7 +63,8 @@ struct Failure {
   std::uint64_t case_index = 0;
   std::string variant;       // the variant that broke a rule
   std::string rule;          // what the checker said, on the shrunk case
-  kernel::OccupancyGrid map; // the shrunk case's map (stc: sub-cells)
+  kernel::OccupancyGrid map; // the shrunk case's map (stc: sub-cells; empty for buffon)
+  std::string arena_wkt;     // buffon: the shrunk case's arena
   kernel::Cell start{};
   std::string command; // the antkit command that reproduces it; {MAP} stands for the map
   std::uint64_t shrink_steps = 0;
@@ -72,6 +83,14 @@ struct Result {
 using Progress = std::function<void(std::uint64_t done, std::uint64_t total)>;
 
 [[nodiscard]] Result run(const Options& options, const Progress& progress = {});
+
+// Several ranks' results as one: moves and vacuous cases added, failures in case order. Every
+// part must have run the same cases (the same cases_run and stopped_by_time).
+[[nodiscard]] Result merge(const std::vector<Result>& parts);
+
+// A failure as one line of text and back (for gathering across processes).
+[[nodiscard]] std::string serialize(const Failure& failure);
+[[nodiscard]] Failure deserialize(std::string_view text);
 
 // Writes DIR/summary.json and, for each failure, DIR/case-<i>.map (MovingAI) with its command in
 // the summary; every file atomically. The files hold nothing but what the options determine (no
