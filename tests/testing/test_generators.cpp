@@ -123,3 +123,17 @@ TEST_CASE("generators: observations are in their documented ranges", "[testing][
     }
   });
 }
+
+TEST_CASE("generators: the campaign's generators never discard, drawn outside a property",
+          "[testing]") {
+  // antkit campaign draws cases with gen(Random, size).value(), where a discard (RC_DISCARD) would
+  // escape as an exception: all-blocked maps get a free cell and invalid arenas are drawn again.
+  const auto stc = gen::stc_case_from(gen::any_grid_map({.max_width = 3, .max_height = 3}));
+  const auto arena = gen::arena_with_holes();
+  for (std::uint64_t seed = 1; seed <= 3000; ++seed) {
+    INFO("seed " << seed);
+    const auto c = stc(rc::Random(seed), 100).value();
+    REQUIRE(c.map[c.start] == Occupancy::Free);
+    if (seed <= 300) REQUIRE(arena(rc::Random(seed), 100).value().arena.area() > 0);
+  }
+}

@@ -412,7 +412,7 @@ Result run_family(const F& family, const Options& o, const Progress& progress) {
   const auto gen = F::generator(o);
   Result out;
   std::vector<typename F::Context> contexts(threads);
-  std::vector<typename F::Value> values;
+  std::vector<std::optional<typename F::Value>> values;
   std::vector<Broken> broken;
   std::vector<std::uint64_t> moves(threads, 0), vacuous(threads, 0);
   auto last_report = started;
@@ -437,9 +437,9 @@ Result run_family(const F& family, const Options& o, const Progress& progress) {
     values.clear();
     for (const std::uint64_t index : mine) {
       try {
-        values.push_back(gen(case_random(o, index), kSize).value());
+        values.emplace_back(gen(case_random(o, index), kSize).value());
       } catch (const rc::GenerationFailure&) {
-        throw std::logic_error("campaign: a generator gave up on case " + std::to_string(index));
+        values.emplace_back(std::nullopt); // a generator gave up (a suchThat out of tries): vacuous
       }
     }
     broken.assign(n, std::nullopt);
@@ -447,7 +447,7 @@ Result run_family(const F& family, const Options& o, const Progress& progress) {
     auto work = [&](unsigned t) {
       for (std::uint64_t k; (k = next.fetch_add(1)) < n;) {
         const std::uint64_t before = moves[t];
-        broken[k] = check_with_extra(family, o, values[k], contexts[t], moves[t]);
+        if (values[k]) broken[k] = check_with_extra(family, o, *values[k], contexts[t], moves[t]);
         if (moves[t] == before) ++vacuous[t];
       }
     };

@@ -264,7 +264,8 @@ inline rc::Gen<StcCase> stc_case(StcLimits l = {}) {
 }
 
 // A cell map turned into a sub-cell map (each cell two by two sub-cells), with a start sub-cell in
-// a free cell: STC cases on mazes, rooms and combs.
+// a free cell: STC cases on mazes, rooms and combs. A map without a free cell gets its first cell
+// freed (as stc_case does), so that this generator never discards.
 inline rc::Gen<StcCase> stc_case_from(rc::Gen<OccupancyGrid> cells) {
   return rc::gen::exec([cells = std::move(cells)] {
     const OccupancyGrid c = *cells;
@@ -276,7 +277,10 @@ inline rc::Gen<StcCase> stc_case_from(rc::Gen<OccupancyGrid> cells) {
         for (int q = 0; q < 4; ++q) g[{2 * x + (q & 1), 2 * y + (q >> 1)}] = o;
         if (o == Occupancy::Free) starts.push_back({2 * x, 2 * y});
       }
-    if (starts.empty()) RC_DISCARD("the map has no free cell");
+    if (starts.empty()) {
+      for (int q = 0; q < 4; ++q) g[{q & 1, q >> 1}] = Occupancy::Free;
+      starts.push_back({0, 0});
+    }
     const Cell s = starts[*rc::gen::inRange<std::size_t>(0, starts.size())];
     const int q = *rc::gen::inRange(0, 4);
     return StcCase{std::move(g), {s.x + (q & 1), s.y + (q >> 1)}};
@@ -286,13 +290,16 @@ inline rc::Gen<StcCase> stc_case_from(rc::Gen<OccupancyGrid> cells) {
 // A random arena with holes, exact (read through the WKT reader, so it is valid by arena.hpp's
 // rules): the outer ring a star of 3..40 vertices around the origin at integer radii 60..100, up to
 // three holes, each a small star (radius 1..5) centred on a spoke at distance 20 or 40. Rounding
-// the vertices to 1/16 unit rarely breaks simplicity: such a draw is discarded.
+// the vertices to 1/16 unit rarely breaks simplicity: such a draw is drawn again
+// (rc::gen::suchThat), so the generator never discards. The vertices come from std::cos and
+// std::sin: the same draw is the same arena wherever the C library's are the same.
 struct ArenaCase {
   geometry::Arena arena;
   std::string wkt; // the text it was read from
 };
 
-inline rc::Gen<ArenaCase> arena_with_holes() {
+// The WKT text of such an arena, valid or not.
+inline rc::Gen<std::string> arena_wkt_text() {
   return rc::gen::exec([] {
     constexpr double kTwoPi = 6.283185307179586;
     auto coord = [](double v) { // to a multiple of 1/16, written exactly
@@ -326,11 +333,21 @@ inline rc::Gen<ArenaCase> arena_with_holes() {
       ring(d * std::cos(spoke), d * std::sin(spoke), *rc::gen::inRange(3, 9), 1.0, 40);
     }
     wkt << ')';
+    return wkt.str();
+  });
+}
+
+inline rc::Gen<ArenaCase> arena_with_holes() {
+  const auto valid = [](const std::string& text) {
     try {
-      return ArenaCase{geometry::read_wkt(wkt.str(), "generated arena"), wkt.str()};
+      (void)geometry::read_wkt(text, "generated arena");
+      return true;
     } catch (const kernel::InputError&) {
-      RC_DISCARD("rounding made the generated polygon invalid");
+      return false;
     }
+  };
+  return rc::gen::map(rc::gen::suchThat(arena_wkt_text(), valid), [](const std::string& text) {
+    return ArenaCase{geometry::read_wkt(text, "generated arena"), text};
   });
 }
 

@@ -72,7 +72,7 @@ inline Command ant_decide(int& q, bool& done, std::uint8_t free_neighbours, std:
   bool child = false;
   for (int k = 1; k <= 4; ++k) {
     const int d = dir_add(w, k);
-    if (((free_neighbours >> d) & 1u) != 0 && neighbour[static_cast<std::size_t>(d)] == 0) {
+    if (((free_neighbours >> d) & 1) != 0 && neighbour[static_cast<std::size_t>(d)] == 0) {
       target = d;
       child = true;
       break;
@@ -85,8 +85,8 @@ inline Command ant_decide(int& q, bool& done, std::uint8_t free_neighbours, std:
   }
   const int entry = dir_add(cur, 3); // the sub-cell of the neighbour the crossing arrives in
   if (!child) {
-    const bool open = ((free_neighbours >> cur) & 1u) != 0 &&
-                      ((neighbour[static_cast<std::size_t>(cur)] >> entry) & 1u) == 0;
+    const bool open = ((free_neighbours >> cur) & 1) != 0 &&
+                      ((neighbour[static_cast<std::size_t>(cur)] >> entry) & 1) == 0;
     if (!open) { // no parent to return to: the tour is closed
       done = true;
       return {};
