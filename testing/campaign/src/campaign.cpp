@@ -9,6 +9,7 @@
 #include <antkit/los/explore.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
+#include <antkit/testing/buffon.hpp>
 #include <antkit/testing/generators.hpp>
 #include <antkit/testing/los.hpp>
 #include <antkit/testing/stc.hpp>
@@ -242,24 +243,6 @@ struct BuffonCase {
   std::uint64_t seed;
 };
 
-// Strictly inside the arena by the even-odd rule over its walls (a horizontal ray to +x; a wall
-// counts when it straddles the ray's height, half-open, and crosses right of the point), exact.
-bool inside(std::span<const kernel::FxSegment> walls, kernel::FxPoint p) {
-  bool in = false;
-  const std::int64_t px = p.x.raw(), py = p.y.raw();
-  for (const auto& w : walls) {
-    const std::int64_t ax = w.a.x.raw(), ay = w.a.y.raw(), bx = w.b.x.raw(), by = w.b.y.raw();
-    if ((ay > py) == (by > py)) continue;
-    // The wall's x at height py is right of px when (ax - px)(by - ay) + (py - ay)(bx - ax) has
-    // the sign of by - ay.
-    using wide = kernel::detail::segment_wide;
-    const wide lhs =
-        static_cast<wide>(ax - px) * (by - ay) + static_cast<wide>(py - ay) * (bx - ax);
-    if ((by > ay) ? lhs > 0 : lhs < 0) in = !in;
-  }
-  return in;
-}
-
 struct BuffonFamily {
   using Value = BuffonCase;
   struct Context {};
@@ -301,27 +284,9 @@ struct BuffonFamily {
         return std::nullopt;
       }
       moves += static_cast<std::uint64_t>(r.steps1 + r.steps2);
-      // The crossing count against the plain pair loop over every pair of segments.
-      std::uint64_t pairs = 0;
-      for (std::size_t i = 1; i < r.trail1.size(); ++i)
-        for (std::size_t j = 1; j < r.trail2.size(); ++j)
-          pairs += kernel::properly_cross({r.trail1[i - 1], r.trail1[i]},
-                                          {r.trail2[j - 1], r.trail2[j]});
-      if (pairs != r.crossings_exact)
-        return std::pair{name, "crossings_exact is " + std::to_string(r.crossings_exact) +
-                                   ", the pair loop counts " + std::to_string(pairs)};
-      for (const auto* trail : {&r.trail1, &r.trail2})
-        for (std::size_t i = 0; i < trail->size(); ++i) {
-          const auto q = (*trail)[i];
-          if (!world.clear(q) || !inside(world.walls(), q))
-            return std::pair{name, std::string("visit ") + (trail == &r.trail1 ? "1" : "2") +
-                                       ", point " + std::to_string(i) +
-                                       ": the body is not clear of the walls inside the arena"};
-        }
-      const bool steps_ok = name == "online" ? r.steps1 + r.steps2 <= 2 * c.steps
-                                             : r.steps1 <= c.steps && r.steps2 <= c.steps;
-      if (r.length1_raw < 0 || r.length2_raw < 0 || r.steps1 < 0 || r.steps2 < 0 || !steps_ok)
-        return std::pair{name, std::string("a visit's length or step count out of range")};
+      testing::BuffonBudget budget{c.steps, c.steps, name == "online" ? 2 * c.steps : 0};
+      const auto ch = testing::check_buffon_trial(world, r, budget);
+      if (!ch.ok) return std::pair{name, ch.describe()};
     }
     return std::nullopt;
   }
