@@ -131,6 +131,12 @@ kernel::Grid<CellState> read_los_cells(std::string_view text, const std::string&
       std::string what = e.what();
       if (const auto colon = what.find(": "); colon != std::string::npos) what.erase(0, colon + 2);
       throw InputError(source, line, column, "JSON: " + what);
+    } catch (const nlohmann::json::exception& e) {
+      // Not a syntax error: a number out of range ("4E427"), which nlohmann reports without a
+      // position (found by fuzz/los_cells).
+      std::string what = e.what();
+      if (const auto end = what.find("] "); end != std::string::npos) what.erase(0, end + 2);
+      throw InputError(source, "JSON: " + what);
     }
     const nlohmann::json* cells = &j;
     if (j.is_object()) {

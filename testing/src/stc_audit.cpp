@@ -179,10 +179,13 @@ public:
     const auto [line, column] = line_column(text_, position == 0 ? 0 : position - 1);
     std::string what = e.what();
     // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 1, column
-    // 3: "; keep what follows.
-    if (const auto colon = what.find(": ");
-        colon != std::string::npos && what.compare(0, 15, "[json.exception") == 0)
-      what = what.substr(colon + 2);
+    // 3: " (or "[json.exception.out_of_range.406] " for a number out of range); keep what follows.
+    if (what.compare(0, 15, "[json.exception") == 0) {
+      if (const auto end = what.find("] "); end != std::string::npos) what.erase(0, end + 2);
+      if (what.compare(0, 11, "parse error") == 0)
+        if (const auto colon = what.find(": "); colon != std::string::npos)
+          what.erase(0, colon + 2);
+    }
     throw InputError(source_, line, column, "JSON: " + what);
   }
 

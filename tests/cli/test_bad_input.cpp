@@ -119,6 +119,7 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
   write(d / "cells_char.txt", "FS\nFQ\n");
   write(d / "cells_small.txt", "FS\nFS\n");
   write(d / "cells_nocells.json", "{\"algo\": 1}");
+  write(d / "cells_overflow.json", "{\"cells\": [\"F\"], \"eme\": 4E427}");
   write(d / "trace_order.csv", "0,0,0,0,0\n0,2,0,0,0\n");
   write(d / "trace_bearing.csv", "# sensor: 2\n0,0,0,0,9\n");
   write(d / "trace_nosensor.csv", "0,0,1,1,0\n");
@@ -172,6 +173,8 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"check explore --map {M} --cells {D}/cells_nocells.json",
        "{D}/cells_nocells.json:", "no \"cells\""},
       {"check explore --map {M} --cells {D}/absent.txt", "{D}/absent.txt:", "cannot open"},
+      {"check explore --map {M} --cells {D}/cells_overflow.json",
+       "{D}/cells_overflow.json:", "number overflow"},
       {"check explore --map {M}", "--cells is required", ""},
       {"check cover --map {M} --log {D}/trace_order.csv --sensor 2",
        "{D}/trace_order.csv:2:1:", "robot 1"},

@@ -206,6 +206,8 @@ TEST_CASE("read_los_cells: explore's JSON, a JSON array, text rows - and refusal
   CHECK(cells_refusal("{\"algo\": 1}") ==
         "C: no \"cells\": expected an array of rows or an object with \"cells\", as antkit "
         "explore prints it");
+  CHECK(cells_refusal("{\"cells\": [\"F\"], \"n\": 4E427}") ==
+        "C: JSON: number overflow parsing '4E427'");
   CHECK(cells_refusal("[\"FS\",\n \"F") ==
         "C:2:4: JSON: syntax error while parsing value - invalid string: missing closing quote; "
         "last read: '\"F'");

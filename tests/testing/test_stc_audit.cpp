@@ -161,6 +161,8 @@ TEST_CASE("read_tour: malformed tours are refused with the place", "[testing]") 
   CHECK(where_of("[[0,0]] x") ==
         "T:1:9: JSON: syntax error while parsing value - invalid literal; last read: '0]] x'; "
         "expected end of input");
+  CHECK(where_of("{\"path\": [[0, 0]], \"n\": 4E427}") ==
+        "T:1:29: JSON: number overflow parsing '4E427'");
   CHECK(where_of("0,0\n1,zero") == "T:2:3: expected y after the comma");
   CHECK(where_of("0;0") == "T:1:2: expected ','");
   CHECK(where_of("0,0,0") == "T:1:4: unexpected text after x,y");
