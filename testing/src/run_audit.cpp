@@ -1,3 +1,5 @@
+#include "text_lines.hpp"
+
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/testing/run_audit.hpp>
@@ -29,9 +31,7 @@ std::optional<CellState> state_of(char c) {
   return std::nullopt;
 }
 
-bool blank(char c) {
-  return c == ' ' || c == '\t';
-}
+using detail::blank;
 
 // A whole number in [lo, hi] at l[i...]; advances i. Throws a located error otherwise.
 std::int64_t read_number(std::string_view l, std::size_t& i, std::int64_t lo, std::int64_t hi,
@@ -153,16 +153,12 @@ kernel::Grid<CellState> read_los_cells(std::string_view text, const std::string&
       lines.push_back(0);
     }
   } else {
-    std::size_t line = 0, pos = 0;
-    while (pos < text.size()) {
-      ++line;
-      const std::size_t end = std::min(text.find('\n', pos), text.size());
-      std::string_view l = text.substr(pos, end - pos);
-      pos = end + 1;
-      if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    detail::Lines text_lines(text);
+    std::string_view l;
+    while (text_lines.next(l)) {
       if (l.find_first_not_of(" \t") == std::string_view::npos) continue;
       rows.emplace_back(l);
-      lines.push_back(line);
+      lines.push_back(text_lines.number());
     }
   }
   if (rows.empty() || rows.front().empty()) throw InputError(source, "no cell states");
@@ -220,15 +216,12 @@ CoverTrace read_cover_trace(std::string_view text, const std::string& source) {
   CoverTrace t;
   constexpr std::int64_t kMaxRobots = 1 << 16;
   constexpr std::int64_t kMaxRows = std::int64_t{1} << 28;
-  std::size_t line = 0, pos = 0;
+  detail::Lines text_lines(text);
+  std::string_view l;
   bool header_allowed = true;
   std::int64_t robots = 0, rows_read = 0;
-  while (pos < text.size()) {
-    ++line;
-    const std::size_t end = std::min(text.find('\n', pos), text.size());
-    std::string_view l = text.substr(pos, end - pos);
-    pos = end + 1;
-    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+  while (text_lines.next(l)) {
+    const std::size_t line = text_lines.number();
     std::size_t i = 0;
     while (i < l.size() && blank(l[i])) ++i;
     if (i == l.size()) continue;
@@ -257,10 +250,7 @@ CoverTrace read_cover_trace(std::string_view text, const std::string& source) {
     }
     if (header_allowed) {
       header_allowed = false;
-      std::string compact;
-      for (const char c : l)
-        if (!blank(c)) compact += c;
-      if (compact == "tick,robot,x,y,bearing") continue;
+      if (detail::is_header(l, "tick,robot,x,y,bearing")) continue;
     }
     std::array<std::int64_t, 5> v{};
     static constexpr const char* kWhat[5] = {"a tick", "a robot", "x", "y", "a bearing"};

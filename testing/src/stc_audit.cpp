@@ -1,5 +1,8 @@
+#include "text_lines.hpp"
+
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
+#include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
 #include <array>
 #include <cstdlib>
@@ -235,21 +238,16 @@ private:
   Cell pair_{};
 };
 
-bool blank(char c) {
-  return c == ' ' || c == '\t';
-}
+using detail::blank;
 
 // CSV: "x,y" per line.
 TourFile read_csv(std::string_view text, const std::string& source) {
   TourFile out;
-  std::size_t line = 0, pos = 0;
+  detail::Lines lines(text);
+  std::string_view l;
   bool first = true;
-  while (pos < text.size()) {
-    ++line;
-    const std::size_t end = std::min(text.find('\n', pos), text.size());
-    std::string_view l = text.substr(pos, end - pos);
-    pos = end + 1;
-    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+  while (lines.next(l)) {
+    const std::size_t line = lines.number();
     std::size_t i = 0;
     auto col = [&] { return i + 1; };
     auto skip = [&] {
@@ -259,10 +257,7 @@ TourFile read_csv(std::string_view text, const std::string& source) {
     if (i == l.size()) continue; // blank line
     if (first) {
       first = false;
-      std::string compact;
-      for (const char c : l)
-        if (!blank(c)) compact += c;
-      if (compact == "x,y") continue;
+      if (detail::is_header(l, "x,y")) continue;
     }
     std::array<std::int32_t, 2> v{};
     for (int k = 0; k < 2; ++k) {
@@ -362,17 +357,7 @@ TourFile read_tour(std::string_view text, const std::string& source) {
 }
 
 TourFile read_tour_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "cannot open the tour file for reading");
-  constexpr std::size_t kMaxBytes = std::size_t{1} << 30;
-  std::string text;
-  std::array<char, 65536> buf{};
-  while (in.read(buf.data(), buf.size()) || in.gcount() > 0) {
-    text.append(buf.data(), static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxBytes) throw InputError(path.string(), "tour file larger than 1 GiB");
-  }
-  if (in.bad()) throw InputError(path.string(), "read error");
-  return read_tour(text, path.string());
+  return read_tour(read_text_file(path, "tour", std::size_t{1} << 30), path.string());
 }
 
 StcCheckReport check_stc_files(const StcCheckRequest& request) {
