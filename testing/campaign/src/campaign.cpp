@@ -43,6 +43,12 @@ constexpr std::int32_t kMaxSide = 1024;
 // What a check says when a case breaks a rule: the variant and the rule.
 using Broken = std::optional<std::pair<std::string, std::string>>;
 
+// The names a failure carries that are not variants: a planted rule, an exception. Their commands
+// name the first variant run.
+bool pseudo(const std::string& variant) {
+  return variant == "extra rule" || variant == "exception";
+}
+
 std::string cell_text(Cell c) {
   return std::to_string(c.x) + "," + std::to_string(c.y);
 }
@@ -113,8 +119,7 @@ struct StcFamily {
   // The extra rule of the tests is named after the first variant run.
   std::string command(const Value& c, const std::string& variant) const {
     return "antkit stc --map {MAP} --variant " +
-           (variant == "extra rule" ? variants.front().first : variant) + " --start " +
-           cell_text(c.start);
+           (pseudo(variant) ? variants.front().first : variant) + " --start " + cell_text(c.start);
   }
 };
 
@@ -159,7 +164,7 @@ struct LosFamily {
     return s ? (*s)[0] : Cell{};
   }
   std::string command(const Value& m, const std::string& name) const {
-    const std::string& variant = name == "extra rule" ? variants.front().first : name;
+    const std::string& variant = pseudo(name) ? variants.front().first : name;
     const std::string algo = variant == "fast-wall-follow" ? "fast-wall-follow" : "frontier";
     return "antkit explore --map {MAP} --algo " + algo +
            (variant == "frontier-nolos" ? " --los off" : "") + " --start " + cell_text(start(m));
@@ -228,7 +233,7 @@ struct UniformFamily {
   }
   std::string command(const Value& c, const std::string& variant) const {
     return "antkit cover --map {MAP} --algo " +
-           (variant == "extra rule" ? variants.front().first : variant) + " --robots " +
+           (pseudo(variant) ? variants.front().first : variant) + " --robots " +
            std::to_string(c.robots) + " --sensor " + std::to_string(c.sensor) + " --seed " +
            std::to_string(c.seed) + " --trial 0 --limit " + std::to_string(limit(c));
   }
@@ -296,7 +301,7 @@ struct BuffonFamily {
   }
   static Cell start(const Value&) { return {}; }
   std::string command(const Value& c, const std::string& name) const {
-    const std::string& variant = name == "extra rule" ? variants.front() : name;
+    const std::string& variant = pseudo(name) ? variants.front() : name;
     const std::string width = std::to_string(c.width_milli / 1000) + "." +
                               std::to_string(1000 + c.width_milli % 1000).substr(1);
     const std::string cmd = "antkit buffon --arena {MAP} --trials 1 --seed " +
@@ -323,7 +328,12 @@ std::string arena_text<BuffonFamily>(const BuffonCase& c) {
 template <class F>
 Broken check_with_extra(const F& family, const Options& o, const typename F::Value& v,
                         typename F::Context& x, std::uint64_t& moves) {
-  Broken b = family.check(v, x, moves);
+  Broken b;
+  try {
+    b = family.check(v, x, moves);
+  } catch (const std::exception& e) { // a kernel that throws on a valid case is a failure too
+    return std::pair{std::string("exception"), std::string(e.what())};
+  }
   if (!b && o.extra_rule) {
     std::string s = o.extra_rule(F::map(v));
     if (!s.empty()) b = std::pair{std::string("extra rule"), std::move(s)};
