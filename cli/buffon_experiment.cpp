@@ -14,7 +14,6 @@
 // against compactness r1/r2 = 1/sqrt(1 - e^2) (1 for the circle); Figure 7's barrier lengths are
 // 10..80 % of the diameter in steps of 10; Figure 9's widths are 0.05, 0.1, 0.2, 0.4 over the ten
 // circles. Figure 14: see run_figure14. The plot's colours cycle after eight series.
-#include "../algorithms/buffon/experiments/calibration.hpp"
 #include "buffon_options.hpp"
 #include "commands.hpp"
 #include "output.hpp"
@@ -23,6 +22,7 @@
 #include <antkit/buffon/checkpoints.hpp>
 #include <antkit/buffon/estimate.hpp>
 #include <antkit/buffon/measurement.hpp>
+#include <antkit/experiments/calibration.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/geometry/fixed_convert.hpp>

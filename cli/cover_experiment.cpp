@@ -5,11 +5,11 @@
 // Our tables add coordinated A* and frontier coverage, and how much frontier saves against A*
 // and coordinated A*. Writes DIR/uniform_tables.csv and DIR/uniform_tables.md (atomically) and
 // prints a summary. The experiment and the choices behind it are documented in
-// algorithms/uniform/experiments/paper_tables.hpp.
-#include "../algorithms/uniform/experiments/paper_tables.hpp"
+// experiments/include/antkit/experiments/paper_tables.hpp.
 #include "commands.hpp"
 #include "output.hpp"
 
+#include <antkit/experiments/paper_tables.hpp>
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <cstdio>

@@ -1,7 +1,6 @@
 // Section 8.1: the a + b x^c calibration fit and the RS / checkpoint runs behind Figure 14.
-#include "../../algorithms/buffon/experiments/calibration.hpp"
-
 #include <antkit/buffon/checkpoints.hpp>
+#include <antkit/experiments/calibration.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>

@@ -23,13 +23,12 @@
 //    Under a normal approximation every margin is beyond 6 sd, a false-failure rate below 1e-9
 //    each. (The held-out median error at the first checkpoint alone is too noisy to compare,
 //    0.095-0.403 over the seeds, so it is printed but not asserted.)
-#include "../../algorithms/buffon/experiments/calibration.hpp"
-
 #include <algorithm>
 #include <antkit/buffon/checkpoints.hpp>
 #include <antkit/buffon/estimate.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/world.hpp>
+#include <antkit/experiments/calibration.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
