@@ -11,11 +11,9 @@
 #include "output.hpp"
 
 #include <antkit/algorithms/options.hpp>
-#include <antkit/kernel/input_error.hpp>
 #include <antkit/los/cell_state.hpp>
 #include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
-#include <antkit/uniform/world.hpp>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -114,15 +112,8 @@ struct CoverCheckCommand {
 };
 
 void run_cover(const CoverCheckCommand& c) {
-  std::optional<std::int32_t> sensor;
-  if (c.sensor != -1) {
-    if (c.sensor < 0 || c.sensor > antkit::uniform::kMaxSensorRange)
-      throw antkit::kernel::InputError("--sensor",
-                                       "expected a sensor distance in [0, " +
-                                           std::to_string(antkit::uniform::kMaxSensorRange) +
-                                           "] cells, not " + std::to_string(c.sensor));
-    sensor = static_cast<std::int32_t>(c.sensor);
-  }
+  std::optional<std::int64_t> sensor; // checked by check_cover_files
+  if (c.sensor != -1) sensor = c.sensor;
   const auto r = testing::check_cover_files(c.map, c.log, sensor);
   const auto& a = r.audit;
   nlohmann::json j;

@@ -119,24 +119,12 @@ kernel::Grid<CellState> read_los_cells(std::string_view text, const std::string&
     try {
       j = nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
-      std::size_t line = 1, column = 1;
-      for (std::size_t k = 0; k + 1 < e.byte && k < text.size(); ++k) {
-        if (text[k] == '\n') {
-          ++line;
-          column = 1;
-        } else {
-          ++column;
-        }
-      }
-      std::string what = e.what();
-      if (const auto colon = what.find(": "); colon != std::string::npos) what.erase(0, colon + 2);
-      throw InputError(source, line, column, "JSON: " + what);
+      const auto [line, column] = detail::line_column(text, e.byte == 0 ? 0 : e.byte - 1);
+      throw InputError(source, line, column, "JSON: " + detail::json_message(e.what()));
     } catch (const nlohmann::json::exception& e) {
       // Not a syntax error: a number out of range ("4E427"), which nlohmann reports without a
       // position (found by fuzz/los_cells).
-      std::string what = e.what();
-      if (const auto end = what.find("] "); end != std::string::npos) what.erase(0, end + 2);
-      throw InputError(source, "JSON: " + what);
+      throw InputError(source, "JSON: " + detail::json_message(e.what()));
     }
     const nlohmann::json* cells = &j;
     if (j.is_object()) {
@@ -409,17 +397,17 @@ CoverAudit audit_cover_trace(const OccupancyGrid& map, const CoverTrace& trace,
 }
 
 CoverCheckReport check_cover_files(const std::string& map_file, const std::string& trace_file,
-                                   std::optional<std::int32_t> sensor) {
+                                   std::optional<std::int64_t> sensor) {
+  if (sensor && (*sensor < 0 || *sensor > uniform::kMaxSensorRange))
+    throw InputError("--sensor", "expected a sensor distance in [0, " +
+                                     std::to_string(uniform::kMaxSensorRange) + "] cells, not " +
+                                     std::to_string(*sensor));
   const maps::GridMap map = maps::load_map(map_file);
   const CoverTrace trace =
       read_cover_trace(read_text_file(trace_file, "trace", std::size_t{1} << 30), trace_file);
   CoverCheckReport r;
   if (sensor) {
-    if (*sensor < 0 || *sensor > uniform::kMaxSensorRange)
-      throw InputError("--sensor", "expected a sensor distance in [0, " +
-                                       std::to_string(uniform::kMaxSensorRange) + "] cells, not " +
-                                       std::to_string(*sensor));
-    r.sensor = *sensor;
+    r.sensor = static_cast<std::int32_t>(*sensor);
     r.sensor_from = "--sensor";
   } else if (trace.sensor) {
     r.sensor = *trace.sensor;

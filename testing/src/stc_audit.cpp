@@ -85,21 +85,6 @@ std::vector<std::uint8_t> allowed_set(const OccupancyGrid& map, Cell start, Tour
   return allowed;
 }
 
-// Line and column (from 1, column in bytes) of byte offset `pos` of `text`.
-std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size_t pos) {
-  pos = std::min(pos, text.size());
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i < pos; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return {line, column};
-}
-
 // The JSON forms, read by nlohmann's SAX interface: no document is built, so a tour of millions
 // of positions costs its own vector only.
 class TourSax : public nlohmann::json_sax<nlohmann::json> {
@@ -179,17 +164,8 @@ public:
   }
   bool parse_error(std::size_t position, const std::string&,
                    const nlohmann::detail::exception& e) override {
-    const auto [line, column] = line_column(text_, position == 0 ? 0 : position - 1);
-    std::string what = e.what();
-    // nlohmann's messages start "[json.exception.parse_error.101] parse error at line 1, column
-    // 3: " (or "[json.exception.out_of_range.406] " for a number out of range); keep what follows.
-    if (what.compare(0, 15, "[json.exception") == 0) {
-      if (const auto end = what.find("] "); end != std::string::npos) what.erase(0, end + 2);
-      if (what.compare(0, 11, "parse error") == 0)
-        if (const auto colon = what.find(": "); colon != std::string::npos)
-          what.erase(0, colon + 2);
-    }
-    throw InputError(source_, line, column, "JSON: " + what);
+    const auto [line, column] = detail::line_column(text_, position == 0 ? 0 : position - 1);
+    throw InputError(source_, line, column, "JSON: " + detail::json_message(e.what()));
   }
 
 private:
@@ -218,8 +194,10 @@ private:
     return true;
   }
   bool integer(std::int64_t v) {
-    Frame& f = frames_.empty() ? dummy_ : frames_.back();
-    if (f.role != Role::Pair && f.role != Role::Start) return value("a number");
+    if (frames_.empty() ||
+        (frames_.back().role != Role::Pair && frames_.back().role != Role::Start))
+      return value("a number");
+    Frame& f = frames_.back();
     if (v < std::numeric_limits<std::int32_t>::min() ||
         v > std::numeric_limits<std::int32_t>::max())
       fail(where(), std::to_string(v) + " is outside [-2^31, 2^31)");
@@ -232,7 +210,6 @@ private:
   const std::string& source_;
   TourFile& out_;
   std::vector<Frame> frames_;
-  Frame dummy_{Role::Ignore, 0};
   std::string key_;
   bool seen_path_ = false, seen_start_ = false;
   Cell pair_{};

@@ -1,8 +1,11 @@
 #pragma once
-// The line reading the text readers of antkit::testing share (stc_audit.cpp, run_audit.cpp).
+// What the text readers of antkit::testing share (stc_audit.cpp, run_audit.cpp): lines, positions
+// and the wording of nlohmann-json's errors.
 #include <algorithm>
 #include <cstddef>
+#include <string>
 #include <string_view>
+#include <utility>
 
 namespace antkit::testing::detail {
 
@@ -40,6 +43,33 @@ inline bool is_header(std::string_view line, std::string_view header) noexcept {
     ++k;
   }
   return k == header.size();
+}
+
+// Line and column (from 1, column in bytes) of byte offset `pos` of `text`.
+inline std::pair<std::size_t, std::size_t> line_column(std::string_view text,
+                                                       std::size_t pos) noexcept {
+  pos = std::min(pos, text.size());
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < pos; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+// An nlohmann-json error's message without its tag: "[json.exception.parse_error.101] parse error
+// at line 1, column 3: " (or "[json.exception.out_of_range.406] " for a number out of range) is
+// left out, what follows kept. The caller says where, in its own terms.
+inline std::string json_message(std::string what) {
+  if (what.compare(0, 15, "[json.exception") != 0) return what;
+  if (const auto end = what.find("] "); end != std::string::npos) what.erase(0, end + 2);
+  if (what.compare(0, 11, "parse error") == 0)
+    if (const auto colon = what.find(": "); colon != std::string::npos) what.erase(0, colon + 2);
+  return what;
 }
 
 } // namespace antkit::testing::detail

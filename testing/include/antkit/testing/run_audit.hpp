@@ -102,10 +102,11 @@ struct CoverCheckReport {
   std::optional<std::uint64_t> claim_viewed, claim_viewable;
 };
 
-// `antkit check cover`: the sensor range is `sensor` when given, else the trace's "# sensor:".
+// `antkit check cover`: the sensor range is `sensor` when given (an InputError "--sensor" outside
+// [0, uniform::kMaxSensorRange]), else the trace's "# sensor:".
 [[nodiscard]] CoverCheckReport check_cover_files(const std::string& map_file,
                                                  const std::string& trace_file,
-                                                 std::optional<std::int32_t> sensor);
+                                                 std::optional<std::int64_t> sensor);
 
 // Reads a whole text file (at most `max_bytes`); one that cannot be read is an InputError naming
 // it, `what` saying what it should have been ("tour", "trace", ...).
