@@ -78,6 +78,32 @@ std::int64_t StcTourChecker::reachable_cells(const OccupancyGrid& map, Cell star
   return static_cast<std::int64_t>(queue_.size());
 }
 
+std::int64_t StcTourChecker::reachable_subcells(const OccupancyGrid& map, Cell start,
+                                                bool whole_cells, std::vector<std::uint8_t>& mask) {
+  if (whole_cells) {
+    const std::int64_t cells = reachable_cells(map, start); // queue_: the cells
+    mask.assign(map.size(), 0);
+    for (const Cell c : queue_)
+      for (int q = 0; q < 4; ++q) mask[map.index({2 * c.x + (q & 1), 2 * c.y + (q >> 1)})] = 1;
+    return 4 * cells;
+  }
+  mask.assign(map.size(), 0);
+  queue_.clear();
+  if (in_cell_area(map, start) && map[start] == Occupancy::Free) {
+    mask[map.index(start)] = 1;
+    queue_.push_back(start);
+  }
+  for (std::size_t i = 0; i < queue_.size(); ++i)
+    for (Cell d : kSteps) {
+      const Cell n = queue_[i] + d;
+      if (in_cell_area(map, n) && map[n] == Occupancy::Free && mask[map.index(n)] == 0) {
+        mask[map.index(n)] = 1;
+        queue_.push_back(n);
+      }
+    }
+  return static_cast<std::int64_t>(queue_.size());
+}
+
 StcCheck StcTourChecker::check_exact(const OccupancyGrid& map, Cell start,
                                      std::span<const Cell> path) {
   const std::int64_t cells = reachable_cells(map, start); // fills mark_: 1 = reachable cell
@@ -128,21 +154,7 @@ StcCheck StcTourChecker::check_full(const OccupancyGrid& map, Cell start,
   if (path.empty()) return fail("3 return", -1, start, "the path is empty");
   if (path.front() != start)
     return fail("3 return", 0, path.front(), "the tour does not begin at the start " + text(start));
-  // Reachable free sub-cells, by our own search.
-  mark_.assign(map.size(), 0);
-  queue_.clear();
-  if (in_cell_area(map, start) && map[start] == Occupancy::Free) {
-    mark_[map.index(start)] = 1;
-    queue_.push_back(start);
-  }
-  for (std::size_t i = 0; i < queue_.size(); ++i)
-    for (Cell d : kSteps) {
-      const Cell n = queue_[i] + d;
-      if (in_cell_area(map, n) && map[n] == Occupancy::Free && mark_[map.index(n)] == 0) {
-        mark_[map.index(n)] = 1;
-        queue_.push_back(n);
-      }
-    }
+  (void)reachable_subcells(map, start, false, mark_); // queue_: the reachable free sub-cells
   seen_.assign(map.size(), 0);
   std::int64_t distinct = 0;
   for (std::size_t i = 0; i < path.size(); ++i) {

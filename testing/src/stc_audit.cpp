@@ -21,68 +21,9 @@ namespace {
 
 constexpr std::size_t kMaxPositions = std::size_t{1} << 28;
 constexpr std::size_t kMissedSample = 16;
-constexpr std::array<Cell, 4> kSteps{{{1, 0}, {0, -1}, {-1, 0}, {0, 1}}};
 
 std::int64_t manhattan(Cell a, Cell b) {
   return std::llabs(std::int64_t{a.x} - b.x) + std::llabs(std::int64_t{a.y} - b.y);
-}
-
-bool in_cell_area(const OccupancyGrid& map, Cell s) {
-  return s.x >= 0 && s.y >= 0 && s.x < map.width() / 2 * 2 && s.y < map.height() / 2 * 2;
-}
-
-bool cell_free(const OccupancyGrid& map, Cell cell) {
-  if (cell.x < 0 || cell.y < 0 || cell.x >= map.width() / 2 || cell.y >= map.height() / 2)
-    return false;
-  for (int q = 0; q < 4; ++q)
-    if (map[{2 * cell.x + (q & 1), 2 * cell.y + (q >> 1)}] != Occupancy::Free) return false;
-  return true;
-}
-
-// The sub-cells the rule asks for, by a breadth-first search of our own (1 = allowed).
-std::vector<std::uint8_t> allowed_set(const OccupancyGrid& map, Cell start, TourRule rule,
-                                      std::int64_t& count) {
-  std::vector<std::uint8_t> allowed(map.size(), 0);
-  count = 0;
-  if (!in_cell_area(map, start) || map[start] != Occupancy::Free) return allowed;
-  std::vector<Cell> queue;
-  if (rule == TourRule::ExactlyOnce) {
-    const Cell root{start.x / 2, start.y / 2};
-    if (!cell_free(map, root)) return allowed;
-    std::vector<std::uint8_t> seen(
-        static_cast<std::size_t>(map.width() / 2) * static_cast<std::size_t>(map.height() / 2), 0);
-    auto at = [&](Cell c) -> std::uint8_t& {
-      return seen[static_cast<std::size_t>(c.y) * static_cast<std::size_t>(map.width() / 2) +
-                  static_cast<std::size_t>(c.x)];
-    };
-    at(root) = 1;
-    queue.push_back(root);
-    for (std::size_t i = 0; i < queue.size(); ++i) {
-      const Cell c = queue[i];
-      for (int q = 0; q < 4; ++q) allowed[map.index({2 * c.x + (q & 1), 2 * c.y + (q >> 1)})] = 1;
-      for (const Cell d : kSteps) {
-        const Cell n = c + d;
-        if (cell_free(map, n) && !at(n)) {
-          at(n) = 1;
-          queue.push_back(n);
-        }
-      }
-    }
-    count = 4 * static_cast<std::int64_t>(queue.size());
-    return allowed;
-  }
-  allowed[map.index(start)] = 1;
-  queue.push_back(start);
-  for (std::size_t i = 0; i < queue.size(); ++i)
-    for (const Cell d : kSteps) {
-      const Cell n = queue[i] + d;
-      if (in_cell_area(map, n) && map[n] == Occupancy::Free && !allowed[map.index(n)]) {
-        allowed[map.index(n)] = 1;
-        queue.push_back(n);
-      }
-    }
-  count = static_cast<std::int64_t>(queue.size());
-  return allowed;
 }
 
 // The JSON forms, read by nlohmann's SAX interface: no document is built, so a tour of millions
@@ -292,7 +233,9 @@ StcAudit audit_stc_tour(const OccupancyGrid& map, Cell start, std::span<const Ce
     path = path.first(path.size() - 1);
   }
   a.positions = static_cast<std::int64_t>(path.size());
-  const std::vector<std::uint8_t> allowed = allowed_set(map, start, rule, a.reachable);
+  StcTourChecker checker;
+  std::vector<std::uint8_t> allowed;
+  a.reachable = checker.reachable_subcells(map, start, rule == TourRule::ExactlyOnce, allowed);
   std::vector<std::uint8_t> seen(map.size(), 0);
   std::int64_t distinct = 0;
   for (std::size_t i = 0; i < path.size(); ++i) {
@@ -315,7 +258,6 @@ StcAudit audit_stc_tour(const OccupancyGrid& map, Cell start, std::span<const Ce
     for (std::int32_t x = 0; x < map.width() && a.missed_sample.size() < kMissedSample; ++x)
       if (allowed[map.index({x, y})] && !seen[map.index({x, y})]) a.missed_sample.push_back({x, y});
   a.end_distance = path.empty() ? 0 : manhattan(path.back(), start);
-  StcTourChecker checker;
   a.first = rule == TourRule::ExactlyOnce
                 ? checker.check_exact(map, start, path)
                 : checker.check_full(map, start, path, a.positions - distinct);

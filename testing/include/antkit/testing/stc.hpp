@@ -46,6 +46,12 @@ public:
 
   // The number of free cells 4-connected to the start's cell (0 when that cell is not free).
   std::int64_t reachable_cells(const kernel::OccupancyGrid& map, kernel::Cell start);
+  // The sub-cells a tour must enter, by the same search: with `whole_cells` every sub-cell of the
+  // free cells 4-connected to the start's cell (the exact variants), without it the free
+  // sub-cells of the cell area 4-connected to the start (full). `mask` gets one byte per map
+  // sub-cell, 1 for those; returns their number.
+  std::int64_t reachable_subcells(const kernel::OccupancyGrid& map, kernel::Cell start,
+                                  bool whole_cells, std::vector<std::uint8_t>& mask);
 
 private:
   std::vector<std::uint8_t> mark_;
