@@ -127,16 +127,16 @@ void run(const CampaignCommand& c) {
   if (campaign::mpi::launched()) {
     session.emplace();
     ranks = session->size();
-    bool made = true;
+    std::string refused; // rank 0 makes the directory; every rank learns whether it could
     if (session->rank() == 0) {
       try {
         make_out_dir(c.out);
-      } catch (const InputError&) {
-        made = false;
+      } catch (const InputError& e) {
+        refused = e.message();
       }
     }
-    if (!session->all(made)) {
-      if (session->rank() == 0) make_out_dir(c.out); // throws the located error
+    if (!session->all(refused.empty())) {
+      if (session->rank() == 0) throw InputError("--out", refused);
       return;
     }
     result = campaign::mpi::run(*session, o, progress);

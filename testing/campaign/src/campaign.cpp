@@ -88,7 +88,7 @@ struct StcFamily {
     bool have_reference = false;
     std::uint64_t reference_hash = 0;
     for (const auto& [name, v] : variants) {
-      const stc::RunResult r = stc::run_stc(x.world, c.map, c.start, v);
+      stc::RunResult r = stc::run_stc(x.world, c.map, c.start, v);
       moves += static_cast<std::uint64_t>(r.positions);
       if (v == stc::Variant::Full) {
         const auto ch = x.checker.check_full(c.map, c.start, r.path, r.repeats);
@@ -102,7 +102,7 @@ struct StcFamily {
       if (r.repeats != 0 || r.covered != r.reachable_subcells || !r.returned_to_start)
         return std::pair{name, std::string("the run's counts disagree with its tour")};
       if (!have_reference) {
-        x.reference = r.path;
+        x.reference = std::move(r.path); // the first exact tour: the others must equal it
         reference_hash = r.hash;
         have_reference = true;
         continue;

@@ -132,21 +132,20 @@ inline rc::Gen<OccupancyGrid> rooms(MapLimits l = {}) {
     for (std::int32_t y = 0; y < h; ++y)
       for (std::int32_t x = 0; x < w; ++x)
         if (x % (room + 1) == room || y % (room + 1) == room) g[{x, y}] = Occupancy::Blocked;
-    // Doors: in each vertical wall segment one row, in each horizontal one one column.
-    for (std::int32_t wx = room; wx < w; wx += room + 1)
-      for (std::int32_t y0 = 0; y0 < h; y0 += room + 1)
-        if (*rc::gen::inRange(0, 100) >= shut) {
-          const std::int32_t y = std::min<std::int32_t>(h - 1, y0 + detail::draw(0, room - 1));
-          if (g[{wx, y}] == Occupancy::Blocked && y % (room + 1) != room)
-            g[{wx, y}] = Occupancy::Free;
-        }
-    for (std::int32_t wy = room; wy < h; wy += room + 1)
-      for (std::int32_t x0 = 0; x0 < w; x0 += room + 1)
-        if (*rc::gen::inRange(0, 100) >= shut) {
-          const std::int32_t x = std::min<std::int32_t>(w - 1, x0 + detail::draw(0, room - 1));
-          if (g[{x, wy}] == Occupancy::Blocked && x % (room + 1) != room)
-            g[{x, wy}] = Occupancy::Free;
-        }
+    // Doors: in each vertical wall segment one row, then in each horizontal one one column.
+    auto doors = [&](bool vertical) {
+      const std::int32_t walls_to = vertical ? w : h, along = vertical ? h : w;
+      for (std::int32_t wall = room; wall < walls_to; wall += room + 1)
+        for (std::int32_t from = 0; from < along; from += room + 1)
+          if (*rc::gen::inRange(0, 100) >= shut) {
+            const std::int32_t at =
+                std::min<std::int32_t>(along - 1, from + detail::draw(0, room - 1));
+            const Cell door = vertical ? Cell{wall, at} : Cell{at, wall};
+            if (g[door] == Occupancy::Blocked && at % (room + 1) != room) g[door] = Occupancy::Free;
+          }
+    };
+    doors(true);
+    doors(false);
     detail::sprinkle_unknown(g, l.max_unknown_per_mille);
     return g;
   });
