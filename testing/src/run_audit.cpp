@@ -38,21 +38,11 @@ std::int64_t read_number(std::string_view l, std::size_t& i, std::int64_t lo, st
                          const std::string& source, std::size_t line, const char* what) {
   while (i < l.size() && blank(l[i])) ++i;
   const std::size_t from = i;
-  bool negative = false;
-  if (i < l.size() && l[i] == '-') {
-    negative = true;
-    ++i;
-  }
-  std::int64_t n = 0;
-  const std::size_t digits = i;
-  while (i < l.size() && l[i] >= '0' && l[i] <= '9') {
-    if (n > (std::numeric_limits<std::int64_t>::max() - 9) / 10)
-      throw InputError(source, line, from + 1, std::string(what) + " is out of range");
-    n = n * 10 + (l[i] - '0');
-    ++i;
-  }
-  if (i == digits) throw InputError(source, line, from + 1, std::string("expected ") + what);
-  if (negative) n = -n;
+  const detail::Whole number = detail::scan_whole(l, i);
+  if (!number.digits) throw InputError(source, line, from + 1, std::string("expected ") + what);
+  if (number.overflow)
+    throw InputError(source, line, from + 1, std::string(what) + " is out of range");
+  const std::int64_t n = number.value;
   if (n < lo || n > hi)
     throw InputError(source, line, from + 1,
                      std::string(what) + " " + std::to_string(n) + " is outside [" +

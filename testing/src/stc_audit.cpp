@@ -181,29 +181,19 @@ TourFile read_csv(std::string_view text, const std::string& source) {
     for (int k = 0; k < 2; ++k) {
       skip();
       const std::size_t from = i;
-      if (i < l.size() && (l[i] == '-' || l[i] == '+')) ++i;
-      std::int64_t n = 0;
-      const std::size_t digits = i;
-      while (i < l.size() && l[i] >= '0' && l[i] <= '9') {
-        n = n * 10 + (l[i] - '0');
-        if (n > std::int64_t{1} << 31) {
-          i = from;
-          throw InputError(source, line, col(), "a coordinate outside [-2^31, 2^31)");
-        }
-        ++i;
-      }
-      if (i == digits) {
+      const detail::Whole n = detail::scan_whole(l, i, /*plus=*/true);
+      if (!n.digits) {
         i = from;
         throw InputError(source, line, col(),
                          k == 0 ? "expected x,y (two whole numbers)"
                                 : "expected y after the comma");
       }
-      if (l[from] == '-') n = -n;
-      if (n > std::numeric_limits<std::int32_t>::max()) {
+      if (n.overflow || n.value < std::numeric_limits<std::int32_t>::min() ||
+          n.value > std::numeric_limits<std::int32_t>::max()) {
         i = from;
         throw InputError(source, line, col(), "a coordinate outside [-2^31, 2^31)");
       }
-      v[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(n);
+      v[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(n.value);
       skip();
       if (k == 0) {
         if (i == l.size() || l[i] != ',') throw InputError(source, line, col(), "expected ','");

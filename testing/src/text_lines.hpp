@@ -3,6 +3,8 @@
 // and the wording of nlohmann-json's errors.
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -43,6 +45,27 @@ inline bool is_header(std::string_view line, std::string_view header) noexcept {
     ++k;
   }
   return k == header.size();
+}
+
+// A whole number written at l[i...]: an optional sign ('-', and '+' when `plus`), then digits.
+// `i` moves past it. `digits` is false when there are none; `overflow` says the value left the
+// int64 range (then `value` is not the number).
+struct Whole {
+  bool digits = false, overflow = false;
+  std::int64_t value = 0;
+};
+
+inline Whole scan_whole(std::string_view l, std::size_t& i, bool plus = false) noexcept {
+  Whole w;
+  bool negative = false;
+  if (i < l.size() && (l[i] == '-' || (plus && l[i] == '+'))) negative = l[i++] == '-';
+  for (; i < l.size() && l[i] >= '0' && l[i] <= '9'; ++i) {
+    w.digits = true;
+    if (w.value > (std::numeric_limits<std::int64_t>::max() - 9) / 10) w.overflow = true;
+    if (!w.overflow) w.value = w.value * 10 + (l[i] - '0');
+  }
+  if (negative) w.value = -w.value;
+  return w;
 }
 
 // Line and column (from 1, column in bytes) of byte offset `pos` of `text`.
