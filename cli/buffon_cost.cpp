@@ -15,10 +15,10 @@
 // stderr.
 #include "commands.hpp"
 #include "output.hpp"
-#include "plot.hpp"
 
 #include <antkit/buffon/precision_cost.hpp>
 #include <antkit/buffon/stopping.hpp>
+#include <antkit/experiments/plot.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -131,7 +131,8 @@ void run(const CostCommand& c) {
 
   // The figure: one panel per P; per method a line over the circles, a dashed line over the
   // squares and open markers for the other shapes.
-  antkit::cli::LogLogFigure figure;
+  antkit::experiments::Figure figure;
+  figure.x_axis = figure.y_axis = antkit::experiments::Axis::Log;
   figure.title = "The cost of precision: median total trail to reach P, against area";
   figure.x_label = "arena area (unit^2, robot diameter = 1)";
   figure.y_label = "median total trail length to reach P (units)";
@@ -146,7 +147,7 @@ void run(const CostCommand& c) {
       {buffon::CostMethod::online, "#2a9d3a"},
       {buffon::CostMethod::rs, "#c8321e"}};
   for (const std::uint32_t p : params.precisions) {
-    antkit::cli::PlotPanel panel;
+    antkit::experiments::PlotPanel panel;
     panel.title = "P = " + num(p / 1e6);
     std::ostringstream note;
     note << "fit trail ~ A^e:";
@@ -158,7 +159,7 @@ void run(const CostCommand& c) {
     panel.note = note.str();
     for (const auto& [method, colour] : colours) {
       for (const char* family : {"circle", "square", "figure 3 shape"}) {
-        antkit::cli::PlotSeries s;
+        antkit::experiments::PlotSeries s;
         s.colour = colour;
         s.dashed = std::string(family) == "square";
         s.hollow = std::string(family) == "figure 3 shape";
@@ -181,12 +182,13 @@ void run(const CostCommand& c) {
   }
   const std::filesystem::path dir(c.out);
   try {
-    antkit::cli::save_figure(figure, dir / "precision_cost.svg", dir / "precision_cost.png");
+    antkit::experiments::save_figure(figure, dir / "precision_cost.svg",
+                                     dir / "precision_cost.png");
   } catch (...) {
-    antkit::cli::release_drawing_caches();
+    antkit::experiments::release_drawing_caches();
     throw;
   }
-  antkit::cli::release_drawing_caches();
+  antkit::experiments::release_drawing_caches();
   geometry::write_file_atomic(dir / "precision_cost.csv", csv.str());
   geometry::write_file_atomic(dir / "precision_cost_fits.csv", fits.str());
 

@@ -1,7 +1,7 @@
 // `antkit cover-experiment`: reproduces Tables 1-4 of paper 004 and writes ours beside the
 // paper's (issue 6).
 //   antkit cover-experiment [--runs 10] [--size 100x100] [--sensor 5] [--seed 1] [--jobs 1]
-//                           [--out DIR] [--format table|json]
+//                           [--sensor-model line-of-sight|disk] [--out DIR] [--format table|json]
 // Our tables add coordinated A* and frontier coverage, and how much frontier saves against A*
 // and coordinated A*. Writes DIR/uniform_tables.csv and DIR/uniform_tables.md (atomically) and
 // prints a summary. The experiment and the choices behind it are documented in
@@ -32,89 +32,10 @@ struct ExperimentOptions {
   std::int64_t sensor = 5;
   std::uint64_t seed = 1;
   std::int64_t jobs = 1;
+  std::string sensor_model = "line-of-sight";
   std::string out = ".";
   Format format = Format::Table;
 };
-
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
-std::string csv(const std::vector<ex::TablesRow>& rows, std::uint32_t runs) {
-  std::ostringstream s;
-  s << "table,density_percent,robots,algorithm,runs,coverage_mean,coverage_min,complete_runs,"
-       "movements_mean,moves_mean,paper_coverage,paper_movements\n";
-  for (const auto& row : rows)
-    for (std::size_t a = 0; a < ex::kTableColumns; ++a) {
-      const auto& p = *row.paper;
-      s << p.table << ',' << p.density_percent << ',' << p.robots << ','
-        << uniform::algorithm_name(ex::kTableAlgorithms[a]) << ',' << runs << ','
-        << fixed(row.coverage[a], 2) << ',' << fixed(row.coverage_min[a], 2) << ','
-        << row.complete[a] << ',' << fixed(row.movements[a], 1) << ',' << fixed(row.moves[a], 1)
-        << ',' << (a < 3 ? fixed(p.coverage[a], 2) : "") << ','
-        << (a < 3 ? fixed(p.movements[a], 1) : "") << '\n';
-    }
-  return s.str();
-}
-
-std::string markdown(const std::vector<ex::TablesRow>& rows, const ex::TablesConfig& c) {
-  std::ostringstream s;
-  s << "# Paper 004, Tables 1-4: ours beside the paper's\n\n"
-    << c.width << " x " << c.height << " cells, sensor distance " << c.sensor << ", " << c.runs
-    << " runs per row (trials 0.." << c.runs - 1 << ", seed " << c.seed
-    << "). Each cell: ours / paper. Coverage in % of viewable free cells, movements in ticks. RW "
-       "runs as many ticks as A* took on the same map.\n";
-  for (int table = 1; table <= 4; ++table) {
-    const ex::TablesRow* first = nullptr;
-    for (const auto& r : rows)
-      if (r.paper->table == table && !first) first = &r;
-    if (!first) continue;
-    s << "\n## Table " << table << ": " << first->paper->density_percent
-      << " % obstacle density\n\n"
-      << "| robots | RW coverage | RW movements | PM coverage | PM movements | A* coverage | A* "
-         "movements | coord. A* coverage | coord. A* movements | frontier coverage | frontier "
-         "movements |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const auto& r : rows) {
-      if (r.paper->table != table) continue;
-      s << "| " << r.paper->robots;
-      for (std::size_t a = 0; a < 3; ++a)
-        s << " | " << fixed(r.coverage[a], 2) << " / " << fixed(r.paper->coverage[a], 2) << " | "
-          << fixed(r.movements[a], 1) << " / " << fixed(r.paper->movements[a], 1);
-      for (std::size_t a = 3; a < ex::kTableColumns; ++a)
-        s << " | " << fixed(r.coverage[a], 2) << " | " << fixed(r.movements[a], 1);
-      s << " |\n";
-    }
-  }
-  const auto saved = [](double base, double v) {
-    return base > 0 ? 100.0 * (base - v) / base : 0.0;
-  };
-  s << "\n## Coordinated A* against A*\n\n"
-    << "| density % | robots | A* movements | coord. movements | saved % | A* moves | coord. "
-       "moves | saved % |\n|---|---|---|---|---|---|---|---|\n";
-  for (const auto& r : rows) {
-    s << "| " << r.paper->density_percent << " | " << r.paper->robots << " | "
-      << fixed(r.movements[2], 1) << " | " << fixed(r.movements[3], 1) << " | "
-      << fixed(saved(r.movements[2], r.movements[3]), 1) << " | " << fixed(r.moves[2], 1) << " | "
-      << fixed(r.moves[3], 1) << " | " << fixed(saved(r.moves[2], r.moves[3]), 1) << " |\n";
-  }
-  // Saved %: (baseline - frontier) / baseline of the means; negative when frontier needs more.
-  s << "\n## Frontier against A* and coordinated A*\n\n"
-    << "Frontier: Sheng et al.'s g = I - D on the shared viewed map (frontier_coverage.hpp). Saved "
-       "% = (baseline - frontier) / baseline, of the means over the runs.\n\n"
-    << "| density % | robots | frontier movements | saved vs A* % | saved vs coord. % | frontier "
-       "moves | saved vs A* % | saved vs coord. % |\n|---|---|---|---|---|---|---|---|\n";
-  for (const auto& r : rows) {
-    s << "| " << r.paper->density_percent << " | " << r.paper->robots << " | "
-      << fixed(r.movements[4], 1) << " | " << fixed(saved(r.movements[2], r.movements[4]), 1)
-      << " | " << fixed(saved(r.movements[3], r.movements[4]), 1) << " | " << fixed(r.moves[4], 1)
-      << " | " << fixed(saved(r.moves[2], r.moves[4]), 1) << " | "
-      << fixed(saved(r.moves[3], r.moves[4]), 1) << " |\n";
-  }
-  return s.str();
-}
 
 nlohmann::json run_experiment(const ExperimentOptions& o) {
   if (o.runs < 1 || o.runs > 1000)
@@ -131,15 +52,22 @@ nlohmann::json run_experiment(const ExperimentOptions& o) {
   c.sensor = static_cast<std::int32_t>(o.sensor);
   c.runs = static_cast<std::uint32_t>(o.runs);
   c.seed = o.seed;
-  c.jobs = static_cast<unsigned>(o.jobs);
+  if (o.sensor_model == "disk")
+    c.sensor_model = uniform::SensorModel::Disk;
+  else if (o.sensor_model != "line-of-sight")
+    throw InputError("--sensor-model",
+                     "'" + o.sensor_model +
+                         "' is not a sensor model: expected line-of-sight or disk");
   const std::filesystem::path dir(o.out);
   if (!std::filesystem::is_directory(dir))
     throw InputError("--out", "'" + o.out + "' is not a directory");
-  const auto rows = ex::run_tables(c);
+  antkit::experiments::Runner runner;
+  runner.threads = static_cast<unsigned>(o.jobs);
+  const auto rows = ex::run_tables(c, runner);
   const auto csv_path = dir / "uniform_tables.csv";
   const auto md_path = dir / "uniform_tables.md";
-  antkit::geometry::write_file_atomic(csv_path, csv(rows, c.runs));
-  antkit::geometry::write_file_atomic(md_path, markdown(rows, c));
+  antkit::geometry::write_file_atomic(csv_path, ex::tables_csv(rows, c));
+  antkit::geometry::write_file_atomic(md_path, ex::tables_markdown(rows, c));
 
   nlohmann::json j;
   j["csv"] = csv_path.string();
@@ -149,6 +77,7 @@ nlohmann::json run_experiment(const ExperimentOptions& o) {
   j["sensor"] = c.sensor;
   j["runs"] = c.runs;
   j["seed"] = c.seed;
+  j["sensor_model"] = o.sensor_model;
   nlohmann::json table = nlohmann::json::array();
   antkit::kernel::TraceHash digest;
   for (const auto& r : rows) {
@@ -156,11 +85,11 @@ nlohmann::json run_experiment(const ExperimentOptions& o) {
     nlohmann::json row;
     row["density"] = r.paper->density_percent;
     row["robots"] = r.paper->robots;
-    for (std::size_t a = 0; a < ex::kTableColumns; ++a) {
+    for (std::size_t a = 0; a < ex::table_columns(c); ++a) {
       const std::string name(uniform::algorithm_name(ex::kTableAlgorithms[a]));
-      row[name + "_coverage"] = std::stod(fixed(r.coverage[a], 2));
-      row[name + "_movements"] = std::stod(fixed(r.movements[a], 1));
-      row[name + "_moves"] = std::stod(fixed(r.moves[a], 1));
+      row[name + "_coverage"] = std::stod(ex::fixed(r.coverage[a], 2));
+      row[name + "_movements"] = std::stod(ex::fixed(r.movements[a], 1));
+      row[name + "_moves"] = std::stod(ex::fixed(r.moves[a], 1));
     }
     table.push_back(row);
   }
@@ -178,6 +107,8 @@ void register_cover_experiment(CLI::App& app) {
   sub->add_option("--size", o->size, "Environment W x H (default 100x100)");
   sub->add_option("--sensor", o->sensor, "Sensor distance in cells (default 5)");
   sub->add_option("--seed", o->seed, "Seed of the keyed random streams (default 1)");
+  sub->add_option("--sensor-model", o->sensor_model,
+                  "line-of-sight (default) or disk (views every cell in range, through walls)");
   sub->add_option("--jobs", o->jobs, "Threads (default 1); the results do not depend on it");
   sub->add_option("--out", o->out, "Directory for uniform_tables.csv and .md (default .)");
   antkit::cli::add_format_option(*sub, o->format);

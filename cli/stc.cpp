@@ -55,56 +55,16 @@ Variant parse_variant_option(const std::string& name) {
                                     "ant-edge or full");
 }
 
-// The start: --start if given, else the map's own start ('S' in an ASCII map), else the first
-// place, in row-major order, of the largest 4-connected region the variant can cover (ties: the
-// region found first): the NW sub-cell of its first free cell for the exact variants, its first
-// free sub-cell for full. (The first free cell of the map may well be an island of one cell; the
-// largest region is what a user asking for "coverage of this map" means.)
+// The start: --start if given, else the map's own start ('S' in an ASCII map), else
+// stc::default_start (the largest region's first place).
 Cell choose_start(const antkit::maps::GridMap& map, Variant variant, const std::string& option,
                   const std::string& file) {
   if (!option.empty()) return algorithms::parse_cell("--start", option);
   if (map.start) return *map.start;
-  const OccupancyGrid& g = map.cells;
-  const CellGridShape shape = cell_shape(g);
-  const bool exact = is_exact(variant);
-  // Nodes: cells (exact) or sub-cells of the cell area (full).
-  const std::int32_t w = exact ? shape.cells_x : 2 * shape.cells_x;
-  const std::int32_t h = exact ? shape.cells_y : 2 * shape.cells_y;
-  auto open = [&](Cell c) {
-    return c.x >= 0 && c.y >= 0 && c.x < w && c.y < h &&
-           (exact ? cell_free(g, c) : g[c] == Occupancy::Free);
-  };
-  std::vector<std::uint8_t> seen(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
-  auto at = [&](Cell c) -> std::uint8_t& {
-    return seen[static_cast<std::size_t>(c.y) * static_cast<std::size_t>(w) +
-                static_cast<std::size_t>(c.x)];
-  };
-  std::vector<Cell> queue;
-  std::optional<Cell> best;
-  std::size_t best_size = 0;
-  for (std::int32_t y = 0; y < h; ++y)
-    for (std::int32_t x = 0; x < w; ++x) {
-      const Cell c{x, y};
-      if (at(c) || !open(c)) continue;
-      queue.assign(1, c);
-      at(c) = 1;
-      for (std::size_t i = 0; i < queue.size(); ++i)
-        for (int d = 0; d < 4; ++d) {
-          const Cell n = step(queue[i], d);
-          if (open(n) && !at(n)) {
-            at(n) = 1;
-            queue.push_back(n);
-          }
-        }
-      if (queue.size() > best_size) {
-        best_size = queue.size();
-        best = c;
-      }
-    }
-  if (!best)
-    throw InputError(file, exact ? "the map has no free cell (2 x 2 free sub-cells) to start in"
-                                 : "the map has no free sub-cell to start in");
-  return exact ? subcell_of(*best, 2) : *best;
+  if (const auto start = default_start(map.cells, variant)) return *start;
+  throw InputError(file, is_exact(variant)
+                             ? "the map has no free cell (2 x 2 free sub-cells) to start in"
+                             : "the map has no free sub-cell to start in");
 }
 
 void draw_svg(const std::string& file, const OccupancyGrid& map, const RunResult& r) {

@@ -2,6 +2,8 @@
 #include <antkit/algorithms/controller.hpp>
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/protocol.hpp>
+#include <antkit/experiments/explore_tables.hpp>
+#include <antkit/experiments/plot.hpp>
 #include <antkit/geometry/arena.hpp>
 #include <antkit/kernel/grid.hpp>
 #include <antkit/kernel/hash.hpp>
@@ -9,6 +11,7 @@
 #include <antkit/kernel/raster.hpp>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 bool consumer_property(); // property.cpp: rapidcheck over antkit::testing
 
@@ -42,7 +45,32 @@ int main() {
       "consumer: grid %zu cells, draw %u, supercover %zu cells, arena area %.4f, hash %s: %s\n",
       grid.size(), draw, cells.size(), arena.area(),
       antkit::kernel::hash_hex(hash.finish()).c_str(), ok ? "ok" : "FAILED");
-  const bool property_ok = consumer_property();
+  // The experiments layer: paper 001's tables (fast wall-follow in the empty room takes the
+  // paper's 47 steps, give or take) and a figure drawn with Cairo to SVG and PNG.
+  const auto tables = antkit::experiments::run_explore_tables(1, antkit::experiments::Runner{});
+  const double empty_room = antkit::experiments::mean_of(tables.runs[0][0].steps);
+  antkit::experiments::Figure figure;
+  figure.title = "consumer";
+  figure.panels.push_back(
+      {"steps",
+       "",
+       {{"fast wall-follow",
+         "#1e5bd8",
+         false,
+         false,
+         {{0, empty_room, std::nullopt, std::nullopt}, {1, 50, std::nullopt, std::nullopt}}}},
+       {}});
+  const auto dir = std::filesystem::temp_directory_path();
+  antkit::experiments::save_figure(figure, dir / "antkit-consumer.svg",
+                                   dir / "antkit-consumer.png");
+  antkit::experiments::release_drawing_caches();
+  const bool experiments_ok = empty_room > 30 && empty_room < 70 && tables.hash != 0 &&
+                              std::filesystem::file_size(dir / "antkit-consumer.png") > 1000;
+  std::filesystem::remove(dir / "antkit-consumer.svg");
+  std::filesystem::remove(dir / "antkit-consumer.png");
+  std::printf("consumer: antkit::experiments, empty room %.1f steps: %s\n", empty_room,
+              experiments_ok ? "ok" : "FAILED");
+  const bool property_ok = consumer_property() && experiments_ok;
   std::printf("consumer: antkit::testing property: %s\n", property_ok ? "ok" : "FAILED");
   return ok && property_ok ? 0 : 1;
 }

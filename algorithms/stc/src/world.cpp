@@ -3,6 +3,7 @@
 #include <antkit/stc/offline.hpp>
 #include <antkit/stc/world.hpp>
 #include <string>
+#include <vector>
 
 namespace antkit::stc {
 
@@ -378,6 +379,47 @@ RunResult run_stc(StcWorld& world, const kernel::OccupancyGrid& map, SubCell sta
   r.returned_to_start = r.closed && (last == start || adjacent(last, start));
   r.hash = h.finish();
   return r;
+}
+
+std::optional<SubCell> default_start(const kernel::OccupancyGrid& g, Variant variant) {
+  const CellGridShape shape = cell_shape(g);
+  const bool exact = is_exact(variant);
+  // Nodes: cells (exact) or sub-cells of the cell area (full).
+  const std::int32_t w = exact ? shape.cells_x : 2 * shape.cells_x;
+  const std::int32_t h = exact ? shape.cells_y : 2 * shape.cells_y;
+  auto open = [&](Cell c) {
+    return c.x >= 0 && c.y >= 0 && c.x < w && c.y < h &&
+           (exact ? cell_free(g, c) : g[c] == kernel::Occupancy::Free);
+  };
+  std::vector<std::uint8_t> seen(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
+  auto at = [&](Cell c) -> std::uint8_t& {
+    return seen[static_cast<std::size_t>(c.y) * static_cast<std::size_t>(w) +
+                static_cast<std::size_t>(c.x)];
+  };
+  std::vector<Cell> queue;
+  std::optional<Cell> best;
+  std::size_t best_size = 0;
+  for (std::int32_t y = 0; y < h; ++y)
+    for (std::int32_t x = 0; x < w; ++x) {
+      const Cell c{x, y};
+      if (at(c) || !open(c)) continue;
+      queue.assign(1, c);
+      at(c) = 1;
+      for (std::size_t i = 0; i < queue.size(); ++i)
+        for (int d = 0; d < 4; ++d) {
+          const Cell n = step(queue[i], d);
+          if (open(n) && !at(n)) {
+            at(n) = 1;
+            queue.push_back(n);
+          }
+        }
+      if (queue.size() > best_size) {
+        best_size = queue.size();
+        best = c;
+      }
+    }
+  if (!best) return std::nullopt;
+  return is_exact(variant) ? subcell_of(*best, 2) : *best;
 }
 
 } // namespace antkit::stc

@@ -39,8 +39,8 @@ SensorFootprint::SensorFootprint(std::int32_t range) : range_(range) {
 }
 
 CoverageWorld::CoverageWorld(kernel::OccupancyGrid map, std::vector<Pose> robots,
-                             std::int32_t sensor_range)
-    : map_(std::move(map)), footprint_(sensor_range), robots_(std::move(robots)),
+                             std::int32_t sensor_range, SensorModel model)
+    : map_(std::move(map)), footprint_(sensor_range), model_(model), robots_(std::move(robots)),
       viewed_(map_.width(), map_.height(), 0), occupant_(map_.width(), map_.height(), 0),
       exits_(map_.width(), map_.height(), 0), components_(free_components(map_)) {
   if (map_.size() > 0xFFFFFFFFu)
@@ -81,6 +81,7 @@ CoverageWorld::CoverageWorld(kernel::OccupancyGrid map, std::vector<Pose> robots
 }
 
 bool CoverageWorld::clear_ray(Cell from, const SensorFootprint::Ray& ray) const noexcept {
+  if (model_ == SensorModel::Disk) return true;
   // Every cell between lies in the bounding box of `from` and its target, both on the map.
   const Cell* between = footprint_.between().data() + ray.first;
   for (std::uint32_t k = 0; k < ray.count; ++k)
@@ -129,7 +130,10 @@ std::uint32_t CoverageWorld::view(std::size_t robot) noexcept {
     if (!map_.in_bounds(c) || viewed_[c] != 0 || !clear_ray(from, ray)) continue;
     viewed_[c] = 1;
     ++fresh;
-    if (map_[c] == Occupancy::Free) ++viewed_free_;
+    // A disk views through walls, also free cells of components no robot is in: those do not
+    // count for coverage. (Line of sight never reaches another component.)
+    if (map_[c] == Occupancy::Free && (model_ == SensorModel::LineOfSight || is_viewable(c)))
+      ++viewed_free_;
   }
   viewed_cells_ += fresh;
   return fresh;

@@ -1,6 +1,4 @@
 #include <antkit/campaign/mpi.hpp>
-#include <cstdlib>
-#include <mpi.h>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -9,10 +7,6 @@
 namespace antkit::campaign::mpi {
 
 namespace {
-
-void require(int status, const char* what) {
-  if (status != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
-}
 
 // One rank's result as text: a line of counts, then one line per failure.
 std::string pack(const Result& r) {
@@ -40,61 +34,15 @@ Result unpack(const std::string& text) {
 
 } // namespace
 
-bool launched() noexcept {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS"})
-    if (std::getenv(name) != nullptr) return true;
-  return false;
-}
-
-Session::Session() {
-  require(MPI_Init(nullptr, nullptr), "MPI_Init");
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &size_);
-}
-
-Session::~Session() {
-  MPI_Finalize();
-}
-
-bool Session::all(bool ok) const {
-  int mine = ok ? 1 : 0, every = 0;
-  require(MPI_Allreduce(&mine, &every, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD), "MPI_Allreduce");
-  return every != 0;
-}
-
 Result run(const Session& session, Options options, const Progress& progress) {
   options.rank = static_cast<std::uint32_t>(session.rank());
   options.ranks = static_cast<std::uint32_t>(session.size());
-  options.stop_together = [](bool local) {
-    int mine = local ? 1 : 0, any = 0;
-    require(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD), "MPI_Allreduce");
-    return any != 0;
-  };
+  options.stop_together = [&session](bool local) { return session.any(local); };
   const Result part = campaign::run(options, session.rank() == 0 ? progress : Progress{});
-  const std::string text = pack(part);
-  const int length = static_cast<int>(text.size());
-  std::vector<int> lengths(static_cast<std::size_t>(session.size()), 0);
-  require(MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD),
-          "MPI_Gather");
-  std::vector<int> offsets(lengths.size(), 0);
-  std::vector<char> all;
-  if (session.rank() == 0) {
-    long long total = 0;
-    for (std::size_t r = 0; r < lengths.size(); ++r) {
-      offsets[r] = static_cast<int>(total);
-      total += lengths[r];
-    }
-    if (total > 0x7fffffff) throw std::runtime_error("MPI: the gathered results exceed 2 GiB");
-    all.resize(static_cast<std::size_t>(total));
-  }
-  require(MPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(),
-                      MPI_CHAR, 0, MPI_COMM_WORLD),
-          "MPI_Gatherv");
+  const std::vector<std::string> texts = session.gather_to_root(pack(part));
   if (session.rank() != 0) return part;
   std::vector<Result> parts;
-  for (std::size_t r = 0; r < lengths.size(); ++r)
-    parts.push_back(
-        unpack(std::string(all.data() + offsets[r], static_cast<std::size_t>(lengths[r]))));
+  for (const std::string& text : texts) parts.push_back(unpack(text));
   return merge(parts);
 }
 

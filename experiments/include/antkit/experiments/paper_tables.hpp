@@ -1,7 +1,8 @@
 #pragma once
 // The driver that reproduces Tables 1-4 of paper 004 (Tyler & Hettiarachchi) and sets our numbers
 // beside the paper's. Not part of antkit::algorithms (it uses threads and reports in floating
-// point); the `antkit cover-experiment` command includes it.
+// point); `antkit cover-experiment` and `antkit reproduce` call it. The runner is in
+// experiments/src/paper_tables.cpp.
 //
 // The experiment (paper: "obstacle density of 0%, 10%, 20% and 30% ... 1 to 4 robots ... averaged
 // over 10 independent runs"). The paper gives neither the environment size, the sensor distance
@@ -20,15 +21,14 @@
 //   * Coordinated A* and frontier coverage ("go beyond the paper") run on the same maps and
 //     starts, with the same 10 * W * H limit.
 #include <algorithm>
+#include <antkit/experiments/plot.hpp>
+#include <antkit/experiments/run.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/uniform/coverage.hpp>
 #include <antkit/uniform/scenario.hpp>
 #include <array>
-#include <atomic>
 #include <cstdint>
-#include <exception>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace antkit::uniform::experiments {
@@ -76,8 +76,17 @@ struct TablesConfig {
   std::int32_t sensor = 5;
   std::uint32_t runs = 10;
   std::uint64_t seed = 1;
-  unsigned jobs = 1; // threads; the results do not depend on it
+  // Disk: the hypothesis test of issue 15 (does a sensor that sees through walls give the paper's
+  // PM numbers?). Only the paper's RW, PM and A* run with it: our frontier coverage does not end
+  // when it views cells it cannot reach (a disk views through walls), and the test needs only the
+  // paper's three.
+  SensorModel sensor_model = SensorModel::LineOfSight;
 };
+
+// The algorithms a configuration runs: the first table_columns(c) of kTableAlgorithms.
+inline std::size_t table_columns(const TablesConfig& c) {
+  return c.sensor_model == SensorModel::Disk ? 3 : kTableColumns;
+}
 
 // One (density, robots) cell of our tables: means over the runs, per algorithm (kTableAlgorithms
 // order).
@@ -107,7 +116,8 @@ inline TrialOut run_trial(const TablesConfig& c, const PaperRow& row, std::uint3
   // A* first: its ticks are RW's limit.
   for (const std::size_t k :
        {std::size_t{2}, std::size_t{3}, std::size_t{4}, std::size_t{1}, std::size_t{0}}) {
-    CoverageWorld world(map, poses, c.sensor);
+    if (k >= table_columns(c)) continue;
+    CoverageWorld world(map, poses, c.sensor, c.sensor_model);
     const std::uint64_t lim = k == 0 ? out.result[2].movements : limit;
     out.result[k] = run_coverage(world, kTableAlgorithms[k], c.seed, run, lim);
   }
@@ -115,60 +125,19 @@ inline TrialOut run_trial(const TablesConfig& c, const PaperRow& row, std::uint3
 }
 } // namespace detail
 
-// Runs every (density, robots, run) and reduces in that order.
-inline std::vector<TablesRow> run_tables(const TablesConfig& c) {
-  const std::size_t per_row = c.runs;
-  const std::size_t total = kPaperTables.size() * per_row;
-  std::vector<detail::TrialOut> trials(total);
-  std::vector<std::exception_ptr> errors(total);
-  std::atomic<std::size_t> next{0};
-  const auto worker = [&] {
-    for (std::size_t k; (k = next.fetch_add(1)) < total;) {
-      try {
-        trials[k] = detail::run_trial(c, kPaperTables[k / per_row],
-                                      static_cast<std::uint32_t>(k % per_row));
-      } catch (...) {
-        errors[k] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned j = 1; j < std::max(1u, c.jobs); ++j) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
+// Runs every (density, robots, run) as a unit of `runner` and reduces in that order; on MPI
+// ranks other than 0 the result is empty.
+std::vector<TablesRow> run_tables(const TablesConfig& c, const antkit::experiments::Runner& runner);
 
-  std::vector<TablesRow> rows;
-  for (std::size_t r = 0; r < kPaperTables.size(); ++r) {
-    TablesRow row;
-    row.paper = &kPaperTables[r];
-    kernel::TraceHash digest;
-    for (std::size_t a = 0; a < kTableColumns; ++a) row.coverage_min[a] = 100.0;
-    for (std::size_t run = 0; run < per_row; ++run) {
-      const auto& t = trials[r * per_row + run];
-      for (std::size_t a = 0; a < kTableColumns; ++a) {
-        const auto& res = t.result[a];
-        const double cov = res.viewable == 0 ? 100.0
-                                             : 100.0 * static_cast<double>(res.viewed) /
-                                                   static_cast<double>(res.viewable);
-        row.coverage[a] += cov;
-        row.coverage_min[a] = std::min(row.coverage_min[a], cov);
-        row.movements[a] += static_cast<double>(res.movements);
-        row.moves[a] += static_cast<double>(res.moves);
-        row.complete[a] += res.viewed == res.viewable;
-        digest.add_u64(res.hash);
-      }
-    }
-    for (std::size_t a = 0; a < kTableColumns; ++a) {
-      row.coverage[a] /= static_cast<double>(per_row);
-      row.movements[a] /= static_cast<double>(per_row);
-      row.moves[a] /= static_cast<double>(per_row);
-    }
-    row.hash = digest.finish();
-    rows.push_back(row);
-  }
-  return rows;
-}
+// v with `decimals` decimals, as the tables print it.
+std::string fixed(double v, int decimals);
+
+// The files of `antkit cover-experiment`: the rows as CSV, and the four tables (ours / paper's)
+// with the coordinated-A* and frontier comparisons as Markdown.
+std::string tables_csv(const std::vector<TablesRow>& rows, const TablesConfig& c);
+std::string tables_markdown(const std::vector<TablesRow>& rows, const TablesConfig& c);
+// Coverage against movements, one panel per obstacle density, RW, PM and A* (ours: filled, the
+// paper's: open markers), one point per robot count.
+antkit::experiments::Figure tables_plot(const std::vector<TablesRow>& rows, const TablesConfig& c);
 
 } // namespace antkit::uniform::experiments

@@ -162,4 +162,11 @@ RunResult run_stc(StcWorld& world, const kernel::OccupancyGrid& map, SubCell sta
 // 4-connected to its cell (exact variants).
 std::int64_t reachable_subcells(const kernel::OccupancyGrid& map, SubCell start, Variant variant);
 
+// The start `antkit stc` takes when none is given: the first place, in row-major order, of the
+// largest 4-connected region the variant can cover (ties: the region found first): the NW
+// sub-cell of its first free cell for the exact variants, its first free sub-cell for full. (The
+// first free cell of a map may well be an island of one cell; the largest region is what a user
+// asking for "coverage of this map" means.) nullopt when the map has no such place.
+std::optional<SubCell> default_start(const kernel::OccupancyGrid& map, Variant variant);
+
 } // namespace antkit::stc

@@ -75,15 +75,22 @@ private:
   std::vector<std::uint32_t> lookup_; // (2r+1)^2 offsets -> index into rays_
 };
 
+// What the sensor needs to view a cell in range: line of sight (the model above, the default), or
+// nothing (Disk: every cell within the range is viewed, through walls). Disk exists to test paper
+// 004's numbers against a sensor that sees through obstacles (issue 15); nothing else uses it.
+enum class SensorModel : std::uint8_t { LineOfSight, Disk };
+
 class CoverageWorld {
 public:
   // `robots` must stand on distinct Free cells of `map` (a grid of at most 2^32 - 1 cells); throws
   // kernel::InputError otherwise.
   // Every robot views its surroundings once, in index order, before the first tick.
-  CoverageWorld(kernel::OccupancyGrid map, std::vector<Pose> robots, std::int32_t sensor_range);
+  CoverageWorld(kernel::OccupancyGrid map, std::vector<Pose> robots, std::int32_t sensor_range,
+                SensorModel model = SensorModel::LineOfSight);
 
   [[nodiscard]] const kernel::OccupancyGrid& map() const noexcept { return map_; }
   [[nodiscard]] const SensorFootprint& footprint() const noexcept { return footprint_; }
+  [[nodiscard]] SensorModel sensor_model() const noexcept { return model_; }
   [[nodiscard]] std::size_t robot_count() const noexcept { return robots_.size(); }
   [[nodiscard]] const std::vector<Pose>& robots() const noexcept { return robots_; }
   [[nodiscard]] const Pose& robot(std::size_t i) const noexcept { return robots_[i]; }
@@ -142,6 +149,7 @@ private:
 
   kernel::OccupancyGrid map_;
   SensorFootprint footprint_;
+  SensorModel model_ = SensorModel::LineOfSight;
   std::vector<Pose> robots_;
   kernel::Grid<std::uint8_t> viewed_;
   kernel::Grid<std::uint16_t> occupant_;

@@ -1,14 +1,14 @@
 #pragma once
-// Log-log figures drawn with Cairo, one drawing code path for both SVG and PNG (issue 17's cost
-// of precision; the `reproduce` report of issue 15 can reuse it): panels side by side sharing
-// their axes, decade ticks with labels, series as points joined by lines with interquartile bars,
-// a legend per panel naming every colour, a title, axis labels and a caption line.
+// Figures drawn with Cairo, one drawing code path for both SVG and PNG (issue 17's cost of
+// precision, the figures of `antkit reproduce`): panels side by side sharing their axes, linear or
+// log axes (decade ticks) or named categories along x, series as points joined by lines with
+// interquartile bars, a legend per panel naming every colour, a title, axis labels and a caption.
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace antkit::cli {
+namespace antkit::experiments {
 
 struct PlotPoint {
   double x = 0, y = 0;
@@ -32,15 +32,22 @@ struct PlotPanel {
   std::vector<PlotSeries> legend;
 };
 
-struct LogLogFigure {
+enum class Axis { Linear, Log };
+
+struct Figure {
   std::string title, x_label, y_label, caption;
   std::vector<PlotPanel> panels;
+  Axis x_axis = Axis::Linear, y_axis = Axis::Linear;
+  // Names for x = 0, 1, 2, ... (a categorical axis) instead of numbers; empty: numeric.
+  std::vector<std::string> x_categories;
+  bool y_from_zero = false;    // a linear y axis that starts at 0 (or below)
+  std::vector<double> y_marks; // dashed reference lines across every panel (e.g. the true value)
 };
 
 // Writes the figure to `svg` and `png` (each written to a temporary name in the same directory,
 // then renamed, so no partial file is left). Throws kernel::InputError(path, ...) when a file
-// cannot be written, or when there is no positive point to draw.
-void save_figure(const LogLogFigure& figure, const std::filesystem::path& svg,
+// cannot be written, or when there is no point to draw (none positive, on a log axis).
+void save_figure(const Figure& figure, const std::filesystem::path& svg,
                  const std::filesystem::path& png);
 
 // Frees Cairo's and fontconfig's process-wide caches (font faces, the fontconfig configuration),
@@ -48,4 +55,4 @@ void save_figure(const LogLogFigure& figure, const std::filesystem::path& svg,
 // Call once when no more figures will be drawn; drawing again afterwards rebuilds them.
 void release_drawing_caches() noexcept;
 
-} // namespace antkit::cli
+} // namespace antkit::experiments

@@ -1,0 +1,87 @@
+#pragma once
+// Paper 000's Figures 5-9 and 14 (`antkit buffon-experiment`, `antkit reproduce`).
+//
+// Figures 5-9: a list of (series, x, arena spec, trail width); every arena gets `trials` trials of
+// the paper's Section 5 settings (50 000 steps per visit, w = 0.1 unless the figure varies w) and
+// one row with the median and interquartile range of nBC (the paper's statistics), the arena's
+// exact area, the median closed-form area and the median blocked-step count. Trial t of arena k of
+// figure f uses experiment 4000 + 100 f + k of the keyed streams, so every arena's trials are
+// independent and reproducible on their own.
+//
+// Choices where the paper is silent: Figure 5's squares are "square:d=D" (the square of the area of
+// the D circle); Figure 6's ellipses have the standard area and e = 0.968, 0.994, 0.998, drawn
+// against compactness r1/r2 = 1/sqrt(1 - e^2) (1 for the circle); Figure 7's barrier lengths are
+// 10..80 % of the diameter in steps of 10; Figure 9's widths are 0.05, 0.1, 0.2, 0.4 over the ten
+// circles.
+//
+// Figure 14 (Section 8.1): calibrated Buffon estimates and RS estimates against total trail length
+// for the circles of diameter 40, 60, 80, 100, calibrated on 30, 50, 70, 90; checkpoints every 168
+// units of each visit (total 336 k, k = 1..10); circle d uses experiment 5400 + d. The fit uses the
+// calibration arenas' median nBC at the same checkpoint; each trial of a test arena then gives one
+// estimate.
+#include <antkit/experiments/plot.hpp>
+#include <antkit/experiments/run.hpp>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace antkit::experiments {
+
+struct BuffonFigureParams {
+  int figure = 5;             // 5, 6, 7, 8, 9 or 14
+  std::int64_t trials = 100;  // per arena
+  std::int64_t steps = 50000; // per visit
+  std::uint64_t seed = 1;
+};
+
+struct BuffonArena {
+  std::string series;
+  double x = 0;
+  std::string spec; // antkit arena spec
+  double width = 0.1;
+};
+
+// The arenas of a figure in row order; empty for a figure other than 5-9.
+[[nodiscard]] std::vector<BuffonArena> buffon_figure_arenas(int figure);
+
+struct BuffonFigureRow {
+  BuffonArena arena;
+  double area = 0, nbc_median = 0, nbc_q1 = 0, nbc_q3 = 0, closed_form_median = 0,
+         blocked_median = 0;
+  // Not in the CSV: the median length of visit 1, and Buffon's efficiency nBC pi area / (2 L1)
+  // at the medians (1 for an ideal needle count; below 1 where trails blend).
+  double length1_median = 0, efficiency = 0;
+};
+
+struct BuffonFigure {
+  BuffonFigureParams params;
+  std::vector<BuffonFigureRow> rows;
+  std::uint64_t hash = 0; // every trial's trace hash, in arena then trial order
+};
+
+// Throws kernel::InputError("--figure" / "--trials" / "--steps") for parameters out of range.
+[[nodiscard]] BuffonFigure run_buffon_figure(const BuffonFigureParams& params,
+                                             const Runner& runner);
+[[nodiscard]] std::string buffon_figure_csv(const BuffonFigure& f);
+[[nodiscard]] Figure buffon_figure_plot(const BuffonFigure& f);
+
+struct Figure14Row {
+  double diameter = 0, total_length = 0, area = 0;
+  double buffon_median = 0, buffon_q1 = 0, buffon_q3 = 0, rs_median = 0, rs_q1 = 0, rs_q3 = 0;
+  double fit_a = 0, fit_b = 0, fit_c = 0;
+};
+
+struct Figure14 {
+  BuffonFigureParams params;
+  std::vector<Figure14Row> rows; // by checkpoint, then test diameter
+  std::uint64_t hash = 0;        // a digest of every trial's checkpoint counts
+};
+
+[[nodiscard]] Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner);
+[[nodiscard]] std::string figure14_csv(const Figure14& f);
+[[nodiscard]] Figure figure14_plot(const Figure14& f);
+
+// Numbers as the experiment files write them (10 significant digits).
+[[nodiscard]] std::string number(double v);
+
+} // namespace antkit::experiments

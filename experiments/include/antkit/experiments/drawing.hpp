@@ -1,0 +1,38 @@
+#pragma once
+// Pictures of runs drawn with Cairo (SVG and PNG from one drawing path, like plot.hpp): an STC tour
+// on its map and Buffon trails in their arenas. Each picture has a title, a legend naming every
+// colour and a caption, so that it reads without the code.
+#include <antkit/kernel/grid.hpp>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace antkit::experiments {
+
+using XY = std::pair<double, double>;
+
+// A tour on a grid map (sub-cell coordinates, x right, y down): blocked cells dark, the spanning
+// tree (an edge between two cells' centres where the tour first crosses between them) in green,
+// the tour coloured along its length from blue (start) to yellow (end) so that its order can be
+// followed, and the start as a red dot. Throws kernel::InputError for a file that cannot be
+// written.
+void save_tour_figure(const kernel::OccupancyGrid& map, std::span<const kernel::Cell> path,
+                      const std::string& title, const std::string& caption,
+                      const std::filesystem::path& svg, const std::filesystem::path& png);
+
+// One arena of a trails figure: its walls (closed rings, arena units, y up) and the two visits'
+// trails (a jump longer than one unit breaks a trail into pieces).
+struct TrailPanel {
+  std::string title;
+  std::vector<std::vector<XY>> rings;
+  std::vector<XY> trail1, trail2;
+};
+
+// Arenas side by side, each scaled to its panel; visit 1 blue, visit 2 red.
+void save_trails_figure(const std::string& title, const std::string& caption,
+                        const std::vector<TrailPanel>& panels, const std::filesystem::path& svg,
+                        const std::filesystem::path& png);
+
+} // namespace antkit::experiments

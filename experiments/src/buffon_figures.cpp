@@ -1,0 +1,330 @@
+#include <algorithm>
+#include <antkit/buffon/checkpoints.hpp>
+#include <antkit/buffon/estimate.hpp>
+#include <antkit/buffon/measurement.hpp>
+#include <antkit/experiments/buffon_figures.hpp>
+#include <antkit/experiments/calibration.hpp>
+#include <antkit/geometry/arena_spec.hpp>
+#include <antkit/geometry/fixed_convert.hpp>
+#include <antkit/kernel/hash.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace antkit::experiments {
+
+namespace buffon = antkit::buffon;
+namespace geometry = antkit::geometry;
+using kernel::InputError;
+
+namespace {
+
+void check(const BuffonFigureParams& p) {
+  if (p.trials < 1 || p.trials > 100000)
+    throw InputError("--trials", "the number of trials must be in [1, 100000]");
+  if (p.steps < 1 || p.steps > 100000000)
+    throw InputError("--steps", "the number of steps must be in [1, 10^8]");
+}
+
+const char* const kColours[] = {"#1e5bd8", "#d81e1e", "#1b9e3a", "#e08a00",
+                                "#7b3fb5", "#00a0a0", "#a0a000", "#606060"};
+
+} // namespace
+
+std::string number(double v) {
+  std::ostringstream s;
+  s << std::setprecision(10) << v;
+  return s.str();
+}
+
+std::vector<BuffonArena> buffon_figure_arenas(int figure) {
+  std::vector<BuffonArena> pts;
+  const double diameters[] = {10, 20, 30, 40, 50, 60, 70, 80, 90, 100};
+  switch (figure) {
+  case 5:
+    for (double d : diameters) pts.push_back({"circle", d, "circle:d=" + number(d), 0.1});
+    for (double d : diameters) pts.push_back({"square", d, "square:d=" + number(d), 0.1});
+    break;
+  case 6:
+    pts.push_back({"standard", 1, "standard", 0.1});
+    for (double e : {0.968, 0.994, 0.998})
+      pts.push_back({"ellipse", 1 / std::sqrt(1 - e * e), "ellipse:area=7854,e=" + number(e), 0.1});
+    break;
+  case 7:
+    pts.push_back({"none", 0, "standard", 0.1});
+    for (int k = 1; k <= 8; ++k) {
+      pts.push_back({"barrier-i", 10.0 * k, "barrier-i:len=" + number(0.1 * k), 0.1});
+      pts.push_back({"barrier-plus", 10.0 * k, "barrier-plus:len=" + number(0.1 * k), 0.1});
+    }
+    break;
+  case 8: {
+    double x = 0;
+    for (const char* s : {"standard", "ring", "plus", "obstacles"}) pts.push_back({s, x++, s, 0.1});
+    break;
+  }
+  case 9:
+    for (double w : {0.05, 0.1, 0.2, 0.4})
+      for (double d : diameters) pts.push_back({"w=" + number(w), d, "circle:d=" + number(d), w});
+    break;
+  default:
+    break;
+  }
+  return pts;
+}
+
+BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const Runner& runner) {
+  const auto arenas = buffon_figure_arenas(params.figure);
+  if (arenas.empty()) throw InputError("--figure", "the figure must be 5, 6, 7, 8 or 9 (or 14)");
+  check(params);
+  std::vector<geometry::Arena> shapes;
+  std::vector<buffon::World> worlds;
+  std::vector<buffon::TrialParams> trial_params;
+  for (std::size_t k = 0; k < arenas.size(); ++k) {
+    shapes.push_back(geometry::build_arena_spec(arenas[k].spec, "figure").arena);
+    worlds.emplace_back(shapes.back().walls_fx());
+    buffon::TrialParams tp;
+    tp.seed = params.seed;
+    tp.experiment = 4000 + 100 * static_cast<std::uint64_t>(params.figure) + k;
+    tp.steps = params.steps;
+    tp.width = geometry::fixed_from_double<kernel::Fx>(arenas[k].width, "--width");
+    trial_params.push_back(tp);
+  }
+  const auto trials = static_cast<std::uint64_t>(params.trials);
+  const auto payloads = run_units(runner, "paper 000, figure " + std::to_string(params.figure),
+                                  arenas.size() * trials, [&](std::uint64_t u) {
+                                    const std::size_t k = u / trials;
+                                    const auto r =
+                                        buffon::run_trial(worlds[k], trial_params[k], u % trials);
+                                    Payload p;
+                                    p.put(r.bc);
+                                    p.put_i(r.length1_raw);
+                                    p.put_i(r.length2_raw);
+                                    p.put(r.crossings_exact);
+                                    p.put(r.blocked);
+                                    p.put(r.hash);
+                                    return p;
+                                  });
+  BuffonFigure out{params, {}, 0};
+  if (!runner.root()) return out;
+  kernel::TraceHash digest;
+  for (std::size_t k = 0; k < arenas.size(); ++k) {
+    std::vector<double> nbc, cf, blocked, length1;
+    for (std::uint64_t t = 0; t < trials; ++t) {
+      Payload p = payloads[k * trials + t];
+      const auto bc = p.get();
+      const double l1 = static_cast<double>(p.get_i()) / 65536.0;
+      const double l2 = static_cast<double>(p.get_i()) / 65536.0;
+      const auto crossings = p.get();
+      blocked.push_back(static_cast<double>(p.get()));
+      digest.add_u64(p.get());
+      nbc.push_back(l2 > 0 ? static_cast<double>(bc) / l2 : 0.0);
+      length1.push_back(l1);
+      if (auto a = buffon::closed_form_area(l1, l2, crossings).area) cf.push_back(*a);
+    }
+    out.rows.push_back({arenas[k], shapes[k].area(), buffon::quantile(nbc, 0.5),
+                        buffon::quantile(nbc, 0.25), buffon::quantile(nbc, 0.75),
+                        buffon::quantile(cf, 0.5), buffon::quantile(blocked, 0.5)});
+    auto& row = out.rows.back();
+    row.length1_median = buffon::quantile(length1, 0.5);
+    row.efficiency =
+        row.length1_median > 0 ? row.nbc_median * M_PI * row.area / (2 * row.length1_median) : 0.0;
+  }
+  out.hash = digest.finish();
+  return out;
+}
+
+std::string buffon_figure_csv(const BuffonFigure& f) {
+  std::ostringstream csv;
+  csv << "series,x,arena,width,area,trials,nbc_median,nbc_q1,nbc_q3,area_closed_form_median,"
+         "blocked_median\n";
+  for (const auto& r : f.rows)
+    csv << r.arena.series << ',' << number(r.arena.x) << ",\"" << r.arena.spec << "\","
+        << number(r.arena.width) << ',' << number(r.area) << ',' << f.params.trials << ','
+        << number(r.nbc_median) << ',' << number(r.nbc_q1) << ',' << number(r.nbc_q3) << ','
+        << number(r.closed_form_median) << ',' << number(r.blocked_median) << '\n';
+  return csv.str();
+}
+
+Figure buffon_figure_plot(const BuffonFigure& f) {
+  Figure fig;
+  PlotPanel panel;
+  std::vector<std::string> names;
+  for (const auto& r : f.rows)
+    if (std::find(names.begin(), names.end(), r.arena.series) == names.end())
+      names.push_back(r.arena.series);
+  for (std::size_t s = 0; s < names.size(); ++s) {
+    PlotSeries series;
+    series.name = names[s];
+    series.colour = kColours[s % 8];
+    for (const auto& r : f.rows)
+      if (r.arena.series == names[s])
+        series.points.push_back({r.arena.x, r.nbc_median, r.nbc_q1, r.nbc_q3});
+    // A single point (Figure 7's arena without a barrier) is a reference: drawn as a line across.
+    if (series.points.size() == 1 && f.params.figure == 7) {
+      fig.y_marks.push_back(series.points[0].y);
+      series.name += " (dashed line)";
+      series.hollow = true;
+    }
+    panel.series.push_back(std::move(series));
+  }
+  const std::string trials = std::to_string(f.params.trials) + " trials per arena, " +
+                             std::to_string(f.params.steps) + " steps per visit";
+  fig.y_label = "nBC (Buffon crossings per unit of visit 2)";
+  switch (f.params.figure) {
+  case 5:
+    fig.title = "Paper 000, Figure 5: nBC of circles and squares";
+    fig.x_label = "diameter of the circle (square: same area), robot diameters";
+    break;
+  case 6:
+    fig.title = "Paper 000, Figure 6: nBC against compactness";
+    fig.x_label = "compactness r1 / r2 (1: the standard circle; ellipses of the same area)";
+    break;
+  case 7:
+    fig.title = "Paper 000, Figure 7: barriers in the standard arena";
+    fig.x_label = "barrier length, % of the diameter";
+    break;
+  case 8:
+    fig.title = "Paper 000, Figure 8: holes and obstacles";
+    fig.x_label = "arena";
+    for (const auto& r : f.rows) fig.x_categories.push_back(r.arena.series);
+    for (auto& s : panel.series) s.hollow = false;
+    break;
+  case 9:
+    fig.title = "Paper 000, Figure 9: trail width";
+    fig.x_label = "diameter of the circle, robot diameters";
+    break;
+  default:
+    break;
+  }
+  fig.caption = "Median nBC with interquartile bars; " + trials + ", seed " +
+                std::to_string(f.params.seed) + ".";
+  if (f.params.figure == 8) {
+    // Categories share one series so that each arena is one point.
+    PlotSeries one;
+    one.name = "median nBC";
+    one.colour = kColours[0];
+    for (std::size_t i = 0; i < f.rows.size(); ++i)
+      one.points.push_back(
+          {static_cast<double>(i), f.rows[i].nbc_median, f.rows[i].nbc_q1, f.rows[i].nbc_q3});
+    one.hollow = true;
+    panel.series.assign(1, std::move(one));
+  }
+  fig.panels.push_back(std::move(panel));
+  return fig;
+}
+
+Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner) {
+  check(params);
+  constexpr int K = 10;
+  const std::int64_t step_raw = std::int64_t{168} * 65536;
+  std::vector<geometry::Arena> shapes;
+  std::vector<buffon::World> worlds;
+  std::vector<buffon::TrialParams> trial_params;
+  std::vector<int> diameters;
+  for (int d = 30; d <= 100; d += 10) {
+    diameters.push_back(d);
+    shapes.push_back(geometry::build_arena_spec("circle:d=" + std::to_string(d), "figure").arena);
+    worlds.emplace_back(shapes.back().walls_fx());
+    buffon::TrialParams tp;
+    tp.seed = params.seed;
+    tp.experiment = 4000 + 100 * 14 + static_cast<std::uint64_t>(d);
+    tp.steps = params.steps;
+    trial_params.push_back(tp);
+  }
+  const auto trials = static_cast<std::uint64_t>(params.trials);
+  const auto payloads =
+      run_units(runner, "paper 000, figure 14", diameters.size() * trials, [&](std::uint64_t u) {
+        const std::size_t k = u / trials;
+        const auto r = buffon::run_checkpoints(worlds[k], trial_params[k], u % trials, step_raw, K);
+        Payload p;
+        p.put(r.bc.size());
+        for (std::size_t i = 0; i < r.bc.size(); ++i) {
+          p.put(r.bc[i]);
+          p.put_i(r.length2_raw[i]);
+          p.put(r.rs_cells[i]);
+        }
+        p.put_i(r.rs_cell_raw);
+        return p;
+      });
+  Figure14 out{params, {}, 0};
+  if (!runner.root()) return out;
+  kernel::TraceHash digest;
+  std::vector<buffon::Figure14Arena> arenas;
+  for (std::size_t k = 0; k < diameters.size(); ++k) {
+    buffon::Figure14Arena a{static_cast<double>(diameters[k]), shapes[k].area(), {}, {}};
+    for (std::uint64_t t = 0; t < trials; ++t) {
+      Payload p = payloads[k * trials + t];
+      for (const std::uint64_t w : p.words()) digest.add_u64(w);
+      buffon::CheckpointResult r;
+      const auto n = p.get();
+      for (std::uint64_t i = 0; i < n; ++i) {
+        r.bc.push_back(p.get());
+        r.length2_raw.push_back(p.get_i());
+        r.rs_cells.push_back(p.get());
+      }
+      r.rs_cell_raw = p.get_i();
+      buffon::add_checkpoints(a, r);
+    }
+    arenas.push_back(std::move(a));
+  }
+  for (std::size_t k = 0; k < K; ++k) {
+    const auto fit = buffon::calibrate_at(arenas, k);
+    const double total = 2.0 * 168.0 * static_cast<double>(k + 1);
+    for (const auto& a : arenas) {
+      if (buffon::is_calibration_diameter(a.diameter)) continue;
+      const std::vector<double> est = buffon::estimates_at(a, k, fit);
+      out.rows.push_back({a.diameter, total, a.area, buffon::quantile(est, 0.5),
+                          buffon::quantile(est, 0.25), buffon::quantile(est, 0.75),
+                          buffon::quantile(a.rs[k], 0.5), buffon::quantile(a.rs[k], 0.25),
+                          buffon::quantile(a.rs[k], 0.75), fit.a, fit.b, fit.c});
+    }
+  }
+  out.hash = digest.finish();
+  return out;
+}
+
+std::string figure14_csv(const Figure14& f) {
+  std::ostringstream csv;
+  csv << "diameter,total_length,area,buffon_median,buffon_q1,buffon_q3,rs_median,rs_q1,rs_q3,"
+         "fit_a,fit_b,fit_c\n";
+  for (const auto& r : f.rows)
+    csv << number(r.diameter) << ',' << number(r.total_length) << ',' << number(r.area) << ','
+        << number(r.buffon_median) << ',' << number(r.buffon_q1) << ',' << number(r.buffon_q3)
+        << ',' << number(r.rs_median) << ',' << number(r.rs_q1) << ',' << number(r.rs_q3) << ','
+        << number(r.fit_a) << ',' << number(r.fit_b) << ',' << number(r.fit_c) << '\n';
+  return csv.str();
+}
+
+Figure figure14_plot(const Figure14& f) {
+  Figure fig;
+  fig.title = "Paper 000, Figure 14: calibrated Buffon and RS estimates";
+  fig.x_label = "total trail length (both visits), robot diameters";
+  fig.y_label = "estimate / true area";
+  fig.y_marks = {1.0};
+  fig.caption = "Medians with interquartile bars over " + std::to_string(f.params.trials) +
+                " trials; Buffon calibrated on circles d = 30, 50, 70, 90 (dashed line: exact).";
+  std::vector<double> diameters;
+  for (const auto& r : f.rows)
+    if (std::find(diameters.begin(), diameters.end(), r.diameter) == diameters.end())
+      diameters.push_back(r.diameter);
+  PlotPanel buffon_panel{"calibrated Buffon", "", {}, {}},
+      rs_panel{"Random Search (RS)", "", {}, {}};
+  for (std::size_t i = 0; i < diameters.size(); ++i) {
+    PlotSeries b{"circle d=" + number(diameters[i]), kColours[i % 8], false, false, {}};
+    PlotSeries r = b;
+    for (const auto& row : f.rows) {
+      if (row.diameter != diameters[i]) continue;
+      b.points.push_back({row.total_length, row.buffon_median / row.area, row.buffon_q1 / row.area,
+                          row.buffon_q3 / row.area});
+      r.points.push_back(
+          {row.total_length, row.rs_median / row.area, row.rs_q1 / row.area, row.rs_q3 / row.area});
+    }
+    buffon_panel.series.push_back(std::move(b));
+    rs_panel.series.push_back(std::move(r));
+  }
+  fig.panels = {std::move(buffon_panel), std::move(rs_panel)};
+  return fig;
+}
+
+} // namespace antkit::experiments

@@ -1,0 +1,107 @@
+#include "cairo_output.hpp"
+
+#include <antkit/experiments/plot.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <cairo-svg.h>
+#include <cstdio>
+#include <fontconfig/fontconfig.h>
+#include <memory>
+#include <unistd.h>
+
+namespace antkit::experiments {
+
+namespace detail {
+
+namespace {
+
+// A temporary name beside `path`, renamed over it once complete.
+std::filesystem::path temporary_beside(const std::filesystem::path& path) {
+  return path.parent_path() /
+         ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()));
+}
+
+void check(cairo_status_t status, const std::filesystem::path& path) {
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw kernel::InputError(path.string(), std::string("could not write the figure: ") +
+                                                cairo_status_to_string(status));
+}
+
+void publish(const std::filesystem::path& tmp, const std::filesystem::path& path) {
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw kernel::InputError(path.string(), "could not write the figure: " + ec.message());
+  }
+}
+
+} // namespace
+
+void text(cairo_t* cr, double x, double y, const std::string& s, double size, double align_x,
+          double align_y, bool bold) {
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s.c_str(), &e);
+  cairo_move_to(cr, x - align_x * e.width - e.x_bearing, y - align_y * e.height - e.y_bearing);
+  cairo_show_text(cr, s.c_str());
+}
+
+Rgb rgb(const std::string& hex) {
+  unsigned v = 0;
+  if (hex.size() == 7 && hex[0] == '#' && std::sscanf(hex.c_str() + 1, "%6x", &v) == 1)
+    return {((v >> 16) & 0xFF) / 255.0, ((v >> 8) & 0xFF) / 255.0, (v & 0xFF) / 255.0};
+  return {0, 0, 0};
+}
+
+void render(double width, double height, const std::function<void(cairo_t*)>& draw,
+            const std::filesystem::path& svg, const std::filesystem::path& png) {
+  const std::filesystem::path svg_tmp = temporary_beside(svg), png_tmp = temporary_beside(png);
+  auto cleanup = [&] {
+    std::error_code ec;
+    std::filesystem::remove(svg_tmp, ec);
+    std::filesystem::remove(png_tmp, ec);
+  };
+  try {
+    {
+      std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+          cairo_svg_surface_create(svg_tmp.c_str(), width, height), &cairo_surface_destroy);
+      check(cairo_surface_status(surface.get()), svg);
+      std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()),
+                                                            &cairo_destroy);
+      draw(cr.get());
+      check(cairo_status(cr.get()), svg);
+      cairo_surface_finish(surface.get());
+      check(cairo_surface_status(surface.get()), svg);
+    }
+    {
+      std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+          cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(width),
+                                     static_cast<int>(height)),
+          &cairo_surface_destroy);
+      check(cairo_surface_status(surface.get()), png);
+      std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()),
+                                                            &cairo_destroy);
+      draw(cr.get());
+      check(cairo_status(cr.get()), png);
+      check(cairo_surface_write_to_png(surface.get(), png_tmp.c_str()), png);
+    }
+    publish(svg_tmp, svg);
+    publish(png_tmp, png);
+  } catch (...) {
+    cleanup();
+    throw;
+  }
+}
+
+} // namespace detail
+
+void release_drawing_caches() noexcept {
+  // Cairo's font caches hold fontconfig objects; fontconfig's configuration is global. Both are
+  // rebuilt on the next use.
+  cairo_debug_reset_static_data();
+  FcFini();
+}
+
+} // namespace antkit::experiments

@@ -1,0 +1,27 @@
+#pragma once
+// Internal to antkit_experiments: one drawing function rendered twice, to SVG and to PNG, and the
+// text helper the figures share.
+#include <cairo.h>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace antkit::experiments::detail {
+
+// Draws `draw` on a width x height SVG surface and on a PNG image of the same size; each file is
+// written to a temporary name beside it and renamed, so no partial file is left. Throws
+// kernel::InputError(path, ...) when a file cannot be written.
+void render(double width, double height, const std::function<void(cairo_t*)>& draw,
+            const std::filesystem::path& svg, const std::filesystem::path& png);
+
+// Text at (x, y), aligned by the fractions align_x, align_y of its extents (0.5, 0.5: centred).
+void text(cairo_t* cr, double x, double y, const std::string& s, double size, double align_x,
+          double align_y, bool bold = false);
+
+struct Rgb {
+  double r, g, b;
+};
+// "#rrggbb"; black for anything else.
+Rgb rgb(const std::string& hex);
+
+} // namespace antkit::experiments::detail

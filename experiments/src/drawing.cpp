@@ -1,0 +1,219 @@
+#include "cairo_output.hpp"
+
+#include <algorithm>
+#include <antkit/experiments/drawing.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <cmath>
+#include <set>
+
+namespace antkit::experiments {
+
+using detail::text;
+
+namespace {
+
+// Blue to yellow through green (an approximation of viridis by five stops), t in [0, 1].
+detail::Rgb along(double t) {
+  static constexpr double stops[5][3] = {{0.267, 0.005, 0.329},
+                                         {0.230, 0.322, 0.546},
+                                         {0.128, 0.567, 0.551},
+                                         {0.369, 0.789, 0.383},
+                                         {0.993, 0.906, 0.144}};
+  t = std::clamp(t, 0.0, 1.0) * 4;
+  const int i = std::min(3, static_cast<int>(t));
+  const double f = t - i;
+  return {stops[i][0] + f * (stops[i + 1][0] - stops[i][0]),
+          stops[i][1] + f * (stops[i + 1][1] - stops[i][1]),
+          stops[i][2] + f * (stops[i + 1][2] - stops[i][2])};
+}
+
+void caption_lines(cairo_t* cr, const std::string& caption, double cx, double bottom) {
+  std::vector<std::string> lines{""};
+  for (const char ch : caption) {
+    if (ch == '\n')
+      lines.emplace_back();
+    else
+      lines.back() += ch;
+  }
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    text(cr, cx, bottom - 15 * static_cast<double>(lines.size() - 1 - i), lines[i], 11, 0.5, 0.5);
+}
+
+void legend_line(cairo_t* cr, double x, double y, detail::Rgb c, double width,
+                 const std::string& label) {
+  cairo_set_source_rgb(cr, c.r, c.g, c.b);
+  cairo_set_line_width(cr, width);
+  cairo_move_to(cr, x, y);
+  cairo_line_to(cr, x + 26, y);
+  cairo_stroke(cr);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  text(cr, x + 32, y, label, 11, 0, 0.5);
+}
+
+} // namespace
+
+void save_tour_figure(const kernel::OccupancyGrid& map, std::span<const kernel::Cell> path,
+                      const std::string& title, const std::string& caption,
+                      const std::filesystem::path& svg, const std::filesystem::path& png) {
+  const double w = map.width(), h = map.height();
+  const double side = std::max(w, h);
+  const double scale = std::clamp(760.0 / side, 1.0, 24.0);
+  const double top = 44, left = 20, legend = 150;
+  const double width = std::max(w * scale + 2 * left, 640.0), height = top + h * scale + legend;
+  const double ox = (width - w * scale) / 2;
+  detail::render(
+      width, height,
+      [&](cairo_t* cr) {
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_paint(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text(cr, width / 2, 22, title, 16, 0.5, 0.5, true);
+        const auto X = [&](double x) { return ox + x * scale; };
+        const auto Y = [&](double y) { return top + y * scale; };
+        // The map: free white, blocked dark grey, unknown light grey, one rectangle per run of
+        // equal cells in a row (small SVG files on large maps), without antialiasing so that rows
+        // meet without a seam.
+        cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+        for (std::int32_t y = 0; y < map.height(); ++y)
+          for (std::int32_t x = 0; x < map.width();) {
+            const kernel::Occupancy o = map[{x, y}];
+            std::int32_t end = x + 1;
+            while (end < map.width() && map[{end, y}] == o) ++end;
+            if (o != kernel::Occupancy::Free) {
+              const double g = o == kernel::Occupancy::Blocked ? 0.25 : 0.7;
+              cairo_set_source_rgb(cr, g, g, g);
+              cairo_rectangle(cr, X(x), Y(y), (end - x) * scale, scale);
+              cairo_fill(cr);
+            }
+            x = end;
+          }
+        cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_set_line_width(cr, 1);
+        cairo_rectangle(cr, X(0), Y(0), w * scale, h * scale);
+        cairo_stroke(cr);
+        // The spanning tree.
+        std::set<std::pair<kernel::Cell, kernel::Cell>> edges;
+        cairo_set_source_rgba(cr, 0.11, 0.55, 0.20, 0.9);
+        cairo_set_line_width(cr, std::max(1.0, 0.35 * scale));
+        cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+        for (std::size_t i = 1; i < path.size(); ++i) {
+          const kernel::Cell a{path[i - 1].x / 2, path[i - 1].y / 2};
+          const kernel::Cell b{path[i].x / 2, path[i].y / 2};
+          if (a == b || !edges.insert({std::min(a, b), std::max(a, b)}).second) continue;
+          cairo_move_to(cr, X(2 * a.x + 1), Y(2 * a.y + 1));
+          cairo_line_to(cr, X(2 * b.x + 1), Y(2 * b.y + 1));
+        }
+        cairo_stroke(cr);
+        // The tour, coloured along its length: 256 strokes of one colour each.
+        const std::size_t n = path.size();
+        if (n > 1) {
+          cairo_set_line_width(cr, std::max(0.8, 0.22 * scale));
+          cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+          const std::size_t chunks = std::min<std::size_t>(256, n - 1);
+          for (std::size_t c = 0; c < chunks; ++c) {
+            const std::size_t from = c * (n - 1) / chunks, to = (c + 1) * (n - 1) / chunks;
+            const detail::Rgb col = along(static_cast<double>(c) / static_cast<double>(chunks));
+            cairo_set_source_rgb(cr, col.r, col.g, col.b);
+            cairo_move_to(cr, X(path[from].x + 0.5), Y(path[from].y + 0.5));
+            for (std::size_t i = from + 1; i <= to; ++i)
+              cairo_line_to(cr, X(path[i].x + 0.5), Y(path[i].y + 0.5));
+            cairo_stroke(cr);
+          }
+        }
+        if (!path.empty()) {
+          cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
+          cairo_arc(cr, X(path.front().x + 0.5), Y(path.front().y + 0.5),
+                    std::max(4.0, 0.6 * scale), 0, 2 * M_PI);
+          cairo_fill(cr);
+        }
+        // Legend: the tour's colour bar, the tree, the start, obstacles.
+        const double ly = top + h * scale + 24;
+        const double lx = width / 2 - 290;
+        for (int k = 0; k < 100; ++k) {
+          const detail::Rgb col = along(k / 99.0);
+          cairo_set_source_rgb(cr, col.r, col.g, col.b);
+          cairo_rectangle(cr, lx + 1.2 * k, ly - 5, 1.3, 10);
+          cairo_fill(cr);
+        }
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text(cr, lx + 126, ly, "tour, from start to end", 11, 0, 0.5);
+        legend_line(cr, lx + 290, ly, {0.11, 0.55, 0.20}, 4, "spanning tree (cell centres)");
+        cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
+        cairo_arc(cr, lx + 13, ly + 24, 5, 0, 2 * M_PI);
+        cairo_fill(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text(cr, lx + 32, ly + 24, "start", 11, 0, 0.5);
+        cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
+        cairo_rectangle(cr, lx + 290, ly + 19, 26, 10);
+        cairo_fill(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text(cr, lx + 322, ly + 24, "blocked (grey: unknown)", 11, 0, 0.5);
+        caption_lines(cr, caption, width / 2, height - 14);
+      },
+      svg, png);
+}
+
+void save_trails_figure(const std::string& title, const std::string& caption,
+                        const std::vector<TrailPanel>& panels, const std::filesystem::path& svg,
+                        const std::filesystem::path& png) {
+  const double pw = 360, top = 50, inner = 320, bottom = 110;
+  const double width = pw * static_cast<double>(std::max<std::size_t>(1, panels.size()));
+  const double height = top + inner + bottom;
+  detail::render(
+      width, height,
+      [&](cairo_t* cr) {
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_paint(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text(cr, width / 2, 20, title, 16, 0.5, 0.5, true);
+        for (std::size_t k = 0; k < panels.size(); ++k) {
+          const TrailPanel& p = panels[k];
+          double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+          for (const auto& ring : p.rings)
+            for (const auto& [x, y] : ring) {
+              x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y),
+              y1 = std::max(y1, y);
+            }
+          if (!(x1 > x0) || !(y1 > y0)) continue;
+          const double s = inner / std::max(x1 - x0, y1 - y0);
+          const double cx = pw * static_cast<double>(k) + (pw - (x1 - x0) * s) / 2;
+          const double cy = top + (inner - (y1 - y0) * s) / 2;
+          const auto X = [&](double x) { return cx + (x - x0) * s; };
+          const auto Y = [&](double y) { return cy + (y1 - y) * s; };
+          cairo_set_source_rgb(cr, 0, 0, 0);
+          text(cr, pw * (static_cast<double>(k) + 0.5), top - 10, p.title, 12, 0.5, 0.5, true);
+          const auto trail = [&](const std::vector<XY>& pts, detail::Rgb c) {
+            cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.75);
+            cairo_set_line_width(cr, std::max(0.6, 0.1 * s));
+            for (std::size_t i = 0; i < pts.size(); ++i) {
+              const bool jump = i == 0 || std::hypot(pts[i].first - pts[i - 1].first,
+                                                     pts[i].second - pts[i - 1].second) > 1.0;
+              if (jump)
+                cairo_move_to(cr, X(pts[i].first), Y(pts[i].second));
+              else
+                cairo_line_to(cr, X(pts[i].first), Y(pts[i].second));
+            }
+            cairo_stroke(cr);
+          };
+          trail(p.trail1, {0.12, 0.36, 0.85});
+          trail(p.trail2, {0.85, 0.12, 0.12});
+          cairo_set_source_rgb(cr, 0, 0, 0);
+          cairo_set_line_width(cr, 2);
+          for (const auto& ring : p.rings) {
+            for (std::size_t i = 0; i < ring.size(); ++i)
+              (i == 0 ? cairo_move_to : cairo_line_to)(cr, X(ring[i].first), Y(ring[i].second));
+            cairo_close_path(cr);
+            cairo_stroke(cr);
+          }
+        }
+        const double ly = top + inner + 26;
+        legend_line(cr, width / 2 - 230, ly, {0.12, 0.36, 0.85}, 3, "visit 1 (first trail)");
+        legend_line(cr, width / 2 + 20, ly, {0.85, 0.12, 0.12}, 3, "visit 2 (counts crossings)");
+        caption_lines(cr, caption, width / 2, height - 14);
+      },
+      svg, png);
+}
+
+} // namespace antkit::experiments
