@@ -3,18 +3,20 @@
 # own settings and writes what it draws and tabulates into build/demo/:
 #   1. the eight arena families of paper 000 (Figure 3), exact areas;
 #   2. the shared real maps, read and counted;
-#   3. paper 002: ant-like Spanning Tree Coverage of a real map, with the tour drawn;
-#   4. paper 001: two-robot line-of-sight exploration, Tables 2 and 3 beside the paper's;
-#   5. paper 004: uniform coverage, Tables 1-4 beside the paper's;
-#   6. paper 000: Buffon's-needle area measurement of the standard arena;
-#   7. a robot: the Khepera firmware emulator on a pseudo-terminal, two Buffon visits recorded over
+#   3. the four papers reproduced: `antkit reproduce --quick --out build/demo`, whose claims table
+#      (holds / partly / does not hold, with the measured figure) is printed; the report with every
+#      table and figure (SVG and PNG) is build/demo/README.md;
+#   4. a robot: the Khepera firmware emulator on a pseudo-terminal, two Buffon visits recorded over
 #      the tty, replayed bit for bit, and the area computed from the two logs.
 set -euo pipefail
 antkit=${1:-build/release/cli/antkit}
 out=${DEMO_OUT:-build/demo}
 here=$(cd "$(dirname "$0")/.." && pwd)
 maps="$here/../shared/maps"
-mkdir -p "$out" "$out/explore" "$out/cover"
+mkdir -p "$out"
+# Absolute, so that the sections that run from the checkout find them.
+antkit=$(realpath "$antkit")
+out=$(cd "$out" && pwd)
 
 section() { printf '\n== %s\n' "$*"; }
 
@@ -41,27 +43,13 @@ if [ -d "$maps" ]; then
         printf '%-36s %9s %9s %9s %9s %10s\n' "$n" "$size" "$free" "$blocked" "$unknown" "$comps"
       done
   done
-
-  section "Paper 002: ant-like STC on den312d (tour drawn in $out/stc-den312d.svg)"
-  "$antkit" stc --map "$maps/movingai/den312d.map" --variant ant \
-    --svg "$out/stc-den312d.svg" --format json |
-    jq -r '"variant \(.variant): \(.reachable_subcells) reachable sub-cells, \(.covered) covered, \(.repeats) repeats, returned to start: \(.returned_to_start), hash \(.hash)"'
 else
   section "../shared/maps not found beside the checkout: skipping the real maps"
 fi
 
-section "Paper 001: fast wall-follow vs the frontier baseline (Tables 2 and 3)"
-"$antkit" explore --size 25x25 --obstacles 5 --seed 1 --algo fast-wall-follow \
-  --svg "$out/explore-25x25.svg" >/dev/null
-"$antkit" explore-tables --out "$out/explore" >/dev/null
-cat "$out/explore/table3.md"
-
-section "Paper 004: uniform coverage (Tables 1-4)"
-"$antkit" cover-experiment --out "$out/cover" >/dev/null
-cat "$out/cover/uniform_tables.md"
-
-section "Paper 000: Buffon's-needle area measurement of the standard arena"
-"$antkit" buffon --arena standard --trials 8 --svg "$out/buffon-standard.svg"
+section "The papers reproduced: antkit reproduce --quick (report: $out/README.md)"
+# From the checkout, so that the report's command names the maps as ../shared/maps.
+(cd "$here" && "$antkit" reproduce --quick --out "$out")
 
 section "A robot over a serial link: Khepera emulator, two recorded visits, replay, area from logs"
 emu_out="$out/emulator.txt"

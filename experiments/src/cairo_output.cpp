@@ -3,9 +3,13 @@
 #include <antkit/experiments/plot.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <cairo-svg.h>
+#include <cctype>
 #include <cstdio>
 #include <fontconfig/fontconfig.h>
+#include <fstream>
+#include <map>
 #include <memory>
+#include <sstream>
 #include <unistd.h>
 
 namespace antkit::experiments {
@@ -33,6 +37,43 @@ void publish(const std::filesystem::path& tmp, const std::filesystem::path& path
     std::filesystem::remove(tmp, ec);
     throw kernel::InputError(path.string(), "could not write the figure: " + ec.message());
   }
+}
+
+// Cairo names the SVG's groups after a process-wide count of the surfaces it has made
+// (id="surface37"), so the same drawing made twice in one process differs in those names. They are
+// renumbered here in order of appearance (references move with them), so that a figure's bytes
+// depend only on the drawing.
+void renumber_surfaces(const std::filesystem::path& svg) {
+  std::string text;
+  {
+    std::ifstream in(svg, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    text = s.str();
+  }
+  std::map<std::string, std::string> names;
+  std::string out;
+  out.reserve(text.size());
+  const std::string key = "surface";
+  std::size_t at = 0;
+  for (std::size_t hit; (hit = text.find(key, at)) != std::string::npos;) {
+    std::size_t end = hit + key.size();
+    while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])) != 0) ++end;
+    out.append(text, at, hit - at);
+    const std::string name = text.substr(hit, end - hit);
+    if (end == hit + key.size()) {
+      out += name;
+    } else {
+      auto [it, fresh] = names.try_emplace(name, "");
+      if (fresh) it->second = key + std::to_string(names.size());
+      out += it->second;
+    }
+    at = end;
+  }
+  out.append(text, at, std::string::npos);
+  std::ofstream rewrite(svg, std::ios::binary | std::ios::trunc);
+  rewrite << out;
+  if (!rewrite.flush()) throw kernel::InputError(svg.string(), "could not write the figure");
 }
 
 } // namespace
@@ -75,6 +116,7 @@ void render(double width, double height, const std::function<void(cairo_t*)>& dr
       cairo_surface_finish(surface.get());
       check(cairo_surface_status(surface.get()), svg);
     }
+    renumber_surfaces(svg_tmp);
     {
       std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
           cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(width),

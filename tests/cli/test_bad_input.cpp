@@ -284,6 +284,13 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"buffon --arena circle:d=10 --bogus", "The following argument was not expected: --bogus",
        ""},
       {"buffon-experiment --figure 4 --out {D}/outdir", "--figure:", "5, 6, 7, 8, 9 or 14"},
+      // reproduce (the runs themselves are tested in tests/experiments)
+      {"reproduce --only los,sheng --out {D}/outdir", "--only:", "'sheng'"},
+      {"reproduce --quick --full --out {D}/outdir", "--full:", "not both"},
+      {"reproduce --threads 0 --out {D}/outdir", "--threads:", "1 to 256"},
+      {"reproduce --only los --out /proc/antkit-reproduce", "--out:", "cannot make"},
+      {"reproduce --only los", "--out is required", ""},
+      {"cover-experiment --sensor-model sonar --runs 1", "--sensor-model:", "'sonar'"},
       {"arena circle:d=1e400 --raster 1 --out {D}/out.map", "SPEC:1:10:", "bad number"},
       {"arena circle:d= --raster 1 --out {D}/out.map", "SPEC:1:10:", "bad number"},
       {"arena standard --raster abc --out {D}/out.map", "--raster:", "'abc'"},

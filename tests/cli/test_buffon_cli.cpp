@@ -51,7 +51,7 @@ TEST_CASE("antkit buffon rejects bad arenas and parameters with exit 2") {
   }
 }
 
-TEST_CASE("antkit buffon-experiment writes the figure's CSV and SVG") {
+TEST_CASE("antkit buffon-experiment writes the figure's CSV, SVG and PNG") {
   const auto dir =
       std::filesystem::temp_directory_path() / ("antkit-buffon-exp-" + std::to_string(::getpid()));
   const auto r =
@@ -65,6 +65,8 @@ TEST_CASE("antkit buffon-experiment writes the figure's CSV and SVG") {
   while (std::getline(csv, line)) ++rows;
   CHECK(rows == 4); // standard, ring, plus, obstacles
   CHECK(std::filesystem::file_size(dir / "figure8.svg") > 100);
+  CHECK(std::filesystem::file_size(dir / "figure8.png") > 1000);
+  CHECK(r.err.find("trace hash ") != std::string::npos);
   std::filesystem::remove_all(dir);
 
   const auto bad = run_antkit("buffon-experiment --figure 3 --out " + dir.string());

@@ -1,0 +1,180 @@
+// `antkit reproduce [--quick | --full] [--only buffon,los,stc,uniform] [--threads T] [--seed S]
+//                   [--maps DIR] --out DIR [--format table|json]`: every paper's experiments in
+// one run, with the claims table (issue 15). The experiments, the report and the verdicts are
+// documented in experiments/include/antkit/experiments/reproduce.hpp.
+//
+//   mpirun -n K antkit reproduce --full ...   splits the trials across K MPI ranks; rank 0
+//                                             gathers them and writes the same files
+//
+// Prints the claims table (or, with --format json, the verdicts and the files) on stdout and
+// progress on stderr: a live bar with the time left on a terminal, a line per quarter of each
+// stage otherwise. Exit status 0 whatever the verdicts (a claim that does not hold is a finding,
+// not an error), 2 for bad options.
+#include "commands.hpp"
+#include "output.hpp"
+
+#include <antkit/experiments/plot.hpp>
+#include <antkit/experiments/reproduce.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unistd.h>
+#if ANTKIT_HAVE_MPI
+#include <antkit/mpi/session.hpp>
+#endif
+
+namespace {
+
+namespace ex = antkit::experiments;
+using antkit::kernel::InputError;
+
+struct ReproduceCommand {
+  bool quick = false, full = false;
+  std::string only;
+  std::int64_t threads = 2;
+  std::uint64_t seed = 1;
+  std::string maps = "../shared/maps";
+  std::string out;
+  antkit::cli::Format format = antkit::cli::Format::Table;
+};
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> parts;
+  std::size_t from = 0;
+  while (from <= s.size()) {
+    const auto comma = std::min(s.find(',', from), s.size());
+    parts.push_back(s.substr(from, comma - from));
+    from = comma + 1;
+  }
+  return parts;
+}
+
+void make_out_dir(const std::string& out) {
+  std::error_code ec;
+  std::filesystem::create_directories(out, ec);
+  if (!std::filesystem::is_directory(out))
+    throw InputError("--out", "cannot make the directory '" + out + "'");
+}
+
+void run(const ReproduceCommand& c) {
+  if (c.quick && c.full) throw InputError("--full", "give --quick or --full, not both");
+  if (c.threads < 1 || c.threads > 256)
+    throw InputError("--threads", "expected 1 to 256 threads, not " + std::to_string(c.threads));
+  ex::ReproduceOptions o;
+  o.scale = c.full ? ex::Scale::Full : ex::Scale::Quick;
+  if (!c.only.empty()) o.only = split(c.only);
+  o.seed = c.seed;
+  o.out = c.out;
+  o.maps_dir = c.maps;
+  ex::validate(o);
+
+  const auto start = std::chrono::steady_clock::now();
+  const auto seconds = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  ex::Runner runner;
+  runner.threads = static_cast<unsigned>(c.threads);
+  auto stage_start = std::make_shared<std::pair<std::string, double>>();
+  runner.progress = [tty, stage_start, seconds](std::string_view stage, std::uint64_t done,
+                                                std::uint64_t total) {
+    if (stage_start->first != stage) *stage_start = {std::string(stage), seconds()};
+    const double elapsed = seconds() - stage_start->second;
+    if (tty) {
+      const int filled = static_cast<int>(30.0 * static_cast<double>(done) /
+                                          static_cast<double>(std::max<std::uint64_t>(total, 1)));
+      const double left =
+          done > 0 ? elapsed / static_cast<double>(done) * static_cast<double>(total - done) : 0.0;
+      std::cerr << "\r" << stage << " [" << std::string(static_cast<std::size_t>(filled), '#')
+                << std::string(static_cast<std::size_t>(30 - filled), '.') << "] " << done << "/"
+                << total << ", about " << std::fixed << std::setprecision(0) << left << " s left   "
+                << std::defaultfloat << std::setprecision(6) << (done == total ? "\n" : "")
+                << std::flush;
+    } else if (done == total || (4 * done) / total != (4 * (done - 1)) / total) {
+      std::cerr << "reproduce: " << stage << ": " << done << "/" << total << " units, "
+                << std::fixed << std::setprecision(1) << elapsed << " s" << std::defaultfloat
+                << std::setprecision(6) << '\n';
+    }
+  };
+
+  ex::ReproduceReport report;
+  int ranks = 1;
+#if ANTKIT_HAVE_MPI
+  std::optional<antkit::mpi::Session> session;
+  if (antkit::mpi::launched()) {
+    session.emplace();
+    ranks = session->size();
+    std::string refused; // rank 0 makes the directory; every rank learns whether it could
+    if (session->rank() == 0) {
+      try {
+        make_out_dir(c.out);
+      } catch (const InputError& e) {
+        refused = e.message();
+      }
+    }
+    if (!session->all(refused.empty())) {
+      if (session->rank() == 0) throw InputError("--out", refused);
+      return;
+    }
+    runner.rank = session->rank();
+    runner.ranks = session->size();
+    runner.gather = [&](const std::string& mine) { return session->gather_to_root(mine); };
+    if (session->rank() != 0) runner.progress = {};
+    report = ex::reproduce(o, runner);
+    if (session->rank() != 0) return;
+  } else
+#endif
+  {
+    make_out_dir(c.out);
+    report = ex::reproduce(o, runner);
+  }
+  ex::release_drawing_caches();
+  std::cerr << "reproduce: done in " << std::fixed << std::setprecision(1) << seconds() << " s ("
+            << runner.threads << " thread(s) x " << ranks << " rank(s)); report in "
+            << (std::filesystem::path(c.out) / "README.md").string() << '\n'
+            << std::defaultfloat << std::setprecision(6);
+  if (c.format == antkit::cli::Format::Json) {
+    nlohmann::json j;
+    nlohmann::json claims = nlohmann::json::array();
+    for (const auto& claim : report.claims)
+      claims.push_back({{"id", claim.id},
+                        {"verdict", ex::verdict_text(claim.verdict)},
+                        {"measured", claim.measured}});
+    j["claims"] = std::move(claims);
+    nlohmann::json files = nlohmann::json::array();
+    for (const auto& f : report.files) files.push_back((std::filesystem::path(c.out) / f).string());
+    j["files"] = std::move(files);
+    j["seconds"] = seconds();
+    j["ranks"] = ranks;
+    antkit::cli::emit(j, c.format, std::cout);
+  } else {
+    std::cout << ex::claims_markdown(report.claims);
+  }
+}
+
+void register_reproduce(CLI::App& app) {
+  auto c = std::make_shared<ReproduceCommand>();
+  auto* sub = app.add_subcommand(
+      "reproduce", "Every paper's experiments in one run: tables, figures (SVG and PNG) and a "
+                   "claims table with verdicts, in DIR/README.md and DIR/claims.json");
+  sub->add_flag("--quick", c->quick, "Fewer trials (the default; stated in the report)");
+  sub->add_flag("--full", c->full, "The papers' trial counts");
+  sub->add_option("--only", c->only, "Comma-separated: buffon, los, stc, uniform (default: all)");
+  sub->add_option("--threads", c->threads, "Threads (default 2; per MPI rank)");
+  sub->add_option("--seed", c->seed, "Seed of the keyed streams (default 1)");
+  sub->add_option("--maps", c->maps,
+                  "The shared maps for paper 002 (default ../shared/maps; when missing, random "
+                  "maps only)");
+  sub->add_option("--out", c->out, "Output directory")->required();
+  antkit::cli::add_format_option(*sub, c->format);
+  sub->callback([c] { run(*c); });
+}
+
+const antkit::cli::Registration reg{"reproduce", &register_reproduce};
+
+} // namespace

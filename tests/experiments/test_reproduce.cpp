@@ -1,0 +1,131 @@
+// antkit::experiments::reproduce, called as a library: the files, the claims, their agreement
+// with the tables they are decided from, and byte-identical output for any number of threads.
+#include <antkit/experiments/explore_tables.hpp>
+#include <antkit/experiments/reproduce.hpp>
+#include <antkit/kernel/hash.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+namespace ex = antkit::experiments;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::map<std::string, std::string> tree(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = slurp(e.path());
+  return files;
+}
+
+ex::ReproduceOptions options(const fs::path& out) {
+  ex::ReproduceOptions o;
+  o.only = {"los", "stc"};
+  o.out = out;
+  o.maps_dir = fs::path(ANTKIT_SHARED_DIR) / "maps";
+  return o;
+}
+
+} // namespace
+
+TEST_CASE("reproduce writes the report, the tables and the figures, and decides the claims") {
+  const fs::path dir =
+      fs::temp_directory_path() / ("antkit-reproduce-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  ex::Runner runner;
+  runner.threads = 2;
+  const auto report = ex::reproduce(options(dir), runner);
+
+  std::set<std::string> ids;
+  for (const auto& c : report.claims) ids.insert(c.id);
+  CHECK(ids ==
+        std::set<std::string>{"001-1", "001-2", "001-3", "001-3b", "001-4", "002-1", "002-full"});
+  for (const char* f : {"README.md", "claims.json", "los/table2.csv", "los/table3.md",
+                        "los/figures5-6.png", "los/figures5-6.svg", "stc/tours.csv",
+                        "stc/noise.csv", "stc/noise.png", "stc/tour.png", "stc/tour.svg"}) {
+    INFO(f);
+    REQUIRE(fs::exists(dir / f));
+    CHECK(fs::file_size(dir / f) > 100);
+  }
+  CHECK(slurp(dir / "stc/tour.png").substr(1, 3) == "PNG");
+  CHECK(report.files.size() == tree(dir).size());
+
+  // Ant-like STC's tours are exact on every map: the claim holds (an invariant, not a statistic).
+  for (const auto& c : report.claims)
+    if (c.id == "002-1" || c.id == "002-full") CHECK(c.verdict == ex::Verdict::Holds);
+
+  // 001-3 counts the environments where fast wall-follow's mean E.M.E is below the frontier
+  // baseline's (without sweeping): recount it from the tables.
+  const auto tables = ex::run_explore_tables(1, ex::Runner{});
+  std::size_t better = 0;
+  for (const auto& env : tables.runs) better += ex::mean_of(env[0].eme) < ex::mean_of(env[1].eme);
+  for (const auto& c : report.claims)
+    if (c.id == "001-3") {
+      CHECK(c.measured.rfind(std::to_string(better) + " of 7 environments", 0) == 0);
+      CHECK(c.verdict == (better == 7   ? ex::Verdict::Holds
+                          : better == 0 ? ex::Verdict::DoesNotHold
+                                        : ex::Verdict::Partly));
+    }
+
+  // claims.json says what the report says; README.md has every claim, rule and hash.
+  const auto j = nlohmann::json::parse(slurp(dir / "claims.json"));
+  REQUIRE(j["claims"].size() == report.claims.size());
+  for (std::size_t i = 0; i < report.claims.size(); ++i) {
+    CHECK(j["claims"][i]["id"] == report.claims[i].id);
+    CHECK(j["claims"][i]["verdict"] == ex::verdict_text(report.claims[i].verdict));
+  }
+  const std::string readme = slurp(dir / "README.md");
+  for (const auto& c : report.claims) CHECK(readme.find("| " + c.id + " |") != std::string::npos);
+  for (const auto& e : report.experiments) {
+    CHECK(e.hash != 0);
+    CHECK(readme.find(antkit::kernel::hash_hex(e.hash)) != std::string::npos);
+  }
+  CHECK(readme.find("## Trace hashes") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("reproduce writes the same bytes for any number of threads", "[property]") {
+  const fs::path base =
+      fs::temp_directory_path() / ("antkit-reproduce-t-" + std::to_string(::getpid()));
+  fs::remove_all(base);
+  std::map<std::string, std::string> first;
+  for (const unsigned threads : {1u, 3u}) {
+    const fs::path dir = base / std::to_string(threads);
+    fs::create_directories(dir);
+    ex::Runner runner;
+    runner.threads = threads;
+    (void)ex::reproduce(options(dir), runner);
+    const auto files = tree(dir);
+    if (first.empty())
+      first = files;
+    else
+      for (const auto& [name, bytes] : files) {
+        INFO(name);
+        CHECK(bytes == first[name]);
+      }
+  }
+  fs::remove_all(base);
+}
+
+TEST_CASE("reproduce refuses an unknown family") {
+  ex::ReproduceOptions o;
+  o.only = {"los", "sheng"};
+  CHECK_THROWS_AS(ex::validate(o), antkit::kernel::InputError);
+  o.only = {"buffon", "los", "stc", "uniform"};
+  CHECK_NOTHROW(ex::validate(o));
+}
