@@ -2,7 +2,16 @@
 // marker-noise experiment (coverage and repeats against the probability that a mark is misread).
 //
 //   antkit stc --map FILE --variant offline|online|ant|ant-edge|full [--start X,Y]
-//              [--noise P --seed S] [--format table|json] [--svg FILE]
+//              [--noise P --seed S] [--format table|json] [--path-out FILE.csv|FILE.bin]
+//              [--svg FILE] [--png FILE]
+//
+// At scale (issue 15): the tour is streamed as it is made, never held (unless a picture is asked
+// for): `--format json` writes the path into stdout as the run goes, `--path-out` into a file (CSV
+// "x,y" lines, or the two-bits-per-move binary of stc/path_format.hpp for a .bin name; written to
+// a temporary name and renamed), and the checks the command runs (covered, repeats, return) are
+// the run's own counts on one bit per sub-cell. Offline takes the library's fast path. JSON keys,
+// in order: variant, width, height, start, path, reachable_subcells, covered, repeats,
+// returned_to_start, hash (and noise_ppm, seed with --noise).
 //   antkit stc-noise --map FILE [--variant ant|ant-edge] [--start X,Y] [--levels P,P,...]
 //              [--trials N] [--seed S] [--format table|json]
 //
@@ -12,19 +21,25 @@
 // its invariants (it never should: that is a failed check, not bad input).
 #include "commands.hpp"
 #include "output.hpp"
-#include "svg.hpp"
 
 #include <algorithm>
 #include <antkit/algorithms/options.hpp>
+#include <antkit/experiments/drawing.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
+#include <antkit/stc/path_format.hpp>
 #include <antkit/stc/world.hpp>
+#include <charconv>
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <set>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -44,7 +59,7 @@ struct StcOptions {
   std::string start;
   std::string noise;
   std::uint64_t seed = 0;
-  std::string svg;
+  std::string svg, png, path_out;
   Format format = Format::Table;
 };
 
@@ -67,27 +82,118 @@ Cell choose_start(const antkit::maps::GridMap& map, Variant variant, const std::
                              : "the map has no free sub-cell to start in");
 }
 
-void draw_svg(const std::string& file, const OccupancyGrid& map, const RunResult& r) {
-  const double side = std::max(map.width(), map.height());
-  const double scale = std::clamp(1200.0 / side, 2.0, 24.0);
-  antkit::cli::Svg svg(0, 0, map.width(), map.height(), scale, true);
-  svg.rect(0, 0, map.width(), map.height(), "#ffffff");
-  svg.grid_cells(map, "#333333", "#999999");
-  // The spanning tree: an edge between the centres of two cells each time the tour first crosses
-  // between them.
-  std::set<std::pair<Cell, Cell>> edges;
-  for (std::size_t i = 1; i < r.path.size(); ++i) {
-    const Cell a = cell_of(r.path[i - 1]), b = cell_of(r.path[i]);
-    if (a == b || !edges.insert({std::min(a, b), std::max(a, b)}).second) continue;
-    svg.line(2 * a.x + 1, 2 * a.y + 1, 2 * b.x + 1, 2 * b.y + 1, "#2e7d32", 0.25);
+// stdout or a file, through a large buffer; numbers written with to_chars.
+class Out {
+public:
+  explicit Out(std::FILE* f) : f_(f) { buf_.reserve(kBuffer + 64); }
+  ~Out() { flush(); }
+  Out(const Out&) = delete;
+  Out& operator=(const Out&) = delete;
+  Out& operator<<(std::string_view s) {
+    buf_.append(s);
+    if (buf_.size() >= kBuffer) flush();
+    return *this;
   }
-  std::vector<std::pair<double, double>> points;
-  points.reserve(r.path.size());
-  for (const Cell s : r.path) points.emplace_back(s.x + 0.5, s.y + 0.5);
-  svg.polyline(points, "#1565c0", 0.12);
-  if (!r.path.empty()) svg.circle(r.path.front().x + 0.5, r.path.front().y + 0.5, 0.35, "#c62828");
-  svg.save(file);
-}
+  Out& operator<<(std::int64_t v) {
+    char digits[24];
+    const auto end = std::to_chars(digits, digits + sizeof digits, v).ptr;
+    return *this << std::string_view(digits, static_cast<std::size_t>(end - digits));
+  }
+  void flush() {
+    if (!buf_.empty() && std::fwrite(buf_.data(), 1, buf_.size(), f_) != buf_.size())
+      failed_ = true;
+    buf_.clear();
+  }
+  [[nodiscard]] bool failed() const { return failed_ || std::ferror(f_) != 0; }
+
+private:
+  static constexpr std::size_t kBuffer = std::size_t{1} << 20;
+  std::FILE* f_;
+  std::string buf_;
+  bool failed_ = false;
+};
+
+// --path-out: CSV or the binary path, written beside its name and renamed when complete.
+class PathFile {
+public:
+  PathFile(const std::string& name, const OccupancyGrid& map, Cell start)
+      : final_(name), binary_(std::filesystem::path(name).extension() == ".bin") {
+    const auto ext = std::filesystem::path(name).extension();
+    if (!binary_ && ext != ".csv")
+      throw InputError("--path-out", "'" + name + "': give a .csv or a .bin file name");
+    tmp_ = final_.parent_path() /
+           ("." + final_.filename().string() + ".tmp-" + std::to_string(::getpid()));
+    file_ = std::fopen(tmp_.c_str(), "wb");
+    if (!file_) throw InputError("--path-out", "cannot write '" + name + "'");
+    out_.emplace(file_);
+    if (binary_)
+      *out_ << path_format::header(map.width(), map.height(), start, 0);
+    else
+      *out_ << "x,y\n";
+  }
+  ~PathFile() {
+    if (!file_) return;
+    out_.reset();
+    std::fclose(file_);
+    std::error_code ec;
+    std::filesystem::remove(tmp_, ec); // not committed: no partial file is left
+  }
+  PathFile(const PathFile&) = delete;
+  PathFile& operator=(const PathFile&) = delete;
+
+  void add(SubCell s) {
+    if (!binary_) {
+      *out_ << std::int64_t{s.x} << "," << std::int64_t{s.y} << "\n";
+      return;
+    }
+    if (moves_ > 0 || have_last_) {
+      const int code = path_format::move_code(last_, s);
+      if (code < 0) throw std::logic_error("a tour move that is not 4-adjacent");
+      byte_ = static_cast<unsigned char>(byte_ | (code << (2 * (moves_ % 4))));
+      if (++moves_ % 4 == 0) {
+        const char c = static_cast<char>(byte_);
+        *out_ << std::string_view(&c, 1);
+        byte_ = 0;
+      }
+    }
+    have_last_ = true;
+    last_ = s;
+  }
+
+  void commit() {
+    if (binary_ && moves_ % 4 != 0) {
+      const char c = static_cast<char>(byte_);
+      *out_ << std::string_view(&c, 1);
+    }
+    out_->flush();
+    bool ok = !out_->failed();
+    if (binary_) { // the number of moves, now known
+      std::string count;
+      path_format::put_le(count, moves_, 8);
+      ok =
+          ok && std::fseek(file_, 24, SEEK_SET) == 0 && std::fwrite(count.data(), 1, 8, file_) == 8;
+    }
+    out_.reset();
+    ok = std::fclose(file_) == 0 && ok;
+    file_ = nullptr;
+    std::error_code ec;
+    if (ok) std::filesystem::rename(tmp_, final_, ec);
+    if (!ok || ec) {
+      std::filesystem::remove(tmp_, ec);
+      throw InputError("--path-out", "could not write '" + final_.string() + "'");
+    }
+  }
+
+private:
+  std::filesystem::path final_, tmp_;
+  bool binary_;
+  std::FILE* file_ = nullptr;
+  std::optional<Out> out_;
+  std::uint64_t moves_ = 0;
+  bool have_last_ = false;
+  SubCell last_{};
+  unsigned char byte_ = 0;
+};
 
 void run_stc_command(const StcOptions& o) {
   const Variant variant = parse_variant_option(o.variant);
@@ -101,11 +207,78 @@ void run_stc_command(const StcOptions& o) {
   }
   const auto map = antkit::maps::load_map(o.map);
   const Cell start = choose_start(map, variant, o.start, o.map);
+  // Every bad input is refused before the first byte of output: the path file is opened here, and
+  // run_stc checks the start before the first position, which writes the JSON's head.
+  std::optional<PathFile> path_file;
+  if (!o.path_out.empty()) path_file.emplace(o.path_out, map.cells, start);
+  const bool json = o.format == Format::Json;
+  std::optional<Out> out;
+  std::int64_t written = 0;
+  const auto head = [&] {
+    out.emplace(stdout);
+    *out << "{\n  \"variant\": \"" << variant_name(variant)
+         << "\",\n  \"width\": " << std::int64_t{map.cells.width()}
+         << ",\n  \"height\": " << std::int64_t{map.cells.height()} << ",\n  \"start\": ["
+         << std::int64_t{start.x} << ", " << std::int64_t{start.y} << "],\n  \"path\": [";
+  };
+  run.record_path = !o.svg.empty() || !o.png.empty();
+  if (json || path_file)
+    run.on_position = [&](SubCell s) {
+      if (json) {
+        if (written == 0) head();
+        *out << (written == 0       ? "\n    ["
+                 : written % 8 == 0 ? ",\n    ["
+                                    : ", [")
+             << std::int64_t{s.x} << ", " << std::int64_t{s.y} << "]";
+        ++written;
+      }
+      if (path_file) path_file->add(s);
+    };
   RunResult r;
   try {
     r = run_stc(map.cells, start, variant, run);
   } catch (const InputError& e) { // name the option or the file the start came from
     throw InputError(o.start.empty() ? o.map : "--start", e.message());
+  }
+  if (path_file) path_file->commit();
+  if (!o.svg.empty() || !o.png.empty())
+    antkit::experiments::save_tour_figure(
+        map.cells, r.path,
+        std::string(variant_name(variant)) + " STC on " +
+            std::filesystem::path(o.map).filename().string(),
+        std::to_string(r.reachable_subcells) + " reachable sub-cells, " +
+            std::to_string(r.covered) + " covered, " + std::to_string(r.repeats) +
+            " repeats, back at the start cell: " + (r.returned_to_start ? "yes" : "no") + ".",
+        o.svg, o.png);
+  if (json) {
+    if (!out) head();
+    *out << (written > 0 ? "\n  ],\n" : "],\n")
+         << "  \"reachable_subcells\": " << r.reachable_subcells
+         << ",\n  \"covered\": " << r.covered << ",\n  \"repeats\": " << r.repeats
+         << ",\n  \"returned_to_start\": " << (r.returned_to_start ? "true" : "false")
+         << ",\n  \"hash\": \"" << antkit::kernel::hash_hex(r.hash) << "\"";
+    if (!o.noise.empty())
+      *out << ",\n  \"noise_ppm\": " << std::int64_t{run.noise.ppm}
+           << ",\n  \"seed\": " << static_cast<std::int64_t>(o.seed);
+    *out << "\n}\n";
+    out->flush();
+  } else {
+    nlohmann::json j;
+    j["variant"] = std::string(variant_name(variant));
+    j["width"] = map.cells.width();
+    j["height"] = map.cells.height();
+    j["start"] = {start.x, start.y};
+    j["path"] = "(" + std::to_string(r.positions) + " items; use --format json)";
+    j["reachable_subcells"] = r.reachable_subcells;
+    j["covered"] = r.covered;
+    j["repeats"] = r.repeats;
+    j["returned_to_start"] = r.returned_to_start;
+    j["hash"] = antkit::kernel::hash_hex(r.hash);
+    if (!o.noise.empty()) {
+      j["noise_ppm"] = run.noise.ppm;
+      j["seed"] = o.seed;
+    }
+    antkit::cli::emit(j, o.format, std::cout);
   }
   if (o.noise.empty() || run.noise.ppm == 0) {
     const bool ok = r.closed && r.returned_to_start && r.covered == r.reachable_subcells &&
@@ -116,25 +289,6 @@ void run_stc_command(const StcOptions& o) {
           std::to_string(r.covered) + " of " + std::to_string(r.reachable_subcells) + ", repeats " +
           std::to_string(r.repeats) + ")");
   }
-  if (!o.svg.empty()) draw_svg(o.svg, map.cells, r);
-  nlohmann::json j;
-  j["variant"] = std::string(variant_name(variant));
-  j["width"] = map.cells.width();
-  j["height"] = map.cells.height();
-  j["start"] = {start.x, start.y};
-  nlohmann::json path = nlohmann::json::array();
-  for (const Cell s : r.path) path.push_back({s.x, s.y});
-  j["path"] = std::move(path);
-  j["reachable_subcells"] = r.reachable_subcells;
-  j["covered"] = r.covered;
-  j["repeats"] = r.repeats;
-  j["returned_to_start"] = r.returned_to_start;
-  j["hash"] = antkit::kernel::hash_hex(r.hash);
-  if (!o.noise.empty()) {
-    j["noise_ppm"] = run.noise.ppm;
-    j["seed"] = o.seed;
-  }
-  antkit::cli::emit(j, o.format, std::cout);
 }
 
 struct NoiseOptions {
@@ -220,7 +374,13 @@ void register_stc(CLI::App& app) {
                   "Probability that one mark reading is misread, missed or phantom (ant and "
                   "ant-edge), a decimal with at most six places");
   cmd->add_option("--seed", o->seed, "Seed of the keyed noise stream (default 0)");
-  cmd->add_option("--svg", o->svg, "Write a picture: obstacles, spanning tree, tour");
+  cmd->add_option("--svg", o->svg,
+                  "Write a picture (SVG): obstacles, spanning tree, the tour coloured along its "
+                  "length, legend (keeps the path in memory)");
+  cmd->add_option("--png", o->png, "The same picture as PNG");
+  cmd->add_option("--path-out", o->path_out,
+                  "Stream the tour into FILE.csv (x,y lines) or FILE.bin (two bits per move, "
+                  "stc/path_format.hpp); antkit check stc reads both");
   antkit::cli::add_format_option(*cmd, o->format);
   cmd->callback([o] { run_stc_command(*o); });
 

@@ -14,6 +14,7 @@ packages=(
   libz3-dev coq libcairo2-dev
   g++-s390x-linux-gnu qemu-user
   libopenmpi-dev openmpi-bin
+  time
 )
 
 missing=()

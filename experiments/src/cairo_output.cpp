@@ -105,7 +105,7 @@ void render(double width, double height, const std::function<void(cairo_t*)>& dr
     std::filesystem::remove(png_tmp, ec);
   };
   try {
-    {
+    if (!svg.empty()) {
       std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
           cairo_svg_surface_create(svg_tmp.c_str(), width, height), &cairo_surface_destroy);
       check(cairo_surface_status(surface.get()), svg);
@@ -115,9 +115,9 @@ void render(double width, double height, const std::function<void(cairo_t*)>& dr
       check(cairo_status(cr.get()), svg);
       cairo_surface_finish(surface.get());
       check(cairo_surface_status(surface.get()), svg);
+      renumber_surfaces(svg_tmp);
     }
-    renumber_surfaces(svg_tmp);
-    {
+    if (!png.empty()) {
       std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
           cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(width),
                                      static_cast<int>(height)),
@@ -129,8 +129,8 @@ void render(double width, double height, const std::function<void(cairo_t*)>& dr
       check(cairo_status(cr.get()), png);
       check(cairo_surface_write_to_png(surface.get(), png_tmp.c_str()), png);
     }
-    publish(svg_tmp, svg);
-    publish(png_tmp, png);
+    if (!svg.empty()) publish(svg_tmp, svg);
+    if (!png.empty()) publish(png_tmp, png);
   } catch (...) {
     cleanup();
     throw;

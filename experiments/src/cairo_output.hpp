@@ -9,7 +9,8 @@
 namespace antkit::experiments::detail {
 
 // Draws `draw` on a width x height SVG surface and on a PNG image of the same size; each file is
-// written to a temporary name beside it and renamed, so no partial file is left. Throws
+// written to a temporary name beside it and renamed, so no partial file is left (an empty path:
+// that file is not made). Throws
 // kernel::InputError(path, ...) when a file cannot be written.
 void render(double width, double height, const std::function<void(cairo_t*)>& draw,
             const std::filesystem::path& svg, const std::filesystem::path& png);

@@ -125,7 +125,7 @@ void save_tour_figure(const kernel::OccupancyGrid& map, std::span<const kernel::
         if (!path.empty()) {
           cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
           cairo_arc(cr, X(path.front().x + 0.5), Y(path.front().y + 0.5),
-                    std::max(4.0, 0.6 * scale), 0, 2 * M_PI);
+                    std::max(4.0, 0.35 * scale), 0, 2 * M_PI);
           cairo_fill(cr);
         }
         // Legend: the tour's colour bar, the tree, the start, obstacles.

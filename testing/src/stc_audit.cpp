@@ -2,6 +2,7 @@
 
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
+#include <antkit/stc/path_format.hpp>
 #include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
 #include <array>
@@ -255,6 +256,10 @@ StcAudit audit_stc_tour(const OccupancyGrid& map, Cell start, std::span<const Ce
 }
 
 TourFile read_tour(std::string_view text, const std::string& source) {
+  if (stc::path_format::is_binary(text)) {
+    auto d = stc::path_format::decode(text, source, kMaxPositions);
+    return {std::move(d.path), d.start};
+  }
   std::size_t i = 0;
   while (i < text.size() && (blank(text[i]) || text[i] == '\n' || text[i] == '\r')) ++i;
   if (i == text.size()) throw InputError(source, "empty: no tour");

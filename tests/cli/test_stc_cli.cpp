@@ -147,18 +147,72 @@ TEST_CASE("antkit stc: bad input exits 2 with one clear message and no output", 
   CHECK(run_antkit("stc --map " + partial.string() + " --variant full --start 0,0").status == 0);
 }
 
-TEST_CASE("antkit stc --svg draws obstacles - tree and tour", "[cli][stc]") {
+TEST_CASE("antkit stc --svg and --png draw obstacles - tree and tour", "[cli][stc]") {
   const auto map = temp_file("svg.txt", "........\n........\n..##....\n..##....\n");
-  const auto svg = std::filesystem::temp_directory_path() /
-                   ("antkit-stc-cli-" + std::to_string(::getpid())) / "tour.svg";
-  const auto r = run_antkit("stc --map " + map.string() + " --variant ant --svg " + svg.string());
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("antkit-stc-cli-" + std::to_string(::getpid()));
+  const auto svg = dir / "tour.svg", png = dir / "tour.png";
+  std::filesystem::create_directories(dir);
+  const auto r = run_antkit("stc --map " + map.string() + " --variant ant --svg " + svg.string() +
+                            " --png " + png.string());
   REQUIRE(r.status == 0);
   std::ifstream in(svg);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK(text.find("<svg") != std::string::npos);
-  CHECK(text.find("<polyline") != std::string::npos); // the tour
-  CHECK(text.find("#2e7d32") != std::string::npos);   // tree edges
-  CHECK(text.find("#333333") != std::string::npos);   // obstacles
+  CHECK(text.find("rgb(11%,55%,20%)") != std::string::npos); // the spanning tree's green
+  CHECK(text.find("rgb(25%,25%,25%)") != std::string::npos); // obstacles
+  // The tour's strokes run from the start's colour (dark violet) to the end's (yellow).
+  CHECK(text.find("rgb(26.7") != std::string::npos);
+  CHECK(text.find("rgb(99.3") != std::string::npos);
+  std::ifstream p(png, std::ios::binary);
+  std::string head(8, '\0');
+  p.read(head.data(), 8);
+  CHECK(head.substr(1, 3) == "PNG");
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("antkit stc streams the path - --path-out csv and bin read back by check stc",
+          "[cli][stc]") {
+  const std::string map = shared_map("movingai/den312d.map");
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("antkit-stc-path-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  for (const char* variant : {"offline", "ant-edge", "full"}) {
+    INFO(variant);
+    const auto json = run_antkit("stc --map " + map + " --variant " + variant +
+                                 " --format json --path-out " + (dir / "p.csv").string());
+    REQUIRE(json.status == 0);
+    const auto j = nlohmann::json::parse(json.out);
+    const auto bin = run_antkit("stc --map " + map + " --variant " + variant + " --path-out " +
+                                (dir / "p.bin").string());
+    REQUIRE(bin.status == 0);
+    // The binary form: 32 header bytes and two bits per move.
+    const auto moves = j.at("path").size() - 1;
+    CHECK(std::filesystem::file_size(dir / "p.bin") == 32 + (moves + 3) / 4);
+    const std::string coverage = std::string(variant) == "full" ? " --coverage" : "";
+    for (const char* f : {"p.csv", "p.bin"}) {
+      INFO(f);
+      const auto c = run_antkit("check stc --map " + map + " --path " + (dir / f).string() +
+                                coverage + " --format json");
+      REQUIRE(c.status == 0);
+      const auto k = nlohmann::json::parse(c.out);
+      CHECK(k.at("positions") == j.at("path").size());
+      CHECK(k.at("covered") == j.at("covered"));
+      CHECK(k.at("start") == j.at("start"));
+    }
+  }
+  // A name that is neither .csv nor .bin is bad input: exit 2, nothing written, nothing printed.
+  const auto bad = run_antkit("stc --map " + map + " --variant offline --format json --path-out " +
+                              (dir / "p.txt").string());
+  CHECK(bad.status == 2);
+  CHECK(bad.out.empty());
+  CHECK(bad.err.find("--path-out") != std::string::npos);
+  CHECK(!std::filesystem::exists(dir / "p.txt"));
+  // A start in an obstacle: refused before the JSON's first byte.
+  const auto wall = run_antkit("stc --map " + map + " --variant offline --format json --start 0,0");
+  CHECK(wall.status == 2);
+  CHECK(wall.out.empty());
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("antkit stc --noise is reproducible by seed - stc-noise reports a curve", "[cli][stc]") {

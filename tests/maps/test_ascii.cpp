@@ -64,17 +64,17 @@ TEST_CASE("ASCII: every malformed file is an InputError at its line and column",
 
 TEST_CASE("ASCII: a map over the total-cell cap is refused at the row that crosses it",
           "[maps][ascii]") {
-  // 8192 x 8193 cells is one row over kMaxMapCells = 8192 x 8192.
-  const std::string row = std::string(8192, '.') + "\n";
+  // 16384 x 16385 cells is one row over kMaxMapCells = 16384 x 16384.
+  const std::string row = std::string(16384, '.') + "\n";
   std::string text;
-  text.reserve(row.size() * 8193);
-  for (int i = 0; i < 8193; ++i) text += row;
+  text.reserve(row.size() * 16385);
+  for (int i = 0; i < 16385; ++i) text += row;
   const auto e = error_of([&] { (void)parse_ascii(text, "big.txt"); });
   REQUIRE(e.thrown);
-  CHECK(e.line == 8193);
-  CHECK(contains(e.what, "over the cap of 67108864 cells"));
-  text.resize(row.size() * 8192);
-  CHECK(parse_ascii(text, "big.txt").cells.size() == 8192u * 8192u);
+  CHECK(e.line == 16385);
+  CHECK(contains(e.what, "over the cap of 268435456 cells"));
+  text.resize(row.size() * 16384);
+  CHECK(parse_ascii(text, "big.txt").cells.size() == 16384u * 16384u);
 }
 
 TEST_CASE("ASCII: writing refuses what it cannot represent", "[maps][ascii]") {

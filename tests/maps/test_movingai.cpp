@@ -71,7 +71,7 @@ TEST_CASE("MovingAI: every malformed file is an InputError at its line and colum
       {"type octile\nheight 0\nwidth 1\nmap\n", 3, 1, "outside the supported range"},
       {"type octile\nheight 2000000\nwidth 1\nmap\n", 3, 1, "outside the supported range"},
       {"type octile\nheight 99999999999999999999999\nwidth 1\nmap\n", 2, 8, "bad height"},
-      {"type octile\nheight 10000\nwidth 10000\nmap\n", 3, 1, "over the cap"},
+      {"type octile\nheight 20000\nwidth 20000\nmap\n", 3, 1, "over the cap"},
       {"type octile\nheight 1\nwidth 1\nmaps\n.\n", 4, 1, "expected `map`"},
       {"type octile\nheight 1\nwidth 1\nmap x\n.\n", 4, 1, "expected `map`"},
       {kHeader3x2 + "...\n", 6, 1, "ends after 1 rows"},

@@ -1,4 +1,5 @@
 // Invariants 1-5 of issue 3 on random maps (rapidcheck).
+#include <antkit/stc/offline.hpp>
 #include <antkit/stc/world.hpp>
 #include <antkit/testing/generators.hpp>
 #include <antkit/testing/stc.hpp>
@@ -79,6 +80,41 @@ TEST_CASE("exact variants: invariants 1-4 on mazes, rooms and combs", "[stc][pro
       const auto check = checker.check_exact(map, start, r.path);
       RC_ASSERT(check.describe() == "ok");
       RC_ASSERT(r.returned_to_start && r.repeats == 0);
+    }
+  });
+}
+
+TEST_CASE(
+    "offline: the fast path gives the OfflineStc controller's tour, driven step by step - and "
+    "every variant streams the positions it records",
+    "[stc][property]") {
+  rc::prop("fast path and controller", [] {
+    const auto [map, start] = *gen::stc_case({.partial_cells = true, .start_in_free_cell = true});
+    const RunResult fast = run_stc(map, start, Variant::Offline);
+    StcWorld world;
+    world.reset(map, start);
+    OfflineStc controller(map, start);
+    std::vector<SubCell> driven{start};
+    for (Command c; (c = controller.step({})).move != Move::Stop;) {
+      RC_ASSERT(world.apply(c));
+      driven.push_back(world.position());
+    }
+    RC_ASSERT(fast.path == driven);
+    RC_ASSERT(fast.positions == static_cast<std::int64_t>(driven.size()));
+    RC_ASSERT(fast.covered == world.covered());
+    RC_ASSERT(fast.repeats == world.repeats());
+    for (const Variant v : kVariants) {
+      RunOptions streamed;
+      streamed.record_path = false;
+      std::vector<SubCell> sunk;
+      streamed.on_position = [&](SubCell s) { sunk.push_back(s); };
+      const RunResult a = run_stc(map, start, v);
+      const RunResult b = run_stc(map, start, v, streamed);
+      RC_ASSERT(sunk == a.path);
+      RC_ASSERT(b.path.empty());
+      RC_ASSERT(b.hash == a.hash);
+      RC_ASSERT(b.positions == a.positions);
+      RC_ASSERT(b.covered == a.covered);
     }
   });
 }

@@ -254,7 +254,7 @@ inline void hash_position(kernel::TraceHash& h, SubCell s) noexcept {
 
 template <class C, class Observe>
 void drive(C& controller, Observe&& observe, StcWorld& world, RunResult& r, kernel::TraceHash& h,
-           std::int64_t max_moves, bool record) {
+           std::int64_t max_moves, bool record, const std::function<void(SubCell)>& sink) {
   for (std::int64_t m = 0; m < max_moves; ++m) {
     const Command c = controller.step(observe());
     if (c.move == Move::Stop) {
@@ -269,7 +269,44 @@ void drive(C& controller, Observe&& observe, StcWorld& world, RunResult& r, kern
     ++r.positions;
     hash_position(h, s);
     if (record) r.path.push_back(s);
+    if (sink) sink(s);
   }
+}
+
+// Offline STC's fast path: SpanningTree's search emits the tour; the sub-cells entered are
+// counted on a bitmap (so that covered and repeats are measured, not assumed).
+RunResult run_offline(const kernel::OccupancyGrid& map, SubCell start, const RunOptions& options) {
+  RunResult r;
+  r.variant = Variant::Offline;
+  r.reachable_subcells = reachable_subcells(map, start, Variant::Offline);
+  kernel::TraceHash h;
+  h.add_u32(static_cast<std::uint32_t>(map.width()))
+      .add_u32(static_cast<std::uint32_t>(map.height()));
+  h.add_i32(start.x).add_i32(start.y);
+  const auto width = static_cast<std::uint64_t>(map.width());
+  std::vector<std::uint64_t> entered((width * static_cast<std::uint64_t>(map.height()) + 63) / 64,
+                                     0);
+  if (options.record_path) r.path.reserve(static_cast<std::size_t>(r.reachable_subcells));
+  SubCell last = start;
+  const SpanningTree tree(map, start, [&](SubCell s) {
+    hash_position(h, s);
+    ++r.positions;
+    if (options.record_path) r.path.push_back(s);
+    if (options.on_position) options.on_position(s);
+    const std::uint64_t k =
+        static_cast<std::uint64_t>(s.y) * width + static_cast<std::uint64_t>(s.x);
+    const std::uint64_t bit = std::uint64_t{1} << (k & 63);
+    if (entered[k >> 6] & bit)
+      ++r.repeats;
+    else
+      ++r.covered;
+    entered[k >> 6] |= bit;
+    last = s;
+  });
+  r.closed = true;
+  r.returned_to_start = last == start || adjacent(last, start);
+  r.hash = h.finish();
+  return r;
 }
 
 } // namespace
@@ -319,6 +356,7 @@ RunResult run_stc(const kernel::OccupancyGrid& map, SubCell start, Variant varia
 RunResult run_stc(StcWorld& world, const kernel::OccupancyGrid& map, SubCell start, Variant variant,
                   const RunOptions& options) {
   check_start(map, start, variant);
+  if (variant == Variant::Offline) return run_offline(map, start, options);
   const bool marker = variant == Variant::Ant || variant == Variant::AntEdge;
   world.reset(map, start, marker ? options.noise : NoiseModel{},
               variant == Variant::AntEdge ? Marker::Edge : Marker::WholeSubCell);
@@ -340,36 +378,34 @@ RunResult run_stc(StcWorld& world, const kernel::OccupancyGrid& map, SubCell sta
     if (is_exact(variant)) r.path.reserve(static_cast<std::size_t>(r.reachable_subcells));
     r.path.push_back(start);
   }
+  if (options.on_position) options.on_position(start);
   const bool rec = options.record_path;
+  const auto& sink = options.on_position;
   switch (variant) {
-  case Variant::Offline: {
-    OfflineStc c(map, start);
-    drive(
-        c, [] { return OfflineStc::Observation{}; }, world, r, h, max_moves, rec);
+  case Variant::Offline: // run_offline above
     break;
-  }
   case Variant::Online: {
     OnlineStc c(quadrant_of(start));
     drive(
-        c, [&] { return world.observe_cells(); }, world, r, h, max_moves, rec);
+        c, [&] { return world.observe_cells(); }, world, r, h, max_moves, rec, sink);
     break;
   }
   case Variant::Ant: {
     AntStc c(quadrant_of(start));
     drive(
-        c, [&] { return world.observe_marks(); }, world, r, h, max_moves, rec);
+        c, [&] { return world.observe_marks(); }, world, r, h, max_moves, rec, sink);
     break;
   }
   case Variant::AntEdge: {
     AntEdgeStc c(quadrant_of(start));
     drive(
-        c, [&] { return world.observe_edges(); }, world, r, h, max_moves, rec);
+        c, [&] { return world.observe_edges(); }, world, r, h, max_moves, rec, sink);
     break;
   }
   case Variant::Full: {
     FullStc c(map, start);
     drive(
-        c, [] { return FullStc::Observation{}; }, world, r, h, max_moves, rec);
+        c, [] { return FullStc::Observation{}; }, world, r, h, max_moves, rec, sink);
     break;
   }
   }
@@ -384,42 +420,47 @@ RunResult run_stc(StcWorld& world, const kernel::OccupancyGrid& map, SubCell sta
 std::optional<SubCell> default_start(const kernel::OccupancyGrid& g, Variant variant) {
   const CellGridShape shape = cell_shape(g);
   const bool exact = is_exact(variant);
-  // Nodes: cells (exact) or sub-cells of the cell area (full).
-  const std::int32_t w = exact ? shape.cells_x : 2 * shape.cells_x;
-  const std::int32_t h = exact ? shape.cells_y : 2 * shape.cells_y;
-  auto open = [&](Cell c) {
-    return c.x >= 0 && c.y >= 0 && c.x < w && c.y < h &&
-           (exact ? cell_free(g, c) : g[c] == kernel::Occupancy::Free);
-  };
-  std::vector<std::uint8_t> seen(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
-  auto at = [&](Cell c) -> std::uint8_t& {
-    return seen[static_cast<std::size_t>(c.y) * static_cast<std::size_t>(w) +
-                static_cast<std::size_t>(c.x)];
-  };
-  std::vector<Cell> queue;
-  std::optional<Cell> best;
+  // Nodes: cells (exact) or sub-cells of the cell area (full), in a byte array with a border of
+  // closed nodes (no bounds checks in the search): 1 open, 0 closed or already labelled. Indices
+  // fit 32 bits (at most (2^14 + 2)^2 nodes under the map cap).
+  const std::size_t w = static_cast<std::size_t>(exact ? shape.cells_x : 2 * shape.cells_x);
+  const std::size_t h = static_cast<std::size_t>(exact ? shape.cells_y : 2 * shape.cells_y);
+  const std::size_t stride = w + 2;
+  std::vector<std::uint8_t> open(stride * (h + 2), 0);
+  for (std::size_t y = 0; y < h; ++y)
+    for (std::size_t x = 0; x < w; ++x) {
+      const Cell c{static_cast<std::int32_t>(x), static_cast<std::int32_t>(y)};
+      open[(y + 1) * stride + x + 1] = exact                             ? cell_free(g, c)
+                                       : g[c] == kernel::Occupancy::Free ? 1
+                                                                         : 0;
+    }
+  const std::ptrdiff_t steps[4] = {1, -static_cast<std::ptrdiff_t>(stride), -1,
+                                   static_cast<std::ptrdiff_t>(stride)};
+  std::vector<std::uint32_t> queue;
+  std::optional<std::size_t> best;
   std::size_t best_size = 0;
-  for (std::int32_t y = 0; y < h; ++y)
-    for (std::int32_t x = 0; x < w; ++x) {
-      const Cell c{x, y};
-      if (at(c) || !open(c)) continue;
-      queue.assign(1, c);
-      at(c) = 1;
+  for (std::size_t y = 1; y <= h; ++y)
+    for (std::size_t k = y * stride + 1; k <= y * stride + w; ++k) {
+      if (open[k] == 0) continue;
+      queue.assign(1, static_cast<std::uint32_t>(k));
+      open[k] = 0;
       for (std::size_t i = 0; i < queue.size(); ++i)
-        for (int d = 0; d < 4; ++d) {
-          const Cell n = step(queue[i], d);
-          if (open(n) && !at(n)) {
-            at(n) = 1;
-            queue.push_back(n);
+        for (const std::ptrdiff_t d : steps) {
+          const auto n = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(queue[i]) + d);
+          if (open[n] != 0) {
+            open[n] = 0;
+            queue.push_back(static_cast<std::uint32_t>(n));
           }
         }
       if (queue.size() > best_size) {
         best_size = queue.size();
-        best = c;
+        best = k;
       }
     }
   if (!best) return std::nullopt;
-  return is_exact(variant) ? subcell_of(*best, 2) : *best;
+  const Cell c{static_cast<std::int32_t>(*best % stride - 1),
+               static_cast<std::int32_t>(*best / stride - 1)};
+  return exact ? subcell_of(c, 2) : c;
 }
 
 } // namespace antkit::stc

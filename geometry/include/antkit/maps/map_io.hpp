@@ -12,7 +12,7 @@
 //
 // Size caps (the formats declare their sizes, and a declared size is not a reason to allocate):
 //   * a side may be at most kernel::kMaxGridSide cells (what the kernel's proofs cover);
-//   * a map may hold at most kMaxMapCells cells in total (8192 x 8192);
+//   * a map may hold at most kMaxMapCells cells in total (16384 x 16384);
 //   * a file may be at most kMaxMapFileBytes long.
 // A declared size is also checked against the bytes actually present before anything is
 // allocated, so a short file with a huge header fails fast with "truncated".
@@ -56,11 +56,12 @@
 
 namespace antkit::maps {
 
-// 8192 x 8192 cells: a 1-byte-per-cell grid of 64 MiB, far above any benchmark map (the largest in
-// ../shared/maps is 530 x 481) and small enough that a fuzzer's memory limit is never the failure.
-inline constexpr std::int64_t kMaxMapCells = std::int64_t{1} << 26;
+// 16384 x 16384 cells: a 1-byte-per-cell grid of 256 MiB, far above any benchmark map (the largest
+// in ../shared/maps is 530 x 481), as large as `antkit stc` covers at scale (issue 15; it was 8192 x
+// 8192 before). A fuzzer cannot reach it: a declared size must be backed by the bytes present.
+inline constexpr std::int64_t kMaxMapCells = std::int64_t{1} << 28;
 // A P2 image of kMaxMapCells pixels of up to 5 digits each fits below this.
-inline constexpr std::uintmax_t kMaxMapFileBytes = std::uintmax_t{1} << 30;
+inline constexpr std::uintmax_t kMaxMapFileBytes = std::uintmax_t{1} << 31;
 
 struct GridMap {
   kernel::OccupancyGrid cells; // x right, y down, row 0 = first row of the file / top

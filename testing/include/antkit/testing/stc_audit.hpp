@@ -60,7 +60,9 @@ struct TourFile {
   std::optional<kernel::Cell> start;
 };
 
-// Reads a tour. The format is decided by the first character that is not white space:
+// Reads a tour. A file that starts with "ANTKPTH1" is antkit's binary path (stc/path_format.hpp:
+// two bits per move, and the start). Otherwise the format is decided by the first character that
+// is not white space:
 //   '[' a JSON array of [x, y] pairs;  '{' a JSON object with "path" (that array) and optionally
 //   "start" ([x, y]), as `antkit stc --format json` prints it (other keys are ignored);
 //   anything else: CSV, one "x,y" per line (spaces and tabs around the numbers, CRLF and blank

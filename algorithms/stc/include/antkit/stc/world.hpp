@@ -20,6 +20,7 @@
 #include <antkit/stc/online.hpp>
 #include <antkit/stc/subcell.hpp>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -132,6 +133,9 @@ struct RunOptions {
   // `full` fewer than 4). Only a noisy run can get there.
   std::int64_t max_moves = 0;
   bool record_path = true;
+  // Called with every position of the tour as it is made, the start first (the path streamed:
+  // with record_path false, nothing per position is kept). Empty: not called.
+  std::function<void(SubCell)> on_position;
 };
 
 struct RunResult {
@@ -148,7 +152,11 @@ struct RunResult {
   std::uint64_t hash = 0;
 };
 
-// Runs one variant from `start` to the end of its tour. Throws kernel::InputError for a start
+// Runs one variant from `start` to the end of its tour. Offline takes the fast path of offline.hpp
+// (the depth-first search emits the tour as it builds the tree: no world, no controller; about a
+// quarter of a byte per sub-cell beyond the map and a one-bit-per-sub-cell count of the sub-cells
+// entered): the same positions, and so the same hash, as the OfflineStc controller driven step by
+// step (tests hold the two against each other). Throws kernel::InputError for a start
 // outside the cell area, in a blocked sub-cell, or (exact variants) in a cell that is not free.
 // Noise applies to the marker variants (`ant`, `ant-edge`); the others read no marks.
 RunResult run_stc(const kernel::OccupancyGrid& map, SubCell start, Variant variant,
