@@ -2,7 +2,7 @@
 //
 //   antkit explore (--map FILE | --size WxH [--obstacles K | --blocks K] [--seed S] [--trial T])
 //                  [--start X,Y] --algo fast-wall-follow|frontier [--los on|off]
-//                  [--w1 N --w2 N --w3 N] [--format table|json] [--svg FILE]
+//                  [--w1 N --w2 N --w3 N] [--format table|json] [--svg FILE] [--png FILE]
 //
 // x to the right, y downward from the first row. The robots start on the start cell (default: the
 // free cell nearest the lower-left corner, or the map's 'S') and its nearest free neighbour.
@@ -16,10 +16,10 @@
 // sight, so `--algo fast-wall-follow --los off` is rejected as bad input.
 #include "commands.hpp"
 #include "output.hpp"
-#include "svg.hpp"
 
 #include <algorithm>
 #include <antkit/algorithms/options.hpp>
+#include <antkit/experiments/drawing.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/los/explore.hpp>
@@ -47,7 +47,7 @@ struct ExploreCommand {
   std::string algo;
   std::string los = "on";
   std::int64_t w1 = 1, w2 = 1, w3 = 0;
-  std::string svg;
+  std::string svg, png;
   Format format = Format::Table;
 };
 
@@ -116,48 +116,23 @@ Environment build_environment(const ExploreCommand& c) {
   return env;
 }
 
-// Table 1's colours.
-const char* colour(los::CellState s) {
-  switch (s) {
-  case los::CellState::F:
-    return "#9e9e9e"; // gray
-  case los::CellState::S:
-    return "#8d5524"; // brown
-  case los::CellState::LOS:
-    return "#e53935"; // red
-  case los::CellState::S_LOS:
-    return "#fdd835"; // yellow
-  case los::CellState::NLOS:
-    return "#1e88e5"; // blue
-  case los::CellState::O:
-    return "#fb8c00"; // orange
-  }
-  return "#000000";
-}
-
-void write_svg(const std::string& path, const los::ExploreResult& r) {
-  const auto w = r.cells.width(), h = r.cells.height();
-  const double scale = std::clamp(1000.0 / std::max(w, h), 1.0, 24.0);
-  antkit::cli::Svg svg(0, 0, w, h, scale, true);
-  for (std::int32_t y = 0; y < h; ++y) {
-    std::int32_t x = 0;
-    while (x < w) { // one rectangle per run of equal states
-      const auto s = r.cells[{x, y}];
-      std::int32_t end = x + 1;
-      while (end < w && r.cells[{end, y}] == s) ++end;
-      svg.rect(x, y, end - x, 1, colour(s));
-      x = end;
-    }
-  }
-  const char* strokes[2] = {"#d81b60", "#000000"}; // the paper's pink wall follower, black B
-  for (int robot = 0; robot < 2; ++robot) {
-    std::vector<std::pair<double, double>> points;
-    for (const Cell c : r.trajectories[static_cast<std::size_t>(robot)])
-      points.emplace_back(c.x + 0.5, c.y + 0.5);
-    svg.polyline(points, strokes[robot], std::max(1.0, scale / 6), 0.8);
-    svg.circle(points.front().first, points.front().second, 0.35, strokes[robot]);
-  }
-  svg.save(path);
+// The final shared map and both trails, with Table 1's colours, a legend and a caption.
+void draw(const ExploreCommand& c, const los::ExploreResult& r) {
+  antkit::experiments::ExplorationPanel p;
+  p.title = "after " + std::to_string(r.steps) + " steps";
+  p.states = antkit::kernel::Grid<std::uint8_t>(r.cells.width(), r.cells.height(), 0);
+  for (std::int32_t y = 0; y < r.cells.height(); ++y)
+    for (std::int32_t x = 0; x < r.cells.width(); ++x)
+      p.states[{x, y}] = static_cast<std::uint8_t>(r.cells[{x, y}]);
+  for (int robot = 0; robot < 2; ++robot)
+    for (const Cell cell : r.trajectories[static_cast<std::size_t>(robot)])
+      (robot == 0 ? p.trail_a : p.trail_b).emplace_back(cell.x + 0.5, cell.y + 0.5);
+  antkit::experiments::save_exploration_figure(
+      c.algo + " exploration (paper 001)",
+      std::to_string(r.cells.width()) + " x " + std::to_string(r.cells.height()) + " cells; " +
+          std::to_string(r.steps) + " steps, E.M.E " + std::to_string(r.eme) + ", " +
+          std::to_string(r.explored) + " cells explored.",
+      {p}, c.svg, c.png);
 }
 
 nlohmann::json run(const ExploreCommand& c) {
@@ -187,7 +162,7 @@ nlohmann::json run(const ExploreCommand& c) {
   const los::ExploreResult r = los::explore(env.grid, pair[0], pair[1], options);
   if (!r.completed)
     throw antkit::cli::CheckFailed("the exploration did not finish within its tick budget");
-  if (!c.svg.empty()) write_svg(c.svg, r);
+  if (!c.svg.empty() || !c.png.empty()) draw(c, r);
 
   nlohmann::json j;
   j["algo"] = c.algo;
@@ -230,7 +205,10 @@ void register_explore(CLI::App& app) {
   sub->add_option("--w1", opts->w1, "Frontier weight of the information gain I")->default_val(1);
   sub->add_option("--w2", opts->w2, "Frontier weight of the distance D")->default_val(1);
   sub->add_option("--w3", opts->w3, "Frontier weight of the nearness lambda")->default_val(0);
-  sub->add_option("--svg", opts->svg, "Write the explored map and both trajectories as SVG");
+  sub->add_option("--svg", opts->svg,
+                  "Write the explored map (Table 1's colours) and both trails as SVG, with a "
+                  "legend");
+  sub->add_option("--png", opts->png, "The same picture as PNG");
   antkit::cli::add_format_option(*sub, opts->format);
   sub->callback([opts] { antkit::cli::emit(run(*opts), opts->format, std::cout); });
 }

@@ -210,6 +210,54 @@ Figure buffon_figure_plot(const BuffonFigure& f) {
     one.hollow = true;
     panel.series.assign(1, std::move(one));
   }
+  if (f.params.figure == 7) {
+    // Figures 7a and 7b: one panel per barrier shape, the arena without a barrier as the dashed
+    // reference line in both.
+    PlotPanel i_panel{"Figure 7a: I-shaped barrier", "", {}, {}};
+    PlotPanel plus_panel{"Figure 7b: plus-shaped barrier", "", {}, {}};
+    for (auto& series : panel.series) {
+      if (series.name == "barrier-i") i_panel.series.push_back(series);
+      if (series.name == "barrier-plus") plus_panel.series.push_back(series);
+    }
+    for (auto* p : {&i_panel, &plus_panel}) {
+      PlotSeries none{"no barrier (dashed line)", "#606060", true, false, {}};
+      p->legend = {p->series.front(), none};
+    }
+    fig.panels = {std::move(i_panel), std::move(plus_panel)};
+    return fig;
+  }
+  fig.panels.push_back(std::move(panel));
+  return fig;
+}
+
+Figure buffon_figure5b_plot(const BuffonFigure& f) {
+  Figure fig;
+  fig.title = "Paper 000, Figure 5b: squares against circles of the same area";
+  fig.x_label = "median nBC of the circle";
+  fig.y_label = "median nBC of the square";
+  fig.caption = "One point per diameter (10 to 100), interquartile bars of the square; the dashed "
+                "line is y = x (equal nBC).\n" +
+                std::to_string(f.params.trials) + " trials per arena, seed " +
+                std::to_string(f.params.seed) + ".";
+  PlotPanel panel;
+  PlotSeries points{"diameter 10 to 100", kColours[0], false, true, {}};
+  double lo = 1e300, hi = 0;
+  for (const auto& circle : f.rows) {
+    if (circle.arena.series != "circle") continue;
+    for (const auto& square : f.rows)
+      if (square.arena.series == "square" && square.arena.x == circle.arena.x) {
+        points.points.push_back(
+            {circle.nbc_median, square.nbc_median, square.nbc_q1, square.nbc_q3});
+        lo = std::min({lo, circle.nbc_median, square.nbc_median});
+        hi = std::max({hi, circle.nbc_median, square.nbc_median});
+      }
+  }
+  PlotSeries diagonal{"y = x",
+                      "#606060",
+                      true,
+                      false,
+                      {{lo, lo, std::nullopt, std::nullopt}, {hi, hi, std::nullopt, std::nullopt}}};
+  panel.series = {std::move(diagonal), std::move(points)};
   fig.panels.push_back(std::move(panel));
   return fig;
 }

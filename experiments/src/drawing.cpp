@@ -216,4 +216,82 @@ void save_trails_figure(const std::string& title, const std::string& caption,
       svg, png);
 }
 
+void save_exploration_figure(const std::string& title, const std::string& caption,
+                             const std::vector<ExplorationPanel>& panels,
+                             const std::filesystem::path& svg, const std::filesystem::path& png) {
+  // Table 1's colours, by state code.
+  static constexpr detail::Rgb kState[6] = {{0.62, 0.62, 0.62}, {0.55, 0.33, 0.14},
+                                            {0.90, 0.22, 0.21}, {0.99, 0.85, 0.21},
+                                            {0.12, 0.53, 0.90}, {0.98, 0.55, 0.0}};
+  static constexpr const char* kNames[6] = {
+      "F: fresh",    "S: free, scanned",     "LOS: free, line of sight",
+      "S+LOS: both", "NLOS: maybe occupied", "O: occupied"};
+  const double pw = 250, inner = 220, top = 50, bottom = 130;
+  const double width = std::max(pw * static_cast<double>(panels.size()), 760.0);
+  const double height = top + inner + bottom;
+  const double left = (width - pw * static_cast<double>(panels.size())) / 2;
+  detail::render(
+      width, height,
+      [&](cairo_t* cr) {
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_paint(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text(cr, width / 2, 20, title, 16, 0.5, 0.5, true);
+        for (std::size_t k = 0; k < panels.size(); ++k) {
+          const auto& p = panels[k];
+          const double w = p.states.width(), h = p.states.height();
+          if (w <= 0 || h <= 0) continue;
+          const double sc = inner / std::max(w, h);
+          const double ox = left + pw * static_cast<double>(k) + (pw - w * sc) / 2;
+          const double oy = top + (inner - h * sc) / 2;
+          cairo_set_source_rgb(cr, 0, 0, 0);
+          text(cr, left + pw * (static_cast<double>(k) + 0.5), top - 10, p.title, 11.5, 0.5, 0.5,
+               true);
+          cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+          for (std::int32_t y = 0; y < p.states.height(); ++y)
+            for (std::int32_t x = 0; x < p.states.width(); ++x) {
+              const auto c = kState[std::min<std::uint8_t>(p.states[{x, y}], 5)];
+              cairo_set_source_rgb(cr, c.r, c.g, c.b);
+              cairo_rectangle(cr, ox + x * sc, oy + y * sc, sc, sc);
+              cairo_fill(cr);
+            }
+          cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+          cairo_set_source_rgb(cr, 0, 0, 0);
+          cairo_set_line_width(cr, 1);
+          cairo_rectangle(cr, ox, oy, w * sc, h * sc);
+          cairo_stroke(cr);
+          const auto trail = [&](const std::vector<XY>& pts, detail::Rgb c) {
+            if (pts.empty()) return;
+            cairo_set_source_rgb(cr, c.r, c.g, c.b);
+            cairo_set_line_width(cr, std::max(1.5, sc / 4));
+            for (std::size_t i = 0; i < pts.size(); ++i)
+              (i == 0 ? cairo_move_to : cairo_line_to)(cr, ox + pts[i].first * sc,
+                                                       oy + pts[i].second * sc);
+            cairo_stroke(cr);
+            cairo_arc(cr, ox + pts.back().first * sc, oy + pts.back().second * sc,
+                      std::max(2.5, sc / 2.5), 0, 2 * M_PI);
+            cairo_fill(cr);
+          };
+          trail(p.trail_b, {0, 0, 0});
+          trail(p.trail_a, {0.85, 0.11, 0.38});
+        }
+        // Legend: the six states, then the robots.
+        const double ly = top + inner + 22;
+        for (int i = 0; i < 6; ++i) {
+          const double lx = width / 2 - 360 + 240 * (i % 3);
+          const double y = ly + 18 * (i / 3);
+          cairo_set_source_rgb(cr, kState[i].r, kState[i].g, kState[i].b);
+          cairo_rectangle(cr, lx, y - 6, 14, 12);
+          cairo_fill(cr);
+          cairo_set_source_rgb(cr, 0, 0, 0);
+          text(cr, lx + 20, y, kNames[i], 11, 0, 0.5);
+        }
+        legend_line(cr, width / 2 - 360, ly + 40, {0.85, 0.11, 0.38}, 3,
+                    "robot A (wall follower), trail and position");
+        legend_line(cr, width / 2 + 60, ly + 40, {0, 0, 0}, 3, "robot B, trail and position");
+        caption_lines(cr, caption, width / 2, height - 14);
+      },
+      svg, png);
+}
+
 } // namespace antkit::experiments

@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <antkit/experiments/drawing.hpp>
 #include <antkit/experiments/explore_tables.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/los/explore.hpp>
@@ -223,6 +225,48 @@ Figure explore_plot(const ExploreTables& t) {
     fig.panels.push_back(std::move(panel));
   }
   return fig;
+}
+
+void explore_stages_figure(std::uint64_t seed, const std::filesystem::path& svg,
+                           const std::filesystem::path& png) {
+  const kernel::Cell corner{0, 24};
+  const auto grid = los::scattered_obstacles(25, 25, 5, seed, 1, corner);
+  const auto pair = los::start_pair(grid, corner);
+  const auto options = method_options(0);
+  const auto total = los::explore(grid, pair[0], pair[1], options).steps;
+  std::vector<std::uint64_t> at;
+  for (std::uint64_t k = 1; k <= 5; ++k)
+    at.push_back(std::max<std::uint64_t>(1, (total * k + 4) / 5));
+  std::vector<ExplorationPanel> panels;
+  std::uint64_t tick = 0;
+  const auto snapshot = [&](const los::TwoRobotWorld& world, const los::ExplorationMap& map) {
+    ExplorationPanel p;
+    const char* stage = "ABCDE";
+    p.title = std::string(1, stage[panels.size()]) + ": tick " + std::to_string(tick) + " of " +
+              std::to_string(total);
+    p.states = kernel::Grid<std::uint8_t>(map.states().width(), map.states().height(), 0);
+    for (std::int32_t y = 0; y < p.states.height(); ++y)
+      for (std::int32_t x = 0; x < p.states.width(); ++x)
+        p.states[{x, y}] = static_cast<std::uint8_t>(map.at({x, y}));
+    for (int r = 0; r < 2; ++r)
+      for (const kernel::Cell c : world.trajectory(r))
+        (r == 0 ? p.trail_a : p.trail_b).emplace_back(c.x + 0.5, c.y + 0.5);
+    panels.push_back(std::move(p));
+  };
+  (void)los::explore(grid, pair[0], pair[1], options,
+                     [&](const los::TwoRobotWorld& world, const los::ExplorationMap& map,
+                         const los::TeamObservation&, const los::TeamCommand&) {
+                       ++tick;
+                       if (panels.size() < at.size() && tick == at[panels.size()])
+                         snapshot(world, map);
+                     });
+  save_exploration_figure(
+      "Paper 001, Figure 4: fast wall-follow, stage by stage",
+      "25 x 25 cells, five obstacles (Table 2, repetition 1, seed " + std::to_string(seed) +
+          "); the shared map after 20, 40, 60, 80 and 100 % of the " + std::to_string(total) +
+          " ticks.\nThe robots trace the walls first, then a frontier search with line-of-sight "
+          "sweeping explores what is left.",
+      panels, svg, png);
 }
 
 } // namespace antkit::experiments

@@ -1004,8 +1004,12 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
       const std::string stem = "buffon/figure" + std::to_string(figure);
       w.text(stem + ".csv", buffon_figure_csv(f));
       w.figure(stem, buffon_figure_plot(f));
-      body << "### " << captions[figure] << "\n\n"
-           << image(stem, captions[figure]) << buffon_rows_table(f) << '\n';
+      body << "### " << captions[figure] << "\n\n" << image(stem, captions[figure]);
+      if (figure == 5) {
+        w.figure("buffon/figure5b", buffon_figure5b_plot(f));
+        body << image("buffon/figure5b", "Figure 5b: squares against circles");
+      }
+      body << buffon_rows_table(f) << '\n';
       report.experiments.push_back({"paper 000, figure " + std::to_string(figure), f.hash,
                                     "antkit buffon-experiment --figure " + std::to_string(figure) +
                                         " --trials " + std::to_string(trials.buffon) + " --seed " +
@@ -1029,13 +1033,19 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
     w.text("los/table3.csv", table3_csv(los));
     w.text("los/table3.md", table3_markdown(los));
     w.figure("los/figures5-6", explore_plot(los));
+    explore_stages_figure(o.seed, o.out / "los/figure4.svg", o.out / "los/figure4.png");
+    w.added("los/figure4.svg");
+    w.added("los/figure4.png");
     body << "## Paper 001: two-robot line-of-sight exploration\n\n"
          << "25 x 25 cells, the paper's 10 repetitions (5 for the blocks) per environment, seed "
          << o.seed
-         << ". \"Sheng et al.\" is our frontier baseline without line-of-sight "
-            "sweeping (g = I - D, w1 = w2 = 1, w3 = 0); the same baseline with sweeping is the "
-            "strong one. Each cell: ours / the paper's.\n\n"
-         << "### Table 2\n\n"
+         << ". \"Sheng et al.\" (ours) is the frontier baseline as paper 001 describes it: "
+            "g = w1 I - w2 D + w3 lambda with w1 = w2 = 1, w3 = 0, and the information gain I "
+            "counting only the cells outside the other robot's sensor range and target, without "
+            "line-of-sight sweeping; the strong baseline is the same with sweeping. Each cell: "
+            "ours / the paper's.\n\n"
+         << "### Figure 4: stages of one run\n\n"
+         << image("los/figure4", "Figure 4: stages of one run") << "### Table 2\n\n"
          << embed(table2_markdown(los)) << "\n### Table 3\n\n"
          << embed(table3_markdown(los)) << "\n### Figures 5-6\n\n"
          << image("los/figures5-6", "Figures 5-6: steps and E.M.E");

@@ -67,17 +67,21 @@ TEST_CASE("explore: --start and a map file with a start cell", "[cli]") {
   CHECK(s.status == 0);
 }
 
-TEST_CASE("explore: --svg writes a picture", "[cli]") {
+TEST_CASE("explore: --svg and --png write a picture", "[cli]") {
   const auto path = std::filesystem::temp_directory_path() / "antkit-explore-cli.svg";
+  const auto png = std::filesystem::temp_directory_path() / "antkit-explore-cli.png";
   std::filesystem::remove(path);
   const auto r = run_antkit("explore --size 12x9 --obstacles 4 --algo fast-wall-follow --svg " +
-                            path.string());
+                            path.string() + " --png " + png.string());
   REQUIRE(r.status == 0);
   std::ifstream in(path);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK(text.find("<svg") != std::string::npos);
-  CHECK(text.find("#d81b60") != std::string::npos); // the wall follower's trajectory
+  CHECK(text.find("rgb(85%,11%,38%)") != std::string::npos); // the wall follower's trail
+  CHECK(text.find("rgb(55%,33%,14%)") != std::string::npos); // scanned cells (Table 1's brown)
+  CHECK(std::filesystem::file_size(png) > 1000);
   std::filesystem::remove(path);
+  std::filesystem::remove(png);
 }
 
 TEST_CASE("explore: bad input exits 2 with one clear message and no output file", "[cli]") {

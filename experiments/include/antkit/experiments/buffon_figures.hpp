@@ -64,6 +64,8 @@ struct BuffonFigure {
                                              const Runner& runner);
 [[nodiscard]] std::string buffon_figure_csv(const BuffonFigure& f);
 [[nodiscard]] Figure buffon_figure_plot(const BuffonFigure& f);
+// Figure 5b: each square's median nBC against the circle's of the same area, with y = x.
+[[nodiscard]] Figure buffon_figure5b_plot(const BuffonFigure& figure5);
 
 struct Figure14Row {
   double diameter = 0, total_length = 0, area = 0;

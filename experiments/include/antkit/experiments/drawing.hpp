@@ -35,4 +35,19 @@ void save_trails_figure(const std::string& title, const std::string& caption,
                         const std::vector<TrailPanel>& panels, const std::filesystem::path& svg,
                         const std::filesystem::path& png);
 
+// One moment of a two-robot exploration (paper 001): the cell states of Table 1 as their codes
+// (los::CellState: 0 F fresh, 1 S scanned free, 2 LOS free by line of sight, 3 S+LOS, 4 NLOS
+// potentially occupied, 5 O occupied) in the paper's colours, and each robot's trail so far.
+struct ExplorationPanel {
+  std::string title;
+  kernel::Grid<std::uint8_t> states;
+  std::vector<XY> trail_a, trail_b; // cell centres
+};
+
+// Panels side by side (the paper's Figure 4: stages A-E of one run), with a legend of the states
+// and the robots.
+void save_exploration_figure(const std::string& title, const std::string& caption,
+                             const std::vector<ExplorationPanel>& panels,
+                             const std::filesystem::path& svg, const std::filesystem::path& png);
+
 } // namespace antkit::experiments

@@ -17,6 +17,7 @@
 #include <antkit/experiments/run.hpp>
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -93,5 +94,11 @@ struct ExploreTables {
 // Figures 5-6 of the paper as one figure: mean steps and mean E.M.E per environment, ours and the
 // paper's.
 [[nodiscard]] Figure explore_plot(const ExploreTables& t);
+
+// The paper's Figure 4, stages of one run: fast wall-follow in the 25 x 25 room with five
+// obstacles (repetition 1 of Table 2's column), the shared map at 20, 40, 60, 80 and 100 % of its
+// ticks, drawn to svg and png (drawing.hpp).
+void explore_stages_figure(std::uint64_t seed, const std::filesystem::path& svg,
+                           const std::filesystem::path& png);
 
 } // namespace antkit::experiments
