@@ -45,12 +45,13 @@
 #include "buffon_options.hpp"
 #include "commands.hpp"
 #include "output.hpp"
-#include "svg.hpp"
 
 #include <antkit/buffon/estimate.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/stopping.hpp>
 #include <antkit/buffon/two_markers.hpp>
+#include <antkit/experiments/buffon_figures.hpp>
+#include <antkit/experiments/drawing.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
 #include <antkit/geometry/wkt.hpp>
@@ -77,7 +78,7 @@ struct BuffonCommand {
   double noise = 0.0;
   std::uint64_t seed = 1;
   std::int64_t threads = 1;
-  std::string svg;
+  std::string svg, png;
   std::string precision;        // as typed; read exactly by parse_precision
   bool precision_given = false; // without --precision visit 2 runs all --steps
   std::string rule = "markers"; // --rule markers|online|fixed (issue 17: markers need less trail)
@@ -90,42 +91,42 @@ double fx_to_double(std::int64_t raw) {
   return static_cast<double>(raw) / 65536.0;
 }
 
-void write_svg(const std::string& path, const geometry::Arena& arena,
-               const buffon::TrialResult& t) {
-  const auto box = arena.bbox();
-  const double margin = 2;
-  const double extent = std::max(box.xmax - box.xmin, box.ymax - box.ymin) + 2 * margin;
-  const double scale = 800.0 / extent;
-  antkit::cli::Svg svg(box.xmin - margin, box.ymin - margin, box.xmax + margin, box.ymax + margin,
-                       scale, false);
+// Trial 0's trails in the arena, drawn with Cairo (title, legend, caption).
+void draw_trails(const BuffonCommand& c, const geometry::Arena& arena,
+                 const buffon::TrialResult& t) {
+  antkit::experiments::TrailPanel panel;
+  panel.title = c.arena + " (area " + antkit::experiments::number(arena.area()) + ")";
   for (const auto& ring : arena.rings()) {
-    std::vector<std::pair<double, double>> pts;
+    std::vector<antkit::experiments::XY> pts;
     for (const auto& p : ring) pts.emplace_back(p[0], p[1]);
-    if (!pts.empty()) pts.push_back(pts.front());
-    svg.polyline(pts, "#000000", 2.0);
+    panel.rings.push_back(std::move(pts));
   }
-  auto trail = [&](const std::vector<antkit::kernel::FxPoint>& pts, const std::string& colour) {
-    std::vector<std::pair<double, double>> out;
-    // Every 4th point: the figure stays small and the curvature visible (steps are 0.04 units).
-    // A jump longer than any step (one unit) separates two pieces of a marker's trail (--rule
-    // markers): the polyline breaks there instead of drawing a chord across the arena.
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      const double x = geometry::to_double(pts[i].x), y = geometry::to_double(pts[i].y);
-      if (i > 0 && std::hypot(x - geometry::to_double(pts[i - 1].x),
-                              y - geometry::to_double(pts[i - 1].y)) > 1.0) {
-        svg.polyline(out, colour, std::max(0.5, 0.1 * scale), 0.7);
-        out.clear();
-      }
-      if (i % 4 == 0 ||
-          (i + 1 < pts.size() && std::hypot(geometry::to_double(pts[i + 1].x) - x,
-                                            geometry::to_double(pts[i + 1].y) - y) > 1.0))
-        out.emplace_back(x, y);
-    }
-    svg.polyline(out, colour, std::max(0.5, 0.1 * scale), 0.7);
+  // Every 4th point (steps are 0.04 units), and both ends of every jump longer than a step (the
+  // pieces of a marker's trail under --rule markers), so that no chord is drawn across the arena.
+  const auto thin = [](const std::vector<antkit::kernel::FxPoint>& pts) {
+    std::vector<antkit::experiments::XY> out;
+    const auto at = [&](std::size_t i) {
+      return antkit::experiments::XY{geometry::to_double(pts[i].x), geometry::to_double(pts[i].y)};
+    };
+    const auto jump = [&](std::size_t i) { // between i and i + 1
+      const auto [ax, ay] = at(i);
+      const auto [bx, by] = at(i + 1);
+      return std::hypot(bx - ax, by - ay) > 1.0;
+    };
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      if (i % 4 == 0 || i + 1 == pts.size() || jump(i) || (i > 0 && jump(i - 1)))
+        out.push_back(at(i));
+    return out;
   };
-  trail(t.trail1, "#1e5bd8");
-  trail(t.trail2, "#d81e1e");
-  svg.save(path);
+  panel.trail1 = thin(t.trail1);
+  panel.trail2 = thin(t.trail2);
+  antkit::experiments::save_trails_figure(
+      "Buffon's needle, trial 0 (paper 000)",
+      std::to_string(t.steps1 > 0 ? t.steps1 : c.steps) + " and " +
+          std::to_string(t.steps2 > 0 ? t.steps2 : c.steps) + " steps; " +
+          (t.bc > 0 ? std::to_string(t.bc) + " crossings counted (BC), " : std::string()) +
+          std::to_string(t.crossings_exact) + " exact crossings of the two trails.",
+      {panel}, c.svg, c.png);
 }
 
 // The default --max-steps of --rule markers and online.
@@ -184,7 +185,7 @@ void run(const BuffonCommand& c) {
   std::vector<buffon::TrialResult> results(count);
   antkit::buffon::parallel_for(count, static_cast<unsigned>(c.threads), [&](std::uint64_t i) {
     buffon::TrialParams p = params;
-    p.keep_trails = (i == 0 && !c.svg.empty());
+    p.keep_trails = (i == 0 && (!c.svg.empty() || !c.png.empty()));
     results[i] =
         markers ? buffon::run_two_marker_trial(world, p, i) : buffon::run_trial(world, p, i);
   });
@@ -298,7 +299,7 @@ void run(const BuffonCommand& c) {
     std::cerr << "antkit: note: " << note << '\n';
   }
   result["hash"] = antkit::kernel::hash_hex(all.finish());
-  if (!c.svg.empty()) write_svg(c.svg, arena, results[0]);
+  if (!c.svg.empty() || !c.png.empty()) draw_trails(c, arena, results[0]);
   antkit::cli::emit(result, c.format, std::cout);
 }
 
@@ -329,7 +330,9 @@ void register_buffon(CLI::App& app) {
   sub->add_option("--max-steps", options->max_steps,
                   "With --rule online or markers: the step budget of both visits together "
                   "(default 20000000)");
-  sub->add_option("--svg", options->svg, "Draw trial 0's trails to this SVG file");
+  sub->add_option("--svg", options->svg,
+                  "Draw trial 0's trails to this SVG file (title, legend, caption)");
+  sub->add_option("--png", options->png, "The same picture as PNG");
   antkit::cli::add_format_option(*sub, options->format);
   sub->callback([options, precision, rule] {
     options->precision_given = precision->count() > 0;

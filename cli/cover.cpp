@@ -2,15 +2,15 @@
 //   antkit cover (--map FILE | --size WxH --density P) [--seed S]
 //                --algo rw|pm|astar|astar-coord|frontier
 //                [--robots N] [--sensor R] [--limit T] [--trial K] [--format table|json]
-//                [--svg FILE] [--trace FILE]
+//                [--svg FILE] [--png FILE] [--trace FILE]
 // Prints {"algo", "robots", "coverage", "viewed", "viewable", "movements", "moves", "hash", ...}.
 // Maps: Blocked and Unknown cells both block sight and movement, and only Free cells count for
 // coverage. A map's start cell ('S' in ASCII maps) is robot 0's start.
 #include "commands.hpp"
 #include "output.hpp"
-#include "svg.hpp"
 
 #include <algorithm>
+#include <antkit/experiments/drawing.hpp>
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
@@ -43,37 +43,33 @@ struct CoverOptions {
   std::int64_t robots = 1;
   std::int64_t sensor = 5;
   std::int64_t limit = -1; // default: 10 * W * H
-  std::string svg;
+  std::string svg, png;
   std::string trace;
   Format format = Format::Table;
 };
 
-void write_svg(const std::string& path, const uniform::CoverageWorld& world) {
+// The final state: viewed and unviewed free cells, obstacles, the robots; legend and caption.
+void draw(const CoverOptions& o, const uniform::CoverageWorld& world, const std::string& summary) {
   const auto& map = world.map();
-  const double side = std::max(map.width(), map.height());
-  const double scale = std::max(1.0, 800.0 / side);
-  antkit::cli::Svg svg(0, 0, map.width(), map.height(), scale, true);
-  svg.rect(0, 0, map.width(), map.height(), "#ffffff");
-  // Unviewed free cells as runs along each row (one rectangle per run keeps big maps small).
-  for (std::int32_t y = 0; y < map.height(); ++y) {
-    for (std::int32_t x = 0; x < map.width();) {
-      const auto unviewed = [&](std::int32_t xx) {
-        return map[{xx, y}] == antkit::kernel::Occupancy::Free && !world.is_viewed({xx, y});
-      };
-      if (!unviewed(x)) {
-        ++x;
-        continue;
-      }
-      std::int32_t end = x;
-      while (end < map.width() && unviewed(end)) ++end;
-      svg.rect(x, y, end - x, 1, "#9e9e9e");
-      x = end;
+  antkit::experiments::GridPanel p;
+  p.states = antkit::kernel::Grid<std::uint8_t>(map.width(), map.height(), 0);
+  for (std::int32_t y = 0; y < map.height(); ++y)
+    for (std::int32_t x = 0; x < map.width(); ++x) {
+      const auto c = map[{x, y}];
+      p.states[{x, y}] = c == antkit::kernel::Occupancy::Blocked   ? 2
+                         : c == antkit::kernel::Occupancy::Unknown ? 3
+                         : world.is_viewed({x, y})                 ? 0
+                                                                   : 1;
     }
-  }
-  svg.grid_cells(map, "#202020", "#606060");
-  for (const auto& p : world.robots())
-    svg.circle(p.cell.x + 0.5, p.cell.y + 0.5, std::max(0.5, 3.0 / scale), "#d62728");
-  svg.save(path);
+  for (const auto& r : world.robots()) p.robots.emplace_back(r.cell.x + 0.5, r.cell.y + 0.5);
+  antkit::experiments::GridLegend legend;
+  legend.states = {{"#ffffff", "free, viewed"},
+                   {"#9e9e9e", "free, not viewed"},
+                   {"#202020", "blocked"},
+                   {"#606060", "unknown"}};
+  legend.robot = {"#d62728", "robots at the end"};
+  antkit::experiments::save_grid_figure(o.algo + " coverage (paper 004)", summary, {p}, legend,
+                                        o.svg, o.png);
 }
 
 nlohmann::json run_cover(const CoverOptions& o) {
@@ -139,7 +135,16 @@ nlohmann::json run_cover(const CoverOptions& o) {
       out << "# claim viewed: " << r.viewed << "\n# claim viewable: " << r.viewable << '\n';
     });
   }
-  if (!o.svg.empty()) write_svg(o.svg, world);
+  if (!o.svg.empty() || !o.png.empty()) {
+    char coverage[32];
+    std::snprintf(coverage, sizeof coverage, "%.2f",
+                  100.0 * static_cast<double>(r.viewed) / static_cast<double>(r.viewable));
+    draw(o, world,
+         std::to_string(r.robots) + " robot(s), sensor distance " + std::to_string(o.sensor) +
+             ": " + coverage + " % of the viewable free cells viewed in " +
+             std::to_string(r.movements) +
+             " movements (stop: " + std::string(uniform::stop_reason_name(r.stop)) + ").");
+  }
 
   nlohmann::json j;
   j["algo"] = std::string(uniform::algorithm_name(r.algorithm));
@@ -178,7 +183,10 @@ void register_cover(CLI::App& app) {
   sub->add_option("--robots", o->robots, "Number of robots (default 1)");
   sub->add_option("--sensor", o->sensor, "Sensor distance in cells (default 5)");
   sub->add_option("--limit", o->limit, "Time limit in ticks (default 10 * W * H)");
-  sub->add_option("--svg", o->svg, "Write the final state as SVG");
+  sub->add_option("--svg", o->svg,
+                  "Write the final state as SVG: viewed and unviewed cells, obstacles, robots, "
+                  "legend");
+  sub->add_option("--png", o->png, "The same picture as PNG");
   sub->add_option("--trace", o->trace,
                   "Write every robot's pose after every tick as CSV (tick,robot,x,y,bearing), "
                   "with the sensor and the coverage claimed, for antkit check cover");

@@ -118,21 +118,22 @@ Environment build_environment(const ExploreCommand& c) {
 
 // The final shared map and both trails, with Table 1's colours, a legend and a caption.
 void draw(const ExploreCommand& c, const los::ExploreResult& r) {
-  antkit::experiments::ExplorationPanel p;
+  antkit::experiments::GridPanel p;
   p.title = "after " + std::to_string(r.steps) + " steps";
   p.states = antkit::kernel::Grid<std::uint8_t>(r.cells.width(), r.cells.height(), 0);
   for (std::int32_t y = 0; y < r.cells.height(); ++y)
     for (std::int32_t x = 0; x < r.cells.width(); ++x)
       p.states[{x, y}] = static_cast<std::uint8_t>(r.cells[{x, y}]);
-  for (int robot = 0; robot < 2; ++robot)
-    for (const Cell cell : r.trajectories[static_cast<std::size_t>(robot)])
-      (robot == 0 ? p.trail_a : p.trail_b).emplace_back(cell.x + 0.5, cell.y + 0.5);
-  antkit::experiments::save_exploration_figure(
+  p.trails.resize(2);
+  for (std::size_t robot = 0; robot < 2; ++robot)
+    for (const Cell cell : r.trajectories[robot])
+      p.trails[robot].emplace_back(cell.x + 0.5, cell.y + 0.5);
+  antkit::experiments::save_grid_figure(
       c.algo + " exploration (paper 001)",
       std::to_string(r.cells.width()) + " x " + std::to_string(r.cells.height()) + " cells; " +
           std::to_string(r.steps) + " steps, E.M.E " + std::to_string(r.eme) + ", " +
           std::to_string(r.explored) + " cells explored.",
-      {p}, c.svg, c.png);
+      {p}, antkit::experiments::exploration_legend(), c.svg, c.png);
 }
 
 nlohmann::json run(const ExploreCommand& c) {

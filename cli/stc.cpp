@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <antkit/algorithms/options.hpp>
 #include <antkit/experiments/drawing.hpp>
+#include <antkit/experiments/stc_tours.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/stc/path_format.hpp>
@@ -317,36 +318,25 @@ void run_noise_command(const NoiseOptions& o) {
   }
   const auto map = antkit::maps::load_map(o.map);
   const Cell start = choose_start(map, variant, o.start, o.map);
-  StcWorld world;
-  nlohmann::json curve = nlohmann::json::array();
+  std::vector<std::uint32_t> ppm;
+  for (const auto& level : levels) ppm.push_back(level.second);
   std::int64_t reachable = 0;
-  for (const auto& [text, ppm] : levels) {
-    // Trials run in order, each with its own keyed stream (trial = its index): the curve does not
-    // depend on anything but the seed. Means are computed on the reporting side.
-    double coverage = 0, repeats = 0, complete = 0, moves = 0;
-    for (std::int32_t t = 0; t < o.trials; ++t) {
-      RunOptions run;
-      run.noise = {ppm, o.seed, static_cast<std::uint64_t>(t)};
-      run.record_path = false;
-      RunResult r;
-      try {
-        r = run_stc(world, map.cells, start, variant, run);
-      } catch (const InputError& e) {
-        throw InputError(o.start.empty() ? o.map : "--start", e.message());
-      }
-      reachable = r.reachable_subcells;
-      coverage += static_cast<double>(r.covered) / static_cast<double>(r.reachable_subcells);
-      repeats += static_cast<double>(r.repeats) / static_cast<double>(r.reachable_subcells);
-      complete += (r.covered == r.reachable_subcells && r.returned_to_start) ? 1 : 0;
-      moves += static_cast<double>(r.positions);
-    }
-    const double n = o.trials;
-    curve.push_back({{"noise", text},
-                     {"coverage", coverage / n},
-                     {"repeats_per_subcell", repeats / n},
-                     {"complete_tours", complete / n},
-                     {"mean_positions", moves / n}});
+  std::vector<antkit::experiments::StcNoisePoint> points;
+  try {
+    // Trials run in order, each with its own keyed stream (trial = its index): the curve does
+    // not depend on anything but the seed (experiments/stc_tours.hpp).
+    points = antkit::experiments::run_stc_noise(map.cells, start, {o.variant}, ppm, o.trials,
+                                                o.seed, antkit::experiments::Runner{}, &reachable);
+  } catch (const InputError& e) {
+    throw InputError(o.start.empty() ? o.map : "--start", e.message());
   }
+  nlohmann::json curve = nlohmann::json::array();
+  for (std::size_t k = 0; k < points.size(); ++k)
+    curve.push_back({{"noise", levels[k].first},
+                     {"coverage", points[k].coverage},
+                     {"repeats_per_subcell", points[k].repeats_per_subcell},
+                     {"complete_tours", points[k].complete},
+                     {"mean_positions", points[k].mean_positions}});
   nlohmann::json j;
   j["variant"] = std::string(variant_name(variant));
   j["map"] = o.map;

@@ -159,7 +159,9 @@ void save_trails_figure(const std::string& title, const std::string& caption,
                         const std::vector<TrailPanel>& panels, const std::filesystem::path& svg,
                         const std::filesystem::path& png) {
   const double pw = 360, top = 50, inner = 320, bottom = 110;
-  const double width = pw * static_cast<double>(std::max<std::size_t>(1, panels.size()));
+  const double width =
+      std::max(pw * static_cast<double>(std::max<std::size_t>(1, panels.size())), 640.0);
+  const double left = (width - pw * static_cast<double>(panels.size())) / 2;
   const double height = top + inner + bottom;
   detail::render(
       width, height,
@@ -178,12 +180,13 @@ void save_trails_figure(const std::string& title, const std::string& caption,
             }
           if (!(x1 > x0) || !(y1 > y0)) continue;
           const double s = inner / std::max(x1 - x0, y1 - y0);
-          const double cx = pw * static_cast<double>(k) + (pw - (x1 - x0) * s) / 2;
+          const double cx = left + pw * static_cast<double>(k) + (pw - (x1 - x0) * s) / 2;
           const double cy = top + (inner - (y1 - y0) * s) / 2;
           const auto X = [&](double x) { return cx + (x - x0) * s; };
           const auto Y = [&](double y) { return cy + (y1 - y) * s; };
           cairo_set_source_rgb(cr, 0, 0, 0);
-          text(cr, pw * (static_cast<double>(k) + 0.5), top - 10, p.title, 12, 0.5, 0.5, true);
+          text(cr, left + pw * (static_cast<double>(k) + 0.5), top - 10, p.title, 12, 0.5, 0.5,
+               true);
           const auto trail = [&](const std::vector<XY>& pts, detail::Rgb c) {
             cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.75);
             cairo_set_line_width(cr, std::max(0.6, 0.1 * s));
@@ -216,17 +219,27 @@ void save_trails_figure(const std::string& title, const std::string& caption,
       svg, png);
 }
 
-void save_exploration_figure(const std::string& title, const std::string& caption,
-                             const std::vector<ExplorationPanel>& panels,
-                             const std::filesystem::path& svg, const std::filesystem::path& png) {
-  // Table 1's colours, by state code.
-  static constexpr detail::Rgb kState[6] = {{0.62, 0.62, 0.62}, {0.55, 0.33, 0.14},
-                                            {0.90, 0.22, 0.21}, {0.99, 0.85, 0.21},
-                                            {0.12, 0.53, 0.90}, {0.98, 0.55, 0.0}};
-  static constexpr const char* kNames[6] = {
-      "F: fresh",    "S: free, scanned",     "LOS: free, line of sight",
-      "S+LOS: both", "NLOS: maybe occupied", "O: occupied"};
-  const double pw = 250, inner = 220, top = 50, bottom = 130;
+GridLegend exploration_legend() {
+  GridLegend l;
+  l.states = {{"#9e9e9e", "F: fresh"},
+              {"#8d5524", "S: free, scanned"},
+              {"#e53935", "LOS: free, line of sight"},
+              {"#fdd835", "S+LOS: both"},
+              {"#1e88e5", "NLOS: maybe occupied"},
+              {"#fb8c00", "O: occupied"}};
+  l.trails = {{"#d81b60", "robot A (wall follower), trail and position"},
+              {"#000000", "robot B, trail and position"}};
+  return l;
+}
+
+void save_grid_figure(const std::string& title, const std::string& caption,
+                      const std::vector<GridPanel>& panels, const GridLegend& legend,
+                      const std::filesystem::path& svg, const std::filesystem::path& png) {
+  const double pw = panels.size() == 1 ? 520 : 250, inner = panels.size() == 1 ? 480 : 220;
+  const double top = 50;
+  const std::size_t legend_rows =
+      (legend.states.size() + 2) / 3 + (legend.trails.size() + 1) / 2 + 1;
+  const double bottom = 60 + 18 * static_cast<double>(legend_rows);
   const double width = std::max(pw * static_cast<double>(panels.size()), 760.0);
   const double height = top + inner + bottom;
   const double left = (width - pw * static_cast<double>(panels.size())) / 2;
@@ -247,21 +260,30 @@ void save_exploration_figure(const std::string& title, const std::string& captio
           cairo_set_source_rgb(cr, 0, 0, 0);
           text(cr, left + pw * (static_cast<double>(k) + 0.5), top - 10, p.title, 11.5, 0.5, 0.5,
                true);
+          // One rectangle per run of equal states in a row, without antialiasing (no seams).
           cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
           for (std::int32_t y = 0; y < p.states.height(); ++y)
-            for (std::int32_t x = 0; x < p.states.width(); ++x) {
-              const auto c = kState[std::min<std::uint8_t>(p.states[{x, y}], 5)];
+            for (std::int32_t x = 0; x < p.states.width();) {
+              const std::uint8_t v = p.states[{x, y}];
+              std::int32_t end = x + 1;
+              while (end < p.states.width() && p.states[{end, y}] == v) ++end;
+              const auto c = detail::rgb(v < legend.states.size() ? legend.states[v].colour : "");
               cairo_set_source_rgb(cr, c.r, c.g, c.b);
-              cairo_rectangle(cr, ox + x * sc, oy + y * sc, sc, sc);
+              cairo_rectangle(cr, ox + x * sc, oy + y * sc, (end - x) * sc, sc);
               cairo_fill(cr);
+              x = end;
             }
           cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
           cairo_set_source_rgb(cr, 0, 0, 0);
           cairo_set_line_width(cr, 1);
           cairo_rectangle(cr, ox, oy, w * sc, h * sc);
           cairo_stroke(cr);
-          const auto trail = [&](const std::vector<XY>& pts, detail::Rgb c) {
-            if (pts.empty()) return;
+          // Trails last to first, so that trail 0 is on top.
+          for (std::size_t t = p.trails.size(); t-- > 0;) {
+            const auto& pts = p.trails[t];
+            if (pts.empty()) continue;
+            const auto c =
+                detail::rgb(t < legend.trails.size() ? legend.trails[t].colour : "#000000");
             cairo_set_source_rgb(cr, c.r, c.g, c.b);
             cairo_set_line_width(cr, std::max(1.5, sc / 4));
             for (std::size_t i = 0; i < pts.size(); ++i)
@@ -271,24 +293,45 @@ void save_exploration_figure(const std::string& title, const std::string& captio
             cairo_arc(cr, ox + pts.back().first * sc, oy + pts.back().second * sc,
                       std::max(2.5, sc / 2.5), 0, 2 * M_PI);
             cairo_fill(cr);
-          };
-          trail(p.trail_b, {0, 0, 0});
-          trail(p.trail_a, {0.85, 0.11, 0.38});
+          }
+          const auto rc = detail::rgb(legend.robot.colour);
+          cairo_set_source_rgb(cr, rc.r, rc.g, rc.b);
+          for (const auto& [x, y] : p.robots) {
+            cairo_arc(cr, ox + x * sc, oy + y * sc, std::max(2.5, sc / 2.5), 0, 2 * M_PI);
+            cairo_fill(cr);
+          }
         }
-        // Legend: the six states, then the robots.
-        const double ly = top + inner + 22;
-        for (int i = 0; i < 6; ++i) {
-          const double lx = width / 2 - 360 + 240 * (i % 3);
-          const double y = ly + 18 * (i / 3);
-          cairo_set_source_rgb(cr, kState[i].r, kState[i].g, kState[i].b);
+        // Legend: the states three to a row, then the trails two to a row, then the robots.
+        double ly = top + inner + 22;
+        for (std::size_t i = 0; i < legend.states.size(); ++i) {
+          const double lx = width / 2 - 360 + 240 * static_cast<double>(i % 3);
+          const double y = ly + 18 * static_cast<double>(i / 3);
+          const auto c = detail::rgb(legend.states[i].colour);
+          cairo_set_source_rgb(cr, c.r, c.g, c.b);
           cairo_rectangle(cr, lx, y - 6, 14, 12);
+          cairo_fill_preserve(cr);
+          cairo_set_source_rgb(cr, 0.5, 0.5, 0.5);
+          cairo_set_line_width(cr, 0.5);
+          cairo_stroke(cr);
+          cairo_set_source_rgb(cr, 0, 0, 0);
+          text(cr, lx + 20, y, legend.states[i].name, 11, 0, 0.5);
+        }
+        ly += 18 * static_cast<double>((legend.states.size() + 2) / 3) + 4;
+        for (std::size_t i = 0; i < legend.trails.size(); ++i)
+          legend_line(cr, width / 2 - 360 + 420 * static_cast<double>(i % 2),
+                      ly + 18 * static_cast<double>(i / 2), detail::rgb(legend.trails[i].colour), 3,
+                      legend.trails[i].name);
+        ly += 18 * static_cast<double>((legend.trails.size() + 1) / 2);
+        bool any_robot = false;
+        for (const auto& p : panels) any_robot = any_robot || !p.robots.empty();
+        if (any_robot) {
+          const auto rc = detail::rgb(legend.robot.colour);
+          cairo_set_source_rgb(cr, rc.r, rc.g, rc.b);
+          cairo_arc(cr, width / 2 - 353, ly, 4, 0, 2 * M_PI);
           cairo_fill(cr);
           cairo_set_source_rgb(cr, 0, 0, 0);
-          text(cr, lx + 20, y, kNames[i], 11, 0, 0.5);
+          text(cr, width / 2 - 340, ly, legend.robot.name, 11, 0, 0.5);
         }
-        legend_line(cr, width / 2 - 360, ly + 40, {0.85, 0.11, 0.38}, 3,
-                    "robot A (wall follower), trail and position");
-        legend_line(cr, width / 2 + 60, ly + 40, {0, 0, 0}, 3, "robot B, trail and position");
         caption_lines(cr, caption, width / 2, height - 14);
       },
       svg, png);

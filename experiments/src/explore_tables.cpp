@@ -237,10 +237,10 @@ void explore_stages_figure(std::uint64_t seed, const std::filesystem::path& svg,
   std::vector<std::uint64_t> at;
   for (std::uint64_t k = 1; k <= 5; ++k)
     at.push_back(std::max<std::uint64_t>(1, (total * k + 4) / 5));
-  std::vector<ExplorationPanel> panels;
+  std::vector<GridPanel> panels;
   std::uint64_t tick = 0;
   const auto snapshot = [&](const los::TwoRobotWorld& world, const los::ExplorationMap& map) {
-    ExplorationPanel p;
+    GridPanel p;
     const char* stage = "ABCDE";
     p.title = std::string(1, stage[panels.size()]) + ": tick " + std::to_string(tick) + " of " +
               std::to_string(total);
@@ -248,9 +248,10 @@ void explore_stages_figure(std::uint64_t seed, const std::filesystem::path& svg,
     for (std::int32_t y = 0; y < p.states.height(); ++y)
       for (std::int32_t x = 0; x < p.states.width(); ++x)
         p.states[{x, y}] = static_cast<std::uint8_t>(map.at({x, y}));
+    p.trails.resize(2);
     for (int r = 0; r < 2; ++r)
       for (const kernel::Cell c : world.trajectory(r))
-        (r == 0 ? p.trail_a : p.trail_b).emplace_back(c.x + 0.5, c.y + 0.5);
+        p.trails[static_cast<std::size_t>(r)].emplace_back(c.x + 0.5, c.y + 0.5);
     panels.push_back(std::move(p));
   };
   (void)los::explore(grid, pair[0], pair[1], options,
@@ -260,13 +261,13 @@ void explore_stages_figure(std::uint64_t seed, const std::filesystem::path& svg,
                        if (panels.size() < at.size() && tick == at[panels.size()])
                          snapshot(world, map);
                      });
-  save_exploration_figure(
+  save_grid_figure(
       "Paper 001, Figure 4: fast wall-follow, stage by stage",
       "25 x 25 cells, five obstacles (Table 2, repetition 1, seed " + std::to_string(seed) +
           "); the shared map after 20, 40, 60, 80 and 100 % of the " + std::to_string(total) +
           " ticks.\nThe robots trace the walls first, then a frontier search with line-of-sight "
           "sweeping explores what is left.",
-      panels, svg, png);
+      panels, exploration_legend(), svg, png);
 }
 
 } // namespace antkit::experiments

@@ -47,6 +47,67 @@ kernel::OccupancyGrid stc_experiment_map(const StcToursParams& params, const std
   throw kernel::InputError(name, "no such map in the STC experiment");
 }
 
+std::vector<StcNoisePoint> run_stc_noise(const kernel::OccupancyGrid& map, kernel::Cell start,
+                                         const std::vector<std::string>& variants,
+                                         const std::vector<std::uint32_t>& ppm, int trials,
+                                         std::uint64_t seed, const Runner& runner,
+                                         std::int64_t* reachable, std::uint64_t* hash) {
+  std::vector<stc::Variant> vs;
+  for (const auto& name : variants) {
+    const auto v = stc::parse_variant(name);
+    if (!v || (*v != stc::Variant::Ant && *v != stc::Variant::AntEdge))
+      throw kernel::InputError("--variant", "marker noise applies to ant and ant-edge only");
+    vs.push_back(*v);
+  }
+  // A bad start is refused here, on every rank, before any unit runs.
+  const std::int64_t reach =
+      stc::run_stc(map, start, vs.empty() ? stc::Variant::Ant : vs[0], {.record_path = false})
+          .reachable_subcells;
+  const std::size_t levels = ppm.size(), n = static_cast<std::size_t>(std::max(0, trials));
+  const auto units =
+      run_units(runner, "paper 002, marker noise", vs.size() * levels * n, [&](std::uint64_t u) {
+        const stc::Variant v = vs[u / (levels * n)];
+        stc::RunOptions run;
+        run.noise = {ppm[(u / n) % levels], seed, static_cast<std::uint64_t>(u % n)};
+        run.record_path = false;
+        const auto r = stc::run_stc(map, start, v, run);
+        Payload p;
+        p.put_i(r.covered);
+        p.put_i(r.repeats);
+        p.put(r.covered == r.reachable_subcells && r.returned_to_start ? 1 : 0);
+        p.put_i(r.positions);
+        p.put(r.hash);
+        return p;
+      });
+  std::vector<StcNoisePoint> points;
+  if (reachable) *reachable = reach;
+  if (!runner.root()) return points;
+  kernel::TraceHash digest;
+  const double all = static_cast<double>(reach);
+  for (std::size_t vi = 0; vi < vs.size(); ++vi)
+    for (std::size_t level = 0; level < levels; ++level) {
+      StcNoisePoint point;
+      point.variant = std::string(stc::variant_name(vs[vi]));
+      point.ppm = ppm[level];
+      for (std::size_t t = 0; t < n; ++t) {
+        Payload p = units[(vi * levels + level) * n + t];
+        point.coverage += static_cast<double>(p.get_i()) / all;
+        point.repeats_per_subcell += static_cast<double>(p.get_i()) / all;
+        point.complete += static_cast<double>(p.get());
+        point.mean_positions += static_cast<double>(p.get_i());
+        digest.add_u64(p.get());
+      }
+      const double d = static_cast<double>(n);
+      point.coverage /= d;
+      point.repeats_per_subcell /= d;
+      point.complete /= d;
+      point.mean_positions /= d;
+      points.push_back(point);
+    }
+  if (hash) *hash = digest.finish();
+  return points;
+}
+
 StcTours run_stc_tours(const StcToursParams& params, const Runner& runner) {
   StcTours out;
   out.params = params;
@@ -93,30 +154,14 @@ StcTours run_stc_tours(const StcToursParams& params, const Runner& runner) {
   for (std::size_t i = 0; i < out.maps.size(); ++i)
     if (out.maps[i] == "den312d.map") noise_index = i;
   if (noise_index >= grids.size()) noise_index = 0;
-  const stc::Variant noisy[] = {stc::Variant::Ant, stc::Variant::AntEdge};
-  const std::size_t levels = params.noise_ppm.size();
-  const auto trials = static_cast<std::size_t>(std::max(0, params.noise_trials));
   const bool have_noise_map = !grids.empty();
-  const auto& noise_grid = have_noise_map ? grids[noise_index] : kernel::OccupancyGrid{};
   const auto noise_start =
-      have_noise_map ? stc::default_start(noise_grid, stc::Variant::Ant) : std::nullopt;
-  const std::size_t noise_units = noise_start ? 2 * levels * trials : 0;
-  const auto noise =
-      run_units(runner, "paper 002, marker noise", noise_units, [&](std::uint64_t u) {
-        const stc::Variant v = noisy[u / (levels * trials)];
-        const std::size_t level = (u / trials) % levels, t = u % trials;
-        stc::RunOptions run;
-        run.noise = {params.noise_ppm[level], params.seed, static_cast<std::uint64_t>(t)};
-        run.record_path = false;
-        const auto r = stc::run_stc(noise_grid, *noise_start, v, run);
-        Payload p;
-        p.put_i(r.covered);
-        p.put_i(r.reachable_subcells);
-        p.put_i(r.repeats);
-        p.put(r.covered == r.reachable_subcells && r.returned_to_start ? 1 : 0);
-        p.put(r.hash);
-        return p;
-      });
+      have_noise_map ? stc::default_start(grids[noise_index], stc::Variant::Ant) : std::nullopt;
+  std::uint64_t noise_hash = 0;
+  if (noise_start)
+    out.noise =
+        run_stc_noise(grids[noise_index], *noise_start, {"ant", "ant-edge"}, params.noise_ppm,
+                      params.noise_trials, params.seed, runner, &out.noise_reachable, &noise_hash);
   if (!runner.root()) return out;
 
   kernel::TraceHash digest;
@@ -143,28 +188,7 @@ StcTours run_stc_tours(const StcToursParams& params, const Runner& runner) {
   }
   if (noise_start) {
     out.noise_map = out.maps[noise_index];
-    for (std::size_t vi = 0; vi < 2; ++vi)
-      for (std::size_t level = 0; level < levels; ++level) {
-        StcNoisePoint point;
-        point.variant = std::string(stc::variant_name(noisy[vi]));
-        point.ppm = params.noise_ppm[level];
-        for (std::size_t t = 0; t < trials; ++t) {
-          Payload p = noise[(vi * levels + level) * trials + t];
-          const double covered = static_cast<double>(p.get_i());
-          const double reachable = static_cast<double>(p.get_i());
-          const double repeats = static_cast<double>(p.get_i());
-          point.complete += static_cast<double>(p.get());
-          digest.add_u64(p.get());
-          point.coverage += covered / reachable;
-          point.repeats_per_subcell += repeats / reachable;
-          out.noise_reachable = static_cast<std::int64_t>(reachable);
-        }
-        const double n = static_cast<double>(trials);
-        point.coverage /= n;
-        point.repeats_per_subcell /= n;
-        point.complete /= n;
-        out.noise.push_back(point);
-      }
+    digest.add_u64(noise_hash);
   }
   out.hash = digest.finish();
   return out;

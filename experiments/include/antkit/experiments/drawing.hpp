@@ -35,19 +35,33 @@ void save_trails_figure(const std::string& title, const std::string& caption,
                         const std::vector<TrailPanel>& panels, const std::filesystem::path& svg,
                         const std::filesystem::path& png);
 
-// One moment of a two-robot exploration (paper 001): the cell states of Table 1 as their codes
-// (los::CellState: 0 F fresh, 1 S scanned free, 2 LOS free by line of sight, 3 S+LOS, 4 NLOS
-// potentially occupied, 5 O occupied) in the paper's colours, and each robot's trail so far.
-struct ExplorationPanel {
+// A grid picture: each cell's state (an index into the legend's states) drawn in that state's
+// colour, trails (polylines through cell centres, a dot at the last point) and robots (dots).
+struct GridPanel {
   std::string title;
   kernel::Grid<std::uint8_t> states;
-  std::vector<XY> trail_a, trail_b; // cell centres
+  std::vector<std::vector<XY>> trails; // trail k in legend.trails[k]'s colour
+  std::vector<XY> robots;              // in legend.robot's colour
 };
 
-// Panels side by side (the paper's Figure 4: stages A-E of one run), with a legend of the states
-// and the robots.
-void save_exploration_figure(const std::string& title, const std::string& caption,
-                             const std::vector<ExplorationPanel>& panels,
-                             const std::filesystem::path& svg, const std::filesystem::path& png);
+struct GridLegendEntry {
+  std::string colour; // "#rrggbb"
+  std::string name;
+};
+
+struct GridLegend {
+  std::vector<GridLegendEntry> states, trails;
+  GridLegendEntry robot{"#d62728", "robot"};
+};
+
+// Panels side by side, with a legend naming every state, trail and the robots, and a caption.
+void save_grid_figure(const std::string& title, const std::string& caption,
+                      const std::vector<GridPanel>& panels, const GridLegend& legend,
+                      const std::filesystem::path& svg, const std::filesystem::path& png);
+
+// Paper 001's palette (Table 1): states are los::CellState codes (0 F fresh, 1 S scanned free,
+// 2 LOS free by line of sight, 3 S+LOS, 4 NLOS potentially occupied, 5 O occupied); trail 0 is
+// robot A (the wall follower), trail 1 robot B.
+[[nodiscard]] GridLegend exploration_legend();
 
 } // namespace antkit::experiments

@@ -48,7 +48,19 @@ struct StcNoisePoint {
   std::string variant;
   std::uint32_t ppm = 0;
   double coverage = 0, repeats_per_subcell = 0, complete = 0; // means over the trials
+  double mean_positions = 0;
 };
+
+// The marker-noise curve (`antkit stc-noise`, and paper 002's in reproduce): each variant (ant or
+// ant-edge) from `start` at each misread probability (ppm), `trials` runs, trial t with the noise
+// stream (seed, t); means in trial order. Points by variant, then level. `reachable` receives the
+// reachable sub-cells, `hash` a digest of every run's trace hash in unit order. Throws
+// kernel::InputError for a bad start (as run_stc).
+[[nodiscard]] std::vector<StcNoisePoint>
+run_stc_noise(const kernel::OccupancyGrid& map, kernel::Cell start,
+              const std::vector<std::string>& variants, const std::vector<std::uint32_t>& ppm,
+              int trials, std::uint64_t seed, const Runner& runner,
+              std::int64_t* reachable = nullptr, std::uint64_t* hash = nullptr);
 
 struct StcTours {
   StcToursParams params;
