@@ -866,6 +866,62 @@ void uniform_claims(const std::vector<ut::TablesRow>& rows, const std::vector<ut
   }
 }
 
+// The papers' own words for each claim (from the texts in ../shared/papers).
+const std::map<std::string, std::string>& quotes() {
+  static const std::map<std::string, std::string> q = {
+      {"000-1", "nBC values for square and circular arenas are approximately the same for all "
+                "sizes except the two smallest arenas."},
+      {"000-3", "50% of the measurements lie within a narrow band of the median for a wide range "
+                "of arena sizes. The plot clearly indicates that nBC provides a robust measure "
+                "for area."},
+      {"000-4", "nBC values of the two smallest arenas (with area 348 and 1392 unit^2) obtained "
+                "are lower than expected. This is due to the blending of trails"},
+      {"000-5", "nBC values remain approximately the same despite the change in the compactness "
+                "of the arena."},
+      {"000-6", "As the arena becomes less compact, the variance in the nBC values obtained using "
+                "two-pass strategy increase (indicated by the growth in the error bars) also "
+                "affecting the median value."},
+      {"000-7", "the partial barrier inside an arena has no significant affect on its size "
+                "measurement."},
+      {"000-8", "causing the robot to remain stuck in some of the lobes. As a result of this, the "
+                "variance [...] corresponding to the the largest barrier length is increased."},
+      {"000-9", "The plots clearly show that nBC remains almost invariant with respect to arena "
+                "shape."},
+      {"000-10", "as the thickness of the pheromone increases, blending (which can be seen by "
+                 "smaller-than-expected nBC values for small areas) affects larger areas."},
+      {"000-11", "one needs to increase the trail length with the size of the area being measured "
+                 "for a reliable estimate."},
+      {"000-12", "Buffon's needle method provides reliable area estimates for even short trail "
+                 "lengths, showing little dependency to the size of the arena."},
+      {"001-1", "It is clear from Table 2 that changing the positions of the obstacles does not "
+                "dramatically affect the exploration time."},
+      {"001-2", "the exploration time varies not only with the number of obstacles but also with "
+                "the distribution of the obstacles themselves. (Table 3: 47, 82.5, 98.1, 121.5, "
+                "146.1 steps.)"},
+      {"001-3", "Our proposed wall-follow algorithm is better than the exploration algorithm in "
+                "[4] in terms of robot motor energy consumption (see Fig.5)."},
+      {"001-3b", "Our proposed wall-follow algorithm is better than the exploration algorithm in "
+                 "[4] in terms of robot motor energy consumption (see Fig.5)."},
+      {"001-4", "The proposed exploration algorithm consumes less exploration time than in "
+                "environments with no obstacles or with few obstacles (less than ten) as shown in "
+                "Fig.6."},
+      {"002-1", "The Robot's task is to cover the floor, passing exactly once over each sub-cell "
+                "and to return to the same cell where it started."},
+      {"004-2", "It is obvious that A* produces superior coverage in all four control studies. "
+                "(Tables 1-4: 100.0 % in every row.)"},
+      {"004-3", "The performance of the PM algorithm degrades with increasing obstacle density"},
+      {"004-3b", "though the movements taken to achieve coverage remains relatively smaller and "
+                 "consistent."},
+      {"004-4", "It is evident that PM should be able to achieve similar coverage as A* if more "
+                "robots are deployed in the environment."},
+      {"004-5", "It is also possible for PM to achieve this uniform coverage with fewer movements "
+                "than A*. (Table 4: 566.0 vs 749.0 with 3 robots, 421.0 vs 553.0 with 4.)"},
+      {"004-6", "As expected, the worst performance is by RW, the baseline."},
+      {"004-pm", "(Tables 1-3: PM covers 34.96 to 82.82 % with 10-30 % obstacles.)"},
+  };
+  return q;
+}
+
 std::string json_hex(std::uint64_t h) {
   return kernel::hash_hex(h);
 }
@@ -1145,6 +1201,9 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
                                       " --sensor-model disk --out DIR (prints this hash)"});
   }
 
+  for (auto& c : report.claims)
+    if (const auto it = quotes().find(c.id); it != quotes().end()) c.quote = it->second;
+
   // The report.
   std::size_t holds = 0, partly = 0, not_held = 0;
   for (const auto& c : report.claims)
@@ -1165,8 +1224,12 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
      << holds << " hold, " << partly << " partly, " << not_held
      << " do not hold. Each claim's rule, the figure that decides it and, where it does not "
         "hold, what the runs show:\n\n"
-     << claims_markdown(report.claims) << "\nRules:\n\n";
-  for (const auto& c : report.claims) md << "- " << c.id << ": " << c.rule << ".\n";
+     << claims_markdown(report.claims) << "\nRules, and the papers' own words:\n\n";
+  for (const auto& c : report.claims)
+    md << "- " << c.id << ": " << c.rule << "."
+       << (c.quote.empty() ? std::string(" (A claim of ours beside the paper.)")
+                           : " The paper: \"" + c.quote + "\"")
+       << '\n';
   md << '\n'
      << body.str() << "## Trace hashes\n\n"
      << "Each experiment's trace hash (every trial's, in trial order) and a command that "
@@ -1192,7 +1255,8 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
                       {"rule", c.rule},
                       {"verdict", verdict_text(c.verdict)},
                       {"measured", c.measured},
-                      {"why", c.why}});
+                      {"why", c.why},
+                      {"quote", c.quote}});
   j["claims"] = std::move(claims);
   nlohmann::json hashes = nlohmann::json::array();
   for (const auto& e : report.experiments)
