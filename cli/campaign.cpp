@@ -93,13 +93,6 @@ campaign::Options options_of(const CampaignCommand& c) {
   return o;
 }
 
-void make_out_dir(const std::string& dir) {
-  std::error_code ec; // refuse an output directory that cannot be made before running, not after
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
-    throw InputError("--out", "cannot create the directory " + dir);
-}
-
 void run(const CampaignCommand& c) {
   const campaign::Options o = options_of(c);
   const bool tty = ::isatty(STDERR_FILENO) == 1;
@@ -127,24 +120,13 @@ void run(const CampaignCommand& c) {
   if (campaign::mpi::launched()) {
     session.emplace();
     ranks = session->size();
-    std::string refused; // rank 0 makes the directory; every rank learns whether it could
-    if (session->rank() == 0) {
-      try {
-        make_out_dir(c.out);
-      } catch (const InputError& e) {
-        refused = e.message();
-      }
-    }
-    if (!session->all(refused.empty())) {
-      if (session->rank() == 0) throw InputError("--out", refused);
-      return;
-    }
+    if (!antkit::cli::make_out_dir_on_rank0(*session, c.out)) return;
     result = campaign::mpi::run(*session, o, progress);
     if (session->rank() != 0) return;
   } else
 #endif
   {
-    make_out_dir(c.out);
+    antkit::cli::make_out_dir(c.out);
     result = campaign::run(o, progress);
   }
   const double elapsed = seconds();

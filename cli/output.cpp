@@ -1,11 +1,36 @@
 #include "output.hpp"
 
 #include <algorithm>
+#include <antkit/kernel/input_error.hpp>
 #include <cstddef>
+#include <filesystem>
 #include <map>
 #include <vector>
 
 namespace antkit::cli {
+
+void make_out_dir(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw kernel::InputError("--out", "cannot create the directory " + dir);
+}
+
+#if ANTKIT_HAVE_MPI
+bool make_out_dir_on_rank0(const antkit::mpi::Session& session, const std::string& dir) {
+  std::string refused;
+  if (session.rank() == 0) {
+    try {
+      make_out_dir(dir);
+    } catch (const kernel::InputError& e) {
+      refused = e.message();
+    }
+  }
+  if (session.all(refused.empty())) return true;
+  if (session.rank() == 0) throw kernel::InputError("--out", refused);
+  return false;
+}
+#endif
 
 void add_format_option(CLI::App& sub, Format& format) {
   sub.add_option_function<std::string>(

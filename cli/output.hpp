@@ -7,6 +7,9 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#if ANTKIT_HAVE_MPI
+#include <antkit/mpi/session.hpp>
+#endif
 
 namespace antkit::cli {
 
@@ -17,6 +20,17 @@ void add_format_option(CLI::App& sub, Format& format);
 
 // Prints `result`: JSON on one line per top-level value (pretty, indent 2), or a table.
 void emit(const nlohmann::json& result, Format format, std::ostream& out);
+
+// Makes the directory --out names (and its parents), or throws kernel::InputError("--out", ...):
+// an output directory that cannot be made is refused before a run, not after it.
+void make_out_dir(const std::string& dir);
+
+#if ANTKIT_HAVE_MPI
+// Under mpirun: rank 0 makes --out and every rank learns whether it could (a collective). Returns
+// true when it was made; on rank 0 a refusal throws kernel::InputError("--out", ...), on the other
+// ranks it returns false (they have nothing to report and stop).
+bool make_out_dir_on_rank0(const antkit::mpi::Session& session, const std::string& dir);
+#endif
 
 // A failed check (a replay that diverges, an invariant that does not hold): exit status 1.
 class CheckFailed : public std::runtime_error {

@@ -54,13 +54,6 @@ std::vector<std::string> split(const std::string& s) {
   return parts;
 }
 
-void make_out_dir(const std::string& out) {
-  std::error_code ec;
-  std::filesystem::create_directories(out, ec);
-  if (!std::filesystem::is_directory(out))
-    throw InputError("--out", "cannot make the directory '" + out + "'");
-}
-
 void run(const ReproduceCommand& c) {
   if (c.quick && c.full) throw InputError("--full", "give --quick or --full, not both");
   if (c.threads < 1 || c.threads > 256)
@@ -109,18 +102,7 @@ void run(const ReproduceCommand& c) {
   if (antkit::mpi::launched()) {
     session.emplace();
     ranks = session->size();
-    std::string refused; // rank 0 makes the directory; every rank learns whether it could
-    if (session->rank() == 0) {
-      try {
-        make_out_dir(c.out);
-      } catch (const InputError& e) {
-        refused = e.message();
-      }
-    }
-    if (!session->all(refused.empty())) {
-      if (session->rank() == 0) throw InputError("--out", refused);
-      return;
-    }
+    if (!antkit::cli::make_out_dir_on_rank0(*session, c.out)) return;
     runner.rank = session->rank();
     runner.ranks = session->size();
     runner.gather = [&](const std::string& mine) { return session->gather_to_root(mine); };
@@ -130,7 +112,7 @@ void run(const ReproduceCommand& c) {
   } else
 #endif
   {
-    make_out_dir(c.out);
+    antkit::cli::make_out_dir(c.out);
     report = ex::reproduce(o, runner);
   }
   ex::release_drawing_caches();

@@ -40,6 +40,14 @@ void caption_lines(cairo_t* cr, const std::string& caption, double cx, double bo
     text(cr, cx, bottom - 15 * static_cast<double>(lines.size() - 1 - i), lines[i], 11, 0.5, 0.5);
 }
 
+// A white page with its title centred at height y.
+void page(cairo_t* cr, double width, double y, const std::string& title) {
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  text(cr, width / 2, y, title, 16, 0.5, 0.5, true);
+}
+
 void legend_line(cairo_t* cr, double x, double y, detail::Rgb c, double width,
                  const std::string& label) {
   cairo_set_source_rgb(cr, c.r, c.g, c.b);
@@ -65,10 +73,7 @@ void save_tour_figure(const kernel::OccupancyGrid& map, std::span<const kernel::
   detail::render(
       width, height,
       [&](cairo_t* cr) {
-        cairo_set_source_rgb(cr, 1, 1, 1);
-        cairo_paint(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        text(cr, width / 2, 22, title, 16, 0.5, 0.5, true);
+        page(cr, width, 22, title);
         const auto X = [&](double x) { return ox + x * scale; };
         const auto Y = [&](double y) { return top + y * scale; };
         // The map: free white, blocked dark grey, unknown light grey, one rectangle per run of
@@ -166,10 +171,7 @@ void save_trails_figure(const std::string& title, const std::string& caption,
   detail::render(
       width, height,
       [&](cairo_t* cr) {
-        cairo_set_source_rgb(cr, 1, 1, 1);
-        cairo_paint(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        text(cr, width / 2, 20, title, 16, 0.5, 0.5, true);
+        page(cr, width, 20, title);
         for (std::size_t k = 0; k < panels.size(); ++k) {
           const TrailPanel& p = panels[k];
           double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
@@ -246,10 +248,7 @@ void save_grid_figure(const std::string& title, const std::string& caption,
   detail::render(
       width, height,
       [&](cairo_t* cr) {
-        cairo_set_source_rgb(cr, 1, 1, 1);
-        cairo_paint(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        text(cr, width / 2, 20, title, 16, 0.5, 0.5, true);
+        page(cr, width, 20, title);
         for (std::size_t k = 0; k < panels.size(); ++k) {
           const auto& p = panels[k];
           const double w = p.states.width(), h = p.states.height();

@@ -288,7 +288,7 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"reproduce --only los,sheng --out {D}/outdir", "--only:", "'sheng'"},
       {"reproduce --quick --full --out {D}/outdir", "--full:", "not both"},
       {"reproduce --threads 0 --out {D}/outdir", "--threads:", "1 to 256"},
-      {"reproduce --only los --out /proc/antkit-reproduce", "--out:", "cannot make"},
+      {"reproduce --only los --out /proc/antkit-reproduce", "--out:", "cannot create"},
       {"reproduce --only los", "--out is required", ""},
       {"cover-experiment --sensor-model sonar --runs 1", "--sensor-model:", "'sonar'"},
       {"arena circle:d=1e400 --raster 1 --out {D}/out.map", "SPEC:1:10:", "bad number"},
