@@ -2,9 +2,11 @@
 
 #include <antkit/experiments/plot.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <atomic>
 #include <cairo-svg.h>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <fontconfig/fontconfig.h>
 #include <fstream>
 #include <map>
@@ -96,8 +98,19 @@ Rgb rgb(const std::string& hex) {
   return {0, 0, 0};
 }
 
+std::atomic<bool> drawn{false};
+
 void render(double width, double height, const std::function<void(cairo_t*)>& draw,
             const std::filesystem::path& svg, const std::filesystem::path& png) {
+  // The caches are released at exit too (so that LeakSanitizer, which checks at exit after the
+  // handlers registered later than its own, finds nothing of Cairo's or fontconfig's), for a
+  // program that never calls release_drawing_caches.
+  static const bool at_exit = [] {
+    std::atexit([] { release_drawing_caches(); });
+    return true;
+  }();
+  (void)at_exit;
+  drawn = true;
   const std::filesystem::path svg_tmp = temporary_beside(svg), png_tmp = temporary_beside(png);
   auto cleanup = [&] {
     std::error_code ec;
@@ -141,7 +154,8 @@ void render(double width, double height, const std::function<void(cairo_t*)>& dr
 
 void release_drawing_caches() noexcept {
   // Cairo's font caches hold fontconfig objects; fontconfig's configuration is global. Both are
-  // rebuilt on the next use.
+  // rebuilt on the next use. Only after a drawing: fontconfig is not to be finalised twice.
+  if (!detail::drawn.exchange(false)) return;
   cairo_debug_reset_static_data();
   FcFini();
 }

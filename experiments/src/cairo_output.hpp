@@ -1,6 +1,7 @@
 #pragma once
 // Internal to antkit_experiments: one drawing function rendered twice, to SVG and to PNG, and the
 // text helper the figures share.
+#include <atomic>
 #include <cairo.h>
 #include <filesystem>
 #include <functional>
@@ -12,6 +13,9 @@ namespace antkit::experiments::detail {
 // written to a temporary name beside it and renamed, so no partial file is left (an empty path:
 // that file is not made). Throws
 // kernel::InputError(path, ...) when a file cannot be written.
+// Set by render(); cleared by release_drawing_caches().
+extern std::atomic<bool> drawn;
+
 void render(double width, double height, const std::function<void(cairo_t*)>& draw,
             const std::filesystem::path& svg, const std::filesystem::path& png);
 

@@ -51,8 +51,9 @@ void save_figure(const Figure& figure, const std::filesystem::path& svg,
                  const std::filesystem::path& png);
 
 // Frees Cairo's and fontconfig's process-wide caches (font faces, the fontconfig configuration),
-// which otherwise live until exit and are reported as leaks by LeakSanitizer (the debug preset).
-// Call once when no more figures will be drawn; drawing again afterwards rebuilds them.
+// which otherwise live until exit and would be reported as leaks by LeakSanitizer (the debug
+// preset). Called at exit after any drawing; call it earlier when no more figures will be drawn
+// for a while. Drawing again afterwards rebuilds them. Not while another thread draws.
 void release_drawing_caches() noexcept;
 
 } // namespace antkit::experiments
