@@ -1218,8 +1218,10 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
           "counts";
   else
     md << ": the papers' trial counts";
-  md << "). Every number below depends only on these options: not on the threads, the MPI ranks "
-        "or the machine.\n\n"
+  md << "). Every number below depends only on these options, not on the threads or the MPI "
+        "ranks: the trials are the kernel's, bit-exact on every compiler and CPU that "
+        "scripts/determinism.sh checks; the reductions (medians, means, Figure 14's fit) are "
+        "floating point on the machine that writes the report.\n\n"
      << "## Claims\n\n"
      << holds << " hold, " << partly << " partly, " << not_held
      << " do not hold. Each claim's rule, the figure that decides it and, where it does not "

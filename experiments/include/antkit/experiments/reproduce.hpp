@@ -14,7 +14,8 @@
 //   claims.json    the same verdicts for programs;
 //   buffon/, los/, stc/, uniform/   the CSV and Markdown tables, and every figure as SVG and PNG.
 // Every file is written atomically, and every byte of every file depends only on the options (not
-// on the threads, the MPI ranks or the time taken): timings go to the terminal only.
+// on the threads, the MPI ranks or the time taken; timings go to the terminal only) and on the
+// machine that writes it: its floating point for the reductions, its Cairo and fonts for figures.
 //
 // Trial counts: --full runs the papers' (100 trials per arena for paper 000, the 10 (5 for the
 // blocks) repetitions of paper 001, 10 runs per row for paper 004); --quick runs 20 trials per
