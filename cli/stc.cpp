@@ -26,6 +26,7 @@
 #include <antkit/algorithms/options.hpp>
 #include <antkit/experiments/drawing.hpp>
 #include <antkit/experiments/stc_tours.hpp>
+#include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/stc/path_format.hpp>
@@ -40,7 +41,6 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -86,7 +86,7 @@ Cell choose_start(const antkit::maps::GridMap& map, Variant variant, const std::
 // stdout or a file, through a large buffer; numbers written with to_chars.
 class Out {
 public:
-  explicit Out(std::FILE* f) : f_(f) { buf_.reserve(kBuffer + 64); }
+  explicit Out(std::ostream& sink) : sink_(sink) { buf_.reserve(kBuffer + 64); }
   ~Out() { flush(); }
   Out(const Out&) = delete;
   Out& operator=(const Out&) = delete;
@@ -101,59 +101,40 @@ public:
     return *this << std::string_view(digits, static_cast<std::size_t>(end - digits));
   }
   void flush() {
-    if (!buf_.empty() && std::fwrite(buf_.data(), 1, buf_.size(), f_) != buf_.size())
-      failed_ = true;
+    sink_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
     buf_.clear();
   }
-  [[nodiscard]] bool failed() const { return failed_ || std::ferror(f_) != 0; }
 
 private:
   static constexpr std::size_t kBuffer = std::size_t{1} << 20;
-  std::FILE* f_;
+  std::ostream& sink_;
   std::string buf_;
-  bool failed_ = false;
 };
 
-// --path-out: CSV or the binary path, written beside its name and renamed when complete.
-class PathFile {
+// --path-out's content: CSV lines, or the binary path (stc/path_format.hpp), whose move count is
+// written into the header at the end. The file itself is geometry::write_file_atomic's.
+class PathWriter {
 public:
-  PathFile(const std::string& name, const OccupancyGrid& map, Cell start)
-      : final_(name), binary_(std::filesystem::path(name).extension() == ".bin") {
-    const auto ext = std::filesystem::path(name).extension();
-    if (!binary_ && ext != ".csv")
-      throw InputError("--path-out", "'" + name + "': give a .csv or a .bin file name");
-    tmp_ = final_.parent_path() /
-           ("." + final_.filename().string() + ".tmp-" + std::to_string(::getpid()));
-    file_ = std::fopen(tmp_.c_str(), "wb");
-    if (!file_) throw InputError("--path-out", "cannot write '" + name + "'");
-    out_.emplace(file_);
+  PathWriter(std::ostream& file, bool binary, const OccupancyGrid& map, Cell start)
+      : file_(file), out_(file), binary_(binary) {
     if (binary_)
-      *out_ << path_format::header(map.width(), map.height(), start, 0);
+      out_ << path_format::header(map.width(), map.height(), start, 0);
     else
-      *out_ << "x,y\n";
+      out_ << "x,y\n";
   }
-  ~PathFile() {
-    if (!file_) return;
-    out_.reset();
-    std::fclose(file_);
-    std::error_code ec;
-    std::filesystem::remove(tmp_, ec); // not committed: no partial file is left
-  }
-  PathFile(const PathFile&) = delete;
-  PathFile& operator=(const PathFile&) = delete;
 
   void add(SubCell s) {
     if (!binary_) {
-      *out_ << std::int64_t{s.x} << "," << std::int64_t{s.y} << "\n";
+      out_ << std::int64_t{s.x} << "," << std::int64_t{s.y} << "\n";
       return;
     }
-    if (moves_ > 0 || have_last_) {
+    if (have_last_) {
       const int code = path_format::move_code(last_, s);
       if (code < 0) throw std::logic_error("a tour move that is not 4-adjacent");
       byte_ = static_cast<unsigned char>(byte_ | (code << (2 * (moves_ % 4))));
       if (++moves_ % 4 == 0) {
         const char c = static_cast<char>(byte_);
-        *out_ << std::string_view(&c, 1);
+        out_ << std::string_view(&c, 1);
         byte_ = 0;
       }
     }
@@ -161,35 +142,24 @@ public:
     last_ = s;
   }
 
-  void commit() {
+  void finish() {
     if (binary_ && moves_ % 4 != 0) {
       const char c = static_cast<char>(byte_);
-      *out_ << std::string_view(&c, 1);
+      out_ << std::string_view(&c, 1);
     }
-    out_->flush();
-    bool ok = !out_->failed();
+    out_.flush();
     if (binary_) { // the number of moves, now known
       std::string count;
       path_format::put_le(count, moves_, 8);
-      ok =
-          ok && std::fseek(file_, 24, SEEK_SET) == 0 && std::fwrite(count.data(), 1, 8, file_) == 8;
-    }
-    out_.reset();
-    ok = std::fclose(file_) == 0 && ok;
-    file_ = nullptr;
-    std::error_code ec;
-    if (ok) std::filesystem::rename(tmp_, final_, ec);
-    if (!ok || ec) {
-      std::filesystem::remove(tmp_, ec);
-      throw InputError("--path-out", "could not write '" + final_.string() + "'");
+      file_.seekp(24);
+      file_.write(count.data(), 8);
     }
   }
 
 private:
-  std::filesystem::path final_, tmp_;
+  std::ostream& file_;
+  Out out_;
   bool binary_;
-  std::FILE* file_ = nullptr;
-  std::optional<Out> out_;
   std::uint64_t moves_ = 0;
   bool have_last_ = false;
   SubCell last_{};
@@ -208,22 +178,25 @@ void run_stc_command(const StcOptions& o) {
   }
   const auto map = antkit::maps::load_map(o.map);
   const Cell start = choose_start(map, variant, o.start, o.map);
-  // Every bad input is refused before the first byte of output: the path file is opened here, and
-  // run_stc checks the start before the first position, which writes the JSON's head.
-  std::optional<PathFile> path_file;
-  if (!o.path_out.empty()) path_file.emplace(o.path_out, map.cells, start);
+  // Every bad input is refused before the first byte of output: the path file's name is checked
+  // and the file opened (write_file_atomic) before the run, and run_stc checks the start before
+  // the first position, which writes the JSON's head.
+  const auto ext = std::filesystem::path(o.path_out).extension();
+  if (!o.path_out.empty() && ext != ".csv" && ext != ".bin")
+    throw InputError("--path-out", "'" + o.path_out + "': give a .csv or a .bin file name");
+  PathWriter* path_file = nullptr;
   const bool json = o.format == Format::Json;
   std::optional<Out> out;
   std::int64_t written = 0;
   const auto head = [&] {
-    out.emplace(stdout);
+    out.emplace(std::cout);
     *out << "{\n  \"variant\": \"" << variant_name(variant)
          << "\",\n  \"width\": " << std::int64_t{map.cells.width()}
          << ",\n  \"height\": " << std::int64_t{map.cells.height()} << ",\n  \"start\": ["
          << std::int64_t{start.x} << ", " << std::int64_t{start.y} << "],\n  \"path\": [";
   };
   run.record_path = !o.svg.empty() || !o.png.empty();
-  if (json || path_file)
+  if (json || !o.path_out.empty())
     run.on_position = [&](SubCell s) {
       if (json) {
         if (written == 0) head();
@@ -236,12 +209,24 @@ void run_stc_command(const StcOptions& o) {
       if (path_file) path_file->add(s);
     };
   RunResult r;
-  try {
-    r = run_stc(map.cells, start, variant, run);
-  } catch (const InputError& e) { // name the option or the file the start came from
-    throw InputError(o.start.empty() ? o.map : "--start", e.message());
+  const auto tour = [&] {
+    try {
+      r = run_stc(map.cells, start, variant, run);
+    } catch (const InputError& e) { // name the option or the file the start came from
+      throw InputError(o.start.empty() ? o.map : "--start", e.message());
+    }
+  };
+  if (o.path_out.empty()) {
+    tour();
+  } else {
+    antkit::geometry::write_file_atomic(o.path_out, [&](std::ostream& file) {
+      PathWriter writer(file, ext == ".bin", map.cells, start);
+      path_file = &writer;
+      tour();
+      writer.finish();
+      path_file = nullptr;
+    });
   }
-  if (path_file) path_file->commit();
   if (!o.svg.empty() || !o.png.empty())
     antkit::experiments::save_tour_figure(
         map.cells, r.path,

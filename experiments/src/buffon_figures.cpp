@@ -32,12 +32,6 @@ const char* const kColours[] = {"#1e5bd8", "#d81e1e", "#1b9e3a", "#e08a00",
 
 } // namespace
 
-std::string number(double v) {
-  std::ostringstream s;
-  s << std::setprecision(10) << v;
-  return s.str();
-}
-
 std::vector<BuffonArena> buffon_figure_arenas(int figure) {
   std::vector<BuffonArena> pts;
   const double diameters[] = {10, 20, 30, 40, 50, 60, 70, 80, 90, 100};

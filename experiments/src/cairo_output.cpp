@@ -13,6 +13,7 @@
 #include <memory>
 #include <sstream>
 #include <unistd.h>
+#include <vector>
 
 namespace antkit::experiments {
 
@@ -89,6 +90,19 @@ void text(cairo_t* cr, double x, double y, const std::string& s, double size, do
   cairo_text_extents(cr, s.c_str(), &e);
   cairo_move_to(cr, x - align_x * e.width - e.x_bearing, y - align_y * e.height - e.y_bearing);
   cairo_show_text(cr, s.c_str());
+}
+
+void caption_lines(cairo_t* cr, const std::string& caption, double cx, double bottom) {
+  std::vector<std::string> lines{""};
+  for (const char ch : caption) {
+    if (ch == '\n')
+      lines.emplace_back();
+    else
+      lines.back() += ch;
+  }
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    text(cr, cx, bottom - 15 * static_cast<double>(lines.size() - 1 - i), lines[i], 11, 0.5, 0.5);
 }
 
 Rgb rgb(const std::string& hex) {

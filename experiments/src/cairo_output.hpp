@@ -23,6 +23,9 @@ void render(double width, double height, const std::function<void(cairo_t*)>& dr
 void text(cairo_t* cr, double x, double y, const std::string& s, double size, double align_x,
           double align_y, bool bold = false);
 
+// A caption, one line per '\n', centred on cx, its last line at height `bottom`.
+void caption_lines(cairo_t* cr, const std::string& caption, double cx, double bottom);
+
 struct Rgb {
   double r, g, b;
 };

@@ -8,6 +8,7 @@
 
 namespace antkit::experiments {
 
+using detail::caption_lines;
 using detail::text;
 
 namespace {
@@ -25,19 +26,6 @@ detail::Rgb along(double t) {
   return {stops[i][0] + f * (stops[i + 1][0] - stops[i][0]),
           stops[i][1] + f * (stops[i + 1][1] - stops[i][1]),
           stops[i][2] + f * (stops[i + 1][2] - stops[i][2])};
-}
-
-void caption_lines(cairo_t* cr, const std::string& caption, double cx, double bottom) {
-  std::vector<std::string> lines{""};
-  for (const char ch : caption) {
-    if (ch == '\n')
-      lines.emplace_back();
-    else
-      lines.back() += ch;
-  }
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  for (std::size_t i = 0; i < lines.size(); ++i)
-    text(cr, cx, bottom - 15 * static_cast<double>(lines.size() - 1 - i), lines[i], 11, 0.5, 0.5);
 }
 
 // A white page with its title centred at height y.

@@ -1,6 +1,8 @@
 #include <algorithm>
+#include <antkit/buffon/estimate.hpp>
 #include <antkit/experiments/drawing.hpp>
 #include <antkit/experiments/explore_tables.hpp>
+#include <antkit/experiments/format.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/los/explore.hpp>
 #include <cmath>
@@ -13,12 +15,6 @@ namespace antkit::experiments {
 namespace los = antkit::los;
 
 namespace {
-
-std::string fixed1(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", x);
-  return buf;
-}
 
 los::ExploreOptions method_options(std::size_t m) {
   los::ExploreOptions opt;
@@ -122,12 +118,12 @@ std::string table2_markdown(const ExploreTables& t) {
   }
   md << "| Average |";
   for (std::size_t e = 1; e < kExploreEnvironments.size(); ++e)
-    md << ' ' << fixed1(mean_of(t.runs[e][0].steps)) << " / " << fixed1(kPaperTable2Average[e - 1])
-       << " |";
+    md << ' ' << fixed(mean_of(t.runs[e][0].steps), 1) << " / "
+       << fixed(kPaperTable2Average[e - 1], 1) << " |";
   md << "\n| S. Deviation |";
   for (std::size_t e = 1; e < kExploreEnvironments.size(); ++e)
-    md << ' ' << fixed1(sample_deviation(t.runs[e][0].steps)) << " / "
-       << fixed1(kPaperTable2Deviation[e - 1]) << " |";
+    md << ' ' << fixed(sample_deviation(t.runs[e][0].steps), 1) << " / "
+       << fixed(kPaperTable2Deviation[e - 1], 1) << " |";
   md << '\n';
   return md.str();
 }
@@ -164,11 +160,11 @@ std::string table3_markdown(const ExploreTables& t) {
     const auto& r = t.runs[e];
     const double fs = mean_of(r[1].steps), fe = mean_of(r[1].eme);
     const double ws = mean_of(r[0].steps), we = mean_of(r[0].eme);
-    md << "| " << kExploreEnvironments[e].name << " | " << fixed1(p.sheng_steps) << " | "
-       << fixed1(p.sheng_eme) << " | " << fixed1(fs) << " | " << fixed1(fe) << " | "
-       << fixed1(mean_of(r[2].steps)) << " | " << fixed1(mean_of(r[2].eme)) << " | "
-       << fixed1(p.fwf_steps) << " | " << fixed1(p.fwf_eme) << " | " << fixed1(ws) << " | "
-       << fixed1(we) << " | " << (we < fe ? "yes" : "no") << " | " << (ws < fs ? "yes" : "no")
+    md << "| " << kExploreEnvironments[e].name << " | " << fixed(p.sheng_steps, 1) << " | "
+       << fixed(p.sheng_eme, 1) << " | " << fixed(fs, 1) << " | " << fixed(fe, 1) << " | "
+       << fixed(mean_of(r[2].steps), 1) << " | " << fixed(mean_of(r[2].eme), 1) << " | "
+       << fixed(p.fwf_steps, 1) << " | " << fixed(p.fwf_eme, 1) << " | " << fixed(ws, 1) << " | "
+       << fixed(we, 1) << " | " << (we < fe ? "yes" : "no") << " | " << (ws < fs ? "yes" : "no")
        << " |\n";
   }
   return md.str();
@@ -190,16 +186,8 @@ Figure explore_plot(const ExploreTables& t) {
     PlotSeries s{name, colour, dashed, false, {}};
     for (std::size_t e = 0; e < kExploreEnvironments.size(); ++e) {
       const auto& v = eme ? t.runs[e][method].eme : t.runs[e][method].steps;
-      std::vector<double> sorted = v;
-      std::sort(sorted.begin(), sorted.end());
-      const auto q = [&](double f) {
-        const double at = f * static_cast<double>(sorted.size() - 1);
-        const auto i = static_cast<std::size_t>(at);
-        return i + 1 < sorted.size()
-                   ? sorted[i] + (at - static_cast<double>(i)) * (sorted[i + 1] - sorted[i])
-                   : sorted[i];
-      };
-      s.points.push_back({static_cast<double>(e), mean_of(v), q(0.25), q(0.75)});
+      s.points.push_back({static_cast<double>(e), mean_of(v), buffon::quantile(v, 0.25),
+                          buffon::quantile(v, 0.75)});
     }
     return s;
   };

@@ -5,12 +5,6 @@
 
 namespace antkit::uniform::experiments {
 
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
 std::vector<TablesRow> run_tables(const TablesConfig& c,
                                   const antkit::experiments::Runner& runner) {
   const std::size_t per_row = c.runs;

@@ -152,17 +152,7 @@ void draw(cairo_t* cr, const Figure& f, double width) {
   yr.pad(!f.y_from_zero);
   cairo_set_source_rgb(cr, 0, 0, 0);
   text(cr, width / 2, 22, f.title, 17, 0.5, 0.5, true);
-  // The caption, one line per '\n', at the bottom.
-  std::vector<std::string> lines{""};
-  for (const char ch : f.caption) {
-    if (ch == '\n')
-      lines.emplace_back();
-    else
-      lines.back() += ch;
-  }
-  for (std::size_t i = 0; i < lines.size(); ++i)
-    text(cr, width / 2, kHeight - 10 - 15 * static_cast<double>(lines.size() - 1 - i), lines[i], 11,
-         0.5, 0.5);
+  detail::caption_lines(cr, f.caption, width / 2, kHeight - 10);
   std::vector<double> x_minor, y_minor;
   const auto x_major = ticks(xr, f.x_categories, x_minor);
   const auto y_major = ticks(yr, {}, y_minor);

@@ -3,6 +3,7 @@
 #include <antkit/experiments/buffon_figures.hpp>
 #include <antkit/experiments/drawing.hpp>
 #include <antkit/experiments/explore_tables.hpp>
+#include <antkit/experiments/format.hpp>
 #include <antkit/experiments/paper_tables.hpp>
 #include <antkit/experiments/reproduce.hpp>
 #include <antkit/experiments/stc_tours.hpp>
@@ -31,12 +32,6 @@ const std::vector<std::string> kFamilies = {"buffon", "los", "stc", "uniform"};
 std::string pct(double v, int decimals = 1) {
   char buf[48];
   std::snprintf(buf, sizeof buf, "%.*f %%", decimals, 100 * v);
-  return buf;
-}
-
-std::string fix(double v, int decimals) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
   return buf;
 }
 
@@ -74,10 +69,11 @@ public:
   }
   [[nodiscard]] const std::filesystem::path& out() const { return out_; }
   void added(const std::string& rel_path) { files_.emplace_back(rel_path); }
-  std::vector<std::filesystem::path> files_;
+  [[nodiscard]] const std::vector<std::filesystem::path>& files() const { return files_; }
 
 private:
   std::filesystem::path out_;
+  std::vector<std::filesystem::path> files_;
 };
 
 // A Markdown file's body under the report's own heading level: its first "# " title dropped and
@@ -146,10 +142,11 @@ void buffon_claims(const BuffonResults& b, std::vector<Claim>& claims) {
     c.verdict = count_verdict(good, all, 0.75);
     c.measured = std::to_string(good) + " of " + std::to_string(all) +
                  " sizes agree; largest difference from d = 30: " + pct(worst) +
-                 " (d = " + fix(worst_d, 0) + "); d = 10: " + small(10) + ", d = 20: " + small(20);
+                 " (d = " + fixed(worst_d, 0) + "); d = 10: " + small(10) +
+                 ", d = 20: " + small(20);
     if (c.verdict != Verdict::Holds)
       c.why = "the square's median departs from the circle's by more than 5 % at d = " +
-              fix(worst_d, 0) + ".";
+              fixed(worst_d, 0) + ".";
     claims.push_back(c);
   }
   {
@@ -197,7 +194,7 @@ void buffon_claims(const BuffonResults& b, std::vector<Claim>& claims) {
         if (r.arena.x >= 30) larger_min = std::min(larger_min, r.efficiency);
         if (r.arena.x <= 30 || r.arena.x == 100)
           per_size += (per_size.empty() ? "" : ", ") +
-                      ("d = " + fix(r.arena.x, 0) + ": " + fix(r.efficiency, 2));
+                      ("d = " + fixed(r.arena.x, 0) + ": " + fixed(r.efficiency, 2));
       }
     std::size_t good = 0;
     for (double d : {10.0, 20.0})
@@ -251,14 +248,15 @@ void buffon_claims(const BuffonResults& b, std::vector<Claim>& claims) {
     for (std::size_t i = 0; i < f6.rows.size(); ++i) {
       const double w = f6.rows[i].nbc_q3 - f6.rows[i].nbc_q1;
       if (i > 0) growing = growing && w >= f6.rows[i - 1].nbc_q3 - f6.rows[i - 1].nbc_q1;
-      iqrs += (iqrs.empty() ? "" : ", ") + fix(w, 3);
+      iqrs += (iqrs.empty() ? "" : ", ") + fixed(w, 3);
     }
     const bool rises = f6.rows.back().nbc_median > f6.rows.front().nbc_median;
     c.verdict = growing && rises   ? Verdict::Holds
                 : growing || rises ? Verdict::Partly
                                    : Verdict::DoesNotHold;
     c.measured = "IQR (circle to e = 0.998): " + iqrs + "; median " +
-                 fix(f6.rows.front().nbc_median, 4) + " to " + fix(f6.rows.back().nbc_median, 4);
+                 fixed(f6.rows.front().nbc_median, 4) + " to " +
+                 fixed(f6.rows.back().nbc_median, 4);
     if (c.verdict != Verdict::Holds)
       c.why = std::string(growing ? "" : "the IQR does not grow at every step") +
               (growing || rises ? "" : "; ") + (rises ? "" : "the median does not rise") + ".";
@@ -285,7 +283,7 @@ void buffon_claims(const BuffonResults& b, std::vector<Claim>& claims) {
       const double d = rel(r.nbc_median, standard);
       ++all;
       good += d <= 0.10;
-      if (d > worst) worst = d, worst_at = r.arena.series + " " + fix(r.arena.x, 0) + " %";
+      if (d > worst) worst = d, worst_at = r.arena.series + " " + fixed(r.arena.x, 0) + " %";
     }
     c.verdict = count_verdict(good, all, 0.75);
     c.measured = std::to_string(good) + " of " + std::to_string(all) +
@@ -294,7 +292,7 @@ void buffon_claims(const BuffonResults& b, std::vector<Claim>& claims) {
       std::string off;
       for (const auto& r : f7.rows)
         if (r.arena.series != "none" && r.arena.x <= 70 && rel(r.nbc_median, standard) > 0.10)
-          off += (off.empty() ? "" : ", ") + r.arena.series + " " + fix(r.arena.x, 0) + " %";
+          off += (off.empty() ? "" : ", ") + r.arena.series + " " + fixed(r.arena.x, 0) + " %";
       c.why = "the median moves by more than 10 % with " + off + ".";
     }
     claims.push_back(c);
@@ -322,7 +320,7 @@ void buffon_claims(const BuffonResults& b, std::vector<Claim>& claims) {
       }
       good += longest > others;
       list += (list.empty() ? "" : "; ") + std::string(series) + ": IQR at 80 % " +
-              fix(longest, 3) + ", largest shorter " + fix(others, 3);
+              fixed(longest, 3) + ", largest shorter " + fixed(others, 3);
     }
     c.verdict = count_verdict(good, 2);
     c.measured = list;
@@ -386,7 +384,7 @@ void buffon_claims(const BuffonResults& b, std::vector<Claim>& claims) {
     std::string list;
     for (std::size_t i = 0; i < sizes.size(); ++i) {
       if (i > 0) growing = growing && sizes[i].second >= sizes[i - 1].second;
-      list += (list.empty() ? "" : ", ") + sizes[i].first + ": d <= " + fix(sizes[i].second, 0);
+      list += (list.empty() ? "" : ", ") + sizes[i].first + ": d <= " + fixed(sizes[i].second, 0);
     }
     const bool larger = !sizes.empty() && sizes.back().second > sizes.front().second;
     c.verdict = growing && larger ? Verdict::Holds
@@ -417,10 +415,10 @@ void buffon_claims(const BuffonResults& b, std::vector<Claim>& claims) {
       for (std::size_t i = 0; i < at_last.size(); ++i) {
         if (i > 0) falling = falling && at_last[i].second < at_last[i - 1].second;
         list += (list.empty() ? "" : ", ") +
-                ("d = " + fix(at_last[i].first, 0) + ": " + fix(at_last[i].second, 2));
+                ("d = " + fixed(at_last[i].first, 0) + ": " + fixed(at_last[i].second, 2));
       }
       c.verdict = falling ? Verdict::Holds : Verdict::DoesNotHold;
-      c.measured = "RS / area at total length " + fix(last, 0) + ": " + list;
+      c.measured = "RS / area at total length " + fixed(last, 0) + ": " + list;
       if (!falling) c.why = "the RS estimate does not fall steadily with the diameter.";
       claims.push_back(c);
     }
@@ -444,7 +442,8 @@ void buffon_claims(const BuffonResults& b, std::vector<Claim>& claims) {
         ++all;
         good += e <= 0.15;
         if (e > worst)
-          worst = e, worst_at = "d = " + fix(r.diameter, 0) + ", length " + fix(r.total_length, 0);
+          worst = e,
+          worst_at = "d = " + fixed(r.diameter, 0) + ", length " + fixed(r.total_length, 0);
       }
       c.verdict = count_verdict(good, all, 0.75);
       c.measured = std::to_string(good) + " of " + std::to_string(all) +
@@ -463,8 +462,8 @@ std::string buffon_rows_table(const BuffonFigure& f) {
   s << "| series | x | arena | median nBC | IQR | efficiency |\n|---|---|---|---|---|---|\n";
   for (const auto& r : f.rows)
     s << "| " << r.arena.series << " | " << number(r.arena.x) << " | `" << r.arena.spec << "` | "
-      << fix(r.nbc_median, 4) << " | " << fix(r.nbc_q1, 4) << " - " << fix(r.nbc_q3, 4) << " | "
-      << fix(r.efficiency, 3) << " |\n";
+      << fixed(r.nbc_median, 4) << " | " << fixed(r.nbc_q1, 4) << " - " << fixed(r.nbc_q3, 4)
+      << " | " << fixed(r.efficiency, 3) << " |\n";
   return s.str();
 }
 
@@ -481,7 +480,7 @@ void buffon_figure4(Writer& w, std::uint64_t seed) {
     params.keep_trails = true;
     const auto r = buffon::run_trial(buffon::World(arena.walls_fx()), params, 0);
     TrailPanel p;
-    p.title = "circle, d = " + number(diameters[k]) + " (area " + fix(arena.area(), 0) + ")";
+    p.title = "circle, d = " + number(diameters[k]) + " (area " + fixed(arena.area(), 0) + ")";
     for (const auto& ring : arena.rings()) {
       std::vector<XY> pts;
       for (const auto& v : ring) pts.emplace_back(v[0], v[1]);
@@ -549,10 +548,10 @@ void los_claims(const ExploreTables& t, std::vector<Claim>& claims) {
             "",
             ""};
     std::size_t good = 0;
-    std::string list = fix(mean_of(t.runs[0][0].steps), 1);
+    std::string list = fixed(mean_of(t.runs[0][0].steps), 1);
     for (std::size_t e = 1; e <= 4; ++e) {
       good += mean_of(t.runs[e][0].steps) > mean_of(t.runs[e - 1][0].steps);
-      list += ", " + fix(mean_of(t.runs[e][0].steps), 1);
+      list += ", " + fixed(mean_of(t.runs[e][0].steps), 1);
     }
     c.verdict = count_verdict(good, 4, 0.75);
     c.measured = "mean steps " + list + " (paper: 47, 82.5, 98.1, 121.5, 146.1)";
@@ -576,8 +575,8 @@ void los_claims(const ExploreTables& t, std::vector<Claim>& claims) {
       good += better;
       if (!better)
         lost += (lost.empty() ? "" : "; ") + std::string(env[e].name) + " " +
-                fix(mean_of(t.runs[e][0].eme), 1) + " vs " +
-                fix(mean_of(t.runs[e][baseline].eme), 1);
+                fixed(mean_of(t.runs[e][0].eme), 1) + " vs " +
+                fixed(mean_of(t.runs[e][baseline].eme), 1);
     }
     c.verdict = count_verdict(good, env.size());
     c.measured =
@@ -606,8 +605,8 @@ void los_claims(const ExploreTables& t, std::vector<Claim>& claims) {
     std::string list;
     for (std::size_t e = 0; e <= 3; ++e) {
       good += mean_of(t.runs[e][0].steps) < mean_of(t.runs[e][1].steps);
-      list += (list.empty() ? "" : ", ") + fix(mean_of(t.runs[e][0].steps), 1) + " vs " +
-              fix(mean_of(t.runs[e][1].steps), 1);
+      list += (list.empty() ? "" : ", ") + fixed(mean_of(t.runs[e][0].steps), 1) + " vs " +
+              fixed(mean_of(t.runs[e][1].steps), 1);
     }
     c.verdict = count_verdict(good, 4);
     c.measured = std::to_string(good) + " of 4 (" + list + ")";
@@ -723,8 +722,8 @@ void uniform_claims(const std::vector<ut::TablesRow>& rows, const std::vector<ut
         falling = falling && at(rows, a, robots)->coverage[1] >= at(rows, b, robots)->coverage[1];
       good += falling;
       list += (list.empty() ? "" : "; ") + std::to_string(robots) +
-              " robot(s): " + fix(at(rows, 0, robots)->coverage[1], 1) + " to " +
-              fix(at(rows, 30, robots)->coverage[1], 1) + " %";
+              " robot(s): " + fixed(at(rows, 0, robots)->coverage[1], 1) + " to " +
+              fixed(at(rows, 30, robots)->coverage[1], 1) + " %";
     }
     c.verdict = count_verdict(good, 4);
     c.measured = list;
@@ -762,8 +761,8 @@ void uniform_claims(const std::vector<ut::TablesRow>& rows, const std::vector<ut
     for (const int d : {10, 20, 30}) {
       good += at(rows, d, 4)->coverage[1] > at(rows, d, 1)->coverage[1];
       list += (list.empty() ? "" : "; ") + std::to_string(d) +
-              " %: " + fix(at(rows, d, 1)->coverage[1], 1) + " to " +
-              fix(at(rows, d, 4)->coverage[1], 1);
+              " %: " + fixed(at(rows, d, 1)->coverage[1], 1) + " to " +
+              fixed(at(rows, d, 4)->coverage[1], 1);
     }
     c.verdict = count_verdict(good, 3);
     c.measured = list + " % (1 to 4 robots)";
@@ -788,8 +787,8 @@ void uniform_claims(const std::vector<ut::TablesRow>& rows, const std::vector<ut
       const auto* r = at(rows, 0, robots);
       good += r->complete[1] == runs && r->movements[1] < r->movements[2];
       list += (list.empty() ? "" : "; ") + std::to_string(robots) + " robots: PM " +
-              fix(r->coverage[1], 1) + " % in " + fix(r->movements[1], 1) + " vs A* " +
-              fix(r->movements[2], 1);
+              fixed(r->coverage[1], 1) + " % in " + fixed(r->movements[1], 1) + " vs A* " +
+              fixed(r->movements[2], 1);
     }
     c.verdict = count_verdict(good, 2);
     c.measured = list;
@@ -845,11 +844,11 @@ void uniform_claims(const std::vector<ut::TablesRow>& rows, const std::vector<ut
       }
     }
     c.verdict = count_verdict(good, all);
-    c.measured = "ours " + fix(lo, 1) + "-" + fix(hi, 1) + " % (" + std::to_string(good) + " of " +
-                 std::to_string(all) + " rows within 10 points)";
+    c.measured = "ours " + fixed(lo, 1) + "-" + fixed(hi, 1) + " % (" + std::to_string(good) +
+                 " of " + std::to_string(all) + " rows within 10 points)";
     if (!disk.empty())
-      c.measured += "; with a disk sensor that sees through walls " + fix(dlo, 1) + "-" +
-                    fix(dhi, 1) + " % (" + std::to_string(disk_good) + " of " +
+      c.measured += "; with a disk sensor that sees through walls " + fixed(dlo, 1) + "-" +
+                    fixed(dhi, 1) + " % (" + std::to_string(disk_good) + " of " +
                     std::to_string(all) + ")";
     if (c.verdict != Verdict::Holds) {
       c.why = "our PM stops when no unviewed cell is in sensor range, early among obstacles.";
@@ -920,10 +919,6 @@ const std::map<std::string, std::string>& quotes() {
       {"004-pm", "(Tables 1-3: PM covers 34.96 to 82.82 % with 10-30 % obstacles.)"},
   };
   return q;
-}
-
-std::string json_hex(std::uint64_t h) {
-  return kernel::hash_hex(h);
 }
 
 } // namespace
@@ -1160,8 +1155,8 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
            << "| variant | misread probability | coverage | repeats per sub-cell | complete tours "
               "|\n|---|---|---|---|---|\n";
       for (const auto& p : stc.noise)
-        body << "| " << p.variant << " | " << number(p.ppm / 1e6) << " | " << fix(p.coverage, 4)
-             << " | " << fix(p.repeats_per_subcell, 4) << " | " << fix(p.complete, 2) << " |\n";
+        body << "| " << p.variant << " | " << number(p.ppm / 1e6) << " | " << fixed(p.coverage, 4)
+             << " | " << fixed(p.repeats_per_subcell, 4) << " | " << fixed(p.complete, 2) << " |\n";
       body << '\n';
     }
     report.experiments.push_back(
@@ -1184,9 +1179,9 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
             "|\n|---|---|---|---|---|\n";
     for (std::size_t i = 0; i < uniform_rows.size() && i < disk_rows.size(); ++i)
       body << "| " << uniform_rows[i].paper->density_percent << " | "
-           << uniform_rows[i].paper->robots << " | " << fix(uniform_rows[i].coverage[1], 2) << " | "
-           << fix(disk_rows[i].coverage[1], 2) << " | "
-           << fix(uniform_rows[i].paper->coverage[1], 2) << " |\n";
+           << uniform_rows[i].paper->robots << " | " << fixed(uniform_rows[i].coverage[1], 2)
+           << " | " << fixed(disk_rows[i].coverage[1], 2) << " | "
+           << fixed(uniform_rows[i].paper->coverage[1], 2) << " |\n";
     body << '\n';
     kernel::TraceHash los_digest, disk_digest;
     for (const auto& r : uniform_rows) los_digest.add_u64(r.hash);
@@ -1238,7 +1233,7 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
         "reproduces it. This whole report: `"
      << reproduce_command(o, o.only) << "`.\n\n| experiment | hash | command |\n|---|---|---|\n";
   for (const auto& e : report.experiments)
-    md << "| " << e.name << " | `" << json_hex(e.hash) << "` | `" << e.command << "` |\n";
+    md << "| " << e.name << " | `" << kernel::hash_hex(e.hash) << "` | `" << e.command << "` |\n";
 
   nlohmann::json j;
   j["command"] = reproduce_command(o, o.only);
@@ -1262,12 +1257,13 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
   j["claims"] = std::move(claims);
   nlohmann::json hashes = nlohmann::json::array();
   for (const auto& e : report.experiments)
-    hashes.push_back({{"experiment", e.name}, {"hash", json_hex(e.hash)}, {"command", e.command}});
+    hashes.push_back(
+        {{"experiment", e.name}, {"hash", kernel::hash_hex(e.hash)}, {"command", e.command}});
   j["experiments"] = std::move(hashes);
   j["summary"] = {{"holds", holds}, {"partly", partly}, {"does_not_hold", not_held}};
   w.text("claims.json", j.dump(2) + "\n");
   w.text("README.md", md.str());
-  report.files = w.files_;
+  report.files = w.files();
   return report;
 }
 

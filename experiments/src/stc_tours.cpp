@@ -60,9 +60,10 @@ std::vector<StcNoisePoint> run_stc_noise(const kernel::OccupancyGrid& map, kerne
     vs.push_back(*v);
   }
   // A bad start is refused here, on every rank, before any unit runs.
+  stc::RunOptions quiet;
+  quiet.record_path = false;
   const std::int64_t reach =
-      stc::run_stc(map, start, vs.empty() ? stc::Variant::Ant : vs[0], {.record_path = false})
-          .reachable_subcells;
+      stc::run_stc(map, start, vs.empty() ? stc::Variant::Ant : vs[0], quiet).reachable_subcells;
   const std::size_t levels = ppm.size(), n = static_cast<std::size_t>(std::max(0, trials));
   const auto units =
       run_units(runner, "paper 002, marker noise", vs.size() * levels * n, [&](std::uint64_t u) {
@@ -150,7 +151,8 @@ StcTours run_stc_tours(const StcToursParams& params, const Runner& runner) {
       });
 
   // The noise curve.
-  std::size_t noise_index = grids.size() - (params.random_maps > 0 ? params.random_maps : 0);
+  std::size_t noise_index =
+      grids.size() - static_cast<std::size_t>(std::max(0, params.random_maps));
   for (std::size_t i = 0; i < out.maps.size(); ++i)
     if (out.maps[i] == "den312d.map") noise_index = i;
   if (noise_index >= grids.size()) noise_index = 0;

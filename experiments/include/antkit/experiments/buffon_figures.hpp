@@ -19,6 +19,7 @@
 // units of each visit (total 336 k, k = 1..10); circle d uses experiment 5400 + d. The fit uses the
 // calibration arenas' median nBC at the same checkpoint; each trial of a test arena then gives one
 // estimate.
+#include <antkit/experiments/format.hpp>
 #include <antkit/experiments/plot.hpp>
 #include <antkit/experiments/run.hpp>
 #include <cstdint>
@@ -82,8 +83,5 @@ struct Figure14 {
 [[nodiscard]] Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner);
 [[nodiscard]] std::string figure14_csv(const Figure14& f);
 [[nodiscard]] Figure figure14_plot(const Figure14& f);
-
-// Numbers as the experiment files write them (10 significant digits).
-[[nodiscard]] std::string number(double v);
 
 } // namespace antkit::experiments

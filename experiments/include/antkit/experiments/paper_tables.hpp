@@ -21,6 +21,7 @@
 //   * Coordinated A* and frontier coverage ("go beyond the paper") run on the same maps and
 //     starts, with the same 10 * W * H limit.
 #include <algorithm>
+#include <antkit/experiments/format.hpp>
 #include <antkit/experiments/plot.hpp>
 #include <antkit/experiments/run.hpp>
 #include <antkit/kernel/hash.hpp>
@@ -129,8 +130,7 @@ inline TrialOut run_trial(const TablesConfig& c, const PaperRow& row, std::uint3
 // ranks other than 0 the result is empty.
 std::vector<TablesRow> run_tables(const TablesConfig& c, const antkit::experiments::Runner& runner);
 
-// v with `decimals` decimals, as the tables print it.
-std::string fixed(double v, int decimals);
+using antkit::experiments::fixed; // as the tables print numbers (format.hpp)
 
 // The files of `antkit cover-experiment`: the rows as CSV, and the four tables (ours / paper's)
 // with the coordinated-A* and frontier comparisons as Markdown.

@@ -65,7 +65,7 @@ struct Claim {
   Verdict verdict = Verdict::DoesNotHold;
   std::string measured; // the figure that decides it
   std::string why;      // where it does not hold (or only partly): what the runs show
-  std::string quote;    // the paper's own words (empty for a claim of ours beside the paper)
+  std::string quote{};  // the paper's own words (empty for a claim of ours beside the paper)
 };
 
 struct ExperimentRecord {

@@ -57,8 +57,8 @@
 namespace antkit::maps {
 
 // 16384 x 16384 cells: a 1-byte-per-cell grid of 256 MiB, far above any benchmark map (the largest
-// in ../shared/maps is 530 x 481), as large as `antkit stc` covers at scale (issue 15; it was 8192 x
-// 8192 before). A fuzzer cannot reach it: a declared size must be backed by the bytes present.
+// in ../shared/maps is 530 x 481), as large as `antkit stc` covers at scale (issue 15; it was 8192
+// x 8192 before). A fuzzer cannot reach it: a declared size must be backed by the bytes present.
 inline constexpr std::int64_t kMaxMapCells = std::int64_t{1} << 28;
 // A P2 image of kMaxMapCells pixels of up to 5 digits each fits below this.
 inline constexpr std::uintmax_t kMaxMapFileBytes = std::uintmax_t{1} << 31;
