@@ -162,13 +162,4 @@ std::unique_ptr<LoggedController> make_controller(const ControllerSpec& spec) {
   return std::make_unique<WanderController>(spec.seed, p(0), p(1));
 }
 
-void RunHash::add(std::int64_t step, std::span<const std::int64_t> obs,
-                  std::span<const std::int64_t> cmd, std::uint64_t state) noexcept {
-  hash_.add_i64(step).add_u32(static_cast<std::uint32_t>(obs.size()));
-  for (const auto v : obs) hash_.add_i64(v);
-  hash_.add_u32(static_cast<std::uint32_t>(cmd.size()));
-  for (const auto v : cmd) hash_.add_i64(v);
-  hash_.add_u64(state);
-}
-
 } // namespace antkit::devices

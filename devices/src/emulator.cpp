@@ -271,15 +271,15 @@ FirmwareEmulator::Response FirmwareEmulator::handle(std::string_view line) {
   return out;
 }
 
-std::uint64_t FirmwareEmulator::serve(Pty& pty, const std::atomic<bool>* stop,
-                                      bool stop_on_signal) {
+void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>& handle,
+               const std::function<void()>& new_session, const std::atomic<bool>* stop,
+               bool stop_on_signal) {
   SerialPort& port = pty.master();
   // Without a slave fd of its own the master sees EIO whenever no client has the tty open: that is
   // how a session's end shows.
   pty.close_slave_keeper();
   std::string pending;
   bool in_session = false;
-  const std::uint64_t first = commands_;
   while (!(stop != nullptr && stop->load()) && !(stop_on_signal && StopSignals::requested())) {
     ReadResult r;
     try {
@@ -301,11 +301,10 @@ std::uint64_t FirmwareEmulator::serve(Pty& pty, const std::atomic<bool>* stop,
       pending.pop_back();
     if (pending.empty()) continue;
     if (!in_session) {
-      if (commands_ > 0) reset(); // a new client: the robot back at its start
+      new_session();
       in_session = true;
-      ++sessions_;
     }
-    const Response response = handle(pending);
+    const EmulatorResponse response = handle(pending);
     pending.clear();
     if (response.delay.count() > 0) std::this_thread::sleep_for(response.delay);
     if (response.hang_up) {
@@ -314,12 +313,24 @@ std::uint64_t FirmwareEmulator::serve(Pty& pty, const std::atomic<bool>* stop,
     }
     if (!response.bytes.empty()) {
       try {
-        port.write_all(response.bytes, std::chrono::milliseconds(1000));
+        port.write_all(response.bytes, std::chrono::milliseconds(2000));
       } catch (const LinkError&) {
         // The client is gone or not reading: a real robot would not notice either.
       }
     }
   }
+}
+
+std::uint64_t FirmwareEmulator::serve(Pty& pty, const std::atomic<bool>* stop,
+                                      bool stop_on_signal) {
+  const std::uint64_t first = commands_;
+  serve_pty(
+      pty, [this](std::string_view line) { return handle(line); },
+      [this] {
+        if (commands_ > 0) reset(); // a new client: the robot back at its start
+        ++sessions_;
+      },
+      stop, stop_on_signal);
   return commands_ - first;
 }
 

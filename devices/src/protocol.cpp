@@ -17,16 +17,10 @@ Decoded<T> error_at(std::size_t column, std::string message) {
   return d;
 }
 
-// One reply line: `letter` (lower case), then `min_n` to `max_n` values in [lo, hi] after commas,
-// then CR LF and nothing else. Columns count from 1.
-Decoded<Fields> scan(std::string_view line, char letter, std::size_t min_n, std::size_t max_n,
-                     std::int64_t lo, std::int64_t hi) {
-  if (line.empty()) return error_at<Fields>(1, "an empty reply");
-  if (line[0] != letter)
-    return error_at<Fields>(1, std::string("expected the reply letter '") + letter + "'");
-  Fields f;
-  f.letter = letter;
-  std::size_t i = 1;
+// The values after a line's letter: from line[i], each a comma and a decimal in [lo, hi], at most
+// max_n of them, appended to f; i is left after the last. An error names its column (from 1).
+std::optional<DecodeError> scan_values(std::string_view line, std::size_t& i, Fields& f,
+                                       std::int64_t lo, std::int64_t hi, std::size_t max_n) {
   while (i < line.size() && line[i] == ',') {
     ++i;
     const std::size_t start = i;
@@ -35,28 +29,19 @@ Decoded<Fields> scan(std::string_view line, char letter, std::size_t min_n, std:
     std::int64_t v = 0;
     std::size_t digits = 0;
     while (i < line.size() && line[i] >= '0' && line[i] <= '9') {
-      if (digits++ == 10) return error_at<Fields>(start + 1, "a value with too many digits");
+      if (digits++ == 10) return DecodeError{start + 1, "a value with too many digits"};
       v = v * 10 + (line[i++] - '0');
     }
-    if (digits == 0) return error_at<Fields>(i + 1, "expected a decimal value");
+    if (digits == 0) return DecodeError{i + 1, "expected a decimal value"};
     if (negative) v = -v;
     if (v < lo || v > hi)
-      return error_at<Fields>(start + 1, "value " + std::to_string(v) + " out of range [" +
-                                             std::to_string(lo) + ", " + std::to_string(hi) + "]");
+      return DecodeError{start + 1, "value " + std::to_string(v) + " out of range [" +
+                                        std::to_string(lo) + ", " + std::to_string(hi) + "]"};
     if (f.count == max_n)
-      return error_at<Fields>(start + 1, "more than " + std::to_string(max_n) + " values");
+      return DecodeError{start + 1, "more than " + std::to_string(max_n) + " values"};
     f.values[f.count++] = static_cast<std::int32_t>(v);
   }
-  if (f.count < min_n)
-    return error_at<Fields>(i + 1, "expected " + std::to_string(min_n) + " values, got " +
-                                       std::to_string(f.count));
-  if (i + 2 != line.size() || line[i] != '\r' || line[i + 1] != '\n') {
-    if (i < line.size() && line[i] != '\r') return error_at<Fields>(i + 1, "unexpected byte");
-    return error_at<Fields>(i + 1, "expected CR LF at the end of the reply");
-  }
-  Decoded<Fields> d;
-  d.value = f;
-  return d;
+  return std::nullopt;
 }
 
 Decoded<Fields> scan_text(std::string_view line, char letter) {
@@ -91,6 +76,44 @@ void check_speed(const RobotDescription& r, std::int32_t v) {
 }
 
 } // namespace
+
+Decoded<Fields> scan_reply(std::string_view line, char letter, std::size_t min_n, std::size_t max_n,
+                           std::int64_t lo, std::int64_t hi) {
+  if (line.empty()) return error_at<Fields>(1, "an empty reply");
+  if (line[0] != letter)
+    return error_at<Fields>(1, std::string("expected the reply letter '") + letter + "'");
+  Fields f;
+  f.letter = letter;
+  std::size_t i = 1;
+  if (auto e = scan_values(line, i, f, lo, hi, max_n))
+    return error_at<Fields>(e->column, e->message);
+  if (f.count < min_n)
+    return error_at<Fields>(i + 1, "expected " + std::to_string(min_n) + " values, got " +
+                                       std::to_string(f.count));
+  if (i + 2 != line.size() || line[i] != '\r' || line[i + 1] != '\n') {
+    if (i < line.size() && line[i] != '\r') return error_at<Fields>(i + 1, "unexpected byte");
+    return error_at<Fields>(i + 1, "expected CR LF at the end of the reply");
+  }
+  Decoded<Fields> d;
+  d.value = f;
+  return d;
+}
+
+Decoded<Fields> scan_command(std::string_view line, bool lower_ok) {
+  if (line.empty()) return error_at<Fields>(1, "an empty command");
+  char letter = line[0];
+  if (lower_ok && letter >= 'a' && letter <= 'z') letter = static_cast<char>(letter - 'a' + 'A');
+  if (letter < 'A' || letter > 'Z') return error_at<Fields>(1, "expected a command letter");
+  Fields f;
+  f.letter = letter;
+  std::size_t i = 1;
+  if (auto e = scan_values(line, i, f, INT32_MIN, INT32_MAX, f.values.size()))
+    return error_at<Fields>(e->column, e->message);
+  if (i != line.size()) return error_at<Fields>(i + 1, "unexpected byte");
+  Decoded<Fields> d;
+  d.value = f;
+  return d;
+}
 
 Codec::Codec(RobotKind robot) : robot_(&describe(robot)) {}
 
@@ -133,7 +156,7 @@ std::vector<std::string> Codec::safe_stop() const {
 }
 
 Decoded<bool> Codec::decode_ack(std::string_view line, char command_letter) const {
-  const auto f = scan(line, lower(command_letter), 0, 0, 0, 0);
+  const auto f = scan_reply(line, lower(command_letter), 0, 0, 0, 0);
   if (!f) return error_at<bool>(f.error.column, f.error.message);
   Decoded<bool> d;
   d.value = true;
@@ -142,7 +165,7 @@ Decoded<bool> Codec::decode_ack(std::string_view line, char command_letter) cons
 
 Decoded<Proximity> Codec::decode_proximity(std::string_view line) const {
   const std::size_t extra = robot_->kind == RobotKind::Epuck ? 2 : 0;
-  const auto f = scan(line, 'n', 8, 8 + extra, robot_->proximity_min, robot_->proximity_max);
+  const auto f = scan_reply(line, 'n', 8, 8 + extra, robot_->proximity_min, robot_->proximity_max);
   if (!f) return error_at<Proximity>(f.error.column, f.error.message);
   if (f.value->count != 8 && f.value->count != 8 + extra)
     return error_at<Proximity>(line.size() - 1, "expected 8 or 10 values");
@@ -154,7 +177,7 @@ Decoded<Proximity> Codec::decode_proximity(std::string_view line) const {
 
 Decoded<WheelPair> Codec::decode_odometry(std::string_view line) const {
   if (!robot_->has_odometry) return error_at<WheelPair>(1, "this robot has no wheel counters");
-  const auto f = scan(line, lower(robot_->odometry_read), 2, 2, INT32_MIN, INT32_MAX);
+  const auto f = scan_reply(line, lower(robot_->odometry_read), 2, 2, INT32_MIN, INT32_MAX);
   if (!f) return error_at<WheelPair>(f.error.column, f.error.message);
   Decoded<WheelPair> d;
   d.value = WheelPair{f.value->values[0], f.value->values[1]};
@@ -162,7 +185,7 @@ Decoded<WheelPair> Codec::decode_odometry(std::string_view line) const {
 }
 
 Decoded<WheelPair> Codec::decode_speed(std::string_view line) const {
-  const auto f = scan(line, 'e', 2, 2, robot_->speed_min, robot_->speed_max);
+  const auto f = scan_reply(line, 'e', 2, 2, robot_->speed_min, robot_->speed_max);
   if (!f) return error_at<WheelPair>(f.error.column, f.error.message);
   Decoded<WheelPair> d;
   d.value = WheelPair{f.value->values[0], f.value->values[1]};
@@ -175,48 +198,20 @@ Decoded<Fields> Codec::decode_reply(std::string_view sent_command, std::string_v
   const auto& r = *robot_;
   if (c == 'n' || c == 'o') {
     const std::size_t extra = r.kind == RobotKind::Epuck ? 2 : 0;
-    const auto f = scan(line, c, 8, 8 + extra, r.proximity_min, r.proximity_max);
+    const auto f = scan_reply(line, c, 8, 8 + extra, r.proximity_min, r.proximity_max);
     if (f && f.value->count != 8 && f.value->count != 8 + extra)
       return error_at<Fields>(line.size() - 1, "expected 8 or 10 values");
     return f;
   }
-  if (c == 'e') return scan(line, 'e', 2, 2, r.speed_min, r.speed_max);
+  if (c == 'e') return scan_reply(line, 'e', 2, 2, r.speed_min, r.speed_max);
   if (r.has_odometry && c == lower(r.odometry_read))
-    return scan(line, c, 2, 2, INT32_MIN, INT32_MAX);
+    return scan_reply(line, c, 2, 2, INT32_MIN, INT32_MAX);
   if (c == 'b' || c == 'v') return scan_text(line, c);
-  return scan(line, c, 0, 0, 0, 0);
+  return scan_reply(line, c, 0, 0, 0, 0);
 }
 
 Decoded<Fields> Codec::parse_command(std::string_view line) const {
-  if (line.empty()) return error_at<Fields>(1, "an empty command");
-  char letter = line[0];
-  const bool lower_ok = robot_->kind == RobotKind::Epuck;
-  if (lower_ok && letter >= 'a' && letter <= 'z') letter = static_cast<char>(letter - 'a' + 'A');
-  if (letter < 'A' || letter > 'Z') return error_at<Fields>(1, "expected a command letter");
-  Fields f;
-  f.letter = letter;
-  std::size_t i = 1;
-  while (i < line.size() && line[i] == ',') {
-    ++i;
-    const std::size_t start = i;
-    bool negative = false;
-    if (i < line.size() && line[i] == '-') negative = true, ++i;
-    std::int64_t v = 0;
-    std::size_t digits = 0;
-    while (i < line.size() && line[i] >= '0' && line[i] <= '9') {
-      if (digits++ == 10) return error_at<Fields>(start + 1, "a value with too many digits");
-      v = v * 10 + (line[i++] - '0');
-    }
-    if (digits == 0) return error_at<Fields>(i + 1, "expected a decimal value");
-    if (negative) v = -v;
-    if (v < INT32_MIN || v > INT32_MAX) return error_at<Fields>(start + 1, "value out of range");
-    if (f.count == f.values.size()) return error_at<Fields>(start + 1, "too many values");
-    f.values[f.count++] = static_cast<std::int32_t>(v);
-  }
-  if (i != line.size()) return error_at<Fields>(i + 1, "unexpected byte");
-  Decoded<Fields> d;
-  d.value = f;
-  return d;
+  return scan_command(line, robot_->kind == RobotKind::Epuck);
 }
 
 std::string Codec::reply(char command_letter, std::span<const std::int32_t> values) const {

@@ -1,4 +1,5 @@
 // The serial link over termios and the emulators' pseudo-terminals (serial.hpp).
+#include <algorithm>
 #include <antkit/devices/serial.hpp>
 #include <antkit/devices/stop_signals.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -243,20 +244,14 @@ bool SerialPort::take_line(LineEnd end, ReadResult& out) {
   }
 }
 
-ReadResult SerialPort::read_line(std::chrono::milliseconds timeout, LineEnd end) {
-  ReadResult out;
-  if (take_line(end, out)) return out;
-  if (fd_ < 0) throw LinkError(LinkError::Kind::Disconnected, name_ + ": closed");
-  const auto deadline = Clock::now() + timeout;
-  char chunk[512];
+bool SerialPort::receive(Clock::time_point deadline, std::size_t limit) {
+  char chunk[65536];
   bool ready = false; // poll said there is something to read
   for (;;) {
-    const ssize_t n = ::read(fd_, chunk, sizeof chunk);
+    const ssize_t n = ::read(fd_, chunk, std::min(sizeof chunk, limit));
     if (n > 0) {
       buffer_.append(chunk, static_cast<std::size_t>(n));
-      if (take_line(end, out)) return out;
-      ready = false;
-      continue;
+      return true;
     }
     // A tty in raw mode with VMIN = VTIME = 0 reads 0 bytes when nothing has arrived; only after
     // poll reported input is 0 bytes an end of file.
@@ -267,7 +262,7 @@ ReadResult SerialPort::read_line(std::chrono::milliseconds timeout, LineEnd end)
     }
     if (n < 0 && errno != EAGAIN) fail(name_, "read", errno);
     const int wait = remaining_ms(deadline);
-    if (wait == 0) break;
+    if (wait == 0) return false;
     pollfd p{fd_, POLLIN, 0};
     const int r = ::poll(&p, 1, wait);
     if (r < 0 && errno == EINTR) {
@@ -275,15 +270,36 @@ ReadResult SerialPort::read_line(std::chrono::milliseconds timeout, LineEnd end)
       continue;
     }
     if (r < 0) fail(name_, "poll", errno);
-    if (r == 0) break;
+    if (r == 0) return false;
     if ((p.revents & POLLIN) == 0 && (p.revents & (POLLHUP | POLLERR)) != 0)
       throw LinkError(LinkError::Kind::Disconnected, name_ + ": disconnected (hang-up)");
     ready = true;
   }
+}
+
+ReadResult SerialPort::read_line(std::chrono::milliseconds timeout, LineEnd end) {
+  ReadResult out;
+  if (take_line(end, out)) return out;
+  if (fd_ < 0) throw LinkError(LinkError::Kind::Disconnected, name_ + ": closed");
+  const auto deadline = Clock::now() + timeout;
+  while (receive(deadline, 512))
+    if (take_line(end, out)) return out;
   // Timeout: hand over what came (and is not part of an over-long line being dropped).
   out.bytes = discarding_ ? std::string() : std::move(buffer_);
   buffer_.clear();
   discarding_ = false;
+  return out;
+}
+
+std::string SerialPort::read_bytes(std::size_t n, std::chrono::milliseconds timeout) {
+  if (fd_ < 0 && buffer_.size() < n)
+    throw LinkError(LinkError::Kind::Disconnected, name_ + ": closed");
+  const auto deadline = Clock::now() + timeout;
+  while (buffer_.size() < n && receive(deadline, n - buffer_.size())) {
+  }
+  const std::size_t take = std::min(n, buffer_.size());
+  std::string out = buffer_.substr(0, take);
+  buffer_.erase(0, take);
   return out;
 }
 

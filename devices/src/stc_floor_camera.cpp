@@ -101,14 +101,21 @@ std::vector<Mark> find_marks(const Image& gray, std::int32_t window, std::uint32
 }
 
 std::optional<kernel::Angle> line_heading(std::span<const Mark> marks, std::int32_t window) {
-  if (marks.size() < 2) return std::nullopt;
-  // Doubled centres, y up.
+  std::vector<std::array<std::int64_t, 2>> points;
+  points.reserve(marks.size());
+  for (const Mark& m : marks) points.push_back({m.cx2(window), m.cy2(window)});
+  return line_axis(points);
+}
+
+std::optional<kernel::Angle> line_axis(std::span<const std::array<std::int64_t, 2>> points) {
+  if (points.size() < 2) return std::nullopt;
+  // y up.
   int128 sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
-  for (const Mark& m : marks) {
-    const int128 x = m.cx2(window), y = -m.cy2(window);
+  for (const auto& p : points) {
+    const int128 x = p[0], y = -int128{p[1]};
     sx += x, sy += y, sxx += x * x, syy += y * y, sxy += x * y;
   }
-  const int128 n = static_cast<int128>(marks.size());
+  const int128 n = static_cast<int128>(points.size());
   // The centred second moments times n^2: the axis of least second moment across the line is
   // the major axis, at half the angle of (Sxx - Syy, 2 Sxy).
   int128 a = n * sxx - sx * sx - (n * syy - sy * sy), b = 2 * (n * sxy - sx * sy);

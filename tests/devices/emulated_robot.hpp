@@ -6,37 +6,60 @@
 #include <antkit/geometry/arena_spec.hpp>
 #include <atomic>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 namespace antkit::test {
 
-class EmulatedRobot {
+// An emulator (FirmwareEmulator, stc_floor::FloorEmulator) serving a real pty from a thread.
+template <class Emulator>
+class OnPty {
 public:
-  EmulatedRobot(devices::RobotKind robot, const std::string& arena,
-                devices::EmulatorOptions options = {})
-      : pty_(devices::Pty::open()),
-        emulator_(robot, geometry::build_arena_spec(arena).arena.walls_fx(), options) {
+  template <class... Args>
+  explicit OnPty(Args&&... args)
+      : pty_(devices::Pty::open()), emulator_(std::forward<Args>(args)...) {
     thread_ = std::thread([this] { emulator_.serve(pty_, &stop_, false); });
   }
-  EmulatedRobot(const EmulatedRobot&) = delete;
-  EmulatedRobot& operator=(const EmulatedRobot&) = delete;
-  ~EmulatedRobot() { stop(); }
+  OnPty(const OnPty&) = delete;
+  OnPty& operator=(const OnPty&) = delete;
+  ~OnPty() { stop(); }
   // Stops serving (the emulator's state stays readable).
   void stop() {
     stop_ = true;
     if (thread_.joinable()) thread_.join();
   }
   [[nodiscard]] const std::string& port() const noexcept { return pty_.slave_path(); }
-  [[nodiscard]] const devices::FirmwareEmulator& emulator() const noexcept { return emulator_; }
+  [[nodiscard]] const Emulator& emulator() const noexcept { return emulator_; }
 
 private:
   devices::Pty pty_;
-  devices::FirmwareEmulator emulator_;
+  Emulator emulator_;
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };
+
+class EmulatedRobot : public OnPty<devices::FirmwareEmulator> {
+public:
+  EmulatedRobot(devices::RobotKind robot, const std::string& arena,
+                devices::EmulatorOptions options = {})
+      : OnPty(robot, geometry::build_arena_spec(arena).arena.walls_fx(), options) {}
+};
+
+// A file's lines (without their newlines), and lines written back each with its newline.
+inline std::vector<std::string> lines_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+inline void write_lines(const std::string& path, const std::vector<std::string>& lines) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  for (const auto& l : lines) out << l << '\n';
+}
 
 // A fresh directory under the system's temporary directory, removed with everything in it.
 class TempDir {

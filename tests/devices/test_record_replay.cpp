@@ -18,7 +18,9 @@
 
 namespace devices = antkit::devices;
 using antkit::test::EmulatedRobot;
+using antkit::test::lines_of;
 using antkit::test::TempDir;
+using antkit::test::write_lines;
 using devices::RobotKind;
 
 namespace {
@@ -39,18 +41,6 @@ devices::RecordOptions options_for(RobotKind robot, const std::string& port,
   o.link.backoff = std::chrono::milliseconds(1);
   o.link.tries = 5;
   return o;
-}
-
-std::vector<std::string> lines_of(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-void write_lines(const std::string& path, const std::vector<std::string>& lines) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  for (const auto& l : lines) out << l << '\n';
 }
 
 std::size_t count_records(const std::string& path) {

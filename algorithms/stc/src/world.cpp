@@ -252,6 +252,19 @@ inline void hash_position(kernel::TraceHash& h, SubCell s) noexcept {
             (std::uint64_t{static_cast<std::uint32_t>(s.y)} << 32));
 }
 
+} // namespace
+
+std::uint64_t tour_hash(std::int32_t width, std::int32_t height, std::span<const SubCell> path) {
+  kernel::TraceHash h;
+  h.add_u32(static_cast<std::uint32_t>(width)).add_u32(static_cast<std::uint32_t>(height));
+  if (path.empty()) return h.finish();
+  h.add_i32(path.front().x).add_i32(path.front().y);
+  for (const SubCell& s : path) hash_position(h, s); // the start again first, as run_stc does
+  return h.finish();
+}
+
+namespace {
+
 template <class C, class Observe>
 void drive(C& controller, Observe&& observe, StcWorld& world, RunResult& r, kernel::TraceHash& h,
            std::int64_t max_moves, bool record, const std::function<void(SubCell)>& sink) {

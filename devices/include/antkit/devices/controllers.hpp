@@ -26,6 +26,7 @@
 // the last action.
 #include <antkit/devices/protocol.hpp>
 #include <antkit/devices/robot.hpp>
+#include <antkit/devices/run_hash.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <cstdint>
 #include <memory>
@@ -68,17 +69,5 @@ public:
 
 // Throws kernel::InputError("controller", ...) when the spec is not canonical (make_spec's output).
 std::unique_ptr<LoggedController> make_controller(const ControllerSpec& spec);
-
-// The per-step fold of a run into one hash: record() and replay() both fold every step's
-// number, observation, command and state hash, so equal runs have equal hashes.
-class RunHash {
-public:
-  void add(std::int64_t step, std::span<const std::int64_t> obs, std::span<const std::int64_t> cmd,
-           std::uint64_t state) noexcept;
-  [[nodiscard]] std::uint64_t value() const noexcept { return hash_.finish(); }
-
-private:
-  kernel::TraceHash hash_;
-};
 
 } // namespace antkit::devices

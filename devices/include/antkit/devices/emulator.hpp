@@ -46,6 +46,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,21 @@ struct EmulatorOptions {
   bool pace = false;
 };
 
+// What an emulator's firmware does with one received command line.
+struct EmulatorResponse {
+  std::string bytes;                  // to write (empty: nothing)
+  std::chrono::microseconds delay{0}; // before writing
+  bool hang_up = false;               // then hang up the line
+};
+
+// The serving loop every emulator shares: reads command lines (ended by CR, LF or CR LF; empty
+// lines skipped) from the pty's master, calls new_session() before the first command of each
+// client (a client's session lasts until it closes the tty), answers each line with handle(), and
+// returns when `stop` is set, on a stop signal (when stop_on_signal), or after a hang-up response.
+void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>& handle,
+               const std::function<void()>& new_session, const std::atomic<bool>* stop,
+               bool stop_on_signal);
+
 class FirmwareEmulator {
 public:
   // `walls` in body diameters (geometry::arena_walls of an arena spec or WKT). Throws
@@ -85,11 +101,7 @@ public:
                    EmulatorOptions options = {});
 
   // What the firmware does with one received command line (terminator stripped).
-  struct Response {
-    std::string bytes;                  // to write (empty: nothing)
-    std::chrono::microseconds delay{0}; // before writing
-    bool hang_up = false;               // then hang up the line
-  };
+  using Response = EmulatorResponse;
   Response handle(std::string_view line);
   // Starts a new session (see above): what serve() does at a new client's first command.
   void reset();

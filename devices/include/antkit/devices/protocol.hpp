@@ -50,6 +50,14 @@ struct Decoded {
   explicit operator bool() const noexcept { return value.has_value(); }
 };
 
+// The common line grammar (PROTOCOLS.md, "Common to all three"), for every robot's codec:
+// a reply line is `letter`, then `min_n` to `max_n` decimal values in [lo, hi] after commas, then
+// CR LF and nothing else; a command line (terminator stripped) is an upper-case letter (lower case
+// too when lower_ok) and up to 12 decimal 32-bit values after commas. Columns count from 1.
+Decoded<Fields> scan_reply(std::string_view line, char letter, std::size_t min_n, std::size_t max_n,
+                           std::int64_t lo, std::int64_t hi);
+Decoded<Fields> scan_command(std::string_view line, bool lower_ok);
+
 struct Proximity {
   std::array<std::int32_t, 8> raw{};
 };

@@ -14,8 +14,11 @@
 // A record whose `io` holds no valid proximity reply diverges at field "io".
 #include <antkit/devices/log.hpp>
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
 namespace antkit::devices {
 
@@ -35,6 +38,18 @@ struct ReplayResult {
   std::uint64_t hash = 0;      // RunHash over the replayed steps (record()'s hash when identical)
   LogHeader header;
 };
+
+// The loop every robot's replay shares: reads the records before `until`; check() compares one
+// record with this build (filling cmd with the command it computes) and returns the first
+// difference, which ends the replay; the identical records are folded into the run hash.
+ReplayResult replay_records(LogReader& reader, std::optional<std::int64_t> until,
+                            const std::function<std::optional<Divergence>(
+                                const LogRecord& r, std::vector<std::int64_t>& cmd)>& check);
+
+// Recorded against computed values: false, with the first difference as `field[i]` in `out`
+// (unless out already holds one), when they differ.
+bool compare_fields(std::span<const std::int64_t> expected, std::span<const std::int64_t> actual,
+                    std::int64_t step, const char* field, std::optional<Divergence>& out);
 
 // `until`: replay only the steps before this one (all when absent). Throws kernel::InputError for a
 // malformed log (its line and reason), an unknown robot or controller, or another schema version.

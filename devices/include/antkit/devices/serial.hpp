@@ -59,6 +59,9 @@ public:
 
   void write_all(std::string_view bytes, std::chrono::milliseconds timeout);
   ReadResult read_line(std::chrono::milliseconds timeout, LineEnd end = LineEnd::Lf);
+  // Exactly n bytes (binary payloads such as a camera frame after its header line), the buffered
+  // ones first; on a timeout the bytes that came (fewer than n), consumed.
+  std::string read_bytes(std::size_t n, std::chrono::milliseconds timeout);
   void flush_input();
   void close() noexcept;
   [[nodiscard]] int fd() const noexcept { return fd_; }
@@ -68,6 +71,9 @@ public:
 private:
   // Takes a complete line out of buffer_ into out (true), or nothing.
   bool take_line(LineEnd end, ReadResult& out);
+  // Appends what has arrived (at most `limit` bytes) to buffer_, waiting for it until the
+  // deadline: false on a timeout. Throws LinkError (a hang-up, an end of file, a stop signal).
+  bool receive(std::chrono::steady_clock::time_point deadline, std::size_t limit);
   int fd_ = -1;
   std::string name_;
   std::size_t max_line_;

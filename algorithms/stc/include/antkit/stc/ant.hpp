@@ -174,6 +174,7 @@ struct EdgeObservation {
   std::uint8_t free_neighbours = 0;
   std::uint16_t here = 0;
   std::array<std::uint16_t, 4> neighbour{};
+  friend constexpr bool operator==(const EdgeObservation&, const EdgeObservation&) = default;
 };
 
 class AntEdgeStc {

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -161,6 +162,10 @@ struct RunResult {
 // Noise applies to the marker variants (`ant`, `ant-edge`); the others read no marks.
 RunResult run_stc(const kernel::OccupancyGrid& map, SubCell start, Variant variant,
                   const RunOptions& options = {});
+
+// The trace hash above of a tour given as its positions, the start first (what a robot that
+// reports its path, such as the marker-floor robot, compares with run_stc's hash).
+std::uint64_t tour_hash(std::int32_t width, std::int32_t height, std::span<const SubCell> path);
 
 // The same, reusing a world's buffers.
 RunResult run_stc(StcWorld& world, const kernel::OccupancyGrid& map, SubCell start, Variant variant,

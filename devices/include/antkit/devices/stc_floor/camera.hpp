@@ -12,12 +12,16 @@
 //                    kept when its sum reaches a threshold, then blacked out, repeated;
 //   line_heading     the paper's angle detection: a least-squares line through the newest marks
 //                    (three in the paper), its direction as a binary angle (kernel/angle.hpp,
-//                    2^-32 turn, exact integer arithmetic);
+//                    2^-32 turn, exact integer arithmetic; integer moments rather than Eigen's
+//                    floating point, as it feeds a decision). The pilot measures its turns with
+//                    view.hpp's measure_turn instead, which says why;
 //   calibrate_rotation  the paper's T <- 90/d * T, with a bound on how far one correction may
 //                    move T.
-// Not here yet (issue 14 stays open): the mirror unwarp and its calibration file, the sub-cell
-// state of the five cells, the robot's link and the rendering emulator.
+// The mirror unwarp and its calibration are optics.hpp; the five cells' sub-cell state and the
+// rotation measurement view.hpp; the rendered floor floor.hpp; the robot's link link.hpp; the
+// program that drives it pilot.hpp.
 #include <antkit/kernel/angle.hpp>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -81,6 +85,10 @@ struct Mark {
 // centres. Exact: integer moments, kernel::atan2.
 [[nodiscard]] std::optional<kernel::Angle> line_heading(std::span<const Mark> marks,
                                                         std::int32_t window);
+// The same over any integer points (x right, y down, one scale for both): line_heading is this
+// over the marks' doubled centres.
+[[nodiscard]] std::optional<kernel::Angle>
+line_axis(std::span<const std::array<std::int64_t, 2>> points);
 
 // The turn between two line headings, folded into (-quarter turn, quarter turn]: the deviation a
 // rotation left (line directions are defined modulo half a turn).

@@ -1,0 +1,182 @@
+// The program that drives the marker-floor robot (stc_floor/pilot.hpp).
+#include <antkit/devices/run_hash.hpp>
+#include <antkit/devices/stc_floor/floor.hpp>
+#include <antkit/devices/stc_floor/pilot.hpp>
+#include <antkit/kernel/hash.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <antkit/kernel/int_ops.hpp>
+#include <array>
+#include <bit>
+#include <set>
+
+namespace antkit::devices::stc_floor {
+
+void check_controller(stc::Variant v, const std::string& where) {
+  if (v != stc::Variant::Ant && v != stc::Variant::AntEdge)
+    throw kernel::InputError(where, "the marker-floor robot runs the ant-like controllers: "
+                                    "expected ant or ant-edge");
+}
+
+FloorController::FloorController(stc::Variant v, int start_quadrant)
+    : variant_(v), ant_(start_quadrant), edge_(start_quadrant) {
+  check_controller(v, "controller");
+}
+
+std::vector<std::int64_t> FloorController::observation(const stc::EdgeObservation& e) const {
+  if (variant_ == stc::Variant::AntEdge)
+    return {e.free_neighbours, e.here,         e.neighbour[0],
+            e.neighbour[1],    e.neighbour[2], e.neighbour[3]};
+  return {e.free_neighbours,
+          stc::covered_from_edges(e.here),
+          stc::covered_from_edges(e.neighbour[0]),
+          stc::covered_from_edges(e.neighbour[1]),
+          stc::covered_from_edges(e.neighbour[2]),
+          stc::covered_from_edges(e.neighbour[3])};
+}
+
+void FloorController::step(std::span<const std::int64_t> obs, std::vector<std::int64_t>& cmd) {
+  if (obs.size() != 6)
+    throw kernel::InputError("obs", "expected 6 values (free neighbours, here, E, N, W, S)");
+  const std::int64_t limit = variant_ == stc::Variant::AntEdge ? 0xFFF : 0xF;
+  for (std::size_t i = 0; i < 6; ++i)
+    if (obs[i] < 0 || obs[i] > (i == 0 ? 0xF : limit))
+      throw kernel::InputError("obs", "value " + std::to_string(i) + " out of range");
+  stc::Command c;
+  if (variant_ == stc::Variant::AntEdge) {
+    stc::EdgeObservation o;
+    o.free_neighbours = static_cast<std::uint8_t>(obs[0]);
+    o.here = static_cast<std::uint16_t>(obs[1]);
+    for (std::size_t d = 0; d < 4; ++d) o.neighbour[d] = static_cast<std::uint16_t>(obs[2 + d]);
+    c = edge_.step(o);
+  } else {
+    stc::MarkObservation o;
+    o.free_neighbours = static_cast<std::uint8_t>(obs[0]);
+    o.here = static_cast<std::uint8_t>(obs[1]);
+    for (std::size_t d = 0; d < 4; ++d) o.neighbour[d] = static_cast<std::uint8_t>(obs[2 + d]);
+    c = ant_.step(o);
+  }
+  cmd.assign({static_cast<std::int64_t>(c.move), c.mark ? 1 : 0});
+}
+
+std::uint64_t FloorController::state_hash() const noexcept {
+  kernel::TraceHash h;
+  if (variant_ == stc::Variant::AntEdge) {
+    const auto bytes = std::bit_cast<std::array<std::uint8_t, sizeof(stc::AntEdgeStc)>>(edge_);
+    h.add_bytes(bytes);
+  } else {
+    const auto bytes = std::bit_cast<std::array<std::uint8_t, sizeof(stc::AntStc)>>(ant_);
+    h.add_bytes(bytes);
+  }
+  return h.finish();
+}
+
+std::uint64_t frame_digest(const Image& frame) noexcept {
+  kernel::TraceHash h;
+  h.add_i32(frame.width).add_i32(frame.height).add_i32(frame.channels).add_bytes(frame.pixels);
+  return h.finish();
+}
+
+bool SimulatedRobot::forward(std::int32_t led_ms) {
+  return world_.forward(led_ms);
+}
+void SimulatedRobot::rotate(std::int32_t ms) {
+  world_.rotate(ms);
+}
+Image SimulatedRobot::capture(bool dark) {
+  return world_.capture(dark);
+}
+
+PilotResult run_pilot(FloorRobot& robot, const View& view, const PilotOptions& o,
+                      const std::function<void(const PilotStep&)>& on_step) {
+  check_controller(o.controller, "--controller");
+  const std::int64_t quarter = kernel::Angle::kQuarterTurn;
+  FloorController controller(o.controller, stc::quadrant_of(o.start));
+  PilotResult r;
+  r.path.push_back(o.start);
+  std::set<std::pair<std::int32_t, std::int32_t>> visited{{o.start.x, o.start.y}};
+  r.covered = 1;
+  stc::SubCell pos = o.start;
+  int h = o.heading & 3;
+  std::int64_t T = o.quarter_turn_ms;
+  RunHash run;
+  const Image dark = robot.capture(true);
+  const std::int32_t pps = view.calibration().pixels_per_subcell;
+
+  // One quarter turn (sign +1 left, -1 right) with the paper's calibration; `before` is the
+  // unwarped marks image before it and becomes the one after it.
+  auto quarter_turn = [&](int sign, Image& before, PilotStep& s) {
+    robot.rotate(static_cast<std::int32_t>(sign * T));
+    ++s.turns;
+    Image after = view.marks_image(robot.capture(false), dark);
+    for (std::int32_t k = 0; k <= o.max_corrections; ++k) {
+      const auto dev = measure_turn(before, after, sign, view.params(), pps);
+      if (!dev) break;
+      if (k == 0) ++r.measured;
+      if ((*dev >= 0 ? *dev : -*dev) <= o.tolerance || k == o.max_corrections) break;
+      if (k == 0) // T from the full quarter turn only: it turned quarter - sign * dev
+        T = calibrate_rotation(T, quarter - sign * *dev, o.max_change_ppm);
+      const auto ms = static_cast<std::int32_t>(
+          (static_cast<kernel::int128>(*dev) * T + (*dev >= 0 ? quarter / 2 : -quarter / 2)) /
+          quarter);
+      if (ms == 0) break;
+      robot.rotate(ms);
+      ++s.corrections;
+      ++r.corrections;
+      after = view.marks_image(robot.capture(false), dark);
+    }
+    before = std::move(after);
+  };
+
+  for (std::int64_t step = 0; step < o.max_steps; ++step) {
+    PilotStep s;
+    s.step = step;
+    const Image frame = robot.capture(false);
+    s.frame = frame_digest(frame);
+    Seen seen = view.see(frame, dark, stc::quadrant_of(pos), h);
+    s.obs = controller.observation(seen.edges);
+    controller.step(s.obs, s.cmd);
+    s.state = controller.state_hash();
+    const auto move = static_cast<stc::Move>(s.cmd[0]);
+    if (move != stc::Move::Stop) {
+      const int d = static_cast<int>(move);
+      const int turn = (d - h) & 3;
+      if (turn != 0) {
+        Image before = std::move(seen.marks);
+        if (turn == 3) {
+          quarter_turn(-1, before, s);
+        } else {
+          for (int t = 0; t < turn; ++t) quarter_turn(+1, before, s);
+        }
+        h = d;
+      }
+      s.moved = robot.forward(s.cmd[1] != 0 ? o.led_ms : 0);
+      if (s.moved) {
+        pos = stc::step(pos, d);
+        r.path.push_back(pos);
+        if (visited.insert({pos.x, pos.y}).second)
+          ++r.covered;
+        else
+          ++r.repeats;
+      }
+    }
+    s.position = pos;
+    s.heading = h;
+    s.turn_ms = T;
+    run.add(step, s.obs, s.cmd, s.state);
+    ++r.steps;
+    if (on_step) on_step(s);
+    if (move == stc::Move::Stop) {
+      r.closed = true;
+      break;
+    }
+    if (!s.moved) {
+      r.refused = true;
+      break;
+    }
+  }
+  r.turn_ms = T;
+  r.hash = run.value();
+  return r;
+}
+
+} // namespace antkit::devices::stc_floor
