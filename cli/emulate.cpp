@@ -1,6 +1,13 @@
-// `antkit emulate`: a robot's firmware on a pseudo-terminal (issue 13).
+// `antkit emulate`: a robot's firmware on a pseudo-terminal (issues 13 and 14).
 //   antkit emulate khepera|hemisson|epuck [--arena SPEC|F.wkt] [--seed S] [--fault F ...] [--pace]
 //                  [--format table|json]
+//   antkit emulate stc-floor --map F [--start X,Y] [--heading D] [--seed S] [--noise A]
+//                  [--dark-offset A] [--fade S] [--rotation-error PPM] [--drift PPM]
+//                  [--format table|json]
+// stc-floor: the marker-floor robot of paper 002 (devices/stc_floor/floor.hpp, link.hpp), placed
+// at the start sub-cell (default as `antkit stc`), rendering its camera frames; its summary is the
+// truth of the last session: the sub-cells the body entered, repeats, the largest distance from a
+// sub-cell's centre and heading error, the floor's clock.
 // Prints the pty's path on the first line of stdout (flushed), then answers the robot's protocol
 // from the simulated body (devices/emulator.hpp), one client session after another (each starts the
 // robot at the arena's start pose), until SIGINT / SIGTERM or a disconnect fault, and prints a
@@ -13,10 +20,12 @@
 #include <antkit/devices/emulator.hpp>
 #include <antkit/devices/robot.hpp>
 #include <antkit/devices/serial.hpp>
+#include <antkit/devices/stc_floor/link.hpp>
 #include <antkit/devices/stop_signals.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/maps/map_io.hpp>
 #include <iostream>
 #include <memory>
 
@@ -33,13 +42,65 @@ struct EmulateOptions {
   std::vector<std::string> faults;
   bool pace = false;
   Format format = Format::Table;
+  // stc-floor
+  std::string map, start;
+  std::int32_t heading = 1, noise = 0, dark_offset = 12, rotation_error = 0, drift = 0;
+  std::int64_t fade_s = 0;
+  CLI::Option *arena_opt = nullptr, *fault_opt = nullptr, *pace_opt = nullptr, *floor_opts[8]{};
 };
 
+void run_stc_floor(const EmulateOptions& o) {
+  if (o.arena_opt->count() + o.fault_opt->count() + o.pace_opt->count() > 0)
+    throw InputError("stc-floor", "--arena, --fault and --pace are for khepera, hemisson and "
+                                  "epuck; the marker-floor robot takes --map");
+  if (o.map.empty()) throw InputError("--map", "stc-floor needs a map (--map FILE)");
+  const auto map = antkit::maps::load_map(o.map);
+  const auto start =
+      antkit::cli::choose_stc_start(map, antkit::stc::Variant::AntEdge, o.start, o.map);
+  namespace sf = devices::stc_floor;
+  sf::FloorOptions f;
+  f.seed = o.seed;
+  f.noise = o.noise;
+  f.dark_offset = o.dark_offset;
+  if (o.fade_s < 0 || o.fade_s > 86400) throw InputError("--fade", "expected 0 to 86400 seconds");
+  f.fade_half_life_ms = o.fade_s * 1000;
+  f.rotation_error_ppm = o.rotation_error;
+  f.drift_ppm_per_minute = o.drift;
+  sf::FloorEmulator emulator(map.cells, start, o.heading, f);
+  devices::StopSignals::Scope signals;
+  devices::Pty pty = devices::Pty::open();
+  std::cout << pty.slave_path() << std::endl; // the first line, flushed: clients wait for it
+  emulator.serve(pty);
+  const auto& w = emulator.world();
+  nlohmann::json j;
+  j["robot"] = "stc-floor";
+  j["map"] = o.map;
+  j["start"] = {start.x, start.y};
+  j["seed"] = o.seed;
+  j["sessions"] = emulator.sessions();
+  j["commands"] = emulator.commands();
+  j["frames"] = w.frames();
+  j["positions"] = w.path().size();
+  j["covered"] = w.covered();
+  j["repeats"] = w.repeats();
+  j["reachable_subcells"] =
+      antkit::stc::reachable_subcells(map.cells, start, antkit::stc::Variant::AntEdge);
+  j["max_offset_subcells"] = static_cast<double>(w.max_offset()) / 65536.0;
+  j["max_heading_error_degrees"] =
+      static_cast<double>(w.max_heading_error()) * 360.0 / 4294967296.0;
+  j["clock_s"] = static_cast<double>(w.clock_ms()) / 1000.0;
+  antkit::cli::emit(j, o.format, std::cout);
+}
+
 void run(const EmulateOptions& o) {
+  if (o.robot == "stc-floor") return run_stc_floor(o);
+  for (const auto* opt : o.floor_opts)
+    if (opt != nullptr && opt->count() > 0)
+      throw InputError(opt->get_name(), "is an option of the stc-floor robot");
   const auto robot = devices::parse_robot(o.robot);
   if (!robot)
-    throw InputError("robot",
-                     "unknown robot '" + o.robot + "': expected khepera, hemisson or epuck");
+    throw InputError("robot", "unknown robot '" + o.robot +
+                                  "': expected khepera, hemisson, epuck or stc-floor");
   devices::EmulatorOptions options;
   options.seed = o.seed;
   options.faults = devices::parse_faults(o.faults);
@@ -68,16 +129,35 @@ void run(const EmulateOptions& o) {
 void register_emulate(CLI::App& app) {
   auto o = std::make_shared<EmulateOptions>();
   auto* sub = app.add_subcommand(
-      "emulate", "A robot's firmware (khepera, hemisson, epuck) on a pseudo-terminal, its body "
-                 "simulated in a Buffon arena; prints the pty path on the first line");
-  sub->add_option("robot", o->robot, "khepera, hemisson or epuck")->required();
-  sub->add_option("--arena", o->arena,
-                  "A named arena spec or FILE.wkt, in body diameters (default standard)");
-  sub->add_option("--seed", o->seed, "Seed of the emulator's keyed streams (start, faults)");
-  sub->add_option("--fault", o->faults,
-                  "A fault: delay=P:MS, garbage=P, drop=P, cut=P (P per command) or "
-                  "disconnect=N (after N commands); may be repeated");
-  sub->add_flag("--pace", o->pace, "Pace replies at the robot's baud rate and command latency");
+      "emulate", "A robot's firmware on a pseudo-terminal: khepera, hemisson or epuck (its body "
+                 "simulated in a Buffon arena) or stc-floor (paper 002's marker-floor robot, its "
+                 "camera frames rendered); prints the pty path on the first line");
+  sub->add_option("robot", o->robot, "khepera, hemisson, epuck or stc-floor")->required();
+  o->arena_opt = sub->add_option(
+      "--arena", o->arena, "A named arena spec or FILE.wkt, in body diameters (default standard)");
+  sub->add_option("--seed", o->seed,
+                  "Seed of the emulator's keyed streams (start, faults; stc-floor: noise)");
+  o->fault_opt = sub->add_option("--fault", o->faults,
+                                 "A fault: delay=P:MS, garbage=P, drop=P, cut=P (P per command) or "
+                                 "disconnect=N (after N commands); may be repeated");
+  o->pace_opt =
+      sub->add_flag("--pace", o->pace, "Pace replies at the robot's baud rate and command latency");
+  o->floor_opts[0] = sub->add_option("--map", o->map, "stc-floor: the map (MovingAI, ROS, ASCII)");
+  o->floor_opts[1] = sub->add_option("--start", o->start,
+                                     "stc-floor: the start sub-cell X,Y (default as antkit stc)");
+  o->floor_opts[2] =
+      sub->add_option("--heading", o->heading, "stc-floor: heading at the start, 0 E 1 N 2 W 3 S");
+  o->floor_opts[3] = sub->add_option("--noise", o->noise,
+                                     "stc-floor: camera noise, uniform +-A per channel (0-255)");
+  o->floor_opts[4] =
+      sub->add_option("--dark-offset", o->dark_offset,
+                      "stc-floor: dark-current pattern, 0..A per pixel (default 12)");
+  o->floor_opts[5] = sub->add_option(
+      "--fade", o->fade_s, "stc-floor: half-life of the marks' glow in seconds (0: no fading)");
+  o->floor_opts[6] = sub->add_option("--rotation-error", o->rotation_error,
+                                     "stc-floor: turn rate against nominal, ppm");
+  o->floor_opts[7] = sub->add_option(
+      "--drift", o->drift, "stc-floor: the turn rate falls by this many ppm a minute (battery)");
   antkit::cli::add_format_option(*sub, o->format);
   sub->callback([o] { run(*o); });
 }

@@ -1,13 +1,60 @@
 #include "output.hpp"
 
 #include <algorithm>
+#include <antkit/algorithms/options.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <chrono>
 #include <cstddef>
 #include <filesystem>
+#include <iomanip>
+#include <iostream>
 #include <map>
+#include <memory>
+#include <unistd.h>
 #include <vector>
 
 namespace antkit::cli {
+
+antkit::experiments::Progress stage_progress(const std::string& tool) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto seconds = [start] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  auto stage_start = std::make_shared<std::pair<std::string, double>>();
+  return [tool, tty, stage_start, seconds](std::string_view stage, std::uint64_t done,
+                                           std::uint64_t total) {
+    if (stage_start->first != stage) *stage_start = {std::string(stage), seconds()};
+    const double elapsed = seconds() - stage_start->second;
+    if (tty) {
+      const int filled = static_cast<int>(30.0 * static_cast<double>(done) /
+                                          static_cast<double>(std::max<std::uint64_t>(total, 1)));
+      const double left =
+          done > 0 ? elapsed / static_cast<double>(done) * static_cast<double>(total - done) : 0.0;
+      std::cerr << "\r" << stage << " [" << std::string(static_cast<std::size_t>(filled), '#')
+                << std::string(static_cast<std::size_t>(30 - filled), '.') << "] " << done << "/"
+                << total << ", about " << std::fixed << std::setprecision(0) << left << " s left   "
+                << std::defaultfloat << std::setprecision(6) << (done == total ? "\n" : "")
+                << std::flush;
+    } else if (total > 0 && (done == total || (4 * done) / total != (4 * (done - 1)) / total)) {
+      std::cerr << tool << ": " << stage << ": " << done << "/" << total << " units, " << std::fixed
+                << std::setprecision(1) << elapsed << " s" << std::defaultfloat
+                << std::setprecision(6) << '\n';
+    }
+  };
+}
+
+antkit::kernel::Cell choose_stc_start(const antkit::maps::GridMap& map,
+                                      antkit::stc::Variant variant, const std::string& option,
+                                      const std::string& file) {
+  if (!option.empty()) return antkit::algorithms::parse_cell("--start", option);
+  if (map.start) return *map.start;
+  if (const auto start = antkit::stc::default_start(map.cells, variant)) return *start;
+  throw antkit::kernel::InputError(
+      file, antkit::stc::is_exact(variant)
+                ? "the map has no free cell (2 x 2 free sub-cells) to start in"
+                : "the map has no free sub-cell to start in");
+}
 
 void make_out_dir(const std::string& dir) {
   std::error_code ec;

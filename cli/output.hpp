@@ -3,6 +3,9 @@
 // people (the default) or as JSON for programs. A subcommand builds one JSON value and calls
 // emit().
 #include <CLI/CLI.hpp>
+#include <antkit/experiments/run.hpp>
+#include <antkit/maps/map_io.hpp>
+#include <antkit/stc/world.hpp>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <stdexcept>
@@ -14,6 +17,17 @@
 namespace antkit::cli {
 
 enum class Format { Table, Json };
+
+// Progress of an experiment's stages on stderr: a live bar with the time left when stderr is a
+// terminal, else a line per quarter of each stage ("tool: stage: done/total units, t s").
+antkit::experiments::Progress stage_progress(const std::string& tool);
+
+// The STC start: --start if given (X,Y in sub-cells), else the map's own start ('S' in an ASCII
+// map), else stc::default_start (the largest region's first place). Throws InputError(file) when
+// the map has no place to start.
+antkit::kernel::Cell choose_stc_start(const antkit::maps::GridMap& map,
+                                      antkit::stc::Variant variant, const std::string& option,
+                                      const std::string& file);
 
 // Adds `--format table|json` to a subcommand.
 void add_format_option(CLI::App& sub, Format& format);

@@ -70,30 +70,9 @@ void run(const ReproduceCommand& c) {
   const auto seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  const bool tty = ::isatty(STDERR_FILENO) != 0;
   ex::Runner runner;
   runner.threads = static_cast<unsigned>(c.threads);
-  auto stage_start = std::make_shared<std::pair<std::string, double>>();
-  runner.progress = [tty, stage_start, seconds](std::string_view stage, std::uint64_t done,
-                                                std::uint64_t total) {
-    if (stage_start->first != stage) *stage_start = {std::string(stage), seconds()};
-    const double elapsed = seconds() - stage_start->second;
-    if (tty) {
-      const int filled = static_cast<int>(30.0 * static_cast<double>(done) /
-                                          static_cast<double>(std::max<std::uint64_t>(total, 1)));
-      const double left =
-          done > 0 ? elapsed / static_cast<double>(done) * static_cast<double>(total - done) : 0.0;
-      std::cerr << "\r" << stage << " [" << std::string(static_cast<std::size_t>(filled), '#')
-                << std::string(static_cast<std::size_t>(30 - filled), '.') << "] " << done << "/"
-                << total << ", about " << std::fixed << std::setprecision(0) << left << " s left   "
-                << std::defaultfloat << std::setprecision(6) << (done == total ? "\n" : "")
-                << std::flush;
-    } else if (done == total || (4 * done) / total != (4 * (done - 1)) / total) {
-      std::cerr << "reproduce: " << stage << ": " << done << "/" << total << " units, "
-                << std::fixed << std::setprecision(1) << elapsed << " s" << std::defaultfloat
-                << std::setprecision(6) << '\n';
-    }
-  };
+  runner.progress = antkit::cli::stage_progress("reproduce");
 
   ex::ReproduceReport report;
   int ranks = 1;

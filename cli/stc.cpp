@@ -71,18 +71,6 @@ Variant parse_variant_option(const std::string& name) {
                                     "ant-edge or full");
 }
 
-// The start: --start if given, else the map's own start ('S' in an ASCII map), else
-// stc::default_start (the largest region's first place).
-Cell choose_start(const antkit::maps::GridMap& map, Variant variant, const std::string& option,
-                  const std::string& file) {
-  if (!option.empty()) return algorithms::parse_cell("--start", option);
-  if (map.start) return *map.start;
-  if (const auto start = default_start(map.cells, variant)) return *start;
-  throw InputError(file, is_exact(variant)
-                             ? "the map has no free cell (2 x 2 free sub-cells) to start in"
-                             : "the map has no free sub-cell to start in");
-}
-
 // stdout or a file, through a large buffer; numbers written with to_chars.
 class Out {
 public:
@@ -177,7 +165,7 @@ void run_stc_command(const StcOptions& o) {
     run.noise = {algorithms::parse_probability_ppm("--noise", o.noise), o.seed, 0};
   }
   const auto map = antkit::maps::load_map(o.map);
-  const Cell start = choose_start(map, variant, o.start, o.map);
+  const Cell start = antkit::cli::choose_stc_start(map, variant, o.start, o.map);
   // Every bad input is refused before the first byte of output: the path file's name is checked
   // and the file opened (write_file_atomic) before the run, and run_stc checks the start before
   // the first position, which writes the JSON's head.
@@ -302,7 +290,7 @@ void run_noise_command(const NoiseOptions& o) {
     from = comma + 1;
   }
   const auto map = antkit::maps::load_map(o.map);
-  const Cell start = choose_start(map, variant, o.start, o.map);
+  const Cell start = antkit::cli::choose_stc_start(map, variant, o.start, o.map);
   std::vector<std::uint32_t> ppm;
   for (const auto& level : levels) ppm.push_back(level.second);
   std::int64_t reachable = 0;

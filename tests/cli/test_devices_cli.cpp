@@ -213,3 +213,82 @@ TEST_CASE("antkit record: bad options and a bad port exit 2 and leave no log", "
   const auto f = run_antkit("emulate lego");
   CHECK(f.status == 2);
 }
+
+TEST_CASE("antkit emulate stc-floor + record + replay: the tour of antkit stc, through the camera",
+          "[cli][devices]") {
+  const auto dir = scratch_dir("floor");
+  const auto map = (dir / "board.map").string();
+  {
+    std::ofstream out(map);
+    out << "type octile\nheight 8\nwidth 10\nmap\n"
+           "..........\n..........\n....@@....\n....@@....\n"
+           "..........\n..........\n..........\n..........\n";
+  }
+  const auto cal = (dir / "cal.json").string();
+  const auto c = run_antkit("stc-floor-calibrate --ideal --out " + cal);
+  REQUIRE(c.status == 0);
+  Emulator emu({"stc-floor", "--map", map, "--noise", "10", "--format", "json"});
+  REQUIRE(emu.port().rfind("/dev/pts/", 0) == 0);
+  const auto log = (dir / "floor.jsonl").string();
+  const auto r = run_antkit("record --device stc-floor --port " + emu.port() +
+                            " --controller ant-edge --map " + map + " --calibration " + cal +
+                            " --out " + log + " --format json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const auto stc = run_antkit("stc --map " + map + " --variant ant-edge --format json");
+  REQUIRE(stc.status == 0);
+  const auto s = nlohmann::json::parse(stc.out);
+  for (const char* key :
+       {"path", "reachable_subcells", "covered", "repeats", "returned_to_start", "hash"}) {
+    INFO(key);
+    CHECK(j[key] == s[key]);
+  }
+  CHECK(j["stopped"] == "done");
+  const auto rp = run_antkit("replay " + log + " --format json");
+  REQUIRE(rp.status == 0);
+  const auto k = nlohmann::json::parse(rp.out);
+  CHECK(k["identical"] == true);
+  CHECK(k["robot"] == "stc-floor");
+  CHECK(k["hash"] == j["run_hash"]);
+  const auto [status, summary] = emu.finish();
+  CHECK(status == 0);
+  const auto e = nlohmann::json::parse(summary);
+  CHECK(e["covered"] == s["covered"]);
+  CHECK(e["repeats"] == 0);
+  CHECK(e["positions"] == s["path"].size());
+}
+
+TEST_CASE("antkit stc-floor: bad input exits 2 with where and why, and writes nothing",
+          "[cli][devices]") {
+  const auto dir = scratch_dir("floor-bad");
+  const auto out = (dir / "c.json").string();
+  struct Case {
+    std::string args, where;
+  };
+  const std::vector<Case> cases{
+      {"stc-floor-calibrate --centre 120,120 --out " + out, "--corner"},
+      {"stc-floor-calibrate --centre 1x2 --corner 1,1 --out " + out, "--centre"},
+      {"stc-floor-calibrate --ideal --mirror-height -1 --out " + out, "mirror height"},
+      {"stc-floor-calibrate --ideal --panorama 240 --out " + out, "--panorama"},
+      {"record --device stc-floor --port /dev/null --controller offline --start 0,0 --out " +
+           (dir / "l.jsonl").string(),
+       "--controller"},
+      {"record --device stc-floor --port /dev/null --controller ant --out " +
+           (dir / "l.jsonl").string(),
+       "--start"},
+      {"record --device stc-floor --port /dev/null --controller ant --start 0,0 --calibration " +
+           (dir / "missing.json").string() + " --out " + (dir / "l.jsonl").string(),
+       "missing.json"},
+      {"emulate stc-floor", "--map"},
+      {"emulate khepera --map x.map", "--map"},
+  };
+  for (const auto& k : cases) {
+    INFO(k.args);
+    const auto r = run_antkit(k.args);
+    CHECK(r.status == 2);
+    CHECK(r.err.find(k.where) != std::string::npos);
+  }
+  CHECK_FALSE(std::filesystem::exists(out));
+  CHECK_FALSE(std::filesystem::exists(dir / "l.jsonl"));
+}
