@@ -1,9 +1,11 @@
 // antkit_determinism: a fixed set of scenarios over every controller family and body, each
 // printing its trace hash, for the determinism matrix (scripts/determinism.sh, issue 16). It links
 // only antkit::algorithms and antkit::kernel, plus the MovingAI reader (geometry/src/
-// map_movingai.cpp, which needs no CGAL), so that any compiler builds it and it cross-compiles to a
-// big-endian CPU: Buffon's arenas are walls built with the kernel's own sine and cosine, grid maps
-// are real maps from ../shared/maps/movingai or come from the families' keyed generators.
+// map_movingai.cpp, which needs no CGAL) and the marker-floor robot's integer camera, floor and
+// pilot (devices/src/stc_floor_*.cpp but its calibration file: no JSON library), so that any
+// compiler builds it and it cross-compiles to a big-endian CPU: Buffon's arenas are walls built
+// with the kernel's own sine and cosine, grid maps are real maps from ../shared/maps/movingai or
+// come from the families' keyed generators.
 //
 //   antkit_determinism --maps DIR [--threads T]   prints "name hash" per scenario
 //   antkit_determinism --maps DIR --check FILE [--threads T]
@@ -20,6 +22,8 @@
 #include <algorithm>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/two_markers.hpp>
+#include <antkit/devices/stc_floor/floor.hpp>
+#include <antkit/devices/stc_floor/pilot.hpp>
 #include <antkit/kernel/angle.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -298,6 +302,44 @@ void add_stc(std::vector<Scenario>& out, MapShelf& shelf) {
       }
 }
 
+// Paper 002's marker-floor robot (issue 14) through its rendered camera, with everything the
+// emulator adds switched on: camera noise, a dark pattern, fading marks and a drifting turn rate
+// that the rotation calibration follows. Every frame is integer arithmetic; the trace is the
+// believed pose, T and the frame's digest per step.
+void add_stc_floor(std::vector<Scenario>& out, MapShelf& shelf) {
+  namespace sf = devices::stc_floor;
+  for (const char* map : {"random-32-32-20"}) {
+    out.push_back({"stc-floor/ant-edge/" + std::string(map), [map, &shelf](unsigned, Trace& trace) {
+                     const auto& grid = shelf.get(map);
+                     const auto start = stc_start(grid);
+                     sf::FloorOptions f;
+                     f.seed = 5;
+                     f.noise = 20;
+                     f.dark_offset = 30;
+                     f.fade_half_life_ms = 120000;
+                     f.drift_ppm_per_minute = 20000;
+                     sf::FloorWorld world(grid, start, 1, f);
+                     sf::SimulatedRobot robot(world);
+                     const sf::Calibration c = sf::ideal_calibration();
+                     const sf::View view(c, sf::default_view(c));
+                     sf::PilotOptions o;
+                     o.start = start;
+                     o.max_steps = 2000;
+                     const auto r = sf::run_pilot(robot, view, o, [&](const sf::PilotStep& s) {
+                       if (trace.on())
+                         trace.step(cell_text({s.position.x, s.position.y}) + " h" +
+                                    std::to_string(s.heading) + " T" + std::to_string(s.turn_ms) +
+                                    " " + kernel::hash_hex(s.frame));
+                     });
+                     kernel::TraceHash h;
+                     h.add_u64(r.hash).add_i64(r.turn_ms).add_i64(world.clock_ms());
+                     h.add_u64(stc::tour_hash(grid.width(), grid.height(), world.path()));
+                     h.add_i64(world.max_offset()).add_u64(sf::frame_digest(world.capture(false)));
+                     return h.finish();
+                   }});
+  }
+}
+
 // Three obstacle densities of Sturtevant's benchmark set: 0 %, 10 % and 20 %.
 void add_uniform(std::vector<Scenario>& out, MapShelf& shelf) {
   using uniform::Algorithm;
@@ -340,6 +382,7 @@ std::vector<Scenario> scenarios(MapShelf& shelf) {
   add_buffon(all);
   add_los(all, shelf);
   add_stc(all, shelf);
+  add_stc_floor(all, shelf);
   add_uniform(all, shelf);
   return all;
 }
