@@ -7,6 +7,8 @@
 #include <antkit/kernel/input_error.hpp>
 #include <chrono>
 #include <csignal>
+#include <set>
+#include <utility>
 
 namespace antkit::devices::stc_floor {
 
@@ -88,14 +90,12 @@ RecordSummary record(const RecordOptions& o, const RecordProgress& progress) {
   if (!s.closed) { // covered and repeats from the path so far
     s.covered = 0;
     s.repeats = 0;
-    std::vector<stc::SubCell> seen;
+    std::set<std::pair<std::int32_t, std::int32_t>> seen;
     for (const auto& p : s.path) {
-      if (std::find(seen.begin(), seen.end(), p) == seen.end()) {
-        seen.push_back(p);
+      if (seen.insert({p.x, p.y}).second)
         ++s.covered;
-      } else {
+      else
         ++s.repeats;
-      }
     }
   }
   s.link = robot.stats();
