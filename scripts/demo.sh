@@ -7,7 +7,10 @@
 #      (holds / partly / does not hold, with the measured figure) is printed; the report with every
 #      table and figure (SVG and PNG) is build/demo/README.md;
 #   4. a robot: the Khepera firmware emulator on a pseudo-terminal, two Buffon visits recorded over
-#      the tty, replayed bit for bit, and the area computed from the two logs.
+#      the tty, replayed bit for bit, and the area computed from the two logs;
+#   5. paper 002's marker-floor robot: its emulator rendering camera frames (with sensor noise),
+#      ant-edge STC driven through the camera pipeline over the tty, the log replayed, and the tour
+#      compared with the simulated one.
 set -euo pipefail
 antkit=${1:-build/release/cli/antkit}
 out=${DEMO_OUT:-build/demo}
@@ -69,6 +72,26 @@ done
 "$antkit" buffon-from-logs "$out/khepera-visit1.jsonl" "$out/khepera-visit2.jsonl"
 kill "$emu_pid" 2>/dev/null || true
 wait "$emu_pid" 2>/dev/null || true
+trap - EXIT
+
+section "Paper 002's marker-floor robot: rendered camera frames, ant-edge STC over a pseudo-terminal"
+floor_map="$maps/movingai/random-32-32-20.map"
+floor_out="$out/floor-emulator.txt"
+"$antkit" emulate stc-floor --map "$floor_map" --noise 20 --format json >"$floor_out" &
+floor_pid=$!
+trap 'kill "$floor_pid" 2>/dev/null || true' EXIT
+for _ in $(seq 100); do [ -s "$floor_out" ] && break; sleep 0.05; done
+port=$(head -n 1 "$floor_out")
+echo "marker-floor emulator on $port"
+"$antkit" record --device stc-floor --port "$port" --controller ant-edge --map "$floor_map" \
+  --out "$out/floor.jsonl" --format json |
+  jq -r '"recorded: \(.steps) steps, \(.covered) of \(.reachable_subcells) sub-cells, \(.repeats) repeats, back at the start: \(.returned_to_start), tour hash \(.hash)"'
+"$antkit" stc --map "$floor_map" --variant ant-edge --format json |
+  jq -r '"simulated ant-edge:       tour hash \(.hash)"'
+"$antkit" replay "$out/floor.jsonl" --format json |
+  jq -r '"replay of the log: \(.steps) steps, identical: \(.identical)"'
+kill "$floor_pid" 2>/dev/null || true
+wait "$floor_pid" 2>/dev/null || true
 trap - EXIT
 
 section "Figures and tables are in $out/"
