@@ -61,6 +61,18 @@ void line_and_link(const RecordCommand& c, devices::LineSettings& line,
   link.watchdog = std::max(link.watchdog, std::chrono::milliseconds(4 * c.timeout_ms * c.tries));
 }
 
+// How a recording ended and what its link went through, as both robots' summaries say it.
+void put_link(nlohmann::json& j, const std::string& stop, const std::string& safe_stop,
+              const devices::LinkStats& link) {
+  j["stopped"] = stop;
+  j["safe_stop"] = safe_stop.empty() ? "acknowledged" : safe_stop;
+  j["exchanges"] = link.exchanges;
+  j["retries"] = link.retries;
+  j["faults"] = {{"timeouts", link.timeouts},
+                 {"bad_replies", link.bad_replies},
+                 {"overflows", link.overflows}};
+}
+
 void run_stc_floor(const RecordCommand& c) {
   namespace sf = devices::stc_floor;
   namespace stc = antkit::stc;
@@ -117,13 +129,7 @@ void run_stc_floor(const RecordCommand& c) {
                   : nlohmann::json(nullptr);
   j["run_hash"] = antkit::kernel::hash_hex(s.hash);
   j["turn_ms"] = s.turn_ms;
-  j["stopped"] = s.stop;
-  j["safe_stop"] = s.safe_stop.empty() ? "acknowledged" : s.safe_stop;
-  j["exchanges"] = s.link.exchanges;
-  j["retries"] = s.link.retries;
-  j["faults"] = {{"timeouts", s.link.timeouts},
-                 {"bad_replies", s.link.bad_replies},
-                 {"overflows", s.link.overflows}};
+  put_link(j, s.stop, s.safe_stop, s.link);
   antkit::cli::emit(j, c.format, std::cout);
   if (!s.closed && s.stop.rfind("interrupted", 0) != 0)
     throw antkit::cli::CheckFailed("the run stopped before the tour closed: " + s.stop);
@@ -171,13 +177,7 @@ void run(const RecordCommand& c) {
   j["log"] = c.out;
   j["steps"] = summary.steps;
   j["completed"] = summary.completed;
-  j["stopped"] = summary.stop;
-  j["safe_stop"] = summary.safe_stop.empty() ? "acknowledged" : summary.safe_stop;
-  j["exchanges"] = summary.link.exchanges;
-  j["retries"] = summary.link.retries;
-  j["faults"] = {{"timeouts", summary.link.timeouts},
-                 {"bad_replies", summary.link.bad_replies},
-                 {"overflows", summary.link.overflows}};
+  put_link(j, summary.stop, summary.safe_stop, summary.link);
   j["hash"] = antkit::kernel::hash_hex(summary.hash);
   antkit::cli::emit(j, c.format, std::cout);
   if (!summary.completed && summary.stop.rfind("interrupted", 0) != 0)

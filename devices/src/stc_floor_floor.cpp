@@ -43,10 +43,7 @@ FloorWorld::FloorWorld(const kernel::OccupancyGrid& map, stc::SubCell start, int
   if (o_.quarter_turn_ms < 1 || o_.drive_ms < 0 || o_.capture_ms < 0)
     bad("floor", "times must be positive");
   if (heading < 0 || heading > 3) bad("--heading", "expected 0 (E), 1 (N), 2 (W) or 3 (S)");
-  Calibration probe;
-  probe.optics = o_.optics;
-  probe.corners = ideal_calibration(o_.optics).corners;
-  validate(probe, "optics");
+  validate(o_.optics, "optics");
   free_sub_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0);
   for (std::int32_t y = 0; y < 2 * shape_.cells_y; ++y)
     for (std::int32_t x = 0; x < 2 * shape_.cells_x; ++x)

@@ -68,9 +68,8 @@ Calibration ideal_calibration(const Optics& optics, std::int32_t unwarped_size,
   return c;
 }
 
-void validate(const Calibration& c, const std::string& where) {
+void validate(const Optics& o, const std::string& where) {
   auto fail = [&](const std::string& m) { throw kernel::InputError(where, m); };
-  const Optics& o = c.optics;
   if (o.panorama_width < 16 || o.panorama_width > 4096 || o.panorama_height < 16 ||
       o.panorama_height > 4096)
     fail("the panorama must be 16 to 4096 pixels wide and high");
@@ -81,6 +80,11 @@ void validate(const Calibration& c, const std::string& where) {
     fail("the mirror height must be 1/16 to 1024 sub-cells");
   if (o.pixels_per_radian < kOne || o.pixels_per_radian > 65536 * kOne)
     fail("pixels per radian must be 1 to 65536");
+}
+
+void validate(const Calibration& c, const std::string& where) {
+  auto fail = [&](const std::string& m) { throw kernel::InputError(where, m); };
+  validate(c.optics, where);
   if (c.unwarped_size < 16 || c.unwarped_size > 4096)
     fail("the unwarped image must be 16 to 4096 pixels");
   if (c.pixels_per_subcell < 4 || c.pixels_per_subcell > c.unwarped_size / 2)

@@ -76,6 +76,18 @@ std::uint64_t frame_digest(const Image& frame) noexcept {
   return h.finish();
 }
 
+PathCounts path_counts(std::span<const stc::SubCell> path) {
+  PathCounts c;
+  std::set<std::pair<std::int32_t, std::int32_t>> seen;
+  for (const auto& p : path) {
+    if (seen.insert({p.x, p.y}).second)
+      ++c.covered;
+    else
+      ++c.repeats;
+  }
+  return c;
+}
+
 bool SimulatedRobot::forward(std::int32_t led_ms) {
   return world_.forward(led_ms);
 }
@@ -93,8 +105,6 @@ PilotResult run_pilot(FloorRobot& robot, const View& view, const PilotOptions& o
   FloorController controller(o.controller, stc::quadrant_of(o.start));
   PilotResult r;
   r.path.push_back(o.start);
-  std::set<std::pair<std::int32_t, std::int32_t>> visited{{o.start.x, o.start.y}};
-  r.covered = 1;
   stc::SubCell pos = o.start;
   int h = o.heading & 3;
   std::int64_t T = o.quarter_turn_ms;
@@ -153,10 +163,6 @@ PilotResult run_pilot(FloorRobot& robot, const View& view, const PilotOptions& o
       if (s.moved) {
         pos = stc::step(pos, d);
         r.path.push_back(pos);
-        if (visited.insert({pos.x, pos.y}).second)
-          ++r.covered;
-        else
-          ++r.repeats;
       }
     }
     s.position = pos;
@@ -174,6 +180,9 @@ PilotResult run_pilot(FloorRobot& robot, const View& view, const PilotOptions& o
       break;
     }
   }
+  const PathCounts counts = path_counts(r.path);
+  r.covered = counts.covered;
+  r.repeats = counts.repeats;
   r.turn_ms = T;
   r.hash = run.value();
   return r;

@@ -7,8 +7,6 @@
 #include <antkit/kernel/input_error.hpp>
 #include <chrono>
 #include <csignal>
-#include <set>
-#include <utility>
 
 namespace antkit::devices::stc_floor {
 
@@ -67,8 +65,6 @@ RecordSummary record(const RecordOptions& o, const RecordProgress& progress) {
     });
     s.closed = r.closed;
     s.refused = r.refused;
-    s.covered = r.covered;
-    s.repeats = r.repeats;
     s.turn_ms = r.turn_ms;
     s.stop = r.closed ? "done" : r.refused ? "refused: the robot bumped" : "steps";
   } catch (const LinkError& e) {
@@ -87,17 +83,9 @@ RecordSummary record(const RecordOptions& o, const RecordProgress& progress) {
   LogStop stop{s.steps, s.stop, std::move(pending)};
   if (!s.safe_stop.empty()) stop.reason += "; safe stop: " + s.safe_stop;
   log.finish(stop);
-  if (!s.closed) { // covered and repeats from the path so far
-    s.covered = 0;
-    s.repeats = 0;
-    std::set<std::pair<std::int32_t, std::int32_t>> seen;
-    for (const auto& p : s.path) {
-      if (seen.insert({p.x, p.y}).second)
-        ++s.covered;
-      else
-        ++s.repeats;
-    }
-  }
+  const PathCounts counts = path_counts(s.path); // also when the run ended early
+  s.covered = counts.covered;
+  s.repeats = counts.repeats;
   s.link = robot.stats();
   s.hash = run.value();
   return s;

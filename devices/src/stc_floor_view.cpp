@@ -138,24 +138,24 @@ View::View(const Calibration& c, ViewParams params) : calibration_(c), params_(p
 }
 
 stc::EdgeObservation View::read_cells(const Image& marks, const Image& obstacles) const {
-  stc::EdgeObservation o;
-  for (std::size_t cell = 0; cell < 5; ++cell) {
+  auto edges = [&](std::size_t cell) {
     std::uint16_t mask = 0;
     for (std::size_t e = 0; e < 12; ++e)
       if (dot_near(marks, edge_points_[cell][e], params_.edge_crop, params_.window,
                    params_.mark_min_sum))
         mask = static_cast<std::uint16_t>(mask | (1u << e));
-    if (cell == 0) {
-      o.here = mask;
-    } else {
-      // A neighbour with a red light is an obstacle and has no sub-cell state: its masks are 0
-      // (the controllers never read them; marks seen there lie on its border with this cell).
-      if (!dot_near(obstacles, centres_[cell], params_.cell_crop, params_.window,
-                    params_.light_min_sum)) {
-        o.free_neighbours = static_cast<std::uint8_t>(o.free_neighbours | (1u << (cell - 1)));
-        o.neighbour[cell - 1] = mask;
-      }
-    }
+    return mask;
+  };
+  stc::EdgeObservation o;
+  o.here = edges(0);
+  for (std::size_t d = 0; d < 4; ++d) {
+    // A neighbour with a red light is an obstacle and has no sub-cell state: its masks stay 0
+    // (the controllers never read them; marks seen there lie on its border with this cell).
+    if (dot_near(obstacles, centres_[d + 1], params_.cell_crop, params_.window,
+                 params_.light_min_sum))
+      continue;
+    o.free_neighbours = static_cast<std::uint8_t>(o.free_neighbours | (1u << d));
+    o.neighbour[d] = edges(d + 1);
   }
   return o;
 }

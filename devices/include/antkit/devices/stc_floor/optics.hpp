@@ -73,6 +73,8 @@ struct Calibration {
 // and pixels per radian, at least 4 pixels to a sub-cell, corners inside the unwarped image).
 // Throws kernel::InputError(where, ...).
 void validate(const Calibration& c, const std::string& where);
+// The optics' part of it.
+void validate(const Optics& o, const std::string& where);
 
 // The calibration file (JSON, DESIGN.md: files and formats):
 //   {"schema":1,"kind":"antkit stc-floor calibration",

@@ -109,6 +109,12 @@ private:
 
 [[nodiscard]] std::uint64_t frame_digest(const Image& frame) noexcept;
 
+// The distinct sub-cells of a path (covered) and its entries into one entered before (repeats).
+struct PathCounts {
+  std::int64_t covered = 0, repeats = 0;
+};
+[[nodiscard]] PathCounts path_counts(std::span<const stc::SubCell> path);
+
 PilotResult run_pilot(FloorRobot& robot, const View& view, const PilotOptions& options,
                       const std::function<void(const PilotStep&)>& on_step = {});
 
