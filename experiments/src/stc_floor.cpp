@@ -6,8 +6,8 @@
 #include <antkit/experiments/stc_floor.hpp>
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/hash.hpp>
-#include <antkit/kernel/random.hpp>
 #include <antkit/stc/world.hpp>
+#include <antkit/uniform/scenario.hpp>
 #include <sstream>
 
 namespace antkit::experiments {
@@ -15,17 +15,13 @@ namespace antkit::experiments {
 namespace {
 
 namespace sf = devices::stc_floor;
-using kernel::Occupancy;
 using kernel::OccupancyGrid;
 
+// A board of cells x cells cells with `percent` % of its sub-cells blocked (exactly that many,
+// uniform::random_obstacles: the keyed maps of paper 004 and of paper 002's tours).
 OccupancyGrid board(std::int32_t cells, std::uint32_t percent, std::uint64_t seed,
                     std::uint64_t trial) {
-  OccupancyGrid out(2 * cells, 2 * cells, Occupancy::Free);
-  kernel::Stream s(seed, sf::kFloorExperiment, trial, 0, 2);
-  for (std::int32_t y = 0; y < out.height(); ++y)
-    for (std::int32_t x = 0; x < out.width(); ++x)
-      if (percent > 0 && s.chance(percent, 100)) out[{x, y}] = Occupancy::Blocked;
-  return out;
+  return uniform::random_obstacles(2 * cells, 2 * cells, percent * 10000, seed, trial);
 }
 
 struct RunOutcome {

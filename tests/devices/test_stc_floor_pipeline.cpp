@@ -7,6 +7,7 @@
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
+#include <antkit/uniform/scenario.hpp>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <rapidcheck/catch.h>
@@ -84,14 +85,9 @@ OccupancyGrid cut(const OccupancyGrid& map, std::int32_t cells) {
   return out;
 }
 
-// A keyed random board: `cells` x `cells` cells with about `percent` % of sub-cells blocked.
+// A keyed random board: `cells` x `cells` cells with `percent` % of the sub-cells blocked.
 OccupancyGrid random_board(std::int32_t cells, std::uint32_t percent, std::uint64_t key) {
-  OccupancyGrid out(2 * cells, 2 * cells, Occupancy::Free);
-  antkit::kernel::Stream s(key, 14, 0, 0, 1);
-  for (std::int32_t y = 0; y < out.height(); ++y)
-    for (std::int32_t x = 0; x < out.width(); ++x)
-      if (s.chance(percent, 100)) out[{x, y}] = Occupancy::Blocked;
-  return out;
+  return antkit::uniform::random_obstacles(2 * cells, 2 * cells, percent * 10000, key, 0);
 }
 
 void require_exact(const FloorRun& r, const OccupancyGrid& map) {

@@ -4,13 +4,13 @@
 // a weakening battery's rotation drift; and how large a board each fading time allows.
 //
 // The curves: each level runs `trials` keyed boards (trial t: a random board of `cells` x `cells`
-// cells with 10 % of its sub-cells blocked, uniform::random_obstacles-like from Stream(seed, 14,
-// t, 0, 2), the robot from stc::default_start heading north; the camera noise stream seeded
-// seed + t). Measured on the floor's truth: the sub-cells the body entered over those reachable
-// (coverage), repeats per reachable sub-cell, and whether the run was exact (the tour closed, every
-// reachable sub-cell entered exactly once). The drift curve also runs with the calibration off
-// (tolerance beyond any turn), to show what the paper's calibration buys; its "off grid" level is
-// the first drift at which some calibrated run is not exact.
+// cells with 10 % of its sub-cells blocked, uniform::random_obstacles(..., seed, t)), the robot
+// from stc::default_start heading north; the camera noise stream seeded seed + t). Measured on the
+// floor's truth: the sub-cells the body entered over those reachable (coverage), repeats per
+// reachable sub-cell, and whether the run was exact (the tour closed, every reachable sub-cell
+// entered exactly once). The drift curve also runs with the calibration off (tolerance beyond any
+// turn), to show what the paper's calibration buys; its "off grid" level is the first drift at
+// which some calibrated run is not exact.
 //
 // The board sizes: for each fading half-life, open boards of n x n cells, n = 2, 3, ..., up to
 // `max_board`; the largest n up to the first that is not exact, with the tour's duration on the
