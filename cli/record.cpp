@@ -2,19 +2,24 @@
 //   antkit record --device khepera|hemisson|epuck --port PATH --controller buffon|rs|wander
 //                 [--seed S] [--trial T] [--visit V] [--param KEY=VALUE ...] [--steps N]
 //                 [--baud B] [--framing 8N1|8N2|...] [--timeout MS] [--tries N] [--period MS]
-//                 --out LOG [--format table|json]
+//                 [--arena SPEC] --out LOG [--force] [--format table|json]
 //   antkit record --device stc-floor --port PATH --controller ant|ant-edge [--map F] [--start X,Y]
 //                 [--heading D] [--calibration F.json] [--turn-ms T] [--led-ms L] [--steps N]
-//                 [--baud B] [--framing F] [--timeout MS] [--tries N] --out LOG [--format]
+//                 [--baud B] [--framing F] [--timeout MS] [--tries N] --out LOG [--force]
+//                 [--format]
 //   (paper 002's marker-floor robot, devices/stc_floor/record.hpp: the pilot drives the ant-like
 //   controller through the camera pipeline until the tour closes or N steps ran; its summary has
 //   the keys of `antkit stc`: path in map sub-cells from the start, reachable_subcells and hash
 //   when --map is given (the hash then equals antkit stc's for the same tour), covered, repeats,
 //   returned_to_start; and run_hash, which antkit replay prints for the log.)
-// Exit status: 0 when the run completed or was stopped by SIGINT / SIGTERM (the robot stopped
-// safely, the log complete), 1 when the link failed (resends exhausted, watchdog, disconnect: the
-// robot was stopped as far as the link allowed, the log holds every step and ends with the
-// reason), 2 for bad options or a port that cannot be opened (no log is written).
+// Exit status: 0 only when the run did what it set out to do and the robot is known to be stopped:
+// every requested step ran (or SIGINT / SIGTERM stopped it between steps), the safe stop was
+// acknowledged and, where the robot can say, its wheels read back at zero; for stc-floor, the tour
+// passed the oracle of `antkit check stc` (every reachable sub-cell entered exactly once, back next
+// to the start) when --map is given, else it closed with no repeat. 1 when the run fell short
+// (the link failed, the tour broke a rule; the summary says which) or the robot may still be
+// moving ("robot_stopped": false). 2 for bad options, a port that cannot be opened or is held by
+// another process ("port busy"), or an --out that exists without --force (no log is written).
 #include "commands.hpp"
 #include "output.hpp"
 
@@ -25,6 +30,7 @@
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
+#include <antkit/testing/stc_audit.hpp>
 #include <iostream>
 #include <memory>
 #include <unistd.h>
@@ -36,11 +42,12 @@ using antkit::cli::Format;
 using antkit::kernel::InputError;
 
 struct RecordCommand {
-  std::string device, port, controller, out, baud, framing;
+  std::string device, port, controller, out, baud, framing, arena;
+  bool force = false;
   std::uint64_t seed = 1;
   std::int64_t trial = -1, visit = -1;
   std::vector<std::string> params;
-  std::int64_t steps = 1000, timeout_ms = 250, tries = 3, period_ms = 0;
+  std::int64_t steps = 1000, timeout_ms = 250, tries = 12, period_ms = 0;
   Format format = Format::Table;
   // stc-floor
   std::string map, start, calibration;
@@ -58,19 +65,20 @@ void line_and_link(const RecordCommand& c, devices::LineSettings& line,
   if (c.tries < 1 || c.tries > 100) throw InputError("--tries", "expected 1 to 100 sends");
   link.timeout = std::chrono::milliseconds(c.timeout_ms);
   link.tries = static_cast<std::uint32_t>(c.tries);
-  link.watchdog = std::max(link.watchdog, std::chrono::milliseconds(4 * c.timeout_ms * c.tries));
 }
 
 // How a recording ended and what its link went through, as both robots' summaries say it.
-void put_link(nlohmann::json& j, const std::string& stop, const std::string& safe_stop,
-              const devices::LinkStats& link) {
+void put_link(nlohmann::json& j, const std::string& stop, bool robot_stopped,
+              const std::string& safe_stop, const devices::LinkStats& link) {
   j["stopped"] = stop;
+  j["robot_stopped"] = robot_stopped;
   j["safe_stop"] = safe_stop.empty() ? "acknowledged" : safe_stop;
   j["exchanges"] = link.exchanges;
   j["retries"] = link.retries;
   j["faults"] = {{"timeouts", link.timeouts},
                  {"bad_replies", link.bad_replies},
-                 {"overflows", link.overflows}};
+                 {"overflows", link.overflows},
+                 {"stale", link.stale}};
 }
 
 void run_stc_floor(const RecordCommand& c) {
@@ -83,6 +91,7 @@ void run_stc_floor(const RecordCommand& c) {
     throw InputError("--controller",
                      "the stc-floor robot runs ant or ant-edge, not '" + c.controller + "'");
   o.pilot.controller = *variant;
+  if (!c.arena.empty()) throw InputError("--arena", "is for khepera, hemisson and epuck");
   std::optional<antkit::maps::GridMap> map;
   if (!c.map.empty()) map = antkit::maps::load_map(c.map);
   if (map) {
@@ -105,6 +114,7 @@ void run_stc_floor(const RecordCommand& c) {
   if (!c.calibration.empty()) o.calibration = devices::stc_floor::read_calibration(c.calibration);
   line_and_link(c, o.line, o.link);
   o.out = c.out;
+  o.force = c.force;
   const bool live = ::isatty(STDERR_FILENO) == 1;
   const auto s = sf::record(o, [live](std::int64_t step) {
     if (live && step % 50 == 0) std::cerr << "\rrecord: step " << step << std::flush;
@@ -129,10 +139,38 @@ void run_stc_floor(const RecordCommand& c) {
                   : nlohmann::json(nullptr);
   j["run_hash"] = antkit::kernel::hash_hex(s.hash);
   j["turn_ms"] = s.turn_ms;
-  put_link(j, s.stop, s.safe_stop, s.link);
+  // A run is what it says: the believed tour held against the map by `antkit check stc`'s oracle
+  // (without a map: closed, next to the start, no sub-cell entered twice).
+  std::string broken;
+  if (map) {
+    const auto a = antkit::testing::audit_stc_tour(map->cells, o.pilot.start, s.path,
+                                                   antkit::testing::TourRule::ExactlyOnce);
+    j["tour_ok"] = a.ok();
+    j["first_violation"] =
+        a.ok() ? nlohmann::json(nullptr)
+               : nlohmann::json{{"rule", a.first.rule},
+                                {"step", a.first.step < 0 ? nlohmann::json(nullptr)
+                                                          : nlohmann::json(a.first.step)},
+                                {"subcell", {a.first.subcell.x, a.first.subcell.y}},
+                                {"detail", a.first.detail}};
+    if (!a.ok()) broken = a.first.describe();
+  } else {
+    const bool ok = j["returned_to_start"].get<bool>() && s.repeats == 0;
+    j["tour_ok"] = ok;
+    j["first_violation"] = nullptr;
+    if (!ok)
+      broken = !j["returned_to_start"].get<bool>()
+                   ? "the tour did not close next to the start"
+                   : std::to_string(s.repeats) + " sub-cells entered more than once";
+  }
+  // The marker-floor robot moves in discrete F and R commands, each run to its end by the robot:
+  // between commands it stands still, so its safe stop (LEDs off) does not decide robot_stopped.
+  put_link(j, s.stop, true, s.safe_stop, s.link);
   antkit::cli::emit(j, c.format, std::cout);
-  if (!s.closed && s.stop.rfind("interrupted", 0) != 0)
+  if (s.kind == devices::StopKind::Interrupted) return;
+  if (s.kind != devices::StopKind::Done)
     throw antkit::cli::CheckFailed("the run stopped before the tour closed: " + s.stop);
+  if (!broken.empty()) throw antkit::cli::CheckFailed("the tour is not a coverage tour: " + broken);
 }
 
 void run(const RecordCommand& c) {
@@ -161,6 +199,8 @@ void run(const RecordCommand& c) {
   o.controller = devices::make_spec(c.controller, c.seed, given, "--controller");
   o.steps = c.steps;
   o.out = c.out;
+  o.force = c.force;
+  o.arena = c.arena;
   if (c.period_ms < 0 || c.period_ms > 60000)
     throw InputError("--period", "expected milliseconds in [0, 60000]");
   o.period = std::chrono::milliseconds(c.period_ms);
@@ -177,10 +217,12 @@ void run(const RecordCommand& c) {
   j["log"] = c.out;
   j["steps"] = summary.steps;
   j["completed"] = summary.completed;
-  put_link(j, summary.stop, summary.safe_stop, summary.link);
+  put_link(j, summary.stop, summary.safe_stop.stopped, summary.safe_stop.failure, summary.link);
   j["hash"] = antkit::kernel::hash_hex(summary.hash);
   antkit::cli::emit(j, c.format, std::cout);
-  if (!summary.completed && summary.stop.rfind("interrupted", 0) != 0)
+  if (!summary.safe_stop.stopped)
+    throw antkit::cli::CheckFailed("the robot may still be moving: " + summary.safe_stop.failure);
+  if (!summary.succeeded())
     throw antkit::cli::CheckFailed("the run stopped early: " + summary.stop);
 }
 
@@ -210,10 +252,16 @@ void register_record(CLI::App& app) {
   sub->add_option("--baud", c->baud, "Baud rate (default the robot's)");
   sub->add_option("--framing", c->framing, "Framing such as 8N1 or 8N2 (default the robot's)");
   sub->add_option("--timeout", c->timeout_ms, "Reply timeout in milliseconds (default 250)");
-  sub->add_option("--tries", c->tries, "Sends of a command before giving up (default 3)");
+  sub->add_option("--tries", c->tries,
+                  "Sends of a command before giving up (default 12, see devices/link.hpp)");
   sub->add_option("--period", c->period_ms,
                   "Shortest control period in milliseconds (default 0: as fast as the link)");
-  sub->add_option("--out", c->out, "The log to write (JSON Lines)")->required();
+  sub->add_option("--out", c->out, "The log to write (JSON Lines); an existing file is refused")
+      ->required();
+  sub->add_flag("--force", c->force, "Replace --out if it exists");
+  sub->add_option("--arena", c->arena,
+                  "The arena the robot runs in (an emulator's spec), written into the log's header "
+                  "for buffon-from-logs");
   antkit::cli::add_format_option(*sub, c->format);
   sub->callback([c] { run(*c); });
 }

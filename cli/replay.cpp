@@ -1,8 +1,11 @@
 // `antkit replay`: a hardware log through its controller, checked bit for bit (issue 13).
 //   antkit replay LOG [--until STEP] [--format table|json]
-// Exit status: 0 identical, 1 at the first divergence (step, field, expected, actual), 2 for a
-// malformed log (line and reason). JSON: {"steps", "identical", "first_divergence": null |
-// {"step", "field", "expected", "actual"}, "truncated", "hash"}.
+// Exit status: 0 identical, 1 at the first divergence (step, field, expected = what the log holds,
+// actual = what the replay derived), 2 for a malformed log (line and reason). JSON: {"steps",
+// "identical", "first_divergence": null | {"step", "field", "expected", "actual"}, "truncated",
+// "complete", "hash", "robot", "controller", "stopped"}. A log without its stop record (the run
+// never said how it ended: a power cut, a crash) replays as far as it goes, "complete": false, with
+// a warning on stderr; the exit status is then that of the steps it holds.
 #include "commands.hpp"
 #include "output.hpp"
 
@@ -38,6 +41,7 @@ void run(const ReplayCommand& c) {
     j["first_divergence"] = nullptr;
   }
   j["truncated"] = r.truncated;
+  j["complete"] = r.complete;
   j["hash"] = antkit::kernel::hash_hex(r.hash);
   j["robot"] = r.header.robot;
   j["controller"] = r.header.controller;
@@ -47,10 +51,15 @@ void run(const ReplayCommand& c) {
     std::cerr << "antkit: warning: " << c.log
               << ": the last line is cut short (the recording was interrupted while writing); "
                  "every step before it was replayed\n";
+  else if (!r.complete && c.until < 0)
+    std::cerr << "antkit: warning: " << c.log
+              << ": the log has no stop record: the run never said how it stopped (a power cut "
+                 "or a crash while recording?); the robot may not have been stopped; every step "
+                 "in it was replayed\n";
   if (!r.identical) {
     const auto& d = *r.first_divergence;
     throw antkit::cli::CheckFailed(c.log + ": step " + std::to_string(d.step) + ": " + d.field +
-                                   ": the log says " + d.expected + ", this build computes " +
+                                   ": the log holds " + d.expected + ", the replay derived " +
                                    d.actual);
   }
 }

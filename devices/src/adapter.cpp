@@ -1,4 +1,6 @@
 // The robot bodies under the controller contract, and record() (adapter.hpp).
+#include "body.hpp"
+
 #include <antkit/buffon/world.hpp>
 #include <antkit/devices/adapter.hpp>
 #include <antkit/devices/log.hpp>
@@ -7,6 +9,8 @@
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/uniform/controllers.hpp>
 #include <csignal>
+#include <optional>
+#include <sys/stat.h>
 #include <thread>
 
 namespace antkit::devices {
@@ -20,55 +24,9 @@ __extension__ using i128 = __int128;
 // pi / 4 as Q15.16, for the wanderer's 45-degree turn.
 constexpr Fx kQuarterPi = Fx::from_raw(51472);
 
-class Body {
-public:
-  explicit Body(RobotLink& link) : link_(link), robot_(link.codec().robot()) {}
-
-  // Before the first step: the wheel counters to zero (robots with encoders).
-  void start(std::vector<Exchange>& io) {
-    if (robot_.has_odometry) link_.transact(link_.codec().set_odometry(0, 0), io);
-  }
-  Proximity read_sensors(std::vector<Exchange>& io) {
-    const std::size_t before = io.size();
-    const std::string reply = link_.transact(link_.codec().read_proximity(), io);
-    // Every proximity read sent is a control period in which the wheels turned at the speeds in
-    // force (the emulator's clock; a real robot's too, roughly): the Hemisson's odometry counts it.
-    for (std::size_t k = before; k < io.size(); ++k) period_elapsed();
-    return *link_.codec().decode_proximity(reply).value;
-  }
-  void set_wheels(std::int32_t left, std::int32_t right, std::vector<Exchange>& io) {
-    link_.transact(link_.codec().set_speed(left, right), io);
-    left_ = left;
-    right_ = right;
-  }
-  // Odometry after the step: the counters, or the Hemisson's commanded travel in micrometres.
-  WheelTravel odometry(std::vector<Exchange>& io) {
-    if (!robot_.has_odometry)
-      return {static_cast<std::int64_t>(travel2_.left / (2 * 65536)),
-              static_cast<std::int64_t>(travel2_.right / (2 * 65536))};
-    const std::string reply = link_.transact(link_.codec().read_odometry(), io);
-    const WheelPair w = *link_.codec().decode_odometry(reply).value;
-    return {w.left, w.right};
-  }
-  [[nodiscard]] const RobotDescription& robot() const noexcept { return robot_; }
-
-private:
-  void period_elapsed() {
-    const Travel2 t = step_travel2(robot_, buffon::kDefaultSpeed, from_wheel_command(robot_, left_),
-                                   from_wheel_command(robot_, right_), true);
-    travel2_.left += t.left;
-    travel2_.right += t.right;
-  }
-
-  RobotLink& link_;
-  const RobotDescription& robot_;
-  std::int32_t left_ = 0, right_ = 0;
-  Travel2 travel2_;
-};
-
 // The wanderer's moves: wheels at half speed (turns: opposite) until the wheels have travelled
 // the target (micrometres per wheel), one sensor read per control period.
-void wander_move(Body& body, uniform::Action action, std::vector<Exchange>& io) {
+void wander_move(detail::Body& body, uniform::Action action, std::vector<Exchange>& io) {
   const auto& robot = body.robot();
   const std::int32_t s = std::max<std::int32_t>(1, robot.speed_full / 2);
   std::int32_t left = s, right = s;
@@ -103,21 +61,108 @@ void wander_move(Body& body, uniform::Action action, std::vector<Exchange>& io) 
   body.set_wheels(0, 0, io);
 }
 
+bool log_exists(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0;
+}
+
 std::string signal_name(int sig) {
   return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "signal " + std::to_string(sig);
 }
 
 } // namespace
 
+namespace detail {
+
+Body::Body(CommandLink& link) : link_(link), robot_(link.codec().robot()) {}
+
+void Body::start(std::vector<Exchange>& io) {
+  if (!robot_.has_odometry) return;
+  if (robot_.odometry_set != 0) {
+    link_.transact(link_.codec().set_odometry(0, 0), io);
+    return;
+  }
+  const std::string reply = link_.transact(link_.codec().read_odometry(), io);
+  const WheelPair w = *link_.codec().decode_odometry(reply).value;
+  baseline_ = {w.left, w.right};
+}
+
+Proximity Body::read_sensors(std::vector<Exchange>& io) {
+  const std::size_t before = io.size();
+  const std::string reply = link_.transact(link_.codec().read_proximity(), io);
+  // Every proximity read sent is a control period in which the wheels turned at the speeds in
+  // force (the emulator's clock; a real robot's too, roughly): the Hemisson's odometry counts it.
+  for (std::size_t k = before; k < io.size(); ++k)
+    if (!io[k].sent.empty()) period_elapsed();
+  return *link_.codec().decode_proximity(reply).value;
+}
+
+void Body::set_wheels(std::int32_t left, std::int32_t right, std::vector<Exchange>& io) {
+  link_.transact(link_.codec().set_speed(left, right), io);
+  left_ = left;
+  right_ = right;
+}
+
+WheelTravel Body::odometry(std::vector<Exchange>& io) {
+  if (!robot_.has_odometry)
+    return {static_cast<std::int64_t>(travel2_.left / (2 * 65536)),
+            static_cast<std::int64_t>(travel2_.right / (2 * 65536))};
+  const std::string reply = link_.transact(link_.codec().read_odometry(), io);
+  const WheelPair w = *link_.codec().decode_odometry(reply).value;
+  return {w.left - baseline_.left, w.right - baseline_.right};
+}
+
+void Body::period_elapsed() {
+  const Travel2 t = step_travel2(robot_, buffon::kDefaultSpeed, from_wheel_command(robot_, left_),
+                                 from_wheel_command(robot_, right_), true);
+  travel2_.left += t.left;
+  travel2_.right += t.right;
+}
+
+void act(Body& body, bool wander, std::span<const std::int64_t> cmd, std::vector<Exchange>& io) {
+  if (wander) {
+    const auto action = static_cast<uniform::Action>(cmd[0]);
+    if (action != uniform::Action::Wait && action != uniform::Action::Stop)
+      wander_move(body, action, io);
+    return;
+  }
+  body.set_wheels(static_cast<std::int32_t>(cmd[2]), static_cast<std::int32_t>(cmd[3]), io);
+}
+
+} // namespace detail
+
+std::string_view stop_kind_name(StopKind kind) noexcept {
+  switch (kind) {
+  case StopKind::Done:
+    return "done";
+  case StopKind::Interrupted:
+    return "interrupted";
+  case StopKind::Link:
+    return "link";
+  case StopKind::Error:
+    return "error";
+  }
+  return "?";
+}
+
+std::string stop_reason(StopKind kind, const std::string& detail, const SafeStopResult& safe) {
+  std::string out(stop_kind_name(kind));
+  if (!detail.empty()) out += (kind == StopKind::Interrupted ? " by " : ": ") + detail;
+  if (!safe.stopped)
+    out += std::string("; ") + std::string(kRobotMayBeMoving) + ": " + safe.failure;
+  else if (!safe.complete)
+    out += "; safe stop: " + safe.failure;
+  return out;
+}
+
 RecordSummary record(const RecordOptions& options, const RecordProgress& progress) {
   if (options.steps < 0 || options.steps > 1000000000)
     throw kernel::InputError("--steps", "expected a whole number in [0, 1000000000]");
   auto controller = make_controller(options.controller);
-  // The port first: a bad --port is bad input and must leave no log behind.
-  SerialPort port = SerialPort::open(options.port, options.line);
-  StopSignals::Scope signals;
-  RobotLink link(std::move(port), options.robot, options.link);
-  Body body(link);
+  // A log is never replaced by accident: a mistyped name must not lose a recorded visit.
+  if (!options.force && log_exists(options.out))
+    throw kernel::InputError(options.out, "the log exists: give another --out, or --force to "
+                                          "replace it");
 
   LogHeader header;
   header.antkit_version = ANTKIT_DEVICES_VERSION;
@@ -128,14 +173,35 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
   header.controller = options.controller.name;
   header.params = options.controller.params;
   header.seed = options.controller.seed;
-  LogWriter log(options.out, header, options.sync_every);
+  header.arena = options.arena;
 
   RecordSummary summary;
+  // The port first: a bad --port is bad input and must leave no log behind. A link that cannot be
+  // reached (a TCP relay that refuses) is a link failure: its log says so, and the run exits 1.
+  std::optional<SerialPort> port;
+  try {
+    port.emplace(SerialPort::open(options.port, options.line));
+  } catch (const LinkError& e) {
+    LogWriter log(options.out, header, 0, options.force);
+    summary.kind = StopKind::Link;
+    summary.safe_stop = {.stopped = true, .complete = true, .failure = {}}; // never driven by us
+    summary.stop =
+        stop_reason(StopKind::Link, std::string(link_error_name(e.kind())) + ": " + e.what(),
+                    summary.safe_stop);
+    log.finish({0, summary.stop, {}});
+    return summary;
+  }
+  StopSignals::Scope signals;
+  RobotLink link(std::move(*port), options.robot, options.link);
+  detail::Body body(link);
+  LogWriter log(options.out, header, options.sync_every, options.force);
+
   RunHash run;
   LogRecord rec;
   std::vector<Exchange> pending; // exchanges of the step under way
   const auto t0 = Clock::now();
   const bool wander = options.controller.name == "wander";
+  std::string detail;
   try {
     body.start(pending);
     for (std::int64_t step = 0; step < options.steps; ++step) {
@@ -144,14 +210,7 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
       const Proximity readings = body.read_sensors(pending);
       controller->observe(body.robot(), readings, rec.obs);
       controller->step(body.robot(), rec.obs, rec.cmd);
-      if (wander) {
-        const auto action = static_cast<uniform::Action>(rec.cmd[0]);
-        if (action != uniform::Action::Wait && action != uniform::Action::Stop)
-          wander_move(body, action, pending);
-      } else {
-        body.set_wheels(static_cast<std::int32_t>(rec.cmd[2]),
-                        static_cast<std::int32_t>(rec.cmd[3]), pending);
-      }
+      detail::act(body, wander, rec.cmd, pending);
       const WheelTravel odo = body.odometry(pending);
       rec.step = step;
       rec.time_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count();
@@ -166,23 +225,25 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
       if (options.period.count() > 0) std::this_thread::sleep_until(step_start + options.period);
     }
     summary.completed = true;
-    summary.stop = "done";
+    summary.kind = StopKind::Done;
   } catch (const LinkError& e) {
-    summary.stop = e.kind() == LinkError::Kind::Interrupted
-                       ? "interrupted by " + signal_name(StopSignals::signal())
-                       : "link: " + std::string(link_error_name(e.kind())) + ": " + e.what();
-  } catch (const kernel::InputError& e) {
-    summary.stop = std::string("error: ") + e.what();
+    if (e.kind() == LinkError::Kind::Interrupted) {
+      summary.kind = StopKind::Interrupted;
+      detail = signal_name(StopSignals::signal());
+    } else {
+      summary.kind = StopKind::Link;
+      detail = std::string(link_error_name(e.kind())) + ": " + e.what();
+    }
   } catch (const std::exception& e) {
-    summary.stop = std::string("error: ") + e.what();
+    summary.kind = StopKind::Error;
+    detail = e.what();
   }
   // The safe stop: a pending stop signal would interrupt it, so it is taken first (the stop
   // reason already says it came).
   StopSignals::reset();
-  summary.safe_stop = link.safe_stop(pending);
-  LogStop stop{summary.steps, summary.stop, std::move(pending)};
-  if (!summary.safe_stop.empty()) stop.reason += "; safe stop: " + summary.safe_stop;
-  log.finish(stop);
+  summary.safe_stop = safe_stop(link, pending);
+  summary.stop = stop_reason(summary.kind, detail, summary.safe_stop);
+  log.finish({summary.steps, summary.stop, std::move(pending)});
   summary.link = link.stats();
   summary.hash = run.value();
   return summary;

@@ -1,11 +1,43 @@
-// One command, one validated reply, with resends (link.hpp).
+// One command, one validated reply, with resends; the confirmed safe stop (link.hpp).
 #include <antkit/devices/link.hpp>
+#include <antkit/devices/stop_signals.hpp>
 #include <thread>
 
 namespace antkit::devices {
 
 namespace {
 using Clock = std::chrono::steady_clock;
+
+char lower(char c) noexcept {
+  return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+}
+
+std::chrono::milliseconds backoff_for(const LinkOptions& o, std::uint32_t attempt) noexcept {
+  // attempt >= 1: backoff x 2^(attempt - 1), at most backoff_max.
+  auto d = o.backoff;
+  for (std::uint32_t k = 1; k < attempt && d < o.backoff_max; ++k) d *= 2;
+  return std::min(d, std::max(o.backoff, o.backoff_max));
+}
+
+// A line shaped as some reply: a lower-case letter, then nothing or ',' and printable text, then
+// CR LF. Only such lines can be late answers; junk cannot pass for one.
+bool reply_shaped(std::string_view line) noexcept {
+  if (line.size() < 3 || line[0] < 'a' || line[0] > 'z') return false;
+  if (line.substr(line.size() - 2) != "\r\n") return false;
+  const auto body = line.substr(1, line.size() - 3);
+  if (!body.empty() && body[0] != ',') return false;
+  for (const char c : body)
+    if (c < 0x20 || c > 0x7E) return false;
+  return true;
+}
+
+// The robots whose speeds can be read back (E): all but the Webots relay, which answers only
+// B, D, G, H, L, N and O (PROTOCOLS.md, "Khepera in Webots").
+bool reads_speed(const RobotDescription& robot) noexcept {
+  return robot.name != "khepera-webots";
+}
+
+} // namespace
 
 std::string printable(std::string_view bytes) {
   std::string out;
@@ -25,11 +57,41 @@ std::string printable(std::string_view bytes) {
   }
   return out;
 }
-} // namespace
+
+std::chrono::milliseconds watchdog_of(const LinkOptions& o) noexcept {
+  if (o.watchdog.count() > 0) return o.watchdog;
+  return std::max<std::uint32_t>(1, o.tries) * (o.timeout + std::max(o.backoff, o.backoff_max)) +
+         o.timeout;
+}
+
+ReplyKind classify_reply(const Codec& codec, std::string_view command, std::string_view line) {
+  if (command.empty()) return ReplyKind::Bad;
+  if (!line.empty() && line[0] == lower(command[0]))
+    return codec.decode_reply(command, line) ? ReplyKind::Reply : ReplyKind::Bad;
+  return reply_shaped(line) ? ReplyKind::Stale : ReplyKind::Bad;
+}
 
 RobotLink::RobotLink(SerialPort port, RobotKind robot, LinkOptions options)
     : port_(std::move(port)), codec_(robot), options_(options), last_ok_(Clock::now()) {
   if (options_.tries == 0) options_.tries = 1;
+}
+
+void RobotLink::pause(std::chrono::milliseconds d) {
+  std::this_thread::sleep_for(d);
+}
+
+void RobotLink::drain(std::vector<Exchange>& io) {
+  // Whatever waits now arrived before this send: it cannot be its reply. Read without waiting.
+  std::string bytes;
+  for (;;) {
+    const ReadResult r = port_.read_line(std::chrono::milliseconds(0), LineEnd::Lf);
+    if (r.bytes.empty()) break;
+    bytes += r.bytes;
+    if (!r.complete && !r.overflow) break; // a partial line: all there was
+  }
+  if (bytes.empty()) return;
+  ++stats_.stale;
+  io.push_back({{}, std::move(bytes)});
 }
 
 std::string RobotLink::transact(const std::string& command, std::vector<Exchange>& io) {
@@ -37,46 +99,63 @@ std::string RobotLink::transact(const std::string& command, std::vector<Exchange
   for (std::uint32_t attempt = 0; attempt < options_.tries; ++attempt) {
     if (attempt > 0) {
       ++stats_.retries;
-      std::this_thread::sleep_for(options_.backoff *
-                                  (1u << std::min<std::uint32_t>(attempt - 1, 8)));
-      port_.flush_input();
+      std::this_thread::sleep_for(backoff_for(options_, attempt));
     }
     const auto silent =
         std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - last_ok_);
-    if (silent > options_.watchdog)
+    if (silent > watchdog_of(options_))
       throw LinkError(LinkError::Kind::Timeout,
                       port_.name() + ": watchdog: no valid reply for " +
                           std::to_string(silent.count()) + " ms" +
                           (why.empty() ? std::string() : " (last: " + why + ")"));
-    io.push_back({command, {}});
-    ++stats_.exchanges;
     try {
-      port_.write_all(command, options_.timeout);
-      const ReadResult r = port_.read_line(options_.timeout, LineEnd::Lf);
-      io.back().received = r.bytes;
+      drain(io);
+    } catch (const LinkError&) {
+      // A line already gone: the attempt is still logged, so that a log shows every command tried
+      // (replay finds the safe stop by its first command even when nothing could be sent).
+      io.push_back({command, {}});
+      ++stats_.exchanges;
+      throw;
+    }
+    io.push_back({command, {}});
+    const std::size_t at = io.size() - 1;
+    ++stats_.exchanges;
+    port_.write_all(command, options_.timeout);
+    const auto deadline = Clock::now() + options_.timeout;
+    for (;;) {
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+      const ReadResult r =
+          port_.read_line(std::max(left, std::chrono::milliseconds(0)), LineEnd::Lf);
+      io[at].received += r.bytes;
       if (r.overflow) {
         ++stats_.overflows;
         why = "a reply line over " + std::to_string(r.bytes.size()) + " bytes";
-        continue;
+        break;
       }
       if (!r.complete) {
         ++stats_.timeouts;
         why = r.bytes.empty()
                   ? "no reply within " + std::to_string(options_.timeout.count()) + " ms"
                   : "a partial reply '" + printable(r.bytes) + "'";
+        break;
+      }
+      const ReplyKind kind = classify_reply(codec_, command, r.bytes);
+      if (kind == ReplyKind::Stale) {
+        ++stats_.stale;
         continue;
       }
-      const auto decoded = codec_.decode_reply(command, r.bytes);
-      if (!decoded) {
+      if (kind == ReplyKind::Bad) {
         ++stats_.bad_replies;
-        why = "reply '" + printable(r.bytes) + "': column " + std::to_string(decoded.error.column) +
-              ": " + decoded.error.message;
-        continue;
+        const auto decoded = codec_.decode_reply(command, r.bytes);
+        why = "reply '" + printable(r.bytes) + "'" +
+              (decoded ? std::string()
+                       : ": column " + std::to_string(decoded.error.column) + ": " +
+                             decoded.error.message);
+        break;
       }
       last_ok_ = Clock::now();
       return r.bytes;
-    } catch (const LinkError&) {
-      throw; // the attempt is already in io (with what arrived before the failure, if anything)
     }
   }
   throw LinkError(LinkError::Kind::Timeout, port_.name() + ": no valid reply to '" +
@@ -84,39 +163,70 @@ std::string RobotLink::transact(const std::string& command, std::vector<Exchange
                                                 std::to_string(options_.tries) + " tries: " + why);
 }
 
-std::string RobotLink::safe_stop(std::vector<Exchange>& io) noexcept {
-  std::string failed;
+SafeStopResult safe_stop(CommandLink& link, std::vector<Exchange>& io) noexcept {
+  SafeStopResult out;
   try {
-    for (const auto& command : codec_.safe_stop()) {
-      io.push_back({command, {}});
-      try {
-        port_.flush_input();
-        port_.write_all(command, options_.timeout);
-        // A reply to the command that was under way when the run stopped may still arrive: lines
-        // that are not this command's acknowledgement are logged and skipped until the timeout.
-        const auto deadline = Clock::now() + options_.timeout;
-        bool acknowledged = false;
-        while (!acknowledged) {
-          const auto left =
-              std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
-          if (left.count() <= 0) break;
-          const ReadResult r = port_.read_line(left, LineEnd::Lf);
-          io.back().received += r.bytes;
-          if (!r.complete) break;
-          acknowledged = static_cast<bool>(codec_.decode_reply(command, r.bytes));
+    const Codec& codec = link.codec();
+    const auto& o = link.options();
+    const auto rounds = std::max<std::uint32_t>(1, o.stop_rounds);
+    const auto commands = codec.safe_stop();
+    bool wheels_acknowledged = false, gone = false;
+    for (std::size_t i = 0; i < commands.size() && !gone; ++i) {
+      bool acknowledged = false;
+      std::string why;
+      for (std::uint32_t round = 0; round < rounds && !acknowledged; ++round) {
+        if (round > 0) link.pause(o.backoff_max);
+        StopSignals::reset(); // a second Ctrl-C must not cut the stop short
+        link.rearm();
+        try {
+          link.transact(commands[i], io);
+          acknowledged = true;
+        } catch (const LinkError& e) {
+          why = e.what();
+          gone = e.kind() == LinkError::Kind::Disconnected;
+          if (gone) break;
         }
-        if (!acknowledged)
-          failed += (failed.empty() ? "" : "; ") + printable(command) + " not acknowledged";
-      } catch (const LinkError& e) {
-        failed += (failed.empty() ? "" : "; ") + printable(command) + ": " +
-                  std::string(link_error_name(e.kind()));
-        if (e.kind() == LinkError::Kind::Disconnected) break;
       }
+      if (i == 0) wheels_acknowledged = acknowledged;
+      if (!acknowledged)
+        out.failure += (out.failure.empty() ? "" : "; ") + printable(commands[i]) +
+                       " not acknowledged (" + why + ")";
     }
+    out.acknowledged = out.stopped = wheels_acknowledged;
+    // Confirmed by the robot's own state: the speeds read back as zero.
+    if (wheels_acknowledged && !gone && reads_speed(codec.robot())) {
+      out.stopped = false;
+      std::string why = "no reading";
+      for (std::uint32_t round = 0; round < rounds && !out.stopped; ++round) {
+        if (round > 0) link.pause(o.backoff_max);
+        StopSignals::reset();
+        link.rearm();
+        try {
+          const auto speeds = codec.decode_speed(link.transact(codec.read_speed(), io));
+          if (speeds && speeds.value->left == 0 && speeds.value->right == 0) {
+            out.stopped = true;
+          } else {
+            why = speeds ? "the robot reads back speeds " + std::to_string(speeds.value->left) +
+                               ", " + std::to_string(speeds.value->right)
+                         : "a bad speed reply";
+            // Not at zero: the wheels command again before the next reading.
+            link.transact(commands[0], io);
+          }
+        } catch (const LinkError& e) {
+          why = e.what();
+          if (e.kind() == LinkError::Kind::Disconnected) break;
+        }
+      }
+      if (!out.stopped)
+        out.failure += (out.failure.empty() ? "" : "; ") +
+                       std::string("wheels not confirmed at 0 (") + why + ")";
+    }
+    out.complete = out.failure.empty();
   } catch (const std::exception& e) { // allocation failure: nothing more can be said safely
-    failed += std::string("; ") + e.what();
+    out.failure += std::string("; ") + e.what();
+    out.complete = false;
   }
-  return failed;
+  return out;
 }
 
 } // namespace antkit::devices

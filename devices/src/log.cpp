@@ -376,6 +376,10 @@ std::string format_header(const LogHeader& h) {
   }
   out += "}},\"seed\":";
   put_int(out, static_cast<std::int64_t>(h.seed));
+  if (!h.arena.empty()) {
+    out += ",\"arena\":";
+    put_bytes(out, h.arena);
+  }
   out += '}';
   return out;
 }
@@ -408,9 +412,12 @@ std::string format_stop(const LogStop& s) {
   return out;
 }
 
-LogWriter::LogWriter(const std::string& path, const LogHeader& header, std::uint32_t sync_every)
+LogWriter::LogWriter(const std::string& path, const LogHeader& header, std::uint32_t sync_every,
+                     bool replace)
     : path_(path), sync_every_(sync_every) {
-  file_ = std::fopen(path.c_str(), "wb");
+  file_ = std::fopen(path.c_str(), replace ? "wb" : "wbx"); // x: O_EXCL (C11, glibc)
+  if (file_ == nullptr && errno == EEXIST)
+    throw InputError(path, "the log exists: give another --out, or --force to replace it");
   if (file_ == nullptr)
     throw InputError(path, std::string("cannot create the log: ") + std::strerror(errno));
   put(format_header(header));
@@ -538,6 +545,10 @@ void LogReader::read_header() {
       const auto v = c.integer();
       if (v < 0) c.fail("the seed must be >= 0");
       header_.seed = static_cast<std::uint64_t>(v);
+    } else if (k == "arena") {
+      once(c, seen, 64, k);
+      c.string(header_.arena);
+      if (header_.arena.empty()) c.fail("\"arena\" is written only when known: expected a spec");
     } else {
       if (unknown_at == nullptr) unknown_at = c.pos(), unknown = k;
       c.skip_value();
@@ -553,7 +564,8 @@ void LogReader::read_header() {
     c.set(unknown_at);
     c.fail("unknown key \"" + unknown + "\" in the header");
   }
-  if (seen != 63) c.fail("the header needs schema, antkit, robot, port, controller and seed");
+  if ((seen & 63) != 63)
+    c.fail("the header needs schema, antkit, robot, port, controller and seed");
   pos_ = nl == std::string::npos ? data_.size() : nl + 1;
 }
 

@@ -1,5 +1,9 @@
 // Replay of a hardware log through its controller (replay.hpp).
+#include "body.hpp"
+
+#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/controllers.hpp>
+#include <antkit/devices/link.hpp>
 #include <antkit/devices/protocol.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/devices/robot.hpp>
@@ -11,17 +15,161 @@ namespace antkit::devices {
 
 namespace {
 
-// The first (or last) exchange in io that sent `letter` and got a reply the codec accepts, decoded
-// by `decode`: a step's observation is its first valid proximity reply (the wanderer's moves read
-// the sensors again, once per control period), its odometry the last valid counter reply.
-template <class T, class It, class Decode>
-std::optional<T> valid_reply(It first, It last, char letter, Decode&& decode) {
-  for (; first != last; ++first) {
-    if (first->sent.empty() || first->sent[0] != letter) continue;
-    auto d = decode(first->received);
-    if (d) return *d.value;
+// A divergence found inside the shared body code (a sent byte, a reply): ends the record's check.
+struct Diverged {
+  Divergence d;
+};
+
+// The link of a replay: serves the body's commands from a log's exchanges, running the live
+// link's classification (link.hpp) on the logged bytes. Each command the body asks for must be the
+// bytes the log says were sent; each attempt's received bytes must be what the live link could
+// have read (stale lines, then the reply or a fault, nothing after a reply); the attempts of one
+// command end at its first valid reply, as live.
+class LoggedLink final : public CommandLink {
+public:
+  LoggedLink(const Codec& codec, LinkOptions options) : codec_(codec), options_(options) {}
+  void load(const std::vector<Exchange>& io, std::int64_t step, std::string field) {
+    io_ = &io;
+    k_ = 0;
+    step_ = step;
+    field_ = std::move(field);
   }
-  return std::nullopt;
+  [[nodiscard]] std::size_t position() const noexcept { return k_; }
+  [[nodiscard]] bool at_end() const noexcept { return k_ >= io_->size(); }
+  // In the stop record the log may end in the middle of a command (the run ended there): that is
+  // a link failure, not a divergence.
+  void set_end_is_failure(bool on) noexcept { end_is_failure_ = on; }
+
+  [[nodiscard]] const Codec& codec() const noexcept override { return codec_; }
+  [[nodiscard]] const LinkOptions& options() const noexcept override { return options_; }
+  void pause(std::chrono::milliseconds) override {}
+  void rearm() noexcept override {}
+
+  std::string transact(const std::string& command, std::vector<Exchange>& out) override {
+    bool sent = false;
+    for (;;) {
+      while (k_ < io_->size() && (*io_)[k_].sent.empty()) out.push_back((*io_)[k_++]);
+      if (k_ >= io_->size()) {
+        if (end_is_failure_)
+          throw LinkError(LinkError::Kind::Timeout, "the log ends before a valid reply");
+        throw Diverged{
+            {step_, field_ + "[" + std::to_string(k_) + "]", "(no exchange)",
+             std::string(sent ? "a resend" : "a send") + " of '" + printable(command) + "'"}};
+      }
+      const Exchange& e = (*io_)[k_];
+      if (e.sent != command) {
+        // In the stop record a command may end unanswered, or not be sent at all (the watchdog
+        // fires before a send): the safe stop's verdict, checked against the reason, says which.
+        if (end_is_failure_)
+          throw LinkError(LinkError::Kind::Timeout, "no valid reply (the log goes on)");
+        throw Diverged{{step_, field_ + "[" + std::to_string(k_) + "].sent",
+                        "'" + printable(e.sent) + "'", "'" + printable(command) + "'"}};
+      }
+      out.push_back(e);
+      const std::size_t at = k_++;
+      sent = true;
+      // The attempt's bytes, line by line, as the live link read them.
+      std::string_view rest = e.received;
+      while (!rest.empty()) {
+        const auto nl = rest.find('\n');
+        if (nl == std::string_view::npos) break; // a partial line: the attempt timed out
+        const std::string_view line = rest.substr(0, nl + 1);
+        rest.remove_prefix(nl + 1);
+        const ReplyKind kind = classify_reply(codec_, command, line);
+        if (kind == ReplyKind::Stale) continue;
+        if (!rest.empty())
+          throw Diverged{{step_, field_ + "[" + std::to_string(at) + "].received",
+                          "'" + printable(e.received) + "'",
+                          "nothing read after the line '" + printable(line) + "'"}};
+        if (kind == ReplyKind::Reply) return std::string(line);
+        break; // a bad line: the live link resent
+      }
+    }
+  }
+
+private:
+  const Codec& codec_;
+  LinkOptions options_;
+  const std::vector<Exchange>* io_ = nullptr;
+  std::size_t k_ = 0;
+  std::int64_t step_ = 0;
+  std::string field_;
+  bool end_is_failure_ = false;
+};
+
+// The stop record against the run: its reason in the words stop_reason() writes, and its safe
+// stop re-run on its exchanges. The exchanges of an unfinished step come first; the safe stop is
+// the shortest tail, starting with the safe stop's first command, on which safe_stop() replays to
+// the verdict the reason states. Returns the difference, if any.
+std::optional<Divergence> check_stop(const LogStop& stop, const Codec& codec) {
+  const std::string& reason = stop.reason;
+  const auto field = [&](std::string what) { return "stop." + std::move(what); };
+  // The kind and its words.
+  static constexpr std::string_view kinds[] = {"done", "interrupted by SIG", "link: ", "error: "};
+  bool known = false;
+  for (const auto k : kinds) known = known || reason.rfind(k, 0) == 0;
+  if (!known)
+    return Divergence{stop.step, field("reason"), "'" + reason + "'",
+                      "a reason that starts done, interrupted by SIG..., link: or error:"};
+  const std::string may_move = "; " + std::string(kRobotMayBeMoving) + ": ";
+  const bool claims_moving = reason.find(may_move) != std::string::npos;
+  const bool claims_partial = reason.find("; safe stop: ") != std::string::npos;
+  if (reason.rfind("link: disconnected", 0) == 0 && stop.io.empty() && stop.step == 0)
+    return std::nullopt; // never connected: nothing was sent
+  // Every byte sent in the stop record is a command of this robot, as its codec encodes it.
+  for (std::size_t i = 0; i < stop.io.size(); ++i) {
+    const auto& sent = stop.io[i].sent;
+    if (sent.empty()) continue;
+    const auto term = codec.robot().terminator;
+    const bool ends = sent.size() > term.size() && sent.substr(sent.size() - term.size()) == term;
+    if (!ends || !codec.parse_command(std::string_view(sent).substr(0, sent.size() - term.size())))
+      return Divergence{stop.step, field("io[" + std::to_string(i) + "].sent"),
+                        "'" + printable(sent) + "'", "a command of this robot"};
+  }
+  const std::string first = codec.safe_stop().front();
+  std::optional<Divergence> last;
+  // The live link logs every command it tries, even on a line already gone (link.cpp), so the
+  // safe stop always starts with its first command.
+  for (std::size_t from = 0; from < stop.io.size(); ++from) {
+    if (stop.io[from].sent != first) continue;
+    const std::vector<Exchange> tail(stop.io.begin() + static_cast<std::ptrdiff_t>(from),
+                                     stop.io.end());
+    LoggedLink link(codec, {});
+    link.load(tail, stop.step, "stop.io");
+    link.set_end_is_failure(true);
+    std::vector<Exchange> seen;
+    SafeStopResult r;
+    try {
+      r = safe_stop(link, seen);
+    } catch (const Diverged& d) {
+      last = d.d;
+      continue;
+    }
+    if (!link.at_end()) { // more after the safe stop: a later start may be the real one
+      const std::size_t at = from + link.position();
+      last = Divergence{stop.step, field("io[" + std::to_string(at) + "]"),
+                        "'" + printable(stop.io[at].sent) + "'",
+                        "no further exchange: the safe stop ended before it"};
+      continue;
+    }
+    // The bytes decide the claim where they can: a safe stop acknowledged and read back at zero
+    // in the log was one live (the live link reads the same bytes the same way), and one with no
+    // acknowledgement of the wheels' command at all left the robot possibly moving. In between
+    // (acknowledged, not confirmed) a lost link may explain either words.
+    const bool lie = (r.stopped && r.complete && (claims_moving || claims_partial)) ||
+                     (!r.acknowledged && !claims_moving);
+    if (lie) {
+      last = Divergence{stop.step, field("reason"), "'" + reason + "'",
+                        r.stopped && r.complete ? "the safe stop acknowledged and read back at 0, 0"
+                                                : "no acknowledgement of '" + printable(first) +
+                                                      "': " + std::string(kRobotMayBeMoving)};
+      continue;
+    }
+    return std::nullopt;
+  }
+  if (last) return last;
+  return Divergence{stop.step, field("io"), "no safe stop",
+                    "the safe stop's '" + printable(first) + "' and its exchanges"};
 }
 
 } // namespace
@@ -59,12 +207,17 @@ ReplayResult replay_records(LogReader& reader, std::optional<std::int64_t> until
   }
   out.truncated = reader.truncated();
   out.stop = reader.stop();
+  out.complete = out.stop.has_value() && !out.truncated;
   out.hash = run.value();
   return out;
 }
 
 ReplayResult replay(const std::string& path, std::optional<std::int64_t> until) {
   LogReader reader(path);
+  return replay(reader, path, until);
+}
+
+ReplayResult replay(LogReader& reader, const std::string& path, std::optional<std::int64_t> until) {
   if (reader.header().robot == "stc-floor") return stc_floor::replay_log(reader, path, until);
   const LogHeader& header = reader.header();
   const auto kind = parse_robot(header.robot);
@@ -80,39 +233,61 @@ ReplayResult replay(const std::string& path, std::optional<std::int64_t> until) 
   }
   const Codec codec(*kind);
   const RobotDescription& robot = codec.robot();
-  const char proximity = codec.read_proximity()[0];
-  const char counters = robot.has_odometry ? codec.read_odometry()[0] : 0;
-  std::vector<std::int64_t> obs, odo;
-  return replay_records(reader, until, [&](const LogRecord& r, std::vector<std::int64_t>& cmd) {
-    std::optional<Divergence> d;
-    const auto readings =
-        valid_reply<Proximity>(r.io.begin(), r.io.end(), proximity,
-                               [&](std::string_view line) { return codec.decode_proximity(line); });
-    if (!readings) {
-      d = Divergence{r.step, "io", "a valid proximity reply", "none in the step's exchanges"};
-    } else {
-      controller->observe(robot, *readings, obs);
-      if (compare_fields(r.obs, obs, r.step, "obs", d) && counters != 0) {
-        const auto w = valid_reply<WheelPair>(
-            r.io.rbegin(), r.io.rend(), counters,
-            [&](std::string_view line) { return codec.decode_odometry(line); });
-        odo.clear();
-        if (w) odo.assign({w->left, w->right});
-        compare_fields(r.odo, odo, r.step, "odo", d);
-      }
+  const bool wander = header.controller == "wander";
+  // The same body as record() (body.hpp), over the log's exchanges.
+  LoggedLink link(codec, {});
+  detail::Body body(link);
+  std::vector<std::int64_t> obs;
+  std::vector<Exchange> seen;
+  std::int64_t last_t = 0;
+  auto result =
+      replay_records(reader, until, [&](const LogRecord& r, std::vector<std::int64_t>& cmd) {
+        std::optional<Divergence> d;
+        if (r.time_ns < last_t)
+          return std::optional<Divergence>(
+              Divergence{r.step, "t_ns", std::to_string(r.time_ns),
+                         "a time >= the previous step's " + std::to_string(last_t)});
+        last_t = r.time_ns;
+        link.load(r.io, r.step, "io");
+        seen.clear();
+        try {
+          if (r.step == 0) body.start(seen);
+          const Proximity readings = body.read_sensors(seen);
+          controller->observe(robot, readings, obs);
+          if (!compare_fields(r.obs, obs, r.step, "obs", d)) return d;
+          try {
+            controller->step(robot, r.obs, cmd);
+          } catch (const kernel::InputError& e) {
+            throw kernel::InputError(path, reader.line(), 1, e.what());
+          }
+          if (!compare_fields(r.cmd, cmd, r.step, "cmd", d)) return d;
+          if (controller->state_hash() != r.state)
+            return std::optional<Divergence>(
+                Divergence{r.step, "state", kernel::hash_hex(r.state),
+                           kernel::hash_hex(controller->state_hash())});
+          detail::act(body, wander, cmd, seen);
+          const WheelTravel odo = body.odometry(seen);
+          const std::int64_t derived[] = {odo.left, odo.right};
+          if (!compare_fields(r.odo, derived, r.step, "odo", d)) return d;
+        } catch (const Diverged& x) {
+          return std::optional<Divergence>(x.d);
+        } catch (const LinkError& e) {
+          return std::optional<Divergence>(
+              Divergence{r.step, "io", "the step's exchanges", std::string(e.what())});
+        }
+        if (!link.at_end())
+          return std::optional<Divergence>(
+              Divergence{r.step, "io[" + std::to_string(link.position()) + "]",
+                         "'" + printable(r.io[link.position()].sent) + "'",
+                         "no further exchange in this step"});
+        return d;
+      });
+  if (result.identical && !until && result.stop)
+    if (auto d = check_stop(*result.stop, codec)) {
+      result.identical = false;
+      result.first_divergence = std::move(d);
     }
-    if (!d) {
-      try {
-        controller->step(robot, r.obs, cmd);
-      } catch (const kernel::InputError& e) {
-        throw kernel::InputError(path, reader.line(), 1, e.what());
-      }
-      if (compare_fields(r.cmd, cmd, r.step, "cmd", d) && controller->state_hash() != r.state)
-        d = Divergence{r.step, "state", kernel::hash_hex(r.state),
-                       kernel::hash_hex(controller->state_hash())};
-    }
-    return d;
-  });
+  return result;
 }
 
 } // namespace antkit::devices

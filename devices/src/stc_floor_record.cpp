@@ -7,6 +7,7 @@
 #include <antkit/kernel/input_error.hpp>
 #include <chrono>
 #include <csignal>
+#include <sys/stat.h>
 
 namespace antkit::devices::stc_floor {
 
@@ -23,6 +24,9 @@ std::string controller_name(stc::Variant v) {
 RecordSummary record(const RecordOptions& o, const RecordProgress& progress) {
   check_controller(o.pilot.controller, "--controller");
   const View view(o.calibration, o.view ? *o.view : default_view(o.calibration));
+  struct stat st {};
+  if (!o.force && ::stat(o.out.c_str(), &st) == 0)
+    throw kernel::InputError(o.out, "the log exists: give another --out, or --force to replace it");
   SerialPort port = SerialPort::open(o.port, o.line, 512);
   StopSignals::Scope signals;
   LinkedRobot robot(std::move(port), o.link);
@@ -40,7 +44,7 @@ RecordSummary record(const RecordOptions& o, const RecordProgress& progress) {
                    {"quarter_turn_ms", o.pilot.quarter_turn_ms},
                    {"led_ms", o.pilot.led_ms}};
   header.seed = 0;
-  LogWriter log(o.out, header);
+  LogWriter log(o.out, header, 0, o.force);
 
   RecordSummary s;
   s.path.push_back(o.pilot.start);
@@ -66,8 +70,10 @@ RecordSummary record(const RecordOptions& o, const RecordProgress& progress) {
     s.closed = r.closed;
     s.refused = r.refused;
     s.turn_ms = r.turn_ms;
+    s.kind = StopKind::Done;
     s.stop = r.closed ? "done" : r.refused ? "refused: the robot bumped" : "steps";
   } catch (const LinkError& e) {
+    s.kind = e.kind() == LinkError::Kind::Interrupted ? StopKind::Interrupted : StopKind::Link;
     s.stop = e.kind() == LinkError::Kind::Interrupted
                  ? std::string("interrupted by ") +
                        (StopSignals::signal() == SIGTERM ? "SIGTERM" : "SIGINT")

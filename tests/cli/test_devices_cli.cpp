@@ -292,3 +292,75 @@ TEST_CASE("antkit stc-floor: bad input exits 2 with where and why, and writes no
   CHECK_FALSE(std::filesystem::exists(out));
   CHECK_FALSE(std::filesystem::exists(dir / "l.jsonl"));
 }
+
+TEST_CASE("antkit record: an existing --out exits 2 and is kept; --force replaces it",
+          "[cli][devices]") {
+  const auto dir = scratch_dir("exists");
+  const auto log = (dir / "visit1.jsonl").string();
+  {
+    std::ofstream out(log, std::ios::binary);
+    out << "a recorded visit\n";
+  }
+  Emulator emu({"khepera", "--arena", "circle:d=8"});
+  const std::string args = "record --device khepera --port " + emu.port() +
+                           " --controller buffon --steps 5 --out " + log;
+  const auto r = run_antkit(args);
+  CHECK(r.status == 2);
+  CHECK(r.err.find("antkit: error: " + log + ": the log exists") != std::string::npos);
+  CHECK(slurp(log) == "a recorded visit\n");
+  const auto f = run_antkit(args + " --force --format json");
+  INFO(f.err);
+  CHECK(f.status == 0);
+  CHECK(run_antkit("replay " + log).status == 0);
+}
+
+TEST_CASE("antkit record: a robot that never confirms its stop exits 1 and says it may be moving",
+          "[cli][devices]") {
+  const auto dir = scratch_dir("mute");
+  const auto log = (dir / "mute.jsonl").string();
+  Emulator emu({"epuck", "--arena", "circle:d=8", "--fault", "drop=1"});
+  const auto r = run_antkit("record --device epuck --port " + emu.port() +
+                            " --controller buffon --steps 5 --timeout 5 --tries 2 --out " + log +
+                            " --format json");
+  CHECK(r.status == 1);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["robot_stopped"] == false);
+  CHECK(j["completed"] == false);
+  CHECK(j["stopped"].get<std::string>().find("robot may be moving") != std::string::npos);
+  CHECK(r.err.find("may still be moving") != std::string::npos);
+  // The log says the same, and replays.
+  const auto rp = run_antkit("replay " + log + " --format json");
+  CHECK(rp.status == 0);
+  CHECK(nlohmann::json::parse(rp.out)["complete"] == true);
+}
+
+TEST_CASE("antkit replay: a log without its stop record replays with complete false and a warning",
+          "[cli][devices]") {
+  const auto dir = scratch_dir("nostop");
+  const auto log = (dir / "run.jsonl").string();
+  {
+    Emulator emu({"hemisson", "--arena", "circle:d=8"});
+    REQUIRE(run_antkit("record --device hemisson --port " + emu.port() +
+                       " --controller buffon --steps 20 --out " + log)
+                .status == 0);
+  }
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(slurp(log));
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+  }
+  REQUIRE(lines.size() == 22);
+  lines.pop_back(); // a power cut before the stop record
+  const auto cut = (dir / "cut.jsonl").string();
+  {
+    std::ofstream out(cut, std::ios::binary);
+    for (const auto& l : lines) out << l << '\n';
+  }
+  const auto r = run_antkit("replay " + cut + " --format json");
+  CHECK(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["identical"] == true);
+  CHECK(j["complete"] == false);
+  CHECK(j["steps"] == 20);
+  CHECK(r.err.find("no stop record") != std::string::npos);
+}

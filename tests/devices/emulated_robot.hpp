@@ -1,6 +1,7 @@
 #pragma once
 // A firmware emulator serving a real pseudo-terminal from a thread of the test, and a temporary
 // directory for logs: the end-to-end tests run the real adapter code against it over the tty.
+#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/emulator.hpp>
 #include <antkit/devices/serial.hpp>
 #include <antkit/geometry/arena_spec.hpp>
@@ -48,6 +49,25 @@ public:
                 devices::EmulatorOptions options = {})
       : OnPty(robot, geometry::build_arena_spec(arena).arena.walls_fx(), options) {}
 };
+
+// A recording's options for the tests: the robot's own line, a short timeout and back-off (a pty
+// answers within a millisecond), the library's number of tries.
+inline devices::RecordOptions record_options(devices::RobotKind robot, const std::string& port,
+                                             const std::string& controller,
+                                             const devices::Params& params, std::int64_t steps,
+                                             const std::string& out) {
+  devices::RecordOptions o;
+  o.robot = robot;
+  o.port = port;
+  o.line = devices::describe(robot).line;
+  o.controller = devices::make_spec(controller, 7, params, "test");
+  o.steps = steps;
+  o.out = out;
+  o.link.timeout = std::chrono::milliseconds(60);
+  o.link.backoff = std::chrono::milliseconds(1);
+  o.link.backoff_max = std::chrono::milliseconds(4);
+  return o;
+}
 
 // A file's lines (without their newlines), and lines written back each with its newline.
 inline std::vector<std::string> lines_of(const std::string& path) {

@@ -30,15 +30,7 @@ const RobotKind kRobots[] = {RobotKind::Khepera, RobotKind::Hemisson, RobotKind:
 devices::RecordOptions options_for(RobotKind robot, const std::string& port,
                                    const std::string& controller, const devices::Params& params,
                                    std::int64_t steps, const std::string& out) {
-  devices::RecordOptions o;
-  o.robot = robot;
-  o.port = port;
-  o.line = devices::describe(robot).line;
-  o.controller = devices::make_spec(controller, 7, params, "test");
-  o.steps = steps;
-  o.out = out;
-  o.link.timeout = std::chrono::milliseconds(60);
-  o.link.backoff = std::chrono::milliseconds(1);
+  auto o = antkit::test::record_options(robot, port, controller, params, steps, out);
   o.link.tries = 5;
   return o;
 }
@@ -66,7 +58,8 @@ TEST_CASE("each robot runs the Buffon behaviour through its emulator and the log
     CHECK(s.stop == "done");
     CHECK(s.steps == 300);
     CHECK(s.link.retries == 0);
-    CHECK(s.safe_stop.empty());
+    CHECK(s.safe_stop.stopped);
+    CHECK(s.safe_stop.complete);
     emu.stop();
     // The body moved: the behaviour is not stuck at the start.
     const auto& trail = emu.emulator().trail();
@@ -227,7 +220,8 @@ TEST_CASE("SIGINT stops the robot safely and ends the log", "[devices]") {
   devices::StopSignals::reset();
   CHECK(!s.completed);
   CHECK(s.stop == "interrupted by SIGINT");
-  CHECK(s.safe_stop.empty()); // the emulator acknowledged wheels-to-zero
+  CHECK(s.safe_stop.stopped); // the emulator acknowledged wheels-to-zero and reads back 0, 0
+  CHECK(s.safe_stop.complete);
   emu.stop();
   // The last thing the robot was told is to stop its wheels.
   const auto r = devices::replay(log);

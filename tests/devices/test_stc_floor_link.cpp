@@ -91,7 +91,7 @@ TEST_CASE("stc floor link: a recorded run over a pty is the simulated tour and r
     o.port = robot.port();
     o.pilot.controller = variant;
     o.pilot.start = {0, 0};
-    o.out = dir.file("floor.jsonl");
+    o.out = dir.file(std::string(stc::variant_name(variant)) + ".jsonl");
     const auto s = sf::record(o);
     robot.stop();
     CHECK(s.stop == "done");

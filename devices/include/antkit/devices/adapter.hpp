@@ -21,7 +21,9 @@
 // Then the step's record (every exchange of the step, the observation, the command, the odometry
 // and the controller's state hash) is written and flushed before the next step starts.
 //
-// Every way out stops the robot safely (RobotLink::safe_stop: wheels to zero, LEDs off) and ends
+// Every way out stops the robot safely (safe_stop() in link.hpp: wheels to zero until acknowledged
+// and read back as zero, LEDs off; when that cannot be confirmed the stop record and the summary
+// say the robot may still be moving, and the run is not a success) and ends
 // the log with its stop record, which also holds the exchanges of an unfinished step: the run's
 // steps, a stop signal (SIGINT / SIGTERM), a link failure (resends exhausted, the watchdog, a
 // disconnect), or any other error. No record is lost.
@@ -37,30 +39,54 @@ namespace antkit::devices {
 
 struct RecordOptions {
   RobotKind robot = RobotKind::Khepera;
-  std::string port;
+  std::string port;  // a tty or pty path, or tcp:HOST:PORT (serial.hpp)
   LineSettings line; // usually describe(robot).line
   ControllerSpec controller;
   std::int64_t steps = 1000;
-  std::string out; // the log
+  std::string out;    // the log
+  bool force = false; // replace `out` if it exists (otherwise an existing log is bad input)
+  std::string arena;  // the arena, when known (an emulator's spec), for the log's header
   LinkOptions link;
   std::chrono::milliseconds period{0}; // shortest control period (0: as fast as the link allows)
   std::uint32_t sync_every = 0;        // fdatasync the log every N records (0: only at the end)
 };
 
+// How a run ended, typed (the log's stop record says it in words: stop_reason()).
+enum class StopKind : std::uint8_t {
+  Done,        // every requested step ran
+  Interrupted, // SIGINT / SIGTERM between steps
+  Link,        // resends exhausted, the watchdog, a disconnect, a refused connection
+  Error        // anything else
+};
+std::string_view stop_kind_name(StopKind kind) noexcept;
+
+// The words of a stop record: "done", "interrupted by SIGINT", "link: timeout: ...", "error: ...",
+// then "; robot may be moving: WHY" when the safe stop could not confirm the wheels at zero, or
+// "; safe stop: WHY" when only a later safe-stop command (LEDs off) failed.
+inline constexpr std::string_view kRobotMayBeMoving = "robot may be moving";
+std::string stop_reason(StopKind kind, const std::string& detail, const SafeStopResult& safe);
+
 struct RecordSummary {
   std::int64_t steps = 0; // completed steps (records written)
   LinkStats link;
-  std::string stop;       // "done", "interrupted by SIGINT", "link: ...", "error: ..."
+  StopKind kind = StopKind::Error;
+  std::string stop;       // the stop record's reason
   bool completed = false; // all the requested steps ran
-  std::string safe_stop;  // "" when the safe stop was acknowledged, else what failed
+  SafeStopResult safe_stop;
   std::uint64_t hash = 0; // RunHash of the run (replay() recomputes it)
+  // What the run's exit status follows: it did what it set out to do (every step, or stopped on
+  // request) and the robot is known to be stopped.
+  [[nodiscard]] bool succeeded() const noexcept {
+    return (kind == StopKind::Done || kind == StopKind::Interrupted) && safe_stop.stopped;
+  }
 };
 
 using RecordProgress = std::function<void(std::int64_t step, std::int64_t steps)>;
 
-// Opens the port first (a bad --port is bad input and leaves no log), then writes the log as it
-// runs. Installs the SIGINT / SIGTERM handlers for its duration (StopSignals::Scope). Throws
-// kernel::InputError for bad options; every failure of the run itself ends in the summary.
+// Refuses an existing `out` unless `force`, opens the port (a bad --port is bad input and leaves no
+// log; a refused TCP connection leaves a log with only its stop record, kind Link), then writes the
+// log as it runs. Installs the SIGINT / SIGTERM handlers for its duration (StopSignals::Scope).
+// Throws kernel::InputError for bad options; every failure of the run itself ends in the summary.
 RecordSummary record(const RecordOptions& options, const RecordProgress& progress = {});
 
 } // namespace antkit::devices

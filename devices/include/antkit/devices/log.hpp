@@ -6,6 +6,11 @@
 //   {"step":0,"t_ns":1234,"io":[["N\r","n,0,0,0,0,0,0,0,0\r\n"],["D,3,4\r","d\r\n"]],
 //    "obs":[0,0],"cmd":[1,-2],"odo":[10,20],"state":"0123456789abcdef"}
 //   {"stop":"done","step":1000,"io":[["D,0,0\r","d\r\n"]]}
+// An exchange is one send and every byte read after it until the next send: its reply, when it got
+// one, is the last line, and any lines before it are late replies to earlier commands (link.hpp);
+// an exchange with nothing sent holds bytes drained from the line before a send (late, so dropped).
+// The header may end with "arena":"SPEC" (the emulator's arena, when `antkit record --arena` gave
+// it); it is written only when known.
 // The writer emits exactly this form (keys in this order, no spaces). Bytes on the wire are JSON
 // strings with one character per byte: printable ASCII as itself but '"' and '\' (escaped), \r \n
 // \t, every other byte \u00XX; a log is pure ASCII. The reader takes any JSON of these shapes (keys
@@ -44,6 +49,9 @@ struct LogHeader {
   std::string controller;
   std::vector<std::pair<std::string, std::int64_t>> params;
   std::uint64_t seed = 0;
+  // The arena the run took place in, when known (an emulator's named spec or WKT file, as given to
+  // `antkit record --arena`); written only when not empty, so that older logs read unchanged.
+  std::string arena;
   friend bool operator==(const LogHeader&, const LogHeader&) = default;
 };
 
@@ -71,8 +79,10 @@ std::string format_stop(const LogStop& s);
 
 class LogWriter {
 public:
-  // Throws kernel::InputError(path, ...) when the file cannot be created.
-  LogWriter(const std::string& path, const LogHeader& header, std::uint32_t sync_every = 0);
+  // Throws kernel::InputError(path, ...) when the file cannot be created, or exists and `replace`
+  // is false (created exclusively: two recorders cannot share one log either).
+  LogWriter(const std::string& path, const LogHeader& header, std::uint32_t sync_every = 0,
+            bool replace = false);
   LogWriter(const LogWriter&) = delete;
   LogWriter& operator=(const LogWriter&) = delete;
   ~LogWriter();

@@ -1,17 +1,26 @@
 #pragma once
 // Replay of a hardware log (DESIGN.md, the controller contract): the controller named in the
 // header, rebuilt with the header's parameters and seed, is fed every recorded observation and
-// must answer every recorded command and state hash. The recorded bytes are decoded again with
-// this build's codec, and the observation (and odometry) they give must be the recorded one, so
-// a codec change that alters what the robot saw is caught too.
-//
-// Checks per step, in this order, the first difference ending the replay:
-//   obs[i]   the observation decoded from the step's first valid proximity reply in `io` (the one
-//            the controller saw; a wanderer's move reads the sensors again, once per period)
-//   odo[i]   the odometry decoded from the step's last valid counter reply (robots with encoders)
-//   cmd[i]   the controller's command for the recorded observation
-//   state    the controller's state hash
-// A record whose `io` holds no valid proximity reply diverges at field "io".
+// must answer every recorded command and state hash; and the body that record() runs (body.hpp)
+// runs again over the log's exchanges instead of a port, so every byte the log holds is checked:
+//   io[k].sent      every command is re-encoded by this build from what the step computed (the
+//                   wheel speeds from the command, the counters' reads, the wanderer's moves) and
+//                   must be the logged bytes, resends included;
+//   io[k].received  every attempt's bytes are classified as the live link did (link.hpp: stale
+//                   lines of another letter, then the reply or a fault; nothing after a reply);
+//                   a reply the codec refuses makes the next exchange a resend of the same bytes;
+//   obs[i]          the observation from the step's proximity reply;
+//   cmd[i], state   the controller's command and state hash for the recorded observation;
+//   odo[i]          the odometry: the counters' reply less the start's baseline, or for the
+//                   Hemisson the commanded travel re-derived from the logged sends;
+//   t_ns            never decreasing;
+//   stop            the stop record's reason in stop_reason()'s words, and its safe stop re-run
+//                   over its exchanges: a stop acknowledged and read back at zero in the bytes may
+//                   not be reported as failed, and one never acknowledged must say the robot may
+//                   be moving.
+// The first difference ends the replay; its message says what the log holds and what the replay
+// derived. A log without a stop record (a power cut on a line boundary, a header-only log) replays
+// as far as it goes with complete == false: the run never said how it stopped.
 #include <antkit/devices/log.hpp>
 #include <cstdint>
 #include <functional>
@@ -25,8 +34,8 @@ namespace antkit::devices {
 struct Divergence {
   std::int64_t step = 0;
   std::string field;
-  std::string expected; // what the log says
-  std::string actual;   // what this build computes
+  std::string expected; // what the log holds
+  std::string actual;   // what the replay derived
 };
 
 struct ReplayResult {
@@ -35,6 +44,7 @@ struct ReplayResult {
   std::optional<Divergence> first_divergence;
   bool truncated = false;      // the log's last line was cut (a crash or power cut while writing)
   std::optional<LogStop> stop; // the stop record, when the log has one
+  bool complete = false;       // the log ends with its stop record (nothing cut, nothing missing)
   std::uint64_t hash = 0;      // RunHash over the replayed steps (record()'s hash when identical)
   LogHeader header;
 };
@@ -54,5 +64,9 @@ bool compare_fields(std::span<const std::int64_t> expected, std::span<const std:
 // `until`: replay only the steps before this one (all when absent). Throws kernel::InputError for a
 // malformed log (its line and reason), an unknown robot or controller, or another schema version.
 ReplayResult replay(const std::string& path, std::optional<std::int64_t> until = std::nullopt);
+// The same from a reader positioned after the header (a log in memory: the fuzz target); `path`
+// names it in messages.
+ReplayResult replay(LogReader& reader, const std::string& path,
+                    std::optional<std::int64_t> until = std::nullopt);
 
 } // namespace antkit::devices

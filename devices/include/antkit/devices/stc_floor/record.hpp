@@ -13,6 +13,7 @@
 // (this build's codec), and the believed position and heading must follow from the commands and
 // the robot's F replies. T depends on the frames, which the log does not hold, so it is not
 // re-derived.
+#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/devices/stc_floor/link.hpp>
@@ -31,6 +32,7 @@ struct RecordOptions {
   std::optional<ViewParams> view; // default_view(calibration) when absent
   PilotOptions pilot;
   std::string out;
+  bool force = false; // replace `out` if it exists
 };
 
 struct RecordSummary {
@@ -39,6 +41,7 @@ struct RecordSummary {
   bool closed = false, refused = false;
   std::int64_t covered = 0, repeats = 0;
   std::int64_t turn_ms = 0;
+  StopKind kind = StopKind::Error; // Done: the pilot ended (closed, refused or out of steps)
   std::string stop;      // "done" (the tour closed), "steps" (max_steps ran out), "refused", ...
   std::string safe_stop; // "" when acknowledged
   LinkStats link;

@@ -1,0 +1,42 @@
+#pragma once
+// The robot body under the controller contract, shared by record() (adapter.cpp) and replay()
+// (replay.cpp): both run exactly this code, the first over a RobotLink to the robot, the second
+// over the log's exchanges, so that a replay re-derives every byte a recording sent (internal).
+#include <antkit/devices/controllers.hpp>
+#include <antkit/devices/link.hpp>
+#include <antkit/devices/odometry.hpp>
+#include <antkit/uniform/controllers.hpp>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace antkit::devices::detail {
+
+class Body {
+public:
+  explicit Body(CommandLink& link);
+
+  // Before the first step: the wheel counters to zero (robots with encoders), or, where the robot
+  // cannot set them (the Webots relay acknowledges G and does nothing, PROTOCOLS.md), their value
+  // now, read as the baseline the odometry counts from.
+  void start(std::vector<Exchange>& io);
+  Proximity read_sensors(std::vector<Exchange>& io);
+  void set_wheels(std::int32_t left, std::int32_t right, std::vector<Exchange>& io);
+  // Odometry after the step: the counters less the baseline, or the Hemisson's commanded travel in
+  // micrometres (adapter.hpp).
+  WheelTravel odometry(std::vector<Exchange>& io);
+  [[nodiscard]] const RobotDescription& robot() const noexcept { return robot_; }
+
+private:
+  void period_elapsed();
+  CommandLink& link_;
+  const RobotDescription& robot_;
+  std::int32_t left_ = 0, right_ = 0;
+  Travel2 travel2_;
+  WheelTravel baseline_;
+};
+
+// Carries a controller's command out (adapter.hpp, step 3).
+void act(Body& body, bool wander, std::span<const std::int64_t> cmd, std::vector<Exchange>& io);
+
+} // namespace antkit::devices::detail
