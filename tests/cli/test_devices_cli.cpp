@@ -364,3 +364,25 @@ TEST_CASE("antkit replay: a log without its stop record replays with complete fa
   CHECK(j["steps"] == 20);
   CHECK(r.err.find("no stop record") != std::string::npos);
 }
+
+TEST_CASE("antkit record --device stc-floor: a tour the oracle refuses exits 1 and names the rule",
+          "[cli][devices]") {
+  // Issue 26: under camera noise 100 the robot misreads the floor, stops after 25 steps having
+  // covered 14 of 604 sub-cells, and record said "done" with exit 0.
+  const auto dir = scratch_dir("floor-noise");
+  const std::string map = std::string(ANTKIT_SHARED_DIR) + "/maps/movingai/random-32-32-10.map";
+  Emulator emu({"stc-floor", "--map", map, "--noise", "100", "--seed", "2"});
+  const auto log = (dir / "noisy.jsonl").string();
+  const auto r =
+      run_antkit("record --device stc-floor --port " + emu.port() +
+                 " --controller ant-edge --map " + map + " --out " + log + " --format json");
+  CHECK(r.status == 1);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["tour_ok"] == false);
+  CHECK(j["covered"].get<int>() < j["reachable_subcells"].get<int>());
+  REQUIRE(j["first_violation"].is_object());
+  CHECK(j["first_violation"]["rule"].get<std::string>().find("coverage") != std::string::npos);
+  CHECK(r.err.find("not a coverage tour") != std::string::npos);
+  // The log itself is sound: it replays.
+  CHECK(run_antkit("replay " + log).status == 0);
+}
