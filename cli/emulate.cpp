@@ -1,6 +1,6 @@
-// `antkit emulate`: a robot's firmware on a pseudo-terminal (issues 13 and 14).
-//   antkit emulate khepera|hemisson|epuck [--arena SPEC|F.wkt] [--seed S] [--fault F ...] [--pace]
-//                  [--format table|json]
+// `antkit emulate`: a robot's firmware on a pseudo-terminal or over TCP (issues 13, 14 and 26).
+//   antkit emulate khepera|khepera-webots|hemisson|epuck [--arena SPEC|F.wkt] [--seed S]
+//                  [--fault F ...] [--pace] [--listen HOST:PORT] [--format table|json]
 //   antkit emulate stc-floor --map F [--start X,Y] [--heading D] [--seed S] [--noise A]
 //                  [--dark-offset A] [--fade S] [--rotation-error PPM] [--drift PPM]
 //                  [--format table|json]
@@ -8,6 +8,9 @@
 // at the start sub-cell (default as `antkit stc`), rendering its camera frames; its summary is the
 // truth of the last session: the sub-cells the body entered, repeats, the largest distance from a
 // sub-cell's centre and heading error, the floor's clock.
+// --listen HOST:PORT serves the firmware over TCP instead of a pty (PORT 0: any free port), one
+// client at a time (a second is refused while one is connected), each connection a session; the
+// first line is then `tcp:HOST:PORT` with the real port, what `antkit record --port` takes.
 // Prints the pty's path on the first line of stdout (flushed), then answers the robot's protocol
 // from the simulated body (devices/emulator.hpp), one client session after another (each starts the
 // robot at the arena's start pose), until SIGINT / SIGTERM or a disconnect fault, and prints a
@@ -28,6 +31,7 @@
 #include <antkit/maps/map_io.hpp>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace {
 
@@ -41,18 +45,21 @@ struct EmulateOptions {
   std::uint64_t seed = 1;
   std::vector<std::string> faults;
   bool pace = false;
+  std::string listen;
   Format format = Format::Table;
   // stc-floor
   std::string map, start;
   std::int32_t heading = 1, noise = 0, dark_offset = 12, rotation_error = 0, drift = 0;
   std::int64_t fade_s = 0;
-  CLI::Option *arena_opt = nullptr, *fault_opt = nullptr, *pace_opt = nullptr, *floor_opts[8]{};
+  CLI::Option *arena_opt = nullptr, *fault_opt = nullptr, *pace_opt = nullptr,
+              *listen_opt = nullptr, *floor_opts[8]{};
 };
 
 void run_stc_floor(const EmulateOptions& o) {
-  if (o.arena_opt->count() + o.fault_opt->count() + o.pace_opt->count() > 0)
-    throw InputError("stc-floor", "--arena, --fault and --pace are for khepera, hemisson and "
-                                  "epuck; the marker-floor robot takes --map");
+  if (o.arena_opt->count() + o.fault_opt->count() + o.pace_opt->count() + o.listen_opt->count() > 0)
+    throw InputError("stc-floor", "--arena, --fault, --pace and --listen are for " +
+                                      std::string(devices::robot_names()) +
+                                      "; the marker-floor robot takes --map and serves a pty");
   if (o.map.empty()) throw InputError("--map", "stc-floor needs a map (--map FILE)");
   const auto map = antkit::maps::load_map(o.map);
   const auto start =
@@ -99,8 +106,8 @@ void run(const EmulateOptions& o) {
       throw InputError(opt->get_name(), "is an option of the stc-floor robot");
   const auto robot = devices::parse_robot(o.robot);
   if (!robot)
-    throw InputError("robot", "unknown robot '" + o.robot +
-                                  "': expected khepera, hemisson, epuck or stc-floor");
+    throw InputError("robot", "unknown robot '" + o.robot + "': expected " +
+                                  std::string(devices::robot_names()) + " or stc-floor");
   devices::EmulatorOptions options;
   options.seed = o.seed;
   options.faults = devices::parse_faults(o.faults);
@@ -108,15 +115,25 @@ void run(const EmulateOptions& o) {
   const auto arena = antkit::cli::is_wkt_path(o.arena)
                          ? antkit::geometry::read_wkt_file(o.arena)
                          : antkit::geometry::build_arena_spec(o.arena, "--arena").arena;
+  std::optional<devices::TcpListener> listener;
+  if (!o.listen.empty())
+    listener.emplace(devices::TcpListener::listen(
+        devices::parse_tcp_endpoint(o.listen, "--listen", true), "--listen"));
   devices::FirmwareEmulator emulator(*robot, arena.walls_fx(), options);
   devices::StopSignals::Scope signals;
-  devices::Pty pty = devices::Pty::open();
-  std::cout << pty.slave_path() << std::endl; // the first line, flushed: clients wait for it
-  emulator.serve(pty);
+  if (listener) {
+    std::cout << listener->port_spec() << std::endl; // the first line, flushed: clients wait for it
+    emulator.serve(*listener);
+  } else {
+    devices::Pty pty = devices::Pty::open();
+    std::cout << pty.slave_path() << std::endl; // the first line, flushed: clients wait for it
+    emulator.serve(pty);
+  }
   nlohmann::json j;
   j["robot"] = std::string(devices::robot_name(*robot));
   j["arena"] = o.arena;
   j["seed"] = o.seed;
+  if (listener) j["listen"] = listener->port_spec();
   j["sessions"] = emulator.sessions();
   j["commands"] = emulator.commands();
   j["faults"] = emulator.faults();
@@ -129,10 +146,13 @@ void run(const EmulateOptions& o) {
 void register_emulate(CLI::App& app) {
   auto o = std::make_shared<EmulateOptions>();
   auto* sub = app.add_subcommand(
-      "emulate", "A robot's firmware on a pseudo-terminal: khepera, hemisson or epuck (its body "
-                 "simulated in a Buffon arena) or stc-floor (paper 002's marker-floor robot, its "
-                 "camera frames rendered); prints the pty path on the first line");
-  sub->add_option("robot", o->robot, "khepera, hemisson, epuck or stc-floor")->required();
+      "emulate", "A robot's firmware on a pseudo-terminal (or over TCP with --listen): khepera, "
+                 "khepera-webots (the Khepera in Webots behind its TCP/IP relay), hemisson or "
+                 "epuck (its body simulated in a Buffon arena) or stc-floor (paper 002's "
+                 "marker-floor robot, its camera frames rendered); prints the pty path (or "
+                 "tcp:HOST:PORT) on the first line");
+  sub->add_option("robot", o->robot, "khepera, khepera-webots, hemisson, epuck or stc-floor")
+      ->required();
   o->arena_opt = sub->add_option(
       "--arena", o->arena, "A named arena spec or FILE.wkt, in body diameters (default standard)");
   sub->add_option("--seed", o->seed,
@@ -142,6 +162,9 @@ void register_emulate(CLI::App& app) {
                                  "disconnect=N (after N commands); may be repeated");
   o->pace_opt =
       sub->add_flag("--pace", o->pace, "Pace replies at the robot's baud rate and command latency");
+  o->listen_opt = sub->add_option("--listen", o->listen,
+                                  "Serve over TCP on HOST:PORT instead of a pty (PORT 0: any free "
+                                  "port; one client at a time); prints tcp:HOST:PORT first");
   o->floor_opts[0] = sub->add_option("--map", o->map, "stc-floor: the map (MovingAI, ROS, ASCII)");
   o->floor_opts[1] = sub->add_option("--start", o->start,
                                      "stc-floor: the start sub-cell X,Y (default as antkit stc)");

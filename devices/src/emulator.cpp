@@ -1,10 +1,11 @@
-// Firmware emulators on a pseudo-terminal (emulator.hpp).
+// Firmware emulators on a pseudo-terminal or over TCP (emulator.hpp).
 #include <algorithm>
 #include <antkit/devices/emulator.hpp>
 #include <antkit/devices/odometry.hpp>
 #include <antkit/devices/stop_signals.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <cctype>
+#include <optional>
 #include <thread>
 
 namespace antkit::devices {
@@ -80,6 +81,8 @@ std::string version_reply(RobotKind robot) {
     return "b,HemiOS_v1.50 antkit emulator\r\n";
   case RobotKind::Epuck:
     return "v,Version 1.2.2 antkit emulator\r\n";
+  case RobotKind::KheperaWebots: // "a pretend version string" (tcpip.c)
+    return "b,0,0\r\n";
   }
   return {};
 }
@@ -143,7 +146,12 @@ std::int32_t FirmwareEmulator::counter(int wheel) const noexcept {
   const auto& d = codec_.robot();
   if (!d.has_odometry) return 0;
   // pulses = travel / pulse = (travel2 / 2) [raw um] * 1000 / (65536 * pulse_nm)
-  const auto pulses = floor_div(travel2_[wheel] * 1000, i128{2} * 65536 * d.odometry_pulse_nm);
+  const i128 num = travel2_[wheel] * 1000, den = i128{2} * 65536 * d.odometry_pulse_nm;
+  // The Webots relay casts 50 * angle / pi to int: toward zero; the firmwares count whole pulses.
+  const auto pulses = d.kind == RobotKind::KheperaWebots
+                          ? static_cast<std::int32_t>(
+                                static_cast<std::uint32_t>(static_cast<std::uint64_t>(num / den)))
+                          : floor_div(num, den);
   return static_cast<std::int32_t>(static_cast<std::uint32_t>(pulses) +
                                    static_cast<std::uint32_t>(offset_[wheel]));
 }
@@ -221,6 +229,41 @@ std::string FirmwareEmulator::answer(const Fields& cmd) {
   return {};
 }
 
+std::string FirmwareEmulator::relay_answer(std::string_view line) {
+  const auto& d = codec_.robot();
+  const char letter = line.empty() ? '\0' : line[0];
+  const auto parsed = codec_.parse_command(line);
+  const bool two = parsed && parsed.value->count == 2;
+  switch (letter) {
+  case 'D': // sscanf "D,%d,%d" then wb_motor_set_velocity, which clamps to maxVelocity
+    if (two) {
+      speed_left_ = std::clamp(parsed.value->values[0], d.speed_min, d.speed_max);
+      speed_right_ = std::clamp(parsed.value->values[1], d.speed_min, d.speed_max);
+    }
+    return codec_.reply('D');
+  case 'L':
+  case 'G': // the position counters are not reset
+    return codec_.reply(letter);
+  case 'B':
+    return version_reply(d.kind);
+  case 'N': {
+    advance();
+    std::array<std::int32_t, 8> raw{};
+    sense(raw);
+    return codec_.reply('N', raw);
+  }
+  case 'H':
+    return codec_.reply('H', std::array<std::int32_t, 2>{counter(0), counter(1)});
+  case 'O': {
+    std::array<std::int32_t, 8> ambient{};
+    ambient.fill(d.proximity_max / 2); // an evenly lit room (a choice)
+    return codec_.reply('O', ambient);
+  }
+  default:
+    return codec_.unknown_command_reply(line);
+  }
+}
+
 FirmwareEmulator::Response FirmwareEmulator::handle(std::string_view line) {
   ++commands_;
   ++session_commands_;
@@ -237,9 +280,18 @@ FirmwareEmulator::Response FirmwareEmulator::handle(std::string_view line) {
     out.hang_up = true;
     return out;
   }
-  const auto parsed = codec_.parse_command(line);
-  std::string reply = parsed ? answer(*parsed.value) : std::string();
-  if (reply.empty()) reply = codec_.unknown_command_reply(line);
+  std::string reply;
+  if (codec_.robot().kind == RobotKind::KheperaWebots) {
+    if (line.substr(0, 4) == "exit") { // tcpip.c: strncmp(buffer, "exit", 4) closes the socket
+      out.close_session = true;
+      return out;
+    }
+    reply = relay_answer(line);
+  } else {
+    const auto parsed = codec_.parse_command(line);
+    reply = parsed ? answer(*parsed.value) : std::string();
+    if (reply.empty()) reply = codec_.unknown_command_reply(line);
+  }
   if (delay) {
     ++faults_;
     out.delay = f.delay;
@@ -321,15 +373,102 @@ void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>
   }
 }
 
+namespace {
+
+// One TCP client's session: its command lines answered until it goes. True when a hang-up response
+// (a disconnect fault) ends the serving, or a stop is asked for.
+bool serve_client(SerialPort& port, const std::function<EmulatorResponse(std::string_view)>& handle,
+                  const std::function<void()>& new_session, const std::function<bool()>& stopped,
+                  bool stop_on_signal) {
+  std::string pending;
+  bool in_session = false;
+  while (!stopped()) {
+    ReadResult r;
+    try {
+      r = port.read_line(std::chrono::milliseconds(50), LineEnd::CrOrLf);
+    } catch (const LinkError& e) {
+      if (e.kind() == LinkError::Kind::Interrupted) {
+        if (stop_on_signal) return true;
+        continue;
+      }
+      return false; // the client has gone (closed, reset): the session is over
+    }
+    pending += r.bytes;
+    if (!r.complete) continue;
+    while (!pending.empty() && (pending.back() == '\r' || pending.back() == '\n'))
+      pending.pop_back();
+    if (pending.empty()) continue;
+    if (!in_session) {
+      new_session();
+      in_session = true;
+    }
+    const EmulatorResponse response = handle(pending);
+    pending.clear();
+    if (response.delay.count() > 0) std::this_thread::sleep_for(response.delay);
+    if (response.hang_up) return true;
+    if (!response.bytes.empty()) {
+      try {
+        port.write_all(response.bytes, std::chrono::milliseconds(2000));
+      } catch (const LinkError&) {
+        return false; // the client has gone
+      }
+    }
+    if (response.close_session) return false;
+  }
+  return true;
+}
+
+} // namespace
+
+void serve_tcp(TcpListener& listener,
+               const std::function<EmulatorResponse(std::string_view)>& handle,
+               const std::function<void()>& new_session, const std::atomic<bool>* stop,
+               bool stop_on_signal) {
+  const auto stopped = [&] {
+    return (stop != nullptr && stop->load()) || (stop_on_signal && StopSignals::requested());
+  };
+  while (!stopped()) {
+    std::optional<SerialPort> client;
+    try {
+      client = listener.accept(std::chrono::milliseconds(50));
+    } catch (const LinkError& e) {
+      if (e.kind() == LinkError::Kind::Interrupted) {
+        if (stop_on_signal) break;
+        continue;
+      }
+      throw;
+    }
+    if (!client) continue;
+    // One client at a time: connects are refused while this one is served (serial.hpp).
+    listener.pause();
+    const bool end = serve_client(*client, handle, new_session, stopped, stop_on_signal);
+    // Listening again before the close: a client that sees its connection closed by the server
+    // (`exit`) finds the port open for its next session.
+    if (!end) listener.resume();
+    client->close();
+    if (end) break;
+  }
+}
+
+void FirmwareEmulator::new_session() {
+  if (commands_ > 0) reset(); // a new client: the robot back at its start
+  ++sessions_;
+}
+
 std::uint64_t FirmwareEmulator::serve(Pty& pty, const std::atomic<bool>* stop,
                                       bool stop_on_signal) {
   const std::uint64_t first = commands_;
   serve_pty(
-      pty, [this](std::string_view line) { return handle(line); },
-      [this] {
-        if (commands_ > 0) reset(); // a new client: the robot back at its start
-        ++sessions_;
-      },
+      pty, [this](std::string_view line) { return handle(line); }, [this] { new_session(); }, stop,
+      stop_on_signal);
+  return commands_ - first;
+}
+
+std::uint64_t FirmwareEmulator::serve(TcpListener& listener, const std::atomic<bool>* stop,
+                                      bool stop_on_signal) {
+  const std::uint64_t first = commands_;
+  serve_tcp(
+      listener, [this](std::string_view line) { return handle(line); }, [this] { new_session(); },
       stop, stop_on_signal);
   return commands_ - first;
 }

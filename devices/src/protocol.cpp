@@ -134,6 +134,8 @@ std::string Codec::read_odometry() const {
 }
 std::string Codec::set_odometry(std::int32_t left, std::int32_t right) const {
   if (!robot_->has_odometry) throw std::logic_error("this robot has no wheel counters");
+  if (robot_->odometry_set == 0) // the Webots relay: G does nothing (robot.hpp)
+    throw std::logic_error("this robot's wheel counters cannot be set");
   return command(*robot_, robot_->odometry_set, {left, right});
 }
 std::string Codec::set_led(std::int32_t led, std::int32_t action) const {
@@ -145,7 +147,8 @@ std::string Codec::version() const {
 }
 std::vector<std::string> Codec::safe_stop() const {
   switch (robot_->kind) {
-  case RobotKind::Khepera: // wheels, then both LEDs off (L,n,0)
+  case RobotKind::Khepera:       // wheels, then both LEDs off (L,n,0)
+  case RobotKind::KheperaWebots: // the relay has L for LEDs 0 and 1 (tcpip.c)
     return {set_speed(0, 0), set_led(0, 0), set_led(1, 0)};
   case RobotKind::Hemisson: // wheels; HemiOS's LED commands differ between versions: none sent
     return {set_speed(0, 0)};
@@ -228,6 +231,8 @@ std::string Codec::reply(char command_letter, std::span<const std::int32_t> valu
 }
 
 std::string Codec::unknown_command_reply(std::string_view) const {
+  // The Webots relay answers what it does not know with a bare LF (tcpip.c: send(fd, "\n", 1)).
+  if (robot_->kind == RobotKind::KheperaWebots) return "\n";
   return robot_->kind == RobotKind::Epuck ? "z,Command not found\r\n" : "z,Protocol error\r\n";
 }
 

@@ -1,14 +1,24 @@
-// The serial link over termios and the emulators' pseudo-terminals (serial.hpp).
+// The robot links: the serial port over termios, TCP, and the emulators' pseudo-terminals and TCP
+// listener (serial.hpp).
 #include <algorithm>
 #include <antkit/devices/serial.hpp>
 #include <antkit/devices/stop_signals.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <arpa/inet.h>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <dirent.h>
 #include <fcntl.h>
+#include <fstream>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
 #include <poll.h>
 #include <stdlib.h>
 #include <sys/ioctl.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
 #include <system_error>
 #include <termios.h>
 #include <unistd.h>
@@ -42,7 +52,8 @@ int remaining_ms(Clock::time_point deadline) {
 }
 
 [[noreturn]] void fail(const std::string& name, const char* what, int err) {
-  if (err == EIO || err == EPIPE || err == ENXIO || err == ECONNRESET)
+  if (err == EIO || err == EPIPE || err == ENXIO || err == ECONNRESET || err == ENOTCONN ||
+      err == ECONNABORTED || err == ETIMEDOUT)
     throw LinkError(LinkError::Kind::Disconnected,
                     name + ": disconnected (" + what + ": " + std::strerror(err) + ")");
   throw LinkError(LinkError::Kind::System, name + ": " + what + ": " + std::strerror(err));
@@ -54,7 +65,181 @@ void interrupted(const std::string& name) {
     throw LinkError(LinkError::Kind::Interrupted, name + ": interrupted by a stop signal");
 }
 
+// ---- the port held exclusively (serial.hpp) ----
+
+// The PID of a process other than (self, self_fd) that has `device` open with a lock on it (an OFD
+// lock shows in the fdinfo of the holder's descriptor, as "lock: ... OFDLCK ..."), or -1.
+long lock_holder(const struct stat& device, int self_fd) {
+  DIR* proc = ::opendir("/proc");
+  if (proc == nullptr) return -1;
+  const long self = static_cast<long>(::getpid());
+  long found = -1;
+  while (const dirent* e = ::readdir(proc)) {
+    char* end = nullptr;
+    const long pid = std::strtol(e->d_name, &end, 10);
+    if (end == e->d_name || *end != '\0' || pid <= 0) continue;
+    const std::string base = "/proc/" + std::string(e->d_name);
+    DIR* fds = ::opendir((base + "/fd").c_str());
+    if (fds == nullptr) continue;
+    while (const dirent* f = ::readdir(fds)) {
+      if (f->d_name[0] == '.') continue;
+      if (pid == self && std::atoi(f->d_name) == self_fd) continue;
+      struct stat st {};
+      if (::stat((base + "/fd/" + f->d_name).c_str(), &st) != 0) continue;
+      if (st.st_dev != device.st_dev || st.st_ino != device.st_ino) continue;
+      std::ifstream info(base + "/fdinfo/" + f->d_name);
+      std::string line;
+      while (std::getline(info, line))
+        if (line.rfind("lock:", 0) == 0) found = pid;
+      if (found > 0) break;
+    }
+    ::closedir(fds);
+    if (found > 0) break;
+  }
+  ::closedir(proc);
+  return found;
+}
+
+[[noreturn]] void port_busy(const std::string& path, long pid) {
+  throw InputError("--port", "'" + path + "' is busy: port busy" +
+                                 (pid > 0 ? ", held by process " + std::to_string(pid) : ""));
+}
+
+// An OFD write lock on the whole device (serial.hpp says why OFD). A kernel without OFD locks
+// (EINVAL) leaves TIOCEXCL alone to hold the port.
+void lock_port(int fd, const std::string& path) {
+  struct flock lk {};
+  lk.l_type = F_WRLCK;
+  lk.l_whence = SEEK_SET;
+  if (::fcntl(fd, F_OFD_SETLK, &lk) == 0) return;
+  const int err = errno;
+  if (err != EAGAIN && err != EACCES) return;
+  struct flock who {};
+  who.l_type = F_WRLCK;
+  who.l_whence = SEEK_SET;
+  long pid = -1;
+  // A classic (per-process) lock's holder is named by GETLK; an OFD holder shows as -1.
+  if (::fcntl(fd, F_OFD_GETLK, &who) == 0 && who.l_type != F_UNLCK && who.l_pid > 0)
+    pid = who.l_pid;
+  struct stat st {};
+  if (pid <= 0 && ::fstat(fd, &st) == 0) pid = lock_holder(st, fd);
+  port_busy(path, pid);
+}
+
+// ---- TCP ----
+
+struct AddrInfo {
+  addrinfo* list = nullptr;
+  AddrInfo() = default;
+  AddrInfo(const AddrInfo&) = delete;
+  AddrInfo& operator=(const AddrInfo&) = delete;
+  ~AddrInfo() {
+    if (list != nullptr) ::freeaddrinfo(list);
+  }
+};
+
+void resolve(const TcpEndpoint& at, const std::string& where, bool passive, AddrInfo& out) {
+  addrinfo hints{};
+  hints.ai_family = AF_UNSPEC;
+  hints.ai_socktype = SOCK_STREAM;
+  hints.ai_flags = AI_NUMERICSERV | (passive ? AI_PASSIVE : 0);
+  const std::string service = std::to_string(at.port);
+  const int rc = ::getaddrinfo(at.host.c_str(), service.c_str(), &hints, &out.list);
+  if (rc != 0 || out.list == nullptr)
+    throw InputError(where, "cannot resolve host '" + at.host + "': " +
+                                (rc == EAI_SYSTEM ? std::strerror(errno) : ::gai_strerror(rc)));
+}
+
+// Waits for a non-blocking connect: 0 connected, else the errno (ETIMEDOUT on the deadline).
+int finish_connect(int fd, Clock::time_point deadline, const std::string& name) {
+  for (;;) {
+    pollfd p{fd, POLLOUT, 0};
+    const int r = ::poll(&p, 1, remaining_ms(deadline));
+    if (r < 0 && errno == EINTR) {
+      interrupted(name);
+      continue;
+    }
+    if (r < 0) return errno;
+    if (r == 0) return ETIMEDOUT;
+    int err = 0;
+    socklen_t len = sizeof err;
+    if (::getsockopt(fd, SOL_SOCKET, SO_ERROR, &err, &len) != 0) return errno;
+    return err;
+  }
+}
+
+void set_socket_options(int fd) {
+  const int one = 1;
+  ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+  ::setsockopt(fd, SOL_SOCKET, SO_KEEPALIVE, &one, sizeof one);
+}
+
+std::uint16_t bound_port(int fd) {
+  sockaddr_storage a{};
+  socklen_t len = sizeof a;
+  if (::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len) != 0) return 0;
+  if (a.ss_family == AF_INET) return ntohs(reinterpret_cast<sockaddr_in*>(&a)->sin_port);
+  if (a.ss_family == AF_INET6) return ntohs(reinterpret_cast<sockaddr_in6*>(&a)->sin6_port);
+  return 0;
+}
+
+void set_port(sockaddr* a, std::uint16_t port) {
+  if (a->sa_family == AF_INET) reinterpret_cast<sockaddr_in*>(a)->sin_port = htons(port);
+  if (a->sa_family == AF_INET6) reinterpret_cast<sockaddr_in6*>(a)->sin6_port = htons(port);
+}
+
 } // namespace
+
+bool is_tcp_port(std::string_view path) noexcept {
+  return path.substr(0, kTcpScheme.size()) == kTcpScheme;
+}
+
+std::string TcpEndpoint::text() const {
+  const bool v6 = host.find(':') != std::string::npos;
+  return (v6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
+}
+
+TcpEndpoint parse_tcp_endpoint(std::string_view text, const std::string& where, bool any_port) {
+  const auto bad = [&](const std::string& why) {
+    return InputError(where, "'" + std::string(text) + "' is not a TCP address: " + why +
+                                 " (expected HOST:PORT, e.g. 127.0.0.1:10020 or [::1]:10020)");
+  };
+  TcpEndpoint at;
+  std::size_t colon = 0;
+  if (!text.empty() && text[0] == '[') {
+    const auto close = text.find(']');
+    if (close == std::string_view::npos) throw bad("an IPv6 address without its ']'");
+    at.host = std::string(text.substr(1, close - 1));
+    if (at.host.empty()) throw bad("an empty host");
+    for (const char c : at.host)
+      if (!(std::isxdigit(static_cast<unsigned char>(c)) || c == ':' || c == '.'))
+        throw bad("an IPv6 address holds hex digits, ':' and '.' only");
+    if (close + 1 >= text.size() || text[close + 1] != ':') throw bad("no ':PORT' after ']'");
+    colon = close + 1;
+  } else {
+    colon = text.rfind(':');
+    if (colon == std::string_view::npos) throw bad("no ':PORT'");
+    at.host = std::string(text.substr(0, colon));
+    if (at.host.empty()) throw bad("an empty host");
+    if (at.host.size() > 253) throw bad("a host name longer than 253 characters");
+    for (const char c : at.host)
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_'))
+        throw bad(c == ':' ? "an IPv6 address must be in brackets"
+                           : "a host holds letters, digits, '.', '-' and '_' only");
+  }
+  const std::string_view digits = text.substr(colon + 1);
+  std::uint32_t port = 0;
+  if (digits.empty() || digits.size() > 5) throw bad("the port must be a number 1-65535");
+  for (const char c : digits) {
+    if (c < '0' || c > '9') throw bad("the port must be a number 1-65535");
+    port = port * 10 + static_cast<std::uint32_t>(c - '0');
+  }
+  if (port > 65535 || (port == 0 && !any_port))
+    throw bad(any_port ? "the port must be a number 0-65535 (0: any free port)"
+                       : "the port must be a number 1-65535");
+  at.port = static_cast<std::uint16_t>(port);
+  return at;
+}
 
 std::string_view link_error_name(LinkError::Kind kind) noexcept {
   switch (kind) {
@@ -107,16 +292,57 @@ LineSettings parse_framing(std::string_view text, std::uint32_t baud, const std:
   return s;
 }
 
+SerialPort SerialPort::connect(const TcpEndpoint& to, std::size_t max_line,
+                               std::chrono::milliseconds timeout) {
+  const std::string name = std::string(kTcpScheme) + to.text();
+  AddrInfo addrs;
+  resolve(to, "--port", false, addrs);
+  const auto deadline = Clock::now() + timeout;
+  int last = ECONNREFUSED;
+  for (const addrinfo* a = addrs.list; a != nullptr; a = a->ai_next) {
+    const int fd =
+        ::socket(a->ai_family, a->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, a->ai_protocol);
+    if (fd < 0) {
+      last = errno;
+      continue;
+    }
+    SerialPort port(fd, name, max_line); // closes fd on every way out
+    int err = 0;
+    if (::connect(fd, a->ai_addr, a->ai_addrlen) != 0)
+      err = errno == EINPROGRESS ? finish_connect(fd, deadline, name) : errno;
+    if (err == 0) {
+      set_socket_options(fd);
+      return port;
+    }
+    last = err;
+    if (err == ETIMEDOUT) break; // the whole timeout is spent
+  }
+  const std::string what =
+      last == ECONNREFUSED ? "connection refused"
+      : last == ETIMEDOUT  ? "connection timed out after " + std::to_string(timeout.count()) + " ms"
+                           : std::string(std::strerror(last));
+  throw LinkError(LinkError::Kind::Disconnected, to.text() + ": " + what);
+}
+
 SerialPort SerialPort::open(const std::string& path, const LineSettings& settings,
                             std::size_t max_line) {
+  if (is_tcp_port(path))
+    return connect(
+        parse_tcp_endpoint(std::string_view(path).substr(kTcpScheme.size()), "--port", false),
+        max_line);
   const speed_t speed = speed_code(settings.baud);
   const int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0 && errno == EBUSY) { // another process set TIOCEXCL
+    struct stat st {};
+    port_busy(path, ::stat(path.c_str(), &st) == 0 ? lock_holder(st, -1) : -1);
+  }
   if (fd < 0) throw InputError("--port", "cannot open '" + path + "': " + std::strerror(errno));
   SerialPort port(fd, path, max_line);
   termios t{};
   if (::tcgetattr(fd, &t) != 0)
     throw InputError("--port",
                      "'" + path + "' is not a serial port or terminal: " + std::strerror(errno));
+  lock_port(fd, path);   // before any setting changes: a held port is left as its holder set it
   ::ioctl(fd, TIOCEXCL); // other processes may not open it while we drive the robot
   ::cfmakeraw(&t);
   t.c_cflag &= ~static_cast<tcflag_t>(CSIZE | CSTOPB | PARENB | PARODD | CRTSCTS);
@@ -143,11 +369,13 @@ SerialPort::SerialPort(int fd, std::string name, std::size_t max_line)
     : fd_(fd), name_(std::move(name)), max_line_(max_line == 0 ? 1 : max_line) {
   const int flags = ::fcntl(fd_, F_GETFL);
   if (flags >= 0) ::fcntl(fd_, F_SETFL, flags | O_NONBLOCK);
+  struct stat st {};
+  socket_ = ::fstat(fd_, &st) == 0 && S_ISSOCK(st.st_mode);
 }
 
 SerialPort::SerialPort(SerialPort&& o) noexcept
     : fd_(std::exchange(o.fd_, -1)), name_(std::move(o.name_)), max_line_(o.max_line_),
-      buffer_(std::move(o.buffer_)), discarding_(o.discarding_) {}
+      buffer_(std::move(o.buffer_)), discarding_(o.discarding_), socket_(o.socket_) {}
 
 SerialPort& SerialPort::operator=(SerialPort&& o) noexcept {
   if (this != &o) {
@@ -157,6 +385,7 @@ SerialPort& SerialPort::operator=(SerialPort&& o) noexcept {
     max_line_ = o.max_line_;
     buffer_ = std::move(o.buffer_);
     discarding_ = o.discarding_;
+    socket_ = o.socket_;
   }
   return *this;
 }
@@ -174,7 +403,9 @@ void SerialPort::write_all(std::string_view bytes, std::chrono::milliseconds tim
   if (fd_ < 0) throw LinkError(LinkError::Kind::Disconnected, name_ + ": closed");
   const auto deadline = Clock::now() + timeout;
   while (!bytes.empty()) {
-    const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
+    // A socket: MSG_NOSIGNAL, so a peer that has gone is EPIPE (Disconnected), not SIGPIPE.
+    const ssize_t n = socket_ ? ::send(fd_, bytes.data(), bytes.size(), MSG_NOSIGNAL)
+                              : ::write(fd_, bytes.data(), bytes.size());
     if (n > 0) {
       bytes.remove_prefix(static_cast<std::size_t>(n));
       continue;
@@ -307,7 +538,8 @@ void SerialPort::flush_input() {
   buffer_.clear();
   discarding_ = false;
   if (fd_ < 0) return;
-  ::tcflush(fd_, TCIFLUSH);
+  if (!socket_) ::tcflush(fd_, TCIFLUSH); // a socket has no tty queue: draining below is all
+
   char chunk[512];
   while (::read(fd_, chunk, sizeof chunk) > 0) {
   }
@@ -358,6 +590,146 @@ void Pty::close_slave_keeper() noexcept {
 void Pty::hang_up() noexcept {
   master_.close();
   close_slave_keeper();
+}
+
+// ---- the TCP listener ----
+
+TcpListener::TcpListener(int fd, TcpEndpoint at, int family)
+    : fd_(fd), at_(std::move(at)), family_(family), listening_(true) {}
+
+TcpListener TcpListener::listen(const TcpEndpoint& at, const std::string& where) {
+  AddrInfo addrs;
+  resolve(at, where, true, addrs);
+  const addrinfo* a = addrs.list;
+  const auto fail_bind = [&](int err) {
+    return InputError(where, "cannot listen on " + at.text() + ": " + std::strerror(err));
+  };
+  std::uint16_t port = at.port;
+  if (port == 0) {
+    // Any free port, chosen by the kernel on a probe socket and then bound by number: only an
+    // explicitly bound port survives pause() (serial.hpp).
+    const int probe = ::socket(a->ai_family, a->ai_socktype | SOCK_CLOEXEC, a->ai_protocol);
+    if (probe < 0) throw fail_bind(errno);
+    const int err = ::bind(probe, a->ai_addr, a->ai_addrlen) == 0 ? 0 : errno;
+    port = err == 0 ? bound_port(probe) : 0;
+    ::close(probe);
+    if (err != 0) throw fail_bind(err);
+  }
+  const int fd =
+      ::socket(a->ai_family, a->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, a->ai_protocol);
+  if (fd < 0) throw fail_bind(errno);
+  const int one = 1;
+  // A restarted emulator can take its port back while the last session's connection waits out
+  // TIME_WAIT.
+  ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  sockaddr_storage addr{};
+  std::memcpy(&addr, a->ai_addr, a->ai_addrlen);
+  set_port(reinterpret_cast<sockaddr*>(&addr), port);
+  if (::bind(fd, reinterpret_cast<sockaddr*>(&addr), a->ai_addrlen) != 0 || ::listen(fd, 1) != 0) {
+    const int err = errno;
+    ::close(fd);
+    throw fail_bind(err);
+  }
+  TcpEndpoint real = at;
+  real.port = bound_port(fd);
+  return TcpListener(fd, std::move(real), a->ai_family);
+}
+
+TcpListener::TcpListener(TcpListener&& o) noexcept
+    : fd_(std::exchange(o.fd_, -1)), at_(std::move(o.at_)), family_(o.family_),
+      listening_(o.listening_) {}
+
+TcpListener& TcpListener::operator=(TcpListener&& o) noexcept {
+  if (this != &o) {
+    close();
+    fd_ = std::exchange(o.fd_, -1);
+    at_ = std::move(o.at_);
+    family_ = o.family_;
+    listening_ = o.listening_;
+  }
+  return *this;
+}
+
+TcpListener::~TcpListener() {
+  close();
+}
+
+void TcpListener::close() noexcept {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  listening_ = false;
+}
+
+std::optional<SerialPort> TcpListener::accept(std::chrono::milliseconds timeout,
+                                              std::size_t max_line) {
+  if (!listening_) resume(); // throws when closed
+  const auto deadline = Clock::now() + timeout;
+  const std::string name = "tcp:" + at_.text();
+  for (;;) {
+    sockaddr_storage peer{};
+    socklen_t len = sizeof peer;
+    const int c =
+        ::accept4(fd_, reinterpret_cast<sockaddr*>(&peer), &len, SOCK_NONBLOCK | SOCK_CLOEXEC);
+    if (c >= 0) {
+      set_socket_options(c);
+      char host[INET6_ADDRSTRLEN] = "?";
+      std::uint16_t port = 0;
+      if (peer.ss_family == AF_INET) {
+        const auto* p4 = reinterpret_cast<const sockaddr_in*>(&peer);
+        ::inet_ntop(AF_INET, &p4->sin_addr, host, sizeof host);
+        port = ntohs(p4->sin_port);
+      } else if (peer.ss_family == AF_INET6) {
+        const auto* p6 = reinterpret_cast<const sockaddr_in6*>(&peer);
+        ::inet_ntop(AF_INET6, &p6->sin6_addr, host, sizeof host);
+        port = ntohs(p6->sin6_port);
+      }
+      return SerialPort(c, "client " + TcpEndpoint{host, port}.text() + " of " + name, max_line);
+    }
+    const int err = errno;
+    if (err == EINTR) {
+      interrupted(name);
+      continue;
+    }
+    // A client that reset before we took it is no client; try again.
+    if (err == ECONNABORTED || err == EPROTO) continue;
+    if (err != EAGAIN && err != EWOULDBLOCK) fail(name, "accept", err);
+    const int wait = remaining_ms(deadline);
+    if (wait == 0) return std::nullopt;
+    pollfd p{fd_, POLLIN, 0};
+    const int r = ::poll(&p, 1, wait);
+    if (r < 0 && errno == EINTR) {
+      interrupted(name);
+      continue;
+    }
+    if (r < 0) fail(name, "poll", errno);
+    if (r == 0) return std::nullopt;
+  }
+}
+
+void TcpListener::pause() noexcept {
+  if (fd_ < 0 || !listening_) return;
+  // connect(AF_UNSPEC) takes a Linux listening socket out of LISTEN (tcp_disconnect) with its
+  // explicitly bound port kept, so connects are refused until listen() again; clients already in
+  // the backlog are reset. Where that fails, the socket is closed and bound again on resume().
+  sockaddr unspec{};
+  unspec.sa_family = AF_UNSPEC;
+  if (::connect(fd_, &unspec, sizeof unspec) != 0) {
+    ::close(fd_);
+    fd_ = -2; // closed by pause(): resume() binds a new socket
+  }
+  listening_ = false;
+}
+
+void TcpListener::resume() {
+  if (listening_) return;
+  if (fd_ == -2) {
+    fd_ = -1;
+    *this = listen(at_, "--listen");
+    return;
+  }
+  if (fd_ < 0) throw LinkError(LinkError::Kind::System, at_.text() + ": the listener is closed");
+  if (::listen(fd_, 1) != 0) fail("tcp:" + at_.text(), "listen", errno);
+  listening_ = true;
 }
 
 } // namespace antkit::devices

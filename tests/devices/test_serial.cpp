@@ -213,3 +213,73 @@ TEST_CASE("any byte stream, in any chunks, comes out as the same lines", "[devic
     RC_ASSERT(joined == stream);
   });
 }
+
+// ---- the port held exclusively (issue 26: one process per robot) ----
+#include <antkit/devices/emulator.hpp>
+#include <antkit/geometry/arena_spec.hpp>
+#include <atomic>
+
+TEST_CASE("a second open of a held pty is refused: port busy, with the holder's PID", "[devices]") {
+  auto pty = devices::Pty::open();
+  auto first = devices::SerialPort::open(pty.slave_path(), line(9600, 2));
+  // The OFD lock is per open, so a second open in the same process conflicts too.
+  try {
+    (void)devices::SerialPort::open(pty.slave_path(), line(9600, 2));
+    FAIL("opened twice");
+  } catch (const antkit::kernel::InputError& e) {
+    const std::string what = e.what();
+    INFO(what);
+    CHECK(what.find("--port") != std::string::npos);
+    CHECK(what.find("port busy") != std::string::npos);
+    CHECK(what.find("held by process " + std::to_string(::getpid())) != std::string::npos);
+  }
+  // The first open still works, and once it is closed the port is free again.
+  send(pty, "d\r\n");
+  CHECK(first.read_line(500ms).bytes == "d\r\n");
+  first.close();
+  auto again = devices::SerialPort::open(pty.slave_path(), line(9600, 2));
+  CHECK(again.fd() >= 0);
+}
+
+TEST_CASE("a second TCP client of serve_tcp cannot share the session", "[devices]") {
+  auto listener =
+      devices::TcpListener::listen(devices::parse_tcp_endpoint("127.0.0.1:0", "test", true));
+  const std::string spec = listener.port_spec();
+  devices::FirmwareEmulator emulator(
+      devices::RobotKind::Khepera,
+      antkit::geometry::build_arena_spec("circle:d=8").arena.walls_fx());
+  std::atomic<bool> stop{false};
+  std::thread serving([&] { emulator.serve(listener, &stop, false); });
+  const auto ask = [](devices::SerialPort& port, std::string_view command) {
+    port.write_all(command, 1000ms);
+    return port.read_line(5000ms).bytes;
+  };
+  {
+    auto first = devices::SerialPort::open(spec, devices::LineSettings{});
+    CHECK(ask(first, "D,1,1\r") == "d\r\n"); // the first client's session is under way
+    // While it is connected, a second client is refused at once.
+    try {
+      (void)devices::SerialPort::open(spec, devices::LineSettings{});
+      FAIL("a second client connected");
+    } catch (const LinkError& e) {
+      CHECK(e.kind() == LinkError::Kind::Disconnected);
+      CHECK(std::string(e.what()).find("connection refused") != std::string::npos);
+    }
+    CHECK(ask(first, "E\r") == "e,1,1\r\n"); // its session is untouched
+  }
+  // The first has gone: the next client is the next session, from the start.
+  bool served = false;
+  for (int i = 0; i < 200 && !served; ++i) {
+    try {
+      auto next = devices::SerialPort::open(spec, devices::LineSettings{});
+      CHECK(ask(next, "E\r") == "e,0,0\r\n");
+      served = true;
+    } catch (const LinkError&) { // the emulator has not yet seen the first one go
+      std::this_thread::sleep_for(10ms);
+    }
+  }
+  CHECK(served);
+  stop = true;
+  serving.join();
+  CHECK(emulator.sessions() == 2);
+}

@@ -1,7 +1,8 @@
 #pragma once
-// Firmware emulators: a Khepera, a Hemisson or an e-puck answering its own serial protocol on a
-// pseudo-terminal, its body simulated in the Buffon world (algorithms/buffon/world.hpp), so that
-// the real adapter code (link.hpp, adapter.hpp) runs end to end over a real tty.
+// Firmware emulators: a Khepera, a Hemisson, an e-puck or the Khepera in Webots (its TCP/IP relay)
+// answering its own protocol on a pseudo-terminal or over TCP, its body simulated in the Buffon
+// world (algorithms/buffon/world.hpp), so that the real adapter code (link.hpp, adapter.hpp) runs
+// end to end over a real tty.
 //
 // The body, at the robot's own scale: the arena's unit of length is the robot's diameter (as in
 // paper 000, where the Khepera's diameter is the unit and Figure 13 scales the arenas with the
@@ -31,6 +32,23 @@
 // visit; so `antkit record` run twice against one emulator records two visits from the same pose.
 // (The reset happens at the new session's first command, so the last session's state stays
 // readable after its client has gone.)
+//
+// Over TCP (serve_tcp, `antkit emulate ... --listen HOST:PORT`): a session is one connection; one
+// client at a time, a second one is refused while the first is connected (TcpListener, serial.hpp);
+// the next connection is the next session. A disconnect fault closes the connection and ends the
+// serving, as it hangs up a pty.
+//
+// The Khepera in Webots (RobotKind::KheperaWebots) answers as the relay controller does
+// (PROTOCOLS.md, "Khepera in Webots"; Webots' khepera1/controllers/tcpip/tcpip.c): it acts on the
+// command's first letter; D sets the speeds in rad/s, clamped to the motors' maxVelocity (+-10, as
+// Webots clamps a velocity above it) and is acknowledged whatever follows the letter; G is
+// acknowledged and does nothing; H counts 100 a wheel turn (50 * angle / pi, truncated toward zero
+// as the relay's cast to int), cumulative; L is acknowledged; B answers "b,0,0"; anything else (E,
+// an unknown letter, a malformed line) gets a bare "\n"; `exit` closes the connection. Unlike the
+// relay, it is line-based (two commands in one TCP segment are two commands; the relay loses the
+// second: a client waits for each reply anyway) and serves one session after another; each session
+// starts the body and the counters afresh -- what a Webots world reset does to the relay, which
+// accepts one client per simulation run -- and the counters are cumulative within a session.
 //
 // Faults (FaultSpec), each decided per command from the emulator's keyed streams, so a faulty run
 // is itself reproducible: a delay before the reply, garbage bytes before it, the reply dropped, the
@@ -83,6 +101,9 @@ struct EmulatorResponse {
   std::string bytes;                  // to write (empty: nothing)
   std::chrono::microseconds delay{0}; // before writing
   bool hang_up = false;               // then hang up the line
+  // Then close this client's connection (the Webots relay's `exit`); on a pty, where the far side
+  // cannot be closed, nothing.
+  bool close_session = false;
 };
 
 // The serving loop every emulator shares: reads command lines (ended by CR, LF or CR LF; empty
@@ -90,6 +111,15 @@ struct EmulatorResponse {
 // client (a client's session lasts until it closes the tty), answers each line with handle(), and
 // returns when `stop` is set, on a stop signal (when stop_on_signal), or after a hang-up response.
 void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>& handle,
+               const std::function<void()>& new_session, const std::atomic<bool>* stop,
+               bool stop_on_signal);
+
+// The same over TCP: serves one client at a time from `listener` (pausing it while a client is
+// connected, so a second client is refused), each connection a session (new_session() before its
+// first command), until `stop`, a stop signal (when stop_on_signal) or a hang-up response (which
+// closes the connection and returns).
+void serve_tcp(TcpListener& listener,
+               const std::function<EmulatorResponse(std::string_view)>& handle,
                const std::function<void()>& new_session, const std::atomic<bool>* stop,
                bool stop_on_signal);
 
@@ -112,6 +142,9 @@ public:
   // serving from a thread of a program that records through it, as the tests do).
   std::uint64_t serve(Pty& pty, const std::atomic<bool>* stop = nullptr,
                       bool stop_on_signal = true);
+  // The same over TCP, one connection a session (serve_tcp).
+  std::uint64_t serve(TcpListener& listener, const std::atomic<bool>* stop = nullptr,
+                      bool stop_on_signal = true);
 
   [[nodiscard]] const RobotDescription& robot() const noexcept { return codec_.robot(); }
   [[nodiscard]] const buffon::Pose& pose() const noexcept { return pose_; }
@@ -126,6 +159,8 @@ public:
 
 private:
   std::string answer(const Fields& cmd);
+  std::string relay_answer(std::string_view line); // the Webots relay (above)
+  void new_session();
   void advance();
   void sense(std::array<std::int32_t, 8>& raw) const;
 

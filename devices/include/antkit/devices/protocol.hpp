@@ -18,7 +18,9 @@
 //  * B (Khepera, Hemisson) and V (e-puck) reply with free text after the letter's comma.
 //  * Unknown commands: the Khepera and Hemisson firmwares answer "z,Protocol error" and asercom
 //    "z,Command not found" (a choice following the shape of the sources' error replies; no driver
-//    relies on the text).
+//    relies on the text); the Webots relay a bare "\n" (its tcpip.c).
+//  * The Webots Khepera: the Khepera's codec (B, D, G, H, L, N, O) with its own ranges (robot.cpp);
+//    set_odometry is refused (a logic_error), as G does nothing on the relay.
 //  * Firmware leniency: asercom accepts lower-case command letters (PROTOCOLS.md); the Khepera
 //    and Hemisson emulators accept only upper case, as their manuals print them.
 #include <antkit/devices/robot.hpp>

@@ -1,7 +1,9 @@
 #pragma once
-// The three robots of paper 000's family as antkit drives them: line settings, command ranges,
-// sensor layout and scales, body. Facts from ../shared/devices/PROTOCOLS.md and its sources (cited
-// per robot in robot.cpp); where a source is silent, the choice is named there.
+// The robots of paper 000's family as antkit drives them -- the Khepera, the Hemisson, the e-puck,
+// and the Khepera in Webots behind its TCP/IP relay controller (its units differ from the real
+// Khepera's: a device of its own) -- line settings, command ranges, sensor layout and scales, body.
+// Facts from ../shared/devices/PROTOCOLS.md and its sources (cited per robot in robot.cpp); where a
+// source is silent, the choice is named there.
 #include <antkit/devices/line_settings.hpp>
 #include <array>
 #include <cstdint>
@@ -10,9 +12,12 @@
 
 namespace antkit::devices {
 
-enum class RobotKind : std::uint8_t { Khepera, Hemisson, Epuck };
+enum class RobotKind : std::uint8_t { Khepera, Hemisson, Epuck, KheperaWebots };
+// "khepera", "hemisson", "epuck", "khepera-webots".
 std::optional<RobotKind> parse_robot(std::string_view name);
 std::string_view robot_name(RobotKind robot);
+// The names parse_robot accepts, for messages: "khepera, khepera-webots, hemisson, epuck".
+std::string_view robot_names();
 
 struct RobotDescription {
   RobotKind kind;
@@ -33,7 +38,10 @@ struct RobotDescription {
       front_six; // readings for the Buffon behaviour's I_0 (+90) .. I_5 (-90)
   std::int32_t diameter_um, wheel_base_um;
   bool has_odometry;
-  char odometry_read, odometry_set;
+  char odometry_read; // the command reading the wheel counters
+  // The command setting them; 0 when the robot has none that works (the Webots relay acknowledges
+  // G and ignores it): the record loop then reads a baseline instead of resetting them.
+  char odometry_set;
   std::int64_t odometry_pulse_nm;
 };
 const RobotDescription& describe(RobotKind robot);

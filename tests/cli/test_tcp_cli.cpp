@@ -1,0 +1,169 @@
+// `antkit emulate --listen`, `record --port tcp:HOST:PORT` and `replay` end to end as the real
+// executables over loopback TCP, and a port held by one `record` refused to a second (issue 26).
+#include "run_antkit.hpp"
+
+#include <catch2/catch.hpp>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+using antkit::test::run_antkit;
+
+namespace {
+
+std::filesystem::path scratch_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("antkit-tcp-cli-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// `antkit ARGS` in a child process, its stdout read through a pipe.
+class Child {
+public:
+  explicit Child(const std::vector<std::string>& args) {
+    int fds[2];
+    REQUIRE(::pipe(fds) == 0);
+    pid_ = ::fork();
+    REQUIRE(pid_ >= 0);
+    if (pid_ == 0) {
+      ::dup2(fds[1], STDOUT_FILENO);
+      ::close(fds[0]);
+      ::close(fds[1]);
+      std::vector<std::string> all{ANTKIT_EXE};
+      all.insert(all.end(), args.begin(), args.end());
+      std::vector<char*> argv;
+      for (auto& a : all) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      ::execv(ANTKIT_EXE, argv.data());
+      ::_exit(127);
+    }
+    ::close(fds[1]);
+    out_ = ::fdopen(fds[0], "r");
+  }
+  Child(const Child&) = delete;
+  Child& operator=(const Child&) = delete;
+  ~Child() {
+    if (pid_ > 0) finish(SIGKILL);
+  }
+  [[nodiscard]] pid_t pid() const noexcept { return pid_; }
+  // The first line it printed, without its newline.
+  std::string first_line() {
+    char line[256] = {};
+    REQUIRE(std::fgets(line, sizeof line, out_) != nullptr);
+    std::string s = line;
+    while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
+    return s;
+  }
+  // Sends `sig`, then the exit status and the rest of what it printed.
+  std::pair<int, std::string> finish(int sig) {
+    ::kill(pid_, sig);
+    std::string rest;
+    char buf[512];
+    std::size_t n = 0;
+    while ((n = std::fread(buf, 1, sizeof buf, out_)) > 0) rest.append(buf, n);
+    std::fclose(out_);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, rest};
+  }
+
+private:
+  pid_t pid_ = -1;
+  FILE* out_ = nullptr;
+};
+
+std::size_t lines_in(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::size_t n = 0;
+  for (std::string line; std::getline(in, line);) ++n;
+  return n;
+}
+
+} // namespace
+
+TEST_CASE("antkit emulate --listen + record --port tcp: + replay, end to end", "[cli][devices]") {
+  const auto dir = scratch_dir("e2e");
+  Child emu({"emulate", "khepera", "--arena", "circle:d=8", "--listen", "127.0.0.1:0", "--format",
+             "json"});
+  const std::string port = emu.first_line();
+  INFO(port);
+  REQUIRE(port.rfind("tcp:127.0.0.1:", 0) == 0);
+  CHECK(port != "tcp:127.0.0.1:0"); // the real port
+  const auto log = (dir / "visit1.jsonl").string();
+  const auto r =
+      run_antkit("record --device khepera --port " + port +
+                 " --controller buffon --visit 1 --steps 200 --out " + log + " --format json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["steps"] == 200);
+  CHECK(j["completed"] == true);
+
+  const auto rp = run_antkit("replay " + log + " --format json");
+  INFO(rp.err);
+  REQUIRE(rp.status == 0);
+  const auto k = nlohmann::json::parse(rp.out);
+  CHECK(k["identical"] == true);
+  CHECK(k["steps"] == 200);
+  CHECK(k["hash"] == j["hash"]);
+
+  // SIGTERM ends it cleanly, with its summary.
+  const auto [status, summary] = emu.finish(SIGTERM);
+  CHECK(status == 0);
+  const auto s = nlohmann::json::parse(summary);
+  CHECK(s["sessions"] == 1);
+  CHECK(s["listen"] == port);
+}
+
+TEST_CASE("antkit record to a refused TCP port and with a bad spec", "[cli][devices]") {
+  const auto dir = scratch_dir("bad");
+  const auto bad = run_antkit("record --device khepera --port tcp:127.0.0.1:x --controller buffon "
+                              "--steps 5 --out " +
+                              (dir / "a.jsonl").string());
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("--port") != std::string::npos);
+  CHECK(!std::filesystem::exists(dir / "a.jsonl"));
+  const auto listen = run_antkit("emulate khepera --listen 127.0.0.1");
+  CHECK(listen.status == 2);
+  CHECK(listen.err.find("--listen") != std::string::npos);
+  const auto floor = run_antkit("emulate stc-floor --listen 127.0.0.1:0");
+  CHECK(floor.status == 2);
+}
+
+TEST_CASE("a second antkit record on a port a first one holds exits 2: port busy",
+          "[cli][devices]") {
+  const auto dir = scratch_dir("busy");
+  Child emu({"emulate", "khepera", "--arena", "circle:d=8"});
+  const std::string pty = emu.first_line();
+  REQUIRE(pty.rfind("/dev/pts/", 0) == 0);
+  const auto first_log = dir / "first.jsonl";
+  Child first({"record", "--device", "khepera", "--port", pty, "--controller", "buffon", "--steps",
+               "1000000000", "--out", first_log.string()});
+  // The first holds the port once it has written a step.
+  for (int i = 0; i < 3000 && lines_in(first_log) < 2; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  REQUIRE(lines_in(first_log) >= 2);
+
+  const auto second_log = dir / "second.jsonl";
+  const auto r = run_antkit("record --device khepera --port " + pty +
+                            " --controller buffon --steps 5 --out " + second_log.string());
+  INFO(r.err);
+  CHECK(r.status == 2);
+  CHECK(r.err.find("port busy") != std::string::npos);
+  CHECK(r.err.find("held by process " + std::to_string(first.pid())) != std::string::npos);
+  CHECK(!std::filesystem::exists(second_log));
+
+  // The first run goes on and stops cleanly on SIGINT.
+  const auto [status, out] = first.finish(SIGINT);
+  CHECK(status == 0);
+  emu.finish(SIGTERM);
+}
