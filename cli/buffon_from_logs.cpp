@@ -1,14 +1,49 @@
 // `antkit buffon-from-logs`: paper 000's measurement from two recorded visits (issue 13): what
 // section 7 counted by hand on the floor, from the robots' odometry (devices/odometry.hpp).
-//   antkit buffon-from-logs VISIT1 VISIT2 [--width W] [--format table|json]
-// JSON: {"robot", "diameter_m", "visit1": {"steps", "length"}, "visit2": {...}, "bc",
-// "crossings_exact", "area", "area_m2", "area_bc", "area_bc_m2"} (lengths in body diameters,
-// areas in body diameters squared and in square metres; an area is null when its count is 0).
+//   antkit buffon-from-logs VISIT1 VISIT2 [--width W] [--arena SPEC|FILE.wkt] [--format table|json]
+//
+// Refused with exit 2 and the offending file's FILE:1:COL (issue 26; devices/odometry.hpp): the
+// same file twice, two logs of one run (equal run hashes over equal step counts), a log whose
+// controller is not buffon, a visit-1 log as VISIT2 or a visit-2 log as VISIT1, logs of two robots,
+// headers naming two arenas, and an --arena other than the one the headers name.
+//
+// JSON (lengths in body diameters, areas in body diameters squared; *_m2 in square metres; an area
+// or interval end is null when the counts cannot give it):
+//   "robot", "diameter_m"      the robot and its body diameter, the unit of length
+//   "visit1", "visit2"         {"steps", "length", "truncated", "hash"}: records, trail length, a
+//                              log cut mid-line, the run hash (as record and replay print it)
+//   "width"                    the pheromone band of BC, body diameters
+//   "bc"                       the simulator's crossing detector along visit 2 over visit 1's band
+//   "crossings_exact"          N, the proper crossings of the two dead-reckoned centre lines
+//   "area", "area_m2"          the RAW closed form 2 L1 L2 / (pi N): the area the robot's centre
+//                              explores, below the arena's (kept under this name; = "area_raw")
+//   "area_bc", "area_bc_m2"    the same from BC, raw
+//   "area_raw", "area_raw_ci"  the raw closed form again, named as such, and the precision rule's
+//                              95 % interval of it ([lower, upper]), as `antkit buffon --precision`
+//                              reports "precision_ci"
+//   "area_corrected", "area_corrected_m2", "area_corrected_ci", "area_corrected_ci_m2"
+//                              THE ESTIMATE: the erosion-corrected area and interval, as `antkit
+//                              buffon --precision` reports them ("area_corrected", "_ci")
+//   "erosion_factor"           1 + kappa E / (L1 + L2), area_corrected / area_raw
+//   "wall_encounters"          E, from both visits' logged front readings
+//   "variance_visit1", "variance_visit2"  the interval's variance shares (0 when visit 2 is under
+//                              10 000 steps, the rule's first check: the interval is then Poisson)
+//   "arena"                    the arena's spec; null when neither the headers nor --arena name it
+//   "arena_source"             "logs" (both headers), "visit1" or "visit2" (one header), "--arena"
+//                              or null
+//   "area_true", "area_true_m2"  the arena's exact area (null without an arena); a relative WKT
+//                              path in a header is read from the current directory
+//   "relative_error"           (area_corrected - area_true) / area_true (null without an arena)
+//   "relative_error_raw"       (area_raw - area_true) / area_true, for comparison
+#include "buffon_options.hpp"
 #include "commands.hpp"
 #include "output.hpp"
 
 #include <antkit/devices/odometry.hpp>
+#include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
+#include <antkit/geometry/wkt.hpp>
+#include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <iostream>
 #include <memory>
@@ -21,24 +56,39 @@ using antkit::cli::Format;
 struct FromLogsCommand {
   std::string visit1, visit2;
   double width = 0.1;
+  std::string arena;
   Format format = Format::Table;
 };
 
 nlohmann::json visit_json(const devices::LoggedTrail& t) {
   return {{"steps", t.steps},
           {"length", static_cast<double>(t.length_raw) / 65536.0},
-          {"truncated", t.truncated}};
+          {"truncated", t.truncated},
+          {"hash", antkit::kernel::hash_hex(t.run_hash)}};
+}
+
+nlohmann::json maybe(const std::optional<double>& v, double scale = 1) {
+  return v ? nlohmann::json(*v * scale) : nlohmann::json(nullptr);
+}
+
+nlohmann::json interval(const devices::AreaInterval& ci, double scale = 1) {
+  return nlohmann::json::array({maybe(ci.lower, scale), maybe(ci.upper, scale)});
+}
+
+// A spec's exact area: a WKT file's polygon or a named spec's built arena (cli/buffon.cpp's rule).
+double arena_area(const std::string& spec, const std::string& where) {
+  return antkit::cli::is_wkt_path(spec)
+             ? antkit::geometry::read_wkt_file(spec).area()
+             : antkit::geometry::build_arena_spec(spec, where).arena.area();
 }
 
 void run(const FromLogsCommand& c) {
   if (!(c.width >= 0.01 && c.width <= 10))
     throw antkit::kernel::InputError("--width", "the trail width must be in [0.01, 10] units");
   const auto width = antkit::geometry::fixed_from_double<antkit::kernel::Fx>(c.width, "--width");
-  const auto r = devices::buffon_from_logs(c.visit1, c.visit2, width);
+  const auto r = devices::buffon_from_logs(c.visit1, c.visit2, width, {c.arena, &arena_area});
   const double m2 = r.diameter_m * r.diameter_m;
-  const auto area = [m2](const std::optional<double>& a, double scale) {
-    return a ? nlohmann::json(*a * scale) : nlohmann::json(nullptr);
-  };
+  const auto& e = r.estimate;
   nlohmann::json j;
   j["robot"] = r.visit1.robot;
   j["diameter_m"] = r.diameter_m;
@@ -47,22 +97,46 @@ void run(const FromLogsCommand& c) {
   j["width"] = c.width;
   j["bc"] = r.bc;
   j["crossings_exact"] = r.crossings_exact;
-  j["area"] = area(r.area, 1);
-  j["area_m2"] = area(r.area, m2);
-  j["area_bc"] = area(r.area_bc, 1);
-  j["area_bc_m2"] = area(r.area_bc, m2);
+  j["area"] = maybe(r.area);
+  j["area_m2"] = maybe(r.area, m2);
+  j["area_bc"] = maybe(r.area_bc);
+  j["area_bc_m2"] = maybe(r.area_bc, m2);
+  j["area_raw"] = maybe(e.area_raw);
+  j["area_raw_ci"] = interval(e.raw_ci);
+  j["area_corrected"] = maybe(e.area_corrected);
+  j["area_corrected_m2"] = maybe(e.area_corrected, m2);
+  j["area_corrected_ci"] = interval(e.corrected_ci);
+  j["area_corrected_ci_m2"] = interval(e.corrected_ci, m2);
+  j["erosion_factor"] = e.erosion_factor;
+  j["wall_encounters"] = r.wall_encounters;
+  j["variance_visit1"] = r.variance_visit1;
+  j["variance_visit2"] = r.variance_visit2;
+  j["arena"] = r.arena.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.arena);
+  j["arena_source"] = r.arena.empty() ? nlohmann::json(nullptr)
+                                      : nlohmann::json(devices::arena_source_name(r.arena_source));
+  j["area_true"] = maybe(r.area_true);
+  j["area_true_m2"] = maybe(r.area_true, m2);
+  j["relative_error"] = maybe(r.relative_error);
+  j["relative_error_raw"] = maybe(r.relative_error_raw);
   antkit::cli::emit(j, c.format, std::cout);
 }
 
 void register_from_logs(CLI::App& app) {
   auto c = std::make_shared<FromLogsCommand>();
   auto* sub = app.add_subcommand(
-      "buffon-from-logs", "Buffon's measurement (paper 000) from two recorded visits' odometry: "
-                          "BC, the exact crossing count and the area estimate");
-  sub->add_option("visit1", c->visit1, "The log of visit 1 (antkit record ... --visit 1)")
+      "buffon-from-logs",
+      "Buffon's measurement (paper 000) from two recorded visits' odometry: the erosion-corrected "
+      "area with its 95 % interval (as antkit buffon --precision), the raw closed form, BC and the "
+      "exact crossing count");
+  sub->add_option("visit1", c->visit1,
+                  "The log of visit 1 (antkit record --controller buffon "
+                  "--visit 1)")
       ->required();
-  sub->add_option("visit2", c->visit2, "The log of visit 2")->required();
+  sub->add_option("visit2", c->visit2, "The log of visit 2 (--visit 2)")->required();
   sub->add_option("--width", c->width, "Pheromone band width in body diameters (default 0.1)");
+  sub->add_option("--arena", c->arena,
+                  "The arena (named spec or FILE.wkt) when the logs' headers do not name it: its "
+                  "true area and the estimate's relative error are reported");
   antkit::cli::add_format_option(*sub, c->format);
   sub->callback([c] { run(*c); });
 }

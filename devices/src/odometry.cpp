@@ -2,12 +2,19 @@
 // (odometry.hpp).
 #include <algorithm>
 #include <antkit/buffon/checkpoints.hpp>
+#include <antkit/buffon/crossing_counter.hpp>
 #include <antkit/buffon/detector.hpp>
 #include <antkit/buffon/estimate.hpp>
 #include <antkit/buffon/measurement.hpp>
+#include <antkit/buffon/stopping.hpp>
 #include <antkit/devices/odometry.hpp>
+#include <antkit/devices/run_hash.hpp>
+#include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/kernel/segment.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
 
 namespace antkit::devices {
 
@@ -73,44 +80,194 @@ void DeadReckoning::update(WheelTravel total) {
   last_ = total;
 }
 
-LoggedTrail trail_from_log(const std::string& path) {
-  LogReader reader(path);
+namespace {
+
+// The records of an open log: the trail, the run hash and, with `walls`, the wall encounters of
+// its observations (a buffon log's six front readings, the ones the behaviour acted on at each
+// step: what the simulator's WallEncounters observes, measurement.hpp).
+LoggedTrail read_trail(LogReader& reader, const std::string& path, buffon::WallEncounters* walls) {
   const auto kind = parse_robot(reader.header().robot);
   if (!kind) throw InputError(path, 1, 1, "unknown robot '" + reader.header().robot + "'");
   LoggedTrail out;
   out.robot = reader.header().robot;
   std::optional<DeadReckoning> dr;
+  RunHash run;
   LogRecord r;
   while (reader.next(r)) {
     if (r.odo.size() != 2)
       throw InputError(path, reader.line(), 1,
                        "a step record without odometry: a trail needs \"odo\" with the two wheels' "
                        "travel");
+    if (walls) {
+      if (r.obs.size() != 6)
+        throw InputError(path, reader.line(), 1,
+                         "a buffon step record needs \"obs\" with the six front readings");
+      buffon::Observation o;
+      for (std::size_t i = 0; i < 6; ++i) {
+        if (r.obs[i] < 0 || r.obs[i] > Fx::one_raw)
+          throw InputError(path, reader.line(), 1,
+                           "a reading must be in [0, 65536] (raw Q15.16 of [0, 1])");
+        o.ir[i] = Fx::from_raw(static_cast<std::int32_t>(r.obs[i]));
+      }
+      walls->observe(o);
+    }
+    run.add(r.step, r.obs, r.cmd, r.state);
     const WheelTravel w{r.odo[0], r.odo[1]};
     if (!dr) {
       dr.emplace(describe(*kind), w);
-      out.points.push_back(dr->position());
     } else {
       dr->update(w);
-      out.points.push_back(dr->position());
     }
+    out.points.push_back(dr->position());
     ++out.steps;
   }
   if (out.points.empty())
     throw InputError(path, reader.line() + 1, 1, "the log has no step records");
   out.length_raw = dr->length_raw();
   out.truncated = reader.truncated();
+  out.run_hash = run.value();
   return out;
 }
 
-BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& visit2, Fx width) {
-  BuffonFromLogs out;
-  out.visit1 = trail_from_log(visit1);
-  out.visit2 = trail_from_log(visit2);
-  if (out.visit1.robot != out.visit2.robot)
+// The column (from 1) of "key" in a log's header line, so that a refusal points at the field it
+// is about; 1 when it is not there.
+std::size_t header_column(const std::string& path, const std::string& key) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::getline(in, line);
+  const auto at = line.find('"' + key + '"');
+  return at == std::string::npos ? 1 : at + 1;
+}
+
+// A Buffon visit's log: controller buffon, and the visit its header says (`expected`).
+void check_visit_header(const std::string& path, const LogHeader& h, std::int64_t expected) {
+  if (h.controller != "buffon") {
+    std::string msg = "controller '" + h.controller +
+                      "' is not a Buffon visit: buffon-from-logs measures from the logs of visits "
+                      "1 and 2 of controller buffon (antkit record --controller buffon --visit 1, "
+                      "then --visit 2)";
+    if (h.controller == "rs") msg += "; an rs walk is measured by antkit rs-from-log";
+    throw InputError(path, 1, header_column(path, "controller"), msg);
+  }
+  const auto it = std::find_if(h.params.begin(), h.params.end(),
+                               [](const auto& p) { return p.first == "visit"; });
+  if (it == h.params.end())
+    throw InputError(path, 1, header_column(path, "params"),
+                     "the buffon controller's params have no \"visit\": which visit this log "
+                     "recorded is unknown");
+  if (it->second != expected) {
+    const std::string is = std::to_string(it->second), want = std::to_string(expected);
+    throw InputError(path, 1, header_column(path, "visit"),
+                     "a visit-" + is + " log (its header says \"visit\":" + is +
+                         ") given as VISIT" + want + ": the " +
+                         (expected == 1 ? "first" : "second") + " argument is the log of visit " +
+                         want + " (antkit record ... --visit " + want + ")");
+  }
+}
+
+} // namespace
+
+LoggedTrail trail_from_log(const std::string& path) {
+  LogReader reader(path);
+  return read_trail(reader, path, nullptr);
+}
+
+BuffonEstimate estimate_area(const BuffonCounts& c) {
+  // cli/buffon.cpp's per-trial report under --precision, term by term (two visits: pair_share 1).
+  const double l1 = static_cast<double>(c.length1_raw) / 65536.0;
+  const double l2 = static_cast<double>(c.length2_raw) / 65536.0;
+  const auto cf = buffon::closed_form_area(l1, l2, c.crossings);
+  BuffonEstimate out;
+  out.area_raw = cf.area;
+  const double n = static_cast<double>(c.crossings);
+  const double v = std::max(c.variance_visit1 + c.variance_visit2, n);
+  const double z2 = static_cast<double>(buffon::PrecisionMonitor::kZSquaredMilli) / 1000.0;
+  const double half = std::sqrt(z2 * v);
+  if (cf.area && n > 0) out.raw_ci.lower = *cf.area * n / (n + half);
+  if (cf.area && n > half) out.raw_ci.upper = *cf.area * n / (n - half);
+  out.erosion_factor = buffon::erosion_factor(c.wall_encounters, l1 + l2);
+  const auto scale = [f = out.erosion_factor](const std::optional<double>& a) {
+    return a ? std::optional<double>(*a * f) : std::nullopt;
+  };
+  out.area_corrected = scale(cf.area);
+  out.corrected_ci = {scale(out.raw_ci.lower), scale(out.raw_ci.upper)};
+  return out;
+}
+
+std::string_view arena_source_name(ArenaSource source) noexcept {
+  switch (source) {
+  case ArenaSource::logs:
+    return "logs";
+  case ArenaSource::visit1:
+    return "visit1";
+  case ArenaSource::visit2:
+    return "visit2";
+  case ArenaSource::option:
+    return "--arena";
+  case ArenaSource::none:
+    break;
+  }
+  return "";
+}
+
+BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& visit2, Fx width,
+                                const TrueArena& arena) {
+  // One file named twice (also through a link or another path to it).
+  std::error_code ec;
+  if (std::filesystem::equivalent(visit1, visit2, ec) && !ec)
     throw InputError(visit2, 1, 1,
+                     "the same file as VISIT1 (" + visit1 +
+                         "): a Buffon measurement needs the logs of two visits");
+  LogReader reader1(visit1), reader2(visit2);
+  const LogHeader h1 = reader1.header(), h2 = reader2.header();
+  // Another controller's walk is not a Buffon visit (rs walks the visit-3 stream for as long as
+  // both visits together; wander is another behaviour): refused by its header, before its records
+  // are read, so that the message says what the log is rather than what its records lack.
+  if (h1.controller != "buffon") check_visit_header(visit1, h1, 1);
+  if (h2.controller != "buffon") check_visit_header(visit2, h2, 2);
+
+  BuffonFromLogs out;
+  // One counter over both visits in order, as run_trial observes them (its hysteresis carries
+  // from the end of visit 1 into visit 2).
+  buffon::WallEncounters walls;
+  out.visit1 = read_trail(reader1, visit1, &walls);
+  out.visit2 = read_trail(reader2, visit2, &walls);
+  out.wall_encounters = walls.count();
+  // Two logs of one run: the run hash folds every record's step, observation, command and
+  // controller state, so equal hashes over equal step counts are the same walk (a copy, perhaps
+  // with an edited header). Checked before the visits so that a copy is called what it is.
+  if (out.visit1.steps == out.visit2.steps && out.visit1.run_hash == out.visit2.run_hash)
+    throw InputError(visit2, 1, 1,
+                     "the same run as VISIT1 (" + visit1 + "): both logs have run hash " +
+                         kernel::hash_hex(out.visit1.run_hash) + " over " +
+                         std::to_string(out.visit1.steps) +
+                         " steps; two copies of one run are not two visits");
+  check_visit_header(visit1, h1, 1);
+  check_visit_header(visit2, h2, 2);
+  if (out.visit1.robot != out.visit2.robot)
+    throw InputError(visit2, 1, header_column(visit2, "robot"),
                      "robot '" + out.visit2.robot + "' but visit 1 was recorded on '" +
                          out.visit1.robot + "'");
+
+  // The arena: the headers', which must agree with each other and with arena.spec.
+  if (!h1.arena.empty() && !h2.arena.empty() && h1.arena != h2.arena)
+    throw InputError(visit2, 1, header_column(visit2, "arena"),
+                     "arena '" + h2.arena + "' but visit 1 was recorded in '" + h1.arena +
+                         "': both visits of one measurement walk the same arena");
+  if (!h1.arena.empty()) {
+    out.arena = h1.arena;
+    out.arena_source = h2.arena.empty() ? ArenaSource::visit1 : ArenaSource::logs;
+  } else if (!h2.arena.empty()) {
+    out.arena = h2.arena;
+    out.arena_source = ArenaSource::visit2;
+  }
+  if (!arena.spec.empty()) {
+    if (!out.arena.empty() && arena.spec != out.arena)
+      throw InputError("--arena",
+                       "'" + arena.spec + "' but the logs' headers name arena '" + out.arena + "'");
+    if (out.arena.empty()) out.arena = arena.spec, out.arena_source = ArenaSource::option;
+  }
+
   const auto& robot = describe(*parse_robot(out.visit1.robot));
   out.diameter_m = static_cast<double>(robot.diameter_um) / 1e6;
   // The band of visit 1 over the bounding box of both trails (and the band's half width).
@@ -128,11 +285,43 @@ BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& vi
   buffon::CrossingDetector detector;
   for (const auto& p : out.visit2.points)
     if (detector.update(raster.at(p))) ++out.bc;
-  out.crossings_exact = kernel::count_proper_crossings(out.visit1.points, out.visit2.points);
+  // Visit 2's exact crossings step by step into the precision rule's monitor, as run_trial feeds
+  // it, for the variance shares at its last check. Its precision only decides when it would have
+  // stopped, which a logged visit did not: any valid value gives the same shares.
+  const auto& p1 = out.visit1.points;
+  buffon::PrecisionMonitor monitor(buffon::kPrecisionDenominator / 10, p1.size() - 1);
+  buffon::CrossingCounter counter(p1);
+  std::vector<std::uint32_t> crossed;
+  const auto& p2 = out.visit2.points;
+  for (std::size_t i = 1; i < p2.size(); ++i) {
+    crossed.clear();
+    if (p1.size() >= 2) counter.add(p2[i - 1], p2[i], &crossed);
+    for (const std::uint32_t segment : crossed) monitor.crossing(segment);
+    monitor.end_step();
+  }
+  out.crossings_exact = monitor.count(); // = count_proper_crossings (tests/convergence)
+  out.variance_visit1 = monitor.spread().visit1;
+  out.variance_visit2 = monitor.spread().visit2;
   const double l1 = static_cast<double>(out.visit1.length_raw) / 65536.0;
   const double l2 = static_cast<double>(out.visit2.length_raw) / 65536.0;
   out.area = buffon::closed_form_area(l1, l2, out.crossings_exact).area;
   out.area_bc = buffon::closed_form_area(l1, l2, out.bc).area;
+  out.estimate = estimate_area({out.visit1.length_raw, out.visit2.length_raw, out.crossings_exact,
+                                out.variance_visit1, out.variance_visit2, out.wall_encounters});
+
+  if (!out.arena.empty() && arena.area_of) {
+    const std::string where =
+        out.arena_source == ArenaSource::option
+            ? std::string("--arena")
+            : (out.arena_source == ArenaSource::visit2 ? visit2 : visit1) + " (header \"arena\")";
+    const double truth = arena.area_of(out.arena, where);
+    out.area_true = truth;
+    const auto error = [truth](const std::optional<double>& a) {
+      return a && truth > 0 ? std::optional<double>((*a - truth) / truth) : std::nullopt;
+    };
+    out.relative_error = error(out.estimate.area_corrected);
+    out.relative_error_raw = error(out.estimate.area_raw);
+  }
   return out;
 }
 

@@ -16,15 +16,21 @@
 // centre-line trails (kernel::count_proper_crossings), and BC, the crossing detector of the
 // simulator (detector.hpp) run along visit 2 over visit 1's pheromone band of width w
 // (PheromoneRaster), both in the common frame of the two logs (both visits start at the same pose,
-// as in paper 000 section 4.1). A_hat = 2 L1 L2 / (pi N); the BC form 2 L1 L2 / (pi BC).
+// as in paper 000 section 4.1). A_hat = 2 L1 L2 / (pi N); the BC form 2 L1 L2 / (pi BC). A_hat
+// estimates the area the robot's centre explores, smaller than the arena (estimate.hpp; issue 26
+// measured it 14 % low on a circle of diameter 20); the estimate to report is the erosion-corrected
+// one, from the wall encounters in the logged front readings, with the precision rule's interval,
+// exactly as `antkit buffon --precision` reports a simulated trial (estimate_area below).
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/robot.hpp>
 #include <antkit/kernel/angle.hpp>
 #include <antkit/kernel/fixed.hpp>
 #include <antkit/kernel/segment.hpp>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace antkit::devices {
@@ -68,28 +74,87 @@ private:
 
 // The trail of a logged run: the start, then the position after every step record's odometry.
 // Throws kernel::InputError(path, line, column, ...) for a log without odometry, or with records
-// whose odometry is not two values.
+// whose odometry is not two values. run_hash is the RunHash of the records (run_hash.hpp): the hash
+// `antkit record` and `replay` print for the run.
 struct LoggedTrail {
   std::string robot;
   std::vector<kernel::FxPoint> points;
   std::int64_t length_raw = 0;
   std::uint64_t steps = 0;
   bool truncated = false;
+  std::uint64_t run_hash = 0;
 };
 LoggedTrail trail_from_log(const std::string& path);
+
+// The closed form with the precision rule's interval and the erosion correction, from a Buffon
+// measurement's counts: what `antkit buffon --precision` reports per trial ("area_closed_form",
+// "precision_ci", "area_corrected", "area_corrected_ci"), as a typed function so that the logged
+// measurement reports the same numbers by the same arithmetic (estimate.hpp: closed_form_area,
+// erosion_factor; stopping.hpp: the interval A_hat N / (N +/- z sqrt V), V = max(V1 + V2, N),
+// z^2 = PrecisionMonitor::kZSquaredMilli / 1000). Reporting side: double (DESIGN.md, rule 1).
+struct BuffonCounts {
+  std::int64_t length1_raw = 0, length2_raw = 0;   // the two trails, raw Q15.16 body diameters
+  std::uint64_t crossings = 0;                     // N: exact proper crossings of the trails
+  double variance_visit1 = 0, variance_visit2 = 0; // PrecisionMonitor::spread() (0: no check)
+  std::uint64_t wall_encounters = 0;               // buffon::WallEncounters over both visits
+};
+struct AreaInterval {
+  std::optional<double> lower, upper; // absent where N cannot bound it (N = 0; N <= z sqrt V)
+};
+struct BuffonEstimate {
+  std::optional<double> area_raw;       // 2 L1 L2 / (pi N): the area the centre explores (eroded)
+  AreaInterval raw_ci;                  // the precision rule's 95 % interval of area_raw
+  double erosion_factor = 1;            // 1 + kappa E / (L1 + L2)
+  std::optional<double> area_corrected; // area_raw * erosion_factor: the arena's area
+  AreaInterval corrected_ci;            // raw_ci * erosion_factor
+};
+BuffonEstimate estimate_area(const BuffonCounts& counts);
+
+// The arena a measurement took place in, for its true area. The logs' headers may name it
+// (LogHeader::arena, written by `record --arena`); `spec` supplies it when they do not (`--arena`),
+// and must agree with them when they do. area_of gives a spec's exact area in body diameters
+// squared (a named spec or a WKT file; the caller's geometry: this library does not link the CGAL
+// arenas, so the CLI passes geometry's builder); `where` names the spec's origin for its error
+// messages. Without area_of the spec is still checked and reported, and the true area is absent.
+struct TrueArena {
+  std::string spec; // "" unless given
+  std::function<double(const std::string& spec, const std::string& where)> area_of;
+};
+enum class ArenaSource { none, logs, visit1, visit2, option };
+std::string_view arena_source_name(ArenaSource source) noexcept; // "", "logs", "visit1", ...
 
 struct BuffonFromLogs {
   LoggedTrail visit1, visit2;
   std::uint64_t bc = 0;              // the simulator's detector along visit 2 over visit 1's band
   std::uint64_t crossings_exact = 0; // proper crossings of the two centre lines
-  std::optional<double> area;        // body diameters squared, from the exact count
-  std::optional<double> area_bc;     // from BC
+  std::optional<double> area;        // body diameters squared, from the exact count: RAW (eroded)
+  std::optional<double> area_bc;     // from BC, raw
   double diameter_m = 0;             // the unit of length, metres
+  // The precision rule's variance shares (visit 2 fed to a PrecisionMonitor step by step, as the
+  // simulator does; both 0 when visit 2 is shorter than one check, 10 000 steps: the interval is
+  // then the Poisson floor V = N) and the wall encounters of both visits' logged readings.
+  double variance_visit1 = 0, variance_visit2 = 0;
+  std::uint64_t wall_encounters = 0;
+  BuffonEstimate estimate; // area_raw == area; area_corrected is the one to report
+  std::string arena;       // the arena's spec ("" when unknown)
+  ArenaSource arena_source = ArenaSource::none;
+  std::optional<double> area_true;          // with an arena and area_of
+  std::optional<double> relative_error;     // (area_corrected - area_true) / area_true
+  std::optional<double> relative_error_raw; // (area_raw - area_true) / area_true
 };
-// width: the pheromone band (body diameters; paper 000's default 0.1). Throws kernel::InputError
-// when the two logs are of different robots or either has no odometry.
+// width: the pheromone band (body diameters; paper 000's default 0.1). Refuses, with
+// kernel::InputError at the offending file's header (FILE:1:COL, the column of the key):
+//  * the same file given twice (same inode), and two logs of one run: equal run hashes over equal
+//    step counts (the records' steps, observations, commands and controller states are the same,
+//    so the two trails are one walk and their crossings are not Buffon's; a copy with an edited
+//    header is caught too);
+//  * a log whose controller is not `buffon` (rs and wander walks are not Buffon visits);
+//  * a visit-1 log given as visit 2 or a visit-2 log as visit 1 (the header's params "visit");
+//  * logs of different robots, or headers naming different arenas (or an arena other than
+//    arena.spec, which is then refused at "--arena");
+//  * a log without odometry, or with a buffon observation that is not six readings in [0, 1].
 BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& visit2,
-                                kernel::Fx width);
+                                kernel::Fx width, const TrueArena& arena = {});
 
 // The Randomized Search baseline (paper 000 section 8.1) from one logged walk (controller `rs`):
 // the area the body covered along the dead-reckoned trail (buffon::rs_footprint: cells of side 0.1

@@ -1,0 +1,231 @@
+// `antkit buffon-from-logs` as the real executable (issue 26): visits recorded by `antkit record`
+// against `antkit emulate` over a pty; each refusal exits 2 with the file and the reason, and a
+// measurement exits 0 with the erosion-corrected area and its interval beside the raw one.
+#include "run_antkit.hpp"
+
+#include <catch2/catch.hpp>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+using antkit::test::run_antkit;
+
+namespace {
+
+std::filesystem::path scratch_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("antkit-bfl-cli-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// `antkit emulate ARGS` in a child process; the pty path is its first line of output.
+class Emulator {
+public:
+  explicit Emulator(const std::vector<std::string>& args) {
+    int fds[2];
+    REQUIRE(::pipe(fds) == 0);
+    pid_ = ::fork();
+    REQUIRE(pid_ >= 0);
+    if (pid_ == 0) {
+      ::dup2(fds[1], STDOUT_FILENO);
+      ::close(fds[0]);
+      ::close(fds[1]);
+      std::vector<std::string> all{ANTKIT_EXE, "emulate"};
+      all.insert(all.end(), args.begin(), args.end());
+      std::vector<char*> argv;
+      for (auto& a : all) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      ::execv(ANTKIT_EXE, argv.data());
+      ::_exit(127);
+    }
+    ::close(fds[1]);
+    out_ = ::fdopen(fds[0], "r");
+    char line[256] = {};
+    REQUIRE(std::fgets(line, sizeof line, out_) != nullptr);
+    path_ = line;
+    while (!path_.empty() && (path_.back() == '\n' || path_.back() == '\r')) path_.pop_back();
+  }
+  Emulator(const Emulator&) = delete;
+  Emulator& operator=(const Emulator&) = delete;
+  ~Emulator() {
+    ::kill(pid_, SIGTERM);
+    char buf[512];
+    while (std::fread(buf, 1, sizeof buf, out_) > 0) {
+    }
+    std::fclose(out_);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+  }
+  [[nodiscard]] const std::string& port() const noexcept { return path_; }
+
+private:
+  pid_t pid_ = -1;
+  FILE* out_ = nullptr;
+  std::string path_;
+};
+
+std::vector<std::string> lines_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  return lines;
+}
+
+void write_lines(const std::string& path, const std::vector<std::string>& lines) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  for (const auto& l : lines) out << l << '\n';
+}
+
+// `antkit record` of one run on `emu` into `out`.
+void record(const Emulator& emu, const std::string& device, const std::string& controller_args,
+            int steps, const std::string& out) {
+  const auto r =
+      run_antkit("record --device " + device + " --port " + emu.port() + " " + controller_args +
+                 " --steps " + std::to_string(steps) + " --out " + out + " --format json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+}
+
+// The header as `antkit record --arena SPEC` writes it (LogHeader::arena, the last key).
+void name_arena(const std::string& path, const std::string& spec) {
+  auto lines = lines_of(path);
+  REQUIRE(!lines.empty());
+  lines[0].pop_back();
+  lines[0] += ",\"arena\":\"" + spec + "\"}";
+  write_lines(path, lines);
+}
+
+void check_refused(const std::string& args, const std::string& where, const std::string& why) {
+  const auto r = run_antkit("buffon-from-logs " + args + " --format json");
+  INFO(args);
+  INFO(r.err);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err.find("antkit: error: " + where) != std::string::npos);
+  CHECK(r.err.find(why) != std::string::npos);
+}
+
+} // namespace
+
+TEST_CASE("antkit buffon-from-logs: refusals exit 2 with the file and why, a measurement exits 0 "
+          "with the corrected area and its interval",
+          "[cli][devices][buffon-from-logs]") {
+  const auto dir = scratch_dir("main");
+  const auto path = [&dir](const std::string& name) { return (dir / name).string(); };
+  const auto v1 = path("v1.jsonl"), v2 = path("v2.jsonl"), rs = path("rs.jsonl");
+  const auto other1 = path("other-v1.jsonl"), puck2 = path("epuck-v2.jsonl");
+  // An emulator per run, all with one seed: each run starts at the arena's start pose (one emulator
+  // for runs in turn may serve a run that opens before it saw the last one close as the same
+  // session, starting it where the last one ended).
+  const auto run = [](const std::string& device, const std::string& controller_args, int steps,
+                      const std::string& out) {
+    Emulator emu({device, "--arena", "circle:d=8", "--seed", "5"});
+    record(emu, device, controller_args, steps, out);
+  };
+  run("khepera", "--controller buffon --visit 1", 1500, v1);
+  run("khepera", "--controller buffon --visit 2", 1500, v2);
+  run("khepera", "--controller rs", 100, rs);
+  run("khepera", "--controller buffon --visit 1 --seed 9", 100, other1);
+  run("epuck", "--controller buffon --visit 2", 100, puck2);
+
+  SECTION("refusals") {
+    check_refused(v1 + " " + v1, v1 + ":1:1:", "the same file as VISIT1");
+    const auto copy = path("copy.jsonl");
+    std::filesystem::copy_file(v1, copy, std::filesystem::copy_options::overwrite_existing);
+    check_refused(v1 + " " + copy, copy + ":1:1:", "two copies of one run");
+    check_refused(v1 + " " + rs, rs + ":1:", "controller 'rs' is not a Buffon visit");
+    check_refused(rs + " " + v2, rs + ":1:", "controller 'rs' is not a Buffon visit");
+    check_refused(v2 + " " + v1, v2 + ":1:",
+                  "a visit-2 log (its header says \"visit\":2) given as "
+                  "VISIT1");
+    check_refused(v1 + " " + other1, other1 + ":1:",
+                  "a visit-1 log (its header says \"visit\":1) "
+                  "given as VISIT2");
+    check_refused(v1 + " " + puck2, puck2 + ":1:",
+                  "robot 'epuck' but visit 1 was recorded on "
+                  "'khepera'");
+    const auto a1 = path("a1.jsonl"), a2 = path("a2.jsonl");
+    std::filesystem::copy_file(v1, a1, std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::copy_file(v2, a2, std::filesystem::copy_options::overwrite_existing);
+    name_arena(a1, "circle:d=8");
+    name_arena(a2, "square:area=50");
+    check_refused(a1 + " " + a2, a2 + ":1:",
+                  "arena 'square:area=50' but visit 1 was recorded in "
+                  "'circle:d=8'");
+    std::filesystem::copy_file(v2, a2, std::filesystem::copy_options::overwrite_existing);
+    name_arena(a2, "circle:d=8");
+    check_refused(a1 + " " + a2 + " --arena circle:d=20",
+                  "--arena:", "'circle:d=20' but the logs' headers name arena 'circle:d=8'");
+    check_refused(v1 + " " + v2 + " --arena circle:d=0", "--arena:", "");
+  }
+
+  SECTION("the measurement: corrected area and interval, the raw one beside it") {
+    const auto r = run_antkit("buffon-from-logs " + v1 + " " + v2 + " --format json");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    // The keys of issue 13 stay (test_devices_cli.cpp reads them).
+    for (const char* key : {"robot", "diameter_m", "visit1", "visit2", "width", "bc",
+                            "crossings_exact", "area", "area_m2", "area_bc", "area_bc_m2"})
+      CHECK(j.contains(key));
+    CHECK(j["visit1"]["steps"] == 1500);
+    CHECK(j["visit1"]["hash"].get<std::string>().size() == 16);
+    REQUIRE(j["area_corrected"].is_number());
+    REQUIRE(j["area_raw"].is_number());
+    CHECK(j["area_raw"] == j["area"]);
+    CHECK(j["area_corrected"].get<double>() ==
+          j["area_raw"].get<double>() * j["erosion_factor"].get<double>());
+    CHECK(j["erosion_factor"].get<double>() > 1);
+    CHECK(j["wall_encounters"].get<int>() > 0);
+    REQUIRE(j["area_corrected_ci"].size() == 2);
+    CHECK(j["area_corrected_ci"][0].get<double>() < j["area_corrected"].get<double>());
+    CHECK(j["area_corrected_ci"][1].get<double>() > j["area_corrected"].get<double>());
+    CHECK(j["area_raw_ci"][0].get<double>() < j["area_raw"].get<double>());
+    CHECK(j["area_corrected_m2"].is_number());
+    CHECK(j["arena"].is_null());
+    CHECK(j["arena_source"].is_null());
+    CHECK(j["area_true"].is_null());
+    CHECK(j["relative_error"].is_null());
+
+    // --arena supplies the true area when the headers do not name it.
+    const auto k = nlohmann::json::parse(
+        run_antkit("buffon-from-logs " + v1 + " " + v2 + " --arena circle:d=8 --format json").out);
+    CHECK(k["arena"] == "circle:d=8");
+    CHECK(k["arena_source"] == "--arena");
+    REQUIRE(k["area_true"].is_number());
+    CHECK(k["area_true"].get<double>() == Approx(3.14159265 * 16).epsilon(0.01));
+    CHECK(k["relative_error"].get<double>() ==
+          (k["area_corrected"].get<double>() - k["area_true"].get<double>()) /
+              k["area_true"].get<double>());
+    CHECK(k["area_corrected"] == j["area_corrected"]);
+
+    // Headers that name the arena: the same, from the logs.
+    const auto a1 = path("n1.jsonl"), a2 = path("n2.jsonl");
+    std::filesystem::copy_file(v1, a1, std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::copy_file(v2, a2, std::filesystem::copy_options::overwrite_existing);
+    name_arena(a1, "circle:d=8");
+    name_arena(a2, "circle:d=8");
+    const auto h = run_antkit("buffon-from-logs " + a1 + " " + a2 + " --format json");
+    REQUIRE(h.status == 0);
+    const auto n = nlohmann::json::parse(h.out);
+    CHECK(n["arena_source"] == "logs");
+    CHECK(n["area_true"] == k["area_true"]);
+    CHECK(n["relative_error"] == k["relative_error"]);
+
+    // The table, for people: the corrected area, its interval, and the raw one, each named.
+    const auto t = run_antkit("buffon-from-logs " + a1 + " " + a2);
+    REQUIRE(t.status == 0);
+    for (const char* word : {"area_corrected", "area_corrected_ci", "area_raw", "area_true",
+                             "relative_error", "circle:d=8"})
+      CHECK(t.out.find(word) != std::string::npos);
+  }
+  std::filesystem::remove_all(dir);
+}
