@@ -58,12 +58,6 @@ std::string printable(std::string_view bytes) {
   return out;
 }
 
-std::chrono::milliseconds watchdog_of(const LinkOptions& o) noexcept {
-  if (o.watchdog.count() > 0) return o.watchdog;
-  return std::max<std::uint32_t>(1, o.tries) * (o.timeout + std::max(o.backoff, o.backoff_max)) +
-         o.timeout;
-}
-
 ReplyKind classify_reply(const Codec& codec, std::string_view command, std::string_view line) {
   if (command.empty()) return ReplyKind::Bad;
   if (!line.empty() && line[0] == lower(command[0]))
@@ -103,7 +97,7 @@ std::string RobotLink::transact(const std::string& command, std::vector<Exchange
     }
     const auto silent =
         std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - last_ok_);
-    if (silent > watchdog_of(options_))
+    if (options_.watchdog.count() > 0 && silent > options_.watchdog)
       throw LinkError(LinkError::Kind::Timeout,
                       port_.name() + ": watchdog: no valid reply for " +
                           std::to_string(silent.count()) + " ms" +

@@ -177,8 +177,8 @@ TEST_CASE("late replies are dropped as stale, never taken for a later command's 
 TEST_CASE("a long run through drops, garbage, cut and late replies at once, by default",
           "[devices][slow]") {
   // The defaults' arithmetic (link.hpp): 5 % of replies dropped, 5 % garbled and 5 % cut at once,
-  // and replies three timeouts late, with the library's default tries and back-off. 20 000 steps
-  // (60 000 commands) at a 20 ms timeout, so that the test ends in minutes: each drop and cut costs
+  // and replies three timeouts late, with the library's default tries and back-off. 10 000 steps
+  // (30 000 commands) at a 20 ms timeout, so that the test ends in minutes: each drop and cut costs
   // a whole timeout. The 100 000-step claim is the same arithmetic over the per-send failure rate
   // this run measures, which must be the faults' 1 - 0.95^3 = 0.143 (a loaded machine adds a few
   // timeouts of its own, hence the upper margin).
@@ -191,14 +191,14 @@ TEST_CASE("a long run through drops, garbage, cut and late replies at once, by d
   o.port = emu.port();
   o.line = devices::describe(RobotKind::Khepera).line;
   o.controller = devices::make_spec("buffon", 3, {}, "test");
-  o.steps = 20000;
+  o.steps = 10000;
   o.out = log;
   o.link.timeout = std::chrono::milliseconds(20);
   const auto s = devices::record(o);
   emu.stop();
   INFO(s.stop);
   CHECK(s.succeeded());
-  CHECK(s.steps == 20000);
+  CHECK(s.steps == 10000);
   const double failed = static_cast<double>(s.link.retries) / static_cast<double>(s.link.exchanges);
   CAPTURE(s.link.retries, s.link.exchanges, s.link.stale, failed);
   CHECK(failed > 0.12);
@@ -206,7 +206,7 @@ TEST_CASE("a long run through drops, garbage, cut and late replies at once, by d
   CHECK(s.link.stale > 0);
   const auto r = devices::replay(log);
   CHECK(r.identical);
-  CHECK(r.steps == 20000);
+  CHECK(r.steps == 10000);
   CHECK(r.hash == s.hash);
 }
 
