@@ -342,8 +342,10 @@ SerialPort SerialPort::open(const std::string& path, const LineSettings& setting
   if (::tcgetattr(fd, &t) != 0)
     throw InputError("--port",
                      "'" + path + "' is not a serial port or terminal: " + std::strerror(errno));
-  lock_port(fd, path);   // before any setting changes: a held port is left as its holder set it
-  ::ioctl(fd, TIOCEXCL); // other processes may not open it while we drive the robot
+  lock_port(fd, path); // before any setting changes: a held port is left as its holder set it
+  // Other processes may not open it while we drive the robot; close() clears it again (a pty
+  // keeps the flag after its last close while the master is open).
+  port.exclusive_ = ::ioctl(fd, TIOCEXCL) == 0;
   ::cfmakeraw(&t);
   t.c_cflag &= ~static_cast<tcflag_t>(CSIZE | CSTOPB | PARENB | PARODD | CRTSCTS);
   t.c_cflag |= CLOCAL | CREAD;
@@ -375,7 +377,8 @@ SerialPort::SerialPort(int fd, std::string name, std::size_t max_line)
 
 SerialPort::SerialPort(SerialPort&& o) noexcept
     : fd_(std::exchange(o.fd_, -1)), name_(std::move(o.name_)), max_line_(o.max_line_),
-      buffer_(std::move(o.buffer_)), discarding_(o.discarding_), socket_(o.socket_) {}
+      buffer_(std::move(o.buffer_)), discarding_(o.discarding_), socket_(o.socket_),
+      exclusive_(std::exchange(o.exclusive_, false)) {}
 
 SerialPort& SerialPort::operator=(SerialPort&& o) noexcept {
   if (this != &o) {
@@ -386,6 +389,7 @@ SerialPort& SerialPort::operator=(SerialPort&& o) noexcept {
     buffer_ = std::move(o.buffer_);
     discarding_ = o.discarding_;
     socket_ = o.socket_;
+    exclusive_ = std::exchange(o.exclusive_, false);
   }
   return *this;
 }
@@ -395,6 +399,8 @@ SerialPort::~SerialPort() {
 }
 
 void SerialPort::close() noexcept {
+  if (fd_ >= 0 && exclusive_) ::ioctl(fd_, TIOCNXCL);
+  exclusive_ = false;
   if (fd_ >= 0) ::close(fd_);
   fd_ = -1;
 }

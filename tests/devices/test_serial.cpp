@@ -283,3 +283,42 @@ TEST_CASE("a second TCP client of serve_tcp cannot share the session", "[devices
   serving.join();
   CHECK(emulator.sessions() == 2);
 }
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+TEST_CASE("TIOCEXCL: a non-root second open is EBUSY, said as port busy; close() frees the pty",
+          "[devices]") {
+  // Root bypasses TIOCEXCL: the check runs as an unprivileged user (nobody) in a child process when
+  // the test runs as root, as itself otherwise. Exit codes say what failed.
+  auto pty = devices::Pty::open();
+  pty.close_slave_keeper(); // the master alone keeps the pty, as a serving emulator does
+  const std::string path = pty.slave_path();
+  if (::geteuid() == 0) ::chmod(path.c_str(), 0666);
+  const pid_t pid = ::fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    if (::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0)) ::_exit(10);
+    try {
+      auto first = devices::SerialPort::open(path, line(9600, 2));
+      try {
+        (void)devices::SerialPort::open(path, line(9600, 2));
+        ::_exit(11); // opened twice
+      } catch (const antkit::kernel::InputError& e) {
+        const std::string what = e.what();
+        if (what.find("port busy") == std::string::npos) ::_exit(12);
+        if (what.find("held by process " + std::to_string(::getpid())) == std::string::npos)
+          ::_exit(13);
+      }
+      first.close(); // clears TIOCEXCL, which a pty slave would otherwise keep
+      auto again = devices::SerialPort::open(path, line(9600, 2));
+    } catch (...) {
+      ::_exit(14);
+    }
+    ::_exit(0);
+  }
+  int status = 0;
+  REQUIRE(::waitpid(pid, &status, 0) == pid);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+}

@@ -9,13 +9,15 @@
 // POLLHUP, POLLERR) is LinkError Disconnected; a stop signal interrupting a wait is Interrupted.
 //
 // The port is held exclusively (issue 26: one process per robot). A tty or pty is opened with
-// ioctl(TIOCEXCL) -- a later open() by anyone but root fails with EBUSY -- and an open file
-// description lock (fcntl F_OFD_SETLK, a write lock on the whole device). Why OFD locks and not
-// classic fcntl (F_SETLK) locks or flock(): a classic lock belongs to the process, so a second
-// open of the device in the same process (the tests, an embedding program) would be granted it; an
-// OFD lock belongs to the open file description, so two opens conflict in one process as between
-// two (checked on a /dev/pts slave, Linux 6.x). It is advisory: it binds programs that ask, as
-// antkit does, and TIOCEXCL covers the rest for non-root users (root bypasses TIOCEXCL).
+// ioctl(TIOCEXCL) -- a later open() by anyone but root fails with EBUSY; close() clears it with
+// TIOCNXCL, since a pty slave keeps the flag after its last close while its master is open (an
+// emulator's next session could not open it; a holder killed by SIGKILL leaves it so) -- and an
+// open file description lock (fcntl F_OFD_SETLK, a write lock on the whole device). Why OFD locks
+// and not classic fcntl (F_SETLK) locks or flock(): a classic lock belongs to the process, so a
+// second open of the device in the same process (the tests, an embedding program) would be granted
+// it; an OFD lock belongs to the open file description, so two opens conflict in one process as
+// between two (checked on a /dev/pts slave, Linux 6.x). It is advisory: it binds programs that ask,
+// as antkit does, and TIOCEXCL covers the rest for non-root users (root bypasses TIOCEXCL).
 // F_OFD_GETLK reports pid -1 for an OFD holder, so the holder's PID is found by the /proc/PID/fd
 // entries that are the same device and whose /proc/PID/fdinfo lists a lock; a classic-lock holder's
 // PID comes from F_OFD_GETLK itself. A held port: kernel::InputError("--port", "'PATH' is busy:
@@ -138,6 +140,7 @@ private:
   std::string buffer_;
   bool discarding_ = false; // inside an over-long line, up to its terminator
   bool socket_ = false;     // a TCP link: send(MSG_NOSIGNAL), no tcflush
+  bool exclusive_ = false;  // TIOCEXCL set by open(), cleared by close()
 };
 
 class Pty {
