@@ -1,5 +1,6 @@
 // `antkit record`: runs a controller on a robot (or an emulator) and writes its log (issue 13).
-//   antkit record --device khepera|hemisson|epuck --port PATH --controller buffon|rs|wander
+//   antkit record --device khepera|khepera-webots|hemisson|epuck --port PATH|tcp:HOST:PORT
+//                 --controller buffon|rs|wander
 //                 [--seed S] [--trial T] [--visit V] [--param KEY=VALUE ...] [--steps N]
 //                 [--baud B] [--framing 8N1|8N2|...] [--timeout MS] [--tries N] [--period MS]
 //                 [--arena SPEC] --out LOG [--force] [--format table|json]
@@ -179,8 +180,8 @@ void run(const RecordCommand& c) {
     throw InputError("--device", "--map, --start and --calibration are for --device stc-floor");
   const auto robot = devices::parse_robot(c.device);
   if (!robot)
-    throw InputError("--device", "unknown robot '" + c.device +
-                                     "': expected khepera, hemisson, epuck or stc-floor");
+    throw InputError("--device", "unknown robot '" + c.device + "': expected " +
+                                     std::string(devices::robot_names()) + " or stc-floor");
   devices::Params given;
   if (c.trial >= 0) given.emplace_back("trial", c.trial);
   if (c.visit >= 0) given.emplace_back("visit", c.visit);
@@ -231,8 +232,13 @@ void register_record(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "record", "Run a controller on a robot or an emulator over a serial port and log every step "
                 "(JSON Lines) for replay");
-  sub->add_option("--device", c->device, "khepera, hemisson, epuck or stc-floor")->required();
-  sub->add_option("--port", c->port, "The serial device or pty, e.g. /dev/ttyUSB0")->required();
+  sub->add_option("--device", c->device,
+                  "khepera, khepera-webots (Webots' TCP/IP relay), hemisson, epuck or stc-floor")
+      ->required();
+  sub->add_option("--port", c->port,
+                  "The serial device or pty (e.g. /dev/ttyUSB0), or tcp:HOST:PORT (Webots' relay "
+                  "listens on 10020; antkit emulate --listen)")
+      ->required();
   sub->add_option("--controller", c->controller, "buffon, rs or wander; stc-floor: ant or ant-edge")
       ->required();
   sub->add_option("--map", c->map,

@@ -31,12 +31,6 @@ bool reply_shaped(std::string_view line) noexcept {
   return true;
 }
 
-// The robots whose speeds can be read back (E): all but the Webots relay, which answers only
-// B, D, G, H, L, N and O (PROTOCOLS.md, "Khepera in Webots").
-bool reads_speed(const RobotDescription& robot) noexcept {
-  return robot.name != "khepera-webots";
-}
-
 } // namespace
 
 std::string printable(std::string_view bytes) {
@@ -188,7 +182,7 @@ SafeStopResult safe_stop(CommandLink& link, std::vector<Exchange>& io) noexcept 
     }
     out.acknowledged = out.stopped = wheels_acknowledged;
     // Confirmed by the robot's own state: the speeds read back as zero.
-    if (wheels_acknowledged && !gone && reads_speed(codec.robot())) {
+    if (wheels_acknowledged && !gone && codec.robot().reads_speed) {
       out.stopped = false;
       std::string why = "no reading";
       for (std::uint32_t round = 0; round < rounds && !out.stopped; ++round) {

@@ -223,8 +223,8 @@ ReplayResult replay(LogReader& reader, const std::string& path, std::optional<st
   const auto kind = parse_robot(header.robot);
   if (!kind)
     throw kernel::InputError(path, 1, 1,
-                             "unknown robot '" + header.robot +
-                                 "': expected khepera, hemisson, epuck or stc-floor");
+                             "unknown robot '" + header.robot + "': expected " +
+                                 std::string(robot_names()) + " or stc-floor");
   std::unique_ptr<LoggedController> controller;
   try {
     controller = make_controller({header.controller, header.params, header.seed});

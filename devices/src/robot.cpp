@@ -140,6 +140,7 @@ constexpr RobotDescription kKheperaWebots{
     .odometry_read = 'H',
     .odometry_set = 0,           // G is acknowledged and ignored: the counters cannot be reset
     .odometry_pulse_nm = 471239, // 2 pi x 7.5 mm / 100
+    .reads_speed = false,        // the relay answers no E
 };
 
 } // namespace

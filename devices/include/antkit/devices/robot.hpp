@@ -13,6 +13,9 @@
 namespace antkit::devices {
 
 enum class RobotKind : std::uint8_t { Khepera, Hemisson, Epuck, KheperaWebots };
+// Every robot of the serial protocols, for loops over them (tests, fuzz targets, benchmarks).
+inline constexpr RobotKind kSerialRobots[] = {RobotKind::Khepera, RobotKind::Hemisson,
+                                              RobotKind::Epuck, RobotKind::KheperaWebots};
 // "khepera", "hemisson", "epuck", "khepera-webots".
 std::optional<RobotKind> parse_robot(std::string_view name);
 std::string_view robot_name(RobotKind robot);
@@ -43,6 +46,9 @@ struct RobotDescription {
   // G and ignores it): the record loop then reads a baseline instead of resetting them.
   char odometry_set;
   std::int64_t odometry_pulse_nm;
+  // `E` reads the wheel speeds back (all but the Webots relay, which answers only B, D, G, H, L, N
+  // and O): the safe stop confirms the wheels at zero with it (link.hpp).
+  bool reads_speed = true;
 };
 const RobotDescription& describe(RobotKind robot);
 
