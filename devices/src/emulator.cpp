@@ -6,7 +6,9 @@
 #include <antkit/kernel/input_error.hpp>
 #include <cctype>
 #include <optional>
+#include <sys/inotify.h>
 #include <thread>
+#include <unistd.h>
 
 namespace antkit::devices {
 
@@ -328,10 +330,45 @@ void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>
                bool stop_on_signal) {
   SerialPort& port = pty.master();
   // Without a slave fd of its own the master sees EIO whenever no client has the tty open: that is
-  // how a session's end shows.
+  // how a session's end shows when nobody comes at once. Two clients back to back (two `antkit
+  // record` runs in a script) may leave no moment without a client for the master to see, and the
+  // second would continue the first's session; so the opens and closes of the slave are watched
+  // (inotify; they are queued before the client can write): a session starts when the number of
+  // clients goes from 0 to 1 and ends when it falls back to 0. A refused second client (port busy)
+  // opens and closes without touching the session. Without inotify, EIO alone decides.
   pty.close_slave_keeper();
+  int events = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  if (events >= 0 && ::inotify_add_watch(events, pty.slave_path().c_str(),
+                                         IN_OPEN | IN_CLOSE_WRITE | IN_CLOSE_NOWRITE) < 0) {
+    ::close(events);
+    events = -1;
+  }
+  struct Closer {
+    int fd;
+    ~Closer() {
+      if (fd >= 0) ::close(fd);
+    }
+  } closer{events};
+  std::int64_t clients = 0;
   std::string pending;
   bool in_session = false;
+  const auto follow_clients = [&] {
+    if (events < 0) return;
+    alignas(inotify_event) char buf[4096];
+    for (;;) {
+      const ssize_t n = ::read(events, buf, sizeof buf);
+      if (n <= 0) return;
+      for (ssize_t at = 0; at < n;) {
+        const auto* e = reinterpret_cast<const inotify_event*>(buf + at);
+        if ((e->mask & IN_OPEN) != 0 && clients++ == 0) in_session = false; // a new client
+        if ((e->mask & (IN_CLOSE_WRITE | IN_CLOSE_NOWRITE)) != 0 && --clients <= 0) {
+          clients = 0;
+          in_session = false;
+        }
+        at += static_cast<ssize_t>(sizeof(inotify_event) + e->len);
+      }
+    }
+  };
   while (!(stop != nullptr && stop->load()) && !(stop_on_signal && StopSignals::requested())) {
     ReadResult r;
     try {
@@ -352,6 +389,7 @@ void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>
     while (!pending.empty() && (pending.back() == '\r' || pending.back() == '\n'))
       pending.pop_back();
     if (pending.empty()) continue;
+    follow_clients();
     if (!in_session) {
       new_session();
       in_session = true;

@@ -323,3 +323,24 @@ TEST_CASE("a log cut on a line boundary replays as far as it goes and says it ne
   CHECK(!h.complete);
   CHECK(h.steps == 0);
 }
+
+TEST_CASE("two recordings back to back on one emulator are two sessions from the start pose",
+          "[devices]") {
+  // The emulator used to see a session end only as a moment with no client on the pty; a second
+  // recording that opened the port at once could continue the first one's session (its body where
+  // the first left it). The same controller and seed from the same pose give the same run.
+  TempDir dir;
+  EmulatedRobot emu(RobotKind::Khepera, "circle:d=8");
+  std::uint64_t first = 0;
+  for (int run = 0; run < 6; ++run) {
+    INFO(run);
+    const auto log = dir.file("run" + std::to_string(run) + ".jsonl");
+    const auto s =
+        devices::record(record_options(RobotKind::Khepera, emu.port(), "buffon", {}, 40, log));
+    REQUIRE(s.succeeded());
+    if (run == 0) first = s.hash;
+    CHECK(s.hash == first);
+  }
+  emu.stop();
+  CHECK(emu.emulator().sessions() == 6);
+}
