@@ -63,8 +63,10 @@ for _ in $(seq 100); do [ -s "$emu_out" ] && break; sleep 0.05; done
 port=$(head -n 1 "$emu_out")
 echo "emulator on $port"
 for visit in 1 2; do
+  # --force: the demo's directory is made anew by each run (a recording never replaces a log
+  # otherwise). --arena names the emulator's arena in the log, for the true area below.
   "$antkit" record --device khepera --port "$port" --controller buffon --visit "$visit" \
-    --steps 3000 --out "$out/khepera-visit$visit.jsonl" --format json |
+    --steps 3000 --arena circle:d=20 --out "$out/khepera-visit$visit.jsonl" --force --format json |
     jq -r '"visit '"$visit"': \(.steps) steps, \(.exchanges) exchanges, \(.retries) resends, stopped: \(.stopped), hash \(.hash)"'
 done
 "$antkit" replay "$out/khepera-visit1.jsonl" --format json |
@@ -84,7 +86,7 @@ for _ in $(seq 100); do [ -s "$floor_out" ] && break; sleep 0.05; done
 port=$(head -n 1 "$floor_out")
 echo "marker-floor emulator on $port"
 "$antkit" record --device stc-floor --port "$port" --controller ant-edge --map "$floor_map" \
-  --out "$out/floor.jsonl" --format json |
+  --out "$out/floor.jsonl" --force --format json |
   jq -r '"recorded: \(.steps) steps, \(.covered) of \(.reachable_subcells) sub-cells, \(.repeats) repeats, back at the start: \(.returned_to_start), tour hash \(.hash)"'
 "$antkit" stc --map "$floor_map" --variant ant-edge --format json |
   jq -r '"simulated ant-edge:       tour hash \(.hash)"'

@@ -293,7 +293,7 @@ TEST_CASE("antkit stc-floor: bad input exits 2 with where and why, and writes no
   CHECK_FALSE(std::filesystem::exists(dir / "l.jsonl"));
 }
 
-TEST_CASE("antkit record: an existing --out exits 2 and is kept; --force replaces it",
+TEST_CASE("antkit record: an existing --out exits 2 and is kept, and --force replaces it",
           "[cli][devices]") {
   const auto dir = scratch_dir("exists");
   const auto log = (dir / "visit1.jsonl").string();

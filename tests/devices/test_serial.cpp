@@ -287,7 +287,7 @@ TEST_CASE("a second TCP client of serve_tcp cannot share the session", "[devices
 #include <sys/stat.h>
 #include <sys/wait.h>
 
-TEST_CASE("TIOCEXCL: a non-root second open is EBUSY, said as port busy; close() frees the pty",
+TEST_CASE("TIOCEXCL: a non-root second open is EBUSY, said as port busy, and close() frees the pty",
           "[devices]") {
   // Root bypasses TIOCEXCL: the check runs as an unprivileged user (nobody) in a child process when
   // the test runs as root, as itself otherwise. Exit codes say what failed.
