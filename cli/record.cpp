@@ -48,7 +48,7 @@ struct RecordCommand {
   std::uint64_t seed = 1;
   std::int64_t trial = -1, visit = -1;
   std::vector<std::string> params;
-  std::int64_t steps = 1000, timeout_ms = 250, tries = 12, period_ms = 0;
+  std::int64_t steps = 1000, timeout_ms = 250, tries = 12, period_ms = -1;
   Format format = Format::Table;
   // stc-floor
   std::string map, start, calibration;
@@ -202,9 +202,9 @@ void run(const RecordCommand& c) {
   o.out = c.out;
   o.force = c.force;
   o.arena = c.arena;
-  if (c.period_ms < 0 || c.period_ms > 60000)
+  if (c.period_ms < -1 || c.period_ms > 60000)
     throw InputError("--period", "expected milliseconds in [0, 60000]");
-  o.period = std::chrono::milliseconds(c.period_ms);
+  if (c.period_ms >= 0) o.period = std::chrono::milliseconds(c.period_ms);
 
   const bool live = ::isatty(STDERR_FILENO) == 1;
   const auto summary = devices::record(o, [live](std::int64_t step, std::int64_t steps) {
@@ -261,7 +261,9 @@ void register_record(CLI::App& app) {
   sub->add_option("--tries", c->tries,
                   "Sends of a command before giving up (default 12, see devices/link.hpp)");
   sub->add_option("--period", c->period_ms,
-                  "Shortest control period in milliseconds (default 0: as fast as the link)");
+                  "Shortest time between sensor reads in milliseconds (default: 0, as fast as the "
+                  "link, for robots with wheel counters; the motion model's period, 112 ms, for "
+                  "the Hemisson, whose odometry counts periods)");
   sub->add_option("--out", c->out, "The log to write (JSON Lines); an existing file is refused")
       ->required();
   sub->add_flag("--force", c->force, "Replace --out if it exists");

@@ -74,7 +74,8 @@ std::string signal_name(int sig) {
 
 namespace detail {
 
-Body::Body(CommandLink& link) : link_(link), robot_(link.codec().robot()) {}
+Body::Body(CommandLink& link, std::chrono::milliseconds period)
+    : link_(link), robot_(link.codec().robot()), period_(period) {}
 
 void Body::start(std::vector<Exchange>& io) {
   if (!robot_.has_odometry) return;
@@ -88,6 +89,11 @@ void Body::start(std::vector<Exchange>& io) {
 }
 
 Proximity Body::read_sensors(std::vector<Exchange>& io) {
+  // One sensor read per control period: the odometry of a robot without encoders counts periods.
+  if (period_.count() > 0) {
+    std::this_thread::sleep_until(next_read_);
+    next_read_ = Clock::now() + period_;
+  }
   const std::size_t before = io.size();
   const std::string reply = link_.transact(link_.codec().read_proximity(), io);
   // Every proximity read sent is a control period in which the wheels turned at the speeds in
@@ -130,6 +136,20 @@ void act(Body& body, bool wander, std::span<const std::int64_t> cmd, std::vector
 }
 
 } // namespace detail
+
+std::chrono::milliseconds model_period(const RobotDescription& robot) {
+  // A simulator step moves kDefaultSpeed body diameters at unit speed; the robot covers that at
+  // speed_full x speed_unit_um_s micrometres per second.
+  const i128 um_per_step = i128{buffon::kDefaultSpeed.raw()} * robot.diameter_um; // x 2^16
+  const i128 um_per_s = i128{robot.speed_full} * robot.speed_unit_um_s * 65536;   // x 2^16
+  if (um_per_s <= 0) return std::chrono::milliseconds(0);
+  return std::chrono::milliseconds(
+      static_cast<std::int64_t>((um_per_step * 1000 + um_per_s / 2) / um_per_s));
+}
+
+std::chrono::milliseconds default_period(const RobotDescription& robot) {
+  return robot.has_odometry ? std::chrono::milliseconds(0) : model_period(robot);
+}
 
 std::string_view stop_kind_name(StopKind kind) noexcept {
   switch (kind) {
@@ -193,7 +213,9 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
   }
   StopSignals::Scope signals;
   RobotLink link(std::move(*port), options.robot, options.link);
-  detail::Body body(link);
+  const std::chrono::milliseconds period =
+      options.period ? *options.period : default_period(describe(options.robot));
+  detail::Body body(link, period);
   LogWriter log(options.out, header, options.sync_every, options.force);
 
   RunHash run;
@@ -206,7 +228,6 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
     body.start(pending);
     for (std::int64_t step = 0; step < options.steps; ++step) {
       if (StopSignals::requested()) throw LinkError(LinkError::Kind::Interrupted, "stop signal");
-      const auto step_start = Clock::now();
       const Proximity readings = body.read_sensors(pending);
       controller->observe(body.robot(), readings, rec.obs);
       controller->step(body.robot(), rec.obs, rec.cmd);
@@ -222,7 +243,6 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
       run.add(rec.step, rec.obs, rec.cmd, rec.state);
       summary.steps = step + 1;
       if (progress) progress(summary.steps, options.steps);
-      if (options.period.count() > 0) std::this_thread::sleep_until(step_start + options.period);
     }
     summary.completed = true;
     summary.kind = StopKind::Done;

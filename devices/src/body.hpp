@@ -6,6 +6,7 @@
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/odometry.hpp>
 #include <antkit/uniform/controllers.hpp>
+#include <chrono>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -14,7 +15,9 @@ namespace antkit::devices::detail {
 
 class Body {
 public:
-  explicit Body(CommandLink& link);
+  // `period`: the shortest time between two sensor reads (0: as fast as the link allows; a replay
+  // passes 0, it does not wait).
+  explicit Body(CommandLink& link, std::chrono::milliseconds period = {});
 
   // Before the first step: the wheel counters to zero (robots with encoders), or, where the robot
   // cannot set them (the Webots relay acknowledges G and does nothing, PROTOCOLS.md), their value
@@ -31,6 +34,8 @@ private:
   void period_elapsed();
   CommandLink& link_;
   const RobotDescription& robot_;
+  std::chrono::milliseconds period_;
+  std::chrono::steady_clock::time_point next_read_{};
   std::int32_t left_ = 0, right_ = 0;
   Travel2 travel2_;
   WheelTravel baseline_;

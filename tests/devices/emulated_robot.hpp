@@ -51,7 +51,8 @@ public:
 };
 
 // A recording's options for the tests: the robot's own line, a short timeout and back-off (a pty
-// answers within a millisecond), the library's number of tries.
+// answers within a millisecond), the library's number of tries, and no control period (the
+// emulator is lock-stepped: a period is a sensor read, however fast it comes).
 inline devices::RecordOptions record_options(devices::RobotKind robot, const std::string& port,
                                              const std::string& controller,
                                              const devices::Params& params, std::int64_t steps,
@@ -66,6 +67,7 @@ inline devices::RecordOptions record_options(devices::RobotKind robot, const std
   o.link.timeout = std::chrono::milliseconds(60);
   o.link.backoff = std::chrono::milliseconds(1);
   o.link.backoff_max = std::chrono::milliseconds(4);
+  o.period = std::chrono::milliseconds(0);
   return o;
 }
 

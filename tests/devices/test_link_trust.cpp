@@ -344,3 +344,32 @@ TEST_CASE("two recordings back to back on one emulator are two sessions from the
   emu.stop();
   CHECK(emu.emulator().sessions() == 6);
 }
+
+TEST_CASE("a robot without encoders is read once per model period, which its odometry counts",
+          "[devices]") {
+  // The Hemisson's odometry is the commanded travel of every control period by the motion model
+  // (adapter.hpp), whose step is kDefaultSpeed body diameters at unit speed: 0.1683 x 120 mm at
+  // 9 x 20 mm/s = 112 ms. Recording it as fast as the link allows made that odometry count
+  // periods a real robot never drove; its recordings now default to the model's period.
+  using namespace std::chrono_literals;
+  const auto& hemisson = devices::describe(RobotKind::Hemisson);
+  CHECK(devices::model_period(hemisson) == 112ms);
+  CHECK(devices::default_period(hemisson) == 112ms);
+  CHECK(devices::default_period(devices::describe(RobotKind::Khepera)) == 0ms);
+  TempDir dir;
+  EmulatedRobot emu(RobotKind::Hemisson, "circle:d=8");
+  const auto log = dir.file("paced.jsonl");
+  auto o = record_options(RobotKind::Hemisson, emu.port(), "buffon", {}, 4, log);
+  o.period.reset(); // the robot's default
+  REQUIRE(devices::record(o).succeeded());
+  emu.stop();
+  devices::LogReader reader(log);
+  devices::LogRecord r;
+  std::int64_t steps = 0, last = 0;
+  while (reader.next(r)) ++steps, last = r.time_ns;
+  // The k-th read (from 0) comes no sooner than k periods after the first, and a step's time is
+  // taken after its read. A lower bound only: nothing is timed against an upper bound.
+  REQUIRE(steps == 4);
+  CHECK(last >= 3 * 112000000);
+  CHECK(devices::replay(log).identical);
+}

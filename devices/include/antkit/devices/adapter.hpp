@@ -33,6 +33,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace antkit::devices {
@@ -47,9 +48,18 @@ struct RecordOptions {
   bool force = false; // replace `out` if it exists (otherwise an existing log is bad input)
   std::string arena;  // the arena, when known (an emulator's spec), for the log's header
   LinkOptions link;
-  std::chrono::milliseconds period{0}; // shortest control period (0: as fast as the link allows)
-  std::uint32_t sync_every = 0;        // fdatasync the log every N records (0: only at the end)
+  // The shortest time between two sensor reads (a control period; 0: as fast as the link allows).
+  // Unset: default_period(robot).
+  std::optional<std::chrono::milliseconds> period;
+  std::uint32_t sync_every = 0; // fdatasync the log every N records (0: only at the end)
 };
+
+// The control period the simulator's motion model assumes for `robot` (a step of kDefaultSpeed body
+// diameters at the wheels' unit speed): about 112 ms for the Hemisson. A robot without encoders
+// counts its odometry in such periods (step 4 above), so its recordings default to it; robots with
+// encoders read their counters and default to 0 (as fast as the link allows).
+std::chrono::milliseconds model_period(const RobotDescription& robot);
+std::chrono::milliseconds default_period(const RobotDescription& robot);
 
 // How a run ended, typed (the log's stop record says it in words: stop_reason()).
 enum class StopKind : std::uint8_t {
