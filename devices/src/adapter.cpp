@@ -94,12 +94,11 @@ Proximity Body::read_sensors(std::vector<Exchange>& io) {
     std::this_thread::sleep_until(next_read_);
     next_read_ = Clock::now() + period_;
   }
-  const std::size_t before = io.size();
+  const std::uint64_t before = link_.sends();
   const std::string reply = link_.transact(link_.codec().read_proximity(), io);
   // Every proximity read sent is a control period in which the wheels turned at the speeds in
   // force (the emulator's clock; a real robot's too, roughly): the Hemisson's odometry counts it.
-  for (std::size_t k = before; k < io.size(); ++k)
-    if (!io[k].sent.empty()) period_elapsed();
+  for (std::uint64_t k = before; k < link_.sends(); ++k) period_elapsed();
   return *link_.codec().decode_proximity(reply).value;
 }
 

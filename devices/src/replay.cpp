@@ -44,11 +44,13 @@ public:
   [[nodiscard]] const LinkOptions& options() const noexcept override { return options_; }
   void pause(std::chrono::milliseconds) override {}
   void rearm() noexcept override {}
+  [[nodiscard]] std::uint64_t sends() const noexcept override { return sends_; }
 
-  std::string transact(const std::string& command, std::vector<Exchange>& out) override {
+  // The exchanges are the log's: nothing is appended to `io`.
+  std::string transact(const std::string& command, std::vector<Exchange>&) override {
     bool sent = false;
     for (;;) {
-      while (k_ < io_->size() && (*io_)[k_].sent.empty()) out.push_back((*io_)[k_++]);
+      while (k_ < io_->size() && (*io_)[k_].sent.empty()) ++k_; // drained bytes
       if (k_ >= io_->size()) {
         if (end_is_failure_)
           throw LinkError(LinkError::Kind::Timeout, "the log ends before a valid reply");
@@ -65,7 +67,7 @@ public:
         throw Diverged{{step_, field_ + "[" + std::to_string(k_) + "].sent",
                         "'" + printable(e.sent) + "'", "'" + printable(command) + "'"}};
       }
-      out.push_back(e);
+      ++sends_;
       const std::size_t at = k_++;
       sent = true;
       // The attempt's bytes, line by line, as the live link read them.
@@ -95,6 +97,7 @@ private:
   std::int64_t step_ = 0;
   std::string field_;
   bool end_is_failure_ = false;
+  std::uint64_t sends_ = 0;
 };
 
 // The stop record against the run: its reason in the words stop_reason() writes, and its safe

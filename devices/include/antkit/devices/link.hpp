@@ -107,6 +107,8 @@ public:
   virtual void pause(std::chrono::milliseconds d) = 0;
   // Re-arms the watchdog: the safe stop is tried in full even after the link went quiet.
   virtual void rearm() noexcept = 0;
+  // Commands sent so far, resends included (the Hemisson's odometry counts its sensor reads).
+  [[nodiscard]] virtual std::uint64_t sends() const noexcept = 0;
 };
 
 class RobotLink final : public CommandLink {
@@ -121,6 +123,7 @@ public:
   std::string transact(const std::string& command, std::vector<Exchange>& io) override;
   void pause(std::chrono::milliseconds d) override;
   void rearm() noexcept override { last_ok_ = std::chrono::steady_clock::now(); }
+  [[nodiscard]] std::uint64_t sends() const noexcept override { return stats_.exchanges; }
 
 private:
   void drain(std::vector<Exchange>& io);
