@@ -180,7 +180,7 @@ std::string LinkedRobot::exchange(const std::string& cmd, std::uint32_t tries,
     if (attempt > 1) {
       ++stats_.retries;
       std::this_thread::sleep_for(backoff);
-      backoff *= 2;
+      backoff = std::min(backoff * 2, std::max(options_.backoff, options_.backoff_max));
       port_.flush_input();
     }
     ++stats_.exchanges;

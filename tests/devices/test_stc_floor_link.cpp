@@ -134,9 +134,30 @@ TEST_CASE("stc floor link: an edited log is caught at the edited step and field"
       // was a move (the tour does not close at step 20).
       {"cmd[0]", [](devices::LogRecord& r) { r.obs = {0, 0xFFF, 0, 0, 0, 0}; }},
       {"odo[0]", [](devices::LogRecord& r) { r.odo[0] += 1; }},
-      {"io[", [](devices::LogRecord& r) {
+      {"io[",
+       [](devices::LogRecord& r) {
          for (auto& ex : r.io)
            if (ex.sent[0] == 'C') ex.received = "c,2,2,13,1\r\n";
+       }},
+      // Every byte sent: a frame asked for in a mode the robot does not have, the LEDs lit for a
+      // time the header does not give, a move sent twice, a move's reply that is not one.
+      {"io[0].sent", [](devices::LogRecord& r) { r.io[0].sent = "C,2\r"; }},
+      {"io[",
+       [](devices::LogRecord& r) {
+         for (auto& ex : r.io)
+           if (ex.sent[0] == 'F') ex.sent = "F,1999\r";
+       }},
+      {"io[",
+       [](devices::LogRecord& r) {
+         for (std::size_t i = 0; i < r.io.size(); ++i)
+           if (r.io[i].sent[0] == 'F') {
+             r.io.insert(r.io.begin() + static_cast<std::ptrdiff_t>(i), r.io[i]);
+             break;
+           }
+       }},
+      {"io[", [](devices::LogRecord& r) {
+         for (auto& ex : r.io)
+           if (ex.sent[0] == 'F') ex.received = "f,7\r\n";
        }}};
   for (const auto& edit : edits) {
     INFO(edit.field);
@@ -144,6 +165,10 @@ TEST_CASE("stc floor link: an edited log is caught at the edited step and field"
     devices::LogRecord rec;
     for (int i = 0; i <= 20; ++i) REQUIRE(reader.next(rec));
     REQUIRE(rec.step == 20);
+    bool moves = false;
+    for (const auto& ex : rec.io) moves = moves || ex.sent[0] == 'F';
+    REQUIRE(moves); // step 20 moves (see above): the edits of F have something to edit
+    REQUIRE(rec.io[0].sent[0] == 'C');
     edit.apply(rec);
     auto edited = lines;
     edited[21] = devices::format_record(rec);
