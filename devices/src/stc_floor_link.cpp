@@ -181,8 +181,11 @@ std::string LinkedRobot::exchange(const std::string& cmd, std::uint32_t tries,
       ++stats_.retries;
       std::this_thread::sleep_for(backoff);
       backoff = std::min(backoff * 2, std::max(options_.backoff, options_.backoff_max));
-      port_.flush_input();
     }
+    // Whatever waits now came before this send (the straggling bytes of a frame that timed out, a
+    // late reply): it cannot be this command's reply. Dropped before every send, not only before a
+    // resend, so that it is never read as the answer to a move, which is not resent.
+    port_.flush_input();
     ++stats_.exchanges;
     port_.write_all(cmd, options_.timeout);
     const ReadResult line = port_.read_line(options_.timeout);

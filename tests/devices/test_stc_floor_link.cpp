@@ -92,6 +92,9 @@ TEST_CASE("stc floor link: a recorded run over a pty is the simulated tour and r
     o.pilot.controller = variant;
     o.pilot.start = {0, 0};
     o.out = dir.file(std::string(stc::variant_name(variant)) + ".jsonl");
+    // A fault-free robot: a generous timeout keeps a loaded machine (the sanitizer build renders
+    // frames slowly) from adding faults of its own; the tour must be the simulated one.
+    o.link.timeout = std::chrono::milliseconds(3000);
     const auto s = sf::record(o);
     robot.stop();
     CHECK(s.stop == "done");
@@ -120,6 +123,7 @@ TEST_CASE("stc floor link: an edited log is caught at the edited step and field"
   o.port = robot.port();
   o.pilot.start = {0, 0};
   o.out = dir.file("floor.jsonl");
+  o.link.timeout = std::chrono::milliseconds(3000);
   REQUIRE(sf::record(o).closed);
   robot.stop();
   const auto lines = antkit::test::lines_of(o.out);
