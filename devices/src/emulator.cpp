@@ -325,6 +325,30 @@ FirmwareEmulator::Response FirmwareEmulator::handle(std::string_view line) {
   return out;
 }
 
+namespace {
+
+// Appends what was read to `pending`; true, with `pending` trimmed to the command, when a whole
+// non-empty line has come (the firmware ends a line at CR or LF and skips empty ones).
+bool command_line(std::string& pending, const ReadResult& r) {
+  pending += r.bytes;
+  if (!r.complete) return false;
+  while (!pending.empty() && (pending.back() == '\r' || pending.back() == '\n')) pending.pop_back();
+  return !pending.empty();
+}
+
+// Writes a reply (nothing when empty); false when the client is gone or not reading.
+bool write_reply(SerialPort& port, const std::string& bytes) {
+  if (bytes.empty()) return true;
+  try {
+    port.write_all(bytes, std::chrono::milliseconds(2000));
+    return true;
+  } catch (const LinkError&) {
+    return false;
+  }
+}
+
+} // namespace
+
 void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>& handle,
                const std::function<void()>& new_session, const std::atomic<bool>* stop,
                bool stop_on_signal) {
@@ -384,11 +408,7 @@ void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
       continue;
     }
-    pending += r.bytes;
-    if (!r.complete) continue;
-    while (!pending.empty() && (pending.back() == '\r' || pending.back() == '\n'))
-      pending.pop_back();
-    if (pending.empty()) continue;
+    if (!command_line(pending, r)) continue;
     follow_clients();
     if (!in_session) {
       new_session();
@@ -401,13 +421,8 @@ void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>
       pty.hang_up();
       break;
     }
-    if (!response.bytes.empty()) {
-      try {
-        port.write_all(response.bytes, std::chrono::milliseconds(2000));
-      } catch (const LinkError&) {
-        // The client is gone or not reading: a real robot would not notice either.
-      }
-    }
+    // A client that is gone or not reading: a real robot would not notice either.
+    write_reply(port, response.bytes);
   }
 }
 
@@ -431,11 +446,7 @@ bool serve_client(SerialPort& port, const std::function<EmulatorResponse(std::st
       }
       return false; // the client has gone (closed, reset): the session is over
     }
-    pending += r.bytes;
-    if (!r.complete) continue;
-    while (!pending.empty() && (pending.back() == '\r' || pending.back() == '\n'))
-      pending.pop_back();
-    if (pending.empty()) continue;
+    if (!command_line(pending, r)) continue;
     if (!in_session) {
       new_session();
       in_session = true;
@@ -444,13 +455,7 @@ bool serve_client(SerialPort& port, const std::function<EmulatorResponse(std::st
     pending.clear();
     if (response.delay.count() > 0) std::this_thread::sleep_for(response.delay);
     if (response.hang_up) return true;
-    if (!response.bytes.empty()) {
-      try {
-        port.write_all(response.bytes, std::chrono::milliseconds(2000));
-      } catch (const LinkError&) {
-        return false; // the client has gone
-      }
-    }
+    if (!write_reply(port, response.bytes)) return false; // the client has gone
     if (response.close_session) return false;
   }
   return true;

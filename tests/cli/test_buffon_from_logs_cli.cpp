@@ -1,6 +1,7 @@
 // `antkit buffon-from-logs` as the real executable (issue 26): visits recorded by `antkit record`
 // against `antkit emulate` over a pty; each refusal exits 2 with the file and the reason, and a
 // measurement exits 0 with the erosion-corrected area and its interval beside the raw one.
+#include "antkit_child.hpp"
 #include "run_antkit.hpp"
 
 #include <catch2/catch.hpp>
@@ -14,63 +15,14 @@
 #include <unistd.h>
 #include <vector>
 
+using antkit::test::Emulator;
 using antkit::test::run_antkit;
 
 namespace {
 
 std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("antkit-bfl-cli-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+  return antkit::test::scratch_dir("bfl-cli", name);
 }
-
-// `antkit emulate ARGS` in a child process; the pty path is its first line of output.
-class Emulator {
-public:
-  explicit Emulator(const std::vector<std::string>& args) {
-    int fds[2];
-    REQUIRE(::pipe(fds) == 0);
-    pid_ = ::fork();
-    REQUIRE(pid_ >= 0);
-    if (pid_ == 0) {
-      ::dup2(fds[1], STDOUT_FILENO);
-      ::close(fds[0]);
-      ::close(fds[1]);
-      std::vector<std::string> all{ANTKIT_EXE, "emulate"};
-      all.insert(all.end(), args.begin(), args.end());
-      std::vector<char*> argv;
-      for (auto& a : all) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(ANTKIT_EXE, argv.data());
-      ::_exit(127);
-    }
-    ::close(fds[1]);
-    out_ = ::fdopen(fds[0], "r");
-    char line[256] = {};
-    REQUIRE(std::fgets(line, sizeof line, out_) != nullptr);
-    path_ = line;
-    while (!path_.empty() && (path_.back() == '\n' || path_.back() == '\r')) path_.pop_back();
-  }
-  Emulator(const Emulator&) = delete;
-  Emulator& operator=(const Emulator&) = delete;
-  ~Emulator() {
-    ::kill(pid_, SIGTERM);
-    char buf[512];
-    while (std::fread(buf, 1, sizeof buf, out_) > 0) {
-    }
-    std::fclose(out_);
-    int status = 0;
-    ::waitpid(pid_, &status, 0);
-  }
-  [[nodiscard]] const std::string& port() const noexcept { return path_; }
-
-private:
-  pid_t pid_ = -1;
-  FILE* out_ = nullptr;
-  std::string path_;
-};
 
 std::vector<std::string> lines_of(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

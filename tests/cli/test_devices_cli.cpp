@@ -1,5 +1,6 @@
 // `antkit emulate`, `record`, `replay` and `buffon-from-logs`, run as the real executables: the
 // emulator in a child process on its own pseudo-terminal, the recorder talking to it over the tty.
+#include "antkit_child.hpp"
 #include "run_antkit.hpp"
 
 #include <catch2/catch.hpp>
@@ -13,68 +14,14 @@
 #include <unistd.h>
 #include <vector>
 
+using antkit::test::Emulator;
 using antkit::test::run_antkit;
 
 namespace {
 
 std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("antkit-devices-cli-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+  return antkit::test::scratch_dir("devices-cli", name);
 }
-
-// `antkit emulate ARGS` in a child process; the pty path is its first line of output.
-class Emulator {
-public:
-  explicit Emulator(const std::vector<std::string>& args) {
-    int fds[2];
-    REQUIRE(::pipe(fds) == 0);
-    pid_ = ::fork();
-    REQUIRE(pid_ >= 0);
-    if (pid_ == 0) {
-      ::dup2(fds[1], STDOUT_FILENO);
-      ::close(fds[0]);
-      ::close(fds[1]);
-      std::vector<std::string> all{ANTKIT_EXE, "emulate"};
-      all.insert(all.end(), args.begin(), args.end());
-      std::vector<char*> argv;
-      for (auto& a : all) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(ANTKIT_EXE, argv.data());
-      ::_exit(127);
-    }
-    ::close(fds[1]);
-    out_ = ::fdopen(fds[0], "r");
-    char line[256] = {};
-    REQUIRE(std::fgets(line, sizeof line, out_) != nullptr);
-    path_ = line;
-    while (!path_.empty() && (path_.back() == '\n' || path_.back() == '\r')) path_.pop_back();
-  }
-  ~Emulator() {
-    if (pid_ > 0) finish();
-  }
-  [[nodiscard]] const std::string& port() const noexcept { return path_; }
-  // SIGTERM, then the exit status and the rest of what it printed.
-  std::pair<int, std::string> finish() {
-    ::kill(pid_, SIGTERM);
-    std::string rest;
-    char buf[512];
-    std::size_t n = 0;
-    while ((n = std::fread(buf, 1, sizeof buf, out_)) > 0) rest.append(buf, n);
-    std::fclose(out_);
-    int status = 0;
-    ::waitpid(pid_, &status, 0);
-    pid_ = -1;
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, rest};
-  }
-
-private:
-  pid_t pid_ = -1;
-  FILE* out_ = nullptr;
-  std::string path_;
-};
 
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -1,5 +1,6 @@
 // `antkit emulate --listen`, `record --port tcp:HOST:PORT` and `replay` end to end as the real
 // executables over loopback TCP, and a port held by one `record` refused to a second (issue 26).
+#include "antkit_child.hpp"
 #include "run_antkit.hpp"
 
 #include <catch2/catch.hpp>
@@ -14,72 +15,13 @@
 #include <vector>
 
 using antkit::test::run_antkit;
+using Child = antkit::test::AntkitChild;
 
 namespace {
 
 std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("antkit-tcp-cli-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+  return antkit::test::scratch_dir("tcp-cli", name);
 }
-
-// `antkit ARGS` in a child process, its stdout read through a pipe.
-class Child {
-public:
-  explicit Child(const std::vector<std::string>& args) {
-    int fds[2];
-    REQUIRE(::pipe(fds) == 0);
-    pid_ = ::fork();
-    REQUIRE(pid_ >= 0);
-    if (pid_ == 0) {
-      ::dup2(fds[1], STDOUT_FILENO);
-      ::close(fds[0]);
-      ::close(fds[1]);
-      std::vector<std::string> all{ANTKIT_EXE};
-      all.insert(all.end(), args.begin(), args.end());
-      std::vector<char*> argv;
-      for (auto& a : all) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(ANTKIT_EXE, argv.data());
-      ::_exit(127);
-    }
-    ::close(fds[1]);
-    out_ = ::fdopen(fds[0], "r");
-  }
-  Child(const Child&) = delete;
-  Child& operator=(const Child&) = delete;
-  ~Child() {
-    if (pid_ > 0) finish(SIGKILL);
-  }
-  [[nodiscard]] pid_t pid() const noexcept { return pid_; }
-  // The first line it printed, without its newline.
-  std::string first_line() {
-    char line[256] = {};
-    REQUIRE(std::fgets(line, sizeof line, out_) != nullptr);
-    std::string s = line;
-    while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
-    return s;
-  }
-  // Sends `sig`, then the exit status and the rest of what it printed.
-  std::pair<int, std::string> finish(int sig) {
-    ::kill(pid_, sig);
-    std::string rest;
-    char buf[512];
-    std::size_t n = 0;
-    while ((n = std::fread(buf, 1, sizeof buf, out_)) > 0) rest.append(buf, n);
-    std::fclose(out_);
-    int status = 0;
-    ::waitpid(pid_, &status, 0);
-    pid_ = -1;
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, rest};
-  }
-
-private:
-  pid_t pid_ = -1;
-  FILE* out_ = nullptr;
-};
 
 std::size_t lines_in(const std::filesystem::path& p) {
   std::ifstream in(p);

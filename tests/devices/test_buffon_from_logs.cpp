@@ -37,13 +37,7 @@ const Fx kWidth = Fx::from_ratio(1, 10);
 devices::RecordOptions options_for(RobotKind robot, const std::string& port,
                                    const std::string& controller, const devices::Params& params,
                                    std::int64_t steps, const std::string& out) {
-  devices::RecordOptions o;
-  o.robot = robot;
-  o.port = port;
-  o.line = devices::describe(robot).line;
-  o.controller = devices::make_spec(controller, 7, params, "test");
-  o.steps = steps;
-  o.out = out;
+  auto o = antkit::test::record_options(robot, port, controller, params, steps, out);
   // A fault-free emulator answers every command, so a long timeout costs nothing, and it keeps a
   // loaded machine (parallel tests, builds) from timing a reply out: the numbers compared below
   // must come from the fault-free runs (record() below checks that nothing was resent).
