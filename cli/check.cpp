@@ -9,6 +9,7 @@
 // first broken rule on stderr), 2 bad input (a malformed map or tour file, a start off the map).
 #include "commands.hpp"
 #include "output.hpp"
+#include "stc_violation.hpp"
 
 #include <antkit/algorithms/options.hpp>
 #include <antkit/los/cell_state.hpp>
@@ -63,15 +64,7 @@ void run_stc(const StcCheckCommand& c) {
   nlohmann::json missed = nlohmann::json::array();
   for (const auto s : a.missed_sample) missed.push_back(cell_json(s));
   j["missed_sample"] = std::move(missed);
-  if (a.ok()) {
-    j["first_violation"] = nullptr;
-  } else {
-    j["first_violation"] = {
-        {"rule", a.first.rule},
-        {"step", a.first.step < 0 ? nlohmann::json(nullptr) : nlohmann::json(a.first.step)},
-        {"subcell", cell_json(a.first.subcell)},
-        {"detail", a.first.detail}};
-  }
+  j["first_violation"] = antkit::cli::first_violation_json(a);
   antkit::cli::emit(j, c.format, std::cout);
   if (!a.ok()) throw antkit::cli::CheckFailed(c.path + ": " + a.first.describe());
 }

@@ -23,6 +23,7 @@
 // another process ("port busy"), or an --out that exists without --force (no log is written).
 #include "commands.hpp"
 #include "output.hpp"
+#include "stc_violation.hpp"
 
 #include <antkit/algorithms/options.hpp>
 #include <antkit/devices/adapter.hpp>
@@ -31,7 +32,6 @@
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
-#include <antkit/testing/stc_audit.hpp>
 #include <iostream>
 #include <memory>
 #include <unistd.h>
@@ -147,13 +147,7 @@ void run_stc_floor(const RecordCommand& c) {
     const auto a = antkit::testing::audit_stc_tour(map->cells, o.pilot.start, s.path,
                                                    antkit::testing::TourRule::ExactlyOnce);
     j["tour_ok"] = a.ok();
-    j["first_violation"] =
-        a.ok() ? nlohmann::json(nullptr)
-               : nlohmann::json{{"rule", a.first.rule},
-                                {"step", a.first.step < 0 ? nlohmann::json(nullptr)
-                                                          : nlohmann::json(a.first.step)},
-                                {"subcell", {a.first.subcell.x, a.first.subcell.y}},
-                                {"detail", a.first.detail}};
+    j["first_violation"] = antkit::cli::first_violation_json(a);
     if (!a.ok()) broken = a.first.describe();
   } else {
     const bool ok = j["returned_to_start"].get<bool>() && s.repeats == 0;
