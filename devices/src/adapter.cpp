@@ -10,7 +10,6 @@
 #include <antkit/uniform/controllers.hpp>
 #include <csignal>
 #include <optional>
-#include <sys/stat.h>
 #include <thread>
 
 namespace antkit::devices {
@@ -59,11 +58,6 @@ void wander_move(detail::Body& body, uniform::Action action, std::vector<Exchang
     if (i128{travelled_units} * robot.odometry_pulse_nm >= i128{target_um} * 1000) break;
   }
   body.set_wheels(0, 0, io);
-}
-
-bool log_exists(const std::string& path) {
-  struct stat st {};
-  return ::stat(path.c_str(), &st) == 0;
 }
 
 std::string signal_name(int sig) {
@@ -179,9 +173,7 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
     throw kernel::InputError("--steps", "expected a whole number in [0, 1000000000]");
   auto controller = make_controller(options.controller);
   // A log is never replaced by accident: a mistyped name must not lose a recorded visit.
-  if (!options.force && log_exists(options.out))
-    throw kernel::InputError(options.out, "the log exists: give another --out, or --force to "
-                                          "replace it");
+  check_new_log(options.out, options.force);
 
   LogHeader header;
   header.antkit_version = ANTKIT_DEVICES_VERSION;

@@ -412,12 +412,20 @@ std::string format_stop(const LogStop& s) {
   return out;
 }
 
+namespace {
+constexpr const char* kLogExists = "the log exists: give another --out, or --force to replace it";
+} // namespace
+
+void check_new_log(const std::string& path, bool replace) {
+  struct stat st {};
+  if (!replace && ::stat(path.c_str(), &st) == 0) throw InputError(path, kLogExists);
+}
+
 LogWriter::LogWriter(const std::string& path, const LogHeader& header, std::uint32_t sync_every,
                      bool replace)
     : path_(path), sync_every_(sync_every) {
   file_ = std::fopen(path.c_str(), replace ? "wb" : "wbx"); // x: O_EXCL (C11, glibc)
-  if (file_ == nullptr && errno == EEXIST)
-    throw InputError(path, "the log exists: give another --out, or --force to replace it");
+  if (file_ == nullptr && errno == EEXIST) throw InputError(path, kLogExists);
   if (file_ == nullptr)
     throw InputError(path, std::string("cannot create the log: ") + std::strerror(errno));
   put(format_header(header));

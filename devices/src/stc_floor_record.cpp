@@ -7,7 +7,6 @@
 #include <antkit/kernel/input_error.hpp>
 #include <chrono>
 #include <csignal>
-#include <sys/stat.h>
 
 namespace antkit::devices::stc_floor {
 
@@ -105,9 +104,7 @@ std::optional<Divergence> check_marking(const LogRecord& r, std::optional<std::i
 RecordSummary record(const RecordOptions& o, const RecordProgress& progress) {
   check_controller(o.pilot.controller, "--controller");
   const View view(o.calibration, o.view ? *o.view : default_view(o.calibration));
-  struct stat st {};
-  if (!o.force && ::stat(o.out.c_str(), &st) == 0)
-    throw kernel::InputError(o.out, "the log exists: give another --out, or --force to replace it");
+  check_new_log(o.out, o.force);
   SerialPort port = SerialPort::open(o.port, o.line, 512);
   StopSignals::Scope signals;
   LinkedRobot robot(std::move(port), o.link);

@@ -77,6 +77,10 @@ std::string format_header(const LogHeader& h);
 std::string format_record(const LogRecord& r);
 std::string format_stop(const LogStop& s);
 
+// Refuses (kernel::InputError(path, ...)) a log that exists unless `replace`: what LogWriter does,
+// checked before a recording opens its port, so that a refused --out leaves the robot untouched.
+void check_new_log(const std::string& path, bool replace);
+
 class LogWriter {
 public:
   // Throws kernel::InputError(path, ...) when the file cannot be created, or exists and `replace`
