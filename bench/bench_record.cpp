@@ -47,9 +47,9 @@ void BM_RecordOverPty(benchmark::State& state) {
                     ("antkit-bench-record-" + std::to_string(::getpid()) + ".jsonl"))
                        .string();
   devices::RecordOptions o;
-  o.robot = devices::RobotKind::Khepera;
+  o.device = std::string(devices::robot_name(devices::RobotKind::Khepera));
   o.port = emu.port();
-  o.line = devices::describe(o.robot).line;
+  o.line = devices::describe(devices::RobotKind::Khepera).line;
   o.controller = devices::make_spec("buffon", 1, {{"visit", 1}}, "bench");
   o.steps = state.range(0);
   o.out = log;

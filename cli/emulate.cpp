@@ -20,15 +20,11 @@
 #include "commands.hpp"
 #include "output.hpp"
 
-#include <antkit/devices/emulator.hpp>
-#include <antkit/devices/robot.hpp>
-#include <antkit/devices/serial.hpp>
-#include <antkit/devices/stc_floor/link.hpp>
-#include <antkit/devices/stop_signals.hpp>
+#include <antkit/algorithms/options.hpp>
+#include <antkit/devices/device.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/maps/map_io.hpp>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -39,7 +35,7 @@ namespace devices = antkit::devices;
 using antkit::cli::Format;
 using antkit::kernel::InputError;
 
-struct EmulateOptions {
+struct EmulateCommand {
   std::string robot;
   std::string arena = "standard";
   std::uint64_t seed = 1;
@@ -47,139 +43,100 @@ struct EmulateOptions {
   bool pace = false;
   std::string listen;
   Format format = Format::Table;
-  // stc-floor
   std::string map, start;
-  std::int32_t heading = 1, noise = 0, dark_offset = 12, rotation_error = 0, drift = 0;
-  std::int64_t fade_s = 0;
-  CLI::Option *arena_opt = nullptr, *fault_opt = nullptr, *pace_opt = nullptr,
-              *listen_opt = nullptr, *floor_opts[8]{};
+  std::int64_t heading = 1, noise = 0, dark_offset = 12, rotation_error = 0, drift = 0, fade_s = 0;
+  CLI::Option *arena_opt = nullptr, *listen_opt = nullptr, *heading_opt = nullptr,
+              *noise_opt = nullptr, *dark_opt = nullptr, *fade_opt = nullptr,
+              *rotation_opt = nullptr, *drift_opt = nullptr;
 };
 
-void run_stc_floor(const EmulateOptions& o) {
-  if (o.arena_opt->count() + o.fault_opt->count() + o.pace_opt->count() + o.listen_opt->count() > 0)
-    throw InputError("stc-floor", "--arena, --fault, --pace and --listen are for " +
-                                      std::string(devices::robot_names()) +
-                                      "; the marker-floor robot takes --map and serves a pty");
-  if (o.map.empty()) throw InputError("--map", "stc-floor needs a map (--map FILE)");
-  const auto map = antkit::maps::load_map(o.map);
-  const auto start =
-      antkit::cli::choose_stc_start(map, antkit::stc::Variant::AntEdge, o.start, o.map);
-  namespace sf = devices::stc_floor;
-  sf::FloorOptions f;
-  f.seed = o.seed;
-  f.noise = o.noise;
-  f.dark_offset = o.dark_offset;
-  if (o.fade_s < 0 || o.fade_s > 86400) throw InputError("--fade", "expected 0 to 86400 seconds");
-  f.fade_half_life_ms = o.fade_s * 1000;
-  f.rotation_error_ppm = o.rotation_error;
-  f.drift_ppm_per_minute = o.drift;
-  sf::FloorEmulator emulator(map.cells, start, o.heading, f);
-  devices::StopSignals::Scope signals;
-  devices::Pty pty = devices::Pty::open();
-  std::cout << pty.slave_path() << std::endl; // the first line, flushed: clients wait for it
-  emulator.serve(pty);
-  const auto& w = emulator.world();
-  nlohmann::json j;
-  j["robot"] = "stc-floor";
-  j["map"] = o.map;
-  j["start"] = {start.x, start.y};
-  j["seed"] = o.seed;
-  j["sessions"] = emulator.sessions();
-  j["commands"] = emulator.commands();
-  j["frames"] = w.frames();
-  j["positions"] = w.path().size();
-  j["covered"] = w.covered();
-  j["repeats"] = w.repeats();
-  j["reachable_subcells"] =
-      antkit::stc::reachable_subcells(map.cells, start, antkit::stc::Variant::AntEdge);
-  j["max_offset_subcells"] = static_cast<double>(w.max_offset()) / 65536.0;
-  j["max_heading_error_degrees"] =
-      static_cast<double>(w.max_heading_error()) * 360.0 / 4294967296.0;
-  j["clock_s"] = static_cast<double>(w.clock_ms()) / 1000.0;
-  antkit::cli::emit(j, o.format, std::cout);
+template <class T>
+std::optional<T> given(const CLI::Option* opt, const T& value) {
+  return opt->count() > 0 ? std::optional<T>(value) : std::nullopt;
 }
 
-void run(const EmulateOptions& o) {
-  if (o.robot == "stc-floor") return run_stc_floor(o);
-  for (const auto* opt : o.floor_opts)
-    if (opt != nullptr && opt->count() > 0)
-      throw InputError(opt->get_name(), "is an option of the stc-floor robot");
-  const auto robot = devices::parse_robot(o.robot);
-  if (!robot)
-    throw InputError("robot", "unknown robot '" + o.robot + "': expected " +
-                                  std::string(devices::robot_names()) + " or stc-floor");
-  devices::EmulatorOptions options;
-  options.seed = o.seed;
-  options.faults = devices::parse_faults(o.faults);
-  options.pace = o.pace;
-  const auto arena = antkit::cli::is_wkt_path(o.arena)
-                         ? antkit::geometry::read_wkt_file(o.arena)
-                         : antkit::geometry::build_arena_spec(o.arena, "--arena").arena;
-  std::optional<devices::TcpListener> listener;
-  if (!o.listen.empty())
-    listener.emplace(devices::TcpListener::listen(
-        devices::parse_tcp_endpoint(o.listen, "--listen", true), "--listen"));
-  devices::FirmwareEmulator emulator(*robot, arena.walls_fx(), options);
-  devices::StopSignals::Scope signals;
-  if (listener) {
-    std::cout << listener->port_spec() << std::endl; // the first line, flushed: clients wait for it
-    emulator.serve(*listener);
-  } else {
-    devices::Pty pty = devices::Pty::open();
-    std::cout << pty.slave_path() << std::endl; // the first line, flushed: clients wait for it
-    emulator.serve(pty);
-  }
+void run(const EmulateCommand& c) {
+  devices::EmulateOptions o;
+  o.seed = c.seed;
+  o.arena = given(c.arena_opt, c.arena);
+  const auto arena = antkit::cli::is_wkt_path(c.arena)
+                         ? antkit::geometry::read_wkt_file(c.arena)
+                         : antkit::geometry::build_arena_spec(c.arena, "--arena").arena;
+  o.walls = arena.walls_fx();
+  o.faults = c.faults;
+  o.pace = c.pace;
+  o.listen = given(c.listen_opt, c.listen);
+  if (!c.map.empty()) o.map = c.map;
+  if (!c.start.empty()) o.start = antkit::algorithms::parse_cell("--start", c.start);
+  o.heading = given(c.heading_opt, c.heading);
+  o.noise = given(c.noise_opt, c.noise);
+  o.dark_offset = given(c.dark_opt, c.dark_offset);
+  o.fade_s = given(c.fade_opt, c.fade_s);
+  o.rotation_error = given(c.rotation_opt, c.rotation_error);
+  o.drift = given(c.drift_opt, c.drift);
+  const auto r = devices::emulate(c.robot, o, [](const std::string& port) {
+    std::cout << port << std::endl; // the first line, flushed: clients wait for it
+  });
   nlohmann::json j;
-  j["robot"] = std::string(devices::robot_name(*robot));
-  j["arena"] = o.arena;
-  j["seed"] = o.seed;
-  if (listener) j["listen"] = listener->port_spec();
-  j["sessions"] = emulator.sessions();
-  j["commands"] = emulator.commands();
-  j["faults"] = emulator.faults();
-  j["periods"] = emulator.trail().size() - 1;
-  j["position"] = {static_cast<double>(emulator.pose().position.x.raw()) / 65536.0,
-                   static_cast<double>(emulator.pose().position.y.raw()) / 65536.0};
-  antkit::cli::emit(j, o.format, std::cout);
+  j["robot"] = c.robot;
+  j["seed"] = c.seed;
+  j["sessions"] = r.sessions;
+  j["commands"] = r.commands;
+  if (!r.listen.empty()) j["listen"] = r.listen;
+  if (r.position) { // a body in an arena
+    j["arena"] = c.arena;
+    j["faults"] = r.faults;
+    j["periods"] = *r.periods;
+    j["position"] = {r.position->first, r.position->second};
+  }
+  if (r.start) { // a robot on a floor map
+    j["map"] = c.map;
+    j["start"] = {r.start->x, r.start->y};
+    j["frames"] = r.frames;
+    j["positions"] = r.positions;
+    j["covered"] = r.covered;
+    j["repeats"] = r.repeats;
+    j["reachable_subcells"] = r.reachable_subcells;
+    j["max_offset_subcells"] = r.max_offset_subcells;
+    j["max_heading_error_degrees"] = r.max_heading_error_degrees;
+    j["clock_s"] = r.clock_s;
+  }
+  antkit::cli::emit(j, c.format, std::cout);
 }
 
 void register_emulate(CLI::App& app) {
-  auto o = std::make_shared<EmulateOptions>();
+  auto o = std::make_shared<EmulateCommand>();
   auto* sub = app.add_subcommand(
       "emulate", "A robot's firmware on a pseudo-terminal (or over TCP with --listen): khepera, "
                  "khepera-webots (the Khepera in Webots behind its TCP/IP relay), hemisson or "
                  "epuck (its body simulated in a Buffon arena) or stc-floor (paper 002's "
                  "marker-floor robot, its camera frames rendered); prints the pty path (or "
                  "tcp:HOST:PORT) on the first line");
-  sub->add_option("robot", o->robot, "khepera, khepera-webots, hemisson, epuck or stc-floor")
-      ->required();
+  sub->add_option("robot", o->robot, "The robot: " + antkit::devices::device_names())->required();
   o->arena_opt = sub->add_option(
       "--arena", o->arena, "A named arena spec or FILE.wkt, in body diameters (default standard)");
   sub->add_option("--seed", o->seed,
                   "Seed of the emulator's keyed streams (start, faults; stc-floor: noise)");
-  o->fault_opt = sub->add_option("--fault", o->faults,
-                                 "A fault: delay=P:MS, garbage=P, drop=P, cut=P (P per command) or "
-                                 "disconnect=N (after N commands); may be repeated");
-  o->pace_opt =
-      sub->add_flag("--pace", o->pace, "Pace replies at the robot's baud rate and command latency");
+  sub->add_option("--fault", o->faults,
+                  "A fault: delay=P:MS, garbage=P, drop=P, cut=P (P per command) or "
+                  "disconnect=N (after N commands); may be repeated");
+  sub->add_flag("--pace", o->pace, "Pace replies at the robot's baud rate and command latency");
   o->listen_opt = sub->add_option("--listen", o->listen,
                                   "Serve over TCP on HOST:PORT instead of a pty (PORT 0: any free "
                                   "port; one client at a time); prints tcp:HOST:PORT first");
-  o->floor_opts[0] = sub->add_option("--map", o->map, "stc-floor: the map (MovingAI, ROS, ASCII)");
-  o->floor_opts[1] = sub->add_option("--start", o->start,
-                                     "stc-floor: the start sub-cell X,Y (default as antkit stc)");
-  o->floor_opts[2] =
+  sub->add_option("--map", o->map, "stc-floor: the map (MovingAI, ROS, ASCII)");
+  sub->add_option("--start", o->start, "stc-floor: the start sub-cell X,Y (default as antkit stc)");
+  o->heading_opt =
       sub->add_option("--heading", o->heading, "stc-floor: heading at the start, 0 E 1 N 2 W 3 S");
-  o->floor_opts[3] = sub->add_option("--noise", o->noise,
-                                     "stc-floor: camera noise, uniform +-A per channel (0-255)");
-  o->floor_opts[4] =
-      sub->add_option("--dark-offset", o->dark_offset,
-                      "stc-floor: dark-current pattern, 0..A per pixel (default 12)");
-  o->floor_opts[5] = sub->add_option(
+  o->noise_opt = sub->add_option("--noise", o->noise,
+                                 "stc-floor: camera noise, uniform +-A per channel (0-255)");
+  o->dark_opt = sub->add_option("--dark-offset", o->dark_offset,
+                                "stc-floor: dark-current pattern, 0..A per pixel (default 12)");
+  o->fade_opt = sub->add_option(
       "--fade", o->fade_s, "stc-floor: half-life of the marks' glow in seconds (0: no fading)");
-  o->floor_opts[6] = sub->add_option("--rotation-error", o->rotation_error,
-                                     "stc-floor: turn rate against nominal, ppm");
-  o->floor_opts[7] = sub->add_option(
+  o->rotation_opt = sub->add_option("--rotation-error", o->rotation_error,
+                                    "stc-floor: turn rate against nominal, ppm");
+  o->drift_opt = sub->add_option(
       "--drift", o->drift, "stc-floor: the turn rate falls by this many ppm a minute (battery)");
   antkit::cli::add_format_option(*sub, o->format);
   sub->callback([o] { run(*o); });

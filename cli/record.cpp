@@ -26,12 +26,10 @@
 #include "stc_violation.hpp"
 
 #include <antkit/algorithms/options.hpp>
-#include <antkit/devices/adapter.hpp>
-#include <antkit/devices/stc_floor/record.hpp>
+#include <antkit/devices/device.hpp>
+#include <antkit/experiments/recorded_run.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/maps/map_io.hpp>
-#include <antkit/stc/world.hpp>
 #include <iostream>
 #include <memory>
 #include <unistd.h>
@@ -53,132 +51,35 @@ struct RecordCommand {
   // stc-floor
   std::string map, start, calibration;
   std::int32_t heading = 1, turn_ms = 1500, led_ms = 2000;
-  CLI::Option* steps_opt = nullptr;
+  CLI::Option *steps_opt = nullptr, *heading_opt = nullptr, *turn_opt = nullptr, *led_opt = nullptr;
 };
 
-// The line and the link from --baud, --framing, --timeout and --tries, over `line`'s defaults.
-void line_and_link(const RecordCommand& c, devices::LineSettings& line,
-                   devices::LinkOptions& link) {
-  if (!c.baud.empty()) line.baud = devices::parse_baud(c.baud, "--baud");
-  if (!c.framing.empty()) line = devices::parse_framing(c.framing, line.baud, "--framing");
+// The line (the device's, with --baud and --framing over it) and the link from --timeout and
+// --tries.
+void line_and_link(const RecordCommand& c, devices::RecordOptions& o) {
+  if (!c.baud.empty() || !c.framing.empty()) {
+    devices::LineSettings line = devices::device(c.device, "--device").line();
+    if (!c.baud.empty()) line.baud = devices::parse_baud(c.baud, "--baud");
+    if (!c.framing.empty()) line = devices::parse_framing(c.framing, line.baud, "--framing");
+    o.line = line;
+  }
   if (c.timeout_ms < 1 || c.timeout_ms > 60000)
     throw InputError("--timeout", "expected milliseconds in [1, 60000]");
   if (c.tries < 1 || c.tries > 100) throw InputError("--tries", "expected 1 to 100 sends");
-  link.timeout = std::chrono::milliseconds(c.timeout_ms);
-  link.tries = static_cast<std::uint32_t>(c.tries);
-}
-
-// How a recording ended and what its link went through, as both robots' summaries say it.
-void put_link(nlohmann::json& j, const std::string& stop, bool robot_stopped,
-              const std::string& safe_stop, const devices::LinkStats& link) {
-  j["stopped"] = stop;
-  j["robot_stopped"] = robot_stopped;
-  j["safe_stop"] = safe_stop.empty() ? "acknowledged" : safe_stop;
-  j["exchanges"] = link.exchanges;
-  j["retries"] = link.retries;
-  j["faults"] = {{"timeouts", link.timeouts},
-                 {"bad_replies", link.bad_replies},
-                 {"overflows", link.overflows},
-                 {"stale", link.stale}};
-}
-
-void run_stc_floor(const RecordCommand& c) {
-  namespace sf = devices::stc_floor;
-  namespace stc = antkit::stc;
-  sf::RecordOptions o;
-  o.port = c.port;
-  const auto variant = stc::parse_variant(c.controller);
-  if (!variant || (*variant != stc::Variant::Ant && *variant != stc::Variant::AntEdge))
-    throw InputError("--controller",
-                     "the stc-floor robot runs ant or ant-edge, not '" + c.controller + "'");
-  o.pilot.controller = *variant;
-  if (!c.arena.empty()) throw InputError("--arena", "is for khepera, hemisson and epuck");
-  std::optional<antkit::maps::GridMap> map;
-  if (!c.map.empty()) map = antkit::maps::load_map(c.map);
-  if (map) {
-    o.pilot.start = antkit::cli::choose_stc_start(*map, *variant, c.start, c.map);
-  } else if (!c.start.empty()) {
-    o.pilot.start = antkit::algorithms::parse_cell("--start", c.start);
-  } else {
-    throw InputError("--start", "without --map the robot's start sub-cell must be given (X,Y)");
-  }
-  if (c.heading < 0 || c.heading > 3)
-    throw InputError("--heading", "expected 0 (E), 1 (N), 2 (W) or 3 (S)");
-  o.pilot.heading = c.heading;
-  if (c.turn_ms < 1 || c.turn_ms > sf::kMaxTurnMs)
-    throw InputError("--turn-ms", "expected 1 to 60000 ms");
-  if (c.led_ms < 0 || c.led_ms > sf::kMaxLedMs) throw InputError("--led-ms", "expected 0 to 60000");
-  o.pilot.quarter_turn_ms = c.turn_ms;
-  o.pilot.led_ms = c.led_ms;
-  if (c.steps < 1 || c.steps > 1000000000) throw InputError("--steps", "expected 1 to 10^9");
-  o.pilot.max_steps = c.steps_opt->count() > 0 ? c.steps : 1000000;
-  if (!c.calibration.empty()) o.calibration = devices::stc_floor::read_calibration(c.calibration);
-  line_and_link(c, o.line, o.link);
-  o.out = c.out;
-  o.force = c.force;
-  const bool live = ::isatty(STDERR_FILENO) == 1;
-  const auto s = sf::record(o, [live](std::int64_t step) {
-    if (live && step % 50 == 0) std::cerr << "\rrecord: step " << step << std::flush;
-  });
-  if (live) std::cerr << '\n';
-  nlohmann::json j;
-  j["robot"] = "stc-floor";
-  j["controller"] = c.controller;
-  j["log"] = c.out;
-  j["steps"] = s.steps;
-  j["start"] = {o.pilot.start.x, o.pilot.start.y};
-  nlohmann::json path = nlohmann::json::array();
-  for (const auto& p : s.path) path.push_back({p.x, p.y});
-  j["path"] = std::move(path);
-  if (map) j["reachable_subcells"] = stc::reachable_subcells(map->cells, o.pilot.start, *variant);
-  j["covered"] = s.covered;
-  j["repeats"] = s.repeats;
-  const auto last = s.path.back(), first = s.path.front();
-  j["returned_to_start"] = s.closed && std::abs(last.x - first.x) + std::abs(last.y - first.y) <= 1;
-  j["hash"] = map ? nlohmann::json(antkit::kernel::hash_hex(
-                        stc::tour_hash(map->cells.width(), map->cells.height(), s.path)))
-                  : nlohmann::json(nullptr);
-  j["run_hash"] = antkit::kernel::hash_hex(s.hash);
-  j["turn_ms"] = s.turn_ms;
-  // A run is what it says: the believed tour held against the map by `antkit check stc`'s oracle
-  // (without a map: closed, next to the start, no sub-cell entered twice).
-  std::string broken;
-  if (map) {
-    const auto a = antkit::testing::audit_stc_tour(map->cells, o.pilot.start, s.path,
-                                                   antkit::testing::TourRule::ExactlyOnce);
-    j["tour_ok"] = a.ok();
-    j["first_violation"] = antkit::cli::first_violation_json(a);
-    if (!a.ok()) broken = a.first.describe();
-  } else {
-    const bool ok = j["returned_to_start"].get<bool>() && s.repeats == 0;
-    j["tour_ok"] = ok;
-    j["first_violation"] = nullptr;
-    if (!ok)
-      broken = !j["returned_to_start"].get<bool>()
-                   ? "the tour did not close next to the start"
-                   : std::to_string(s.repeats) + " sub-cells entered more than once";
-  }
-  // The marker-floor robot moves in discrete F and R commands, each run to its end by the robot:
-  // between commands it stands still, so its safe stop (LEDs off) does not decide robot_stopped.
-  put_link(j, s.stop, true, s.safe_stop, s.link);
-  antkit::cli::emit(j, c.format, std::cout);
-  if (s.kind == devices::StopKind::Interrupted) return;
-  if (s.kind != devices::StopKind::Done)
-    throw antkit::cli::CheckFailed("the run stopped before the tour closed: " + s.stop);
-  if (!broken.empty()) throw antkit::cli::CheckFailed("the tour is not a coverage tour: " + broken);
+  o.link.timeout = std::chrono::milliseconds(c.timeout_ms);
+  o.link.tries = static_cast<std::uint32_t>(c.tries);
 }
 
 void run(const RecordCommand& c) {
-  if (c.device == "stc-floor") return run_stc_floor(c);
-  if (!c.map.empty() || !c.start.empty() || !c.calibration.empty())
-    throw InputError("--device", "--map, --start and --calibration are for --device stc-floor");
-  const auto robot = devices::parse_robot(c.device);
-  if (!robot)
-    throw InputError("--device", "unknown robot '" + c.device + "': expected " +
-                                     std::string(devices::robot_names()) + " or stc-floor");
+  devices::RecordOptions o;
+  o.device = c.device;
+  o.port = c.port;
   devices::Params given;
   if (c.trial >= 0) given.emplace_back("trial", c.trial);
   if (c.visit >= 0) given.emplace_back("visit", c.visit);
+  if (c.heading_opt->count() > 0) given.emplace_back("heading", c.heading);
+  if (c.turn_opt->count() > 0) given.emplace_back("quarter_turn_ms", c.turn_ms);
+  if (c.led_opt->count() > 0) given.emplace_back("led_ms", c.led_ms);
   for (const auto& p : c.params) {
     const auto eq = p.find('=');
     if (eq == std::string::npos || eq == 0)
@@ -186,39 +87,68 @@ void run(const RecordCommand& c) {
     given.emplace_back(p.substr(0, eq), antkit::algorithms::parse_integer(
                                             "--param", p.substr(eq + 1), "a whole number"));
   }
-  devices::RecordOptions o;
-  o.robot = *robot;
-  o.port = c.port;
-  o.line = devices::describe(*robot).line;
-  line_and_link(c, o.line, o.link);
-  o.controller = devices::make_spec(c.controller, c.seed, given, "--controller");
-  o.steps = c.steps;
+  o.controller = {c.controller, given, c.seed};
+  if (c.steps_opt->count() > 0) o.steps = c.steps;
   o.out = c.out;
   o.force = c.force;
   o.arena = c.arena;
   if (c.period_ms < -1 || c.period_ms > 60000)
     throw InputError("--period", "expected milliseconds in [0, 60000]");
   if (c.period_ms >= 0) o.period = std::chrono::milliseconds(c.period_ms);
+  o.map = c.map;
+  if (!c.start.empty()) o.start = antkit::algorithms::parse_cell("--start", c.start);
+  o.calibration = c.calibration;
+  line_and_link(c, o);
 
   const bool live = ::isatty(STDERR_FILENO) == 1;
-  const auto summary = devices::record(o, [live](std::int64_t step, std::int64_t steps) {
+  const auto r = antkit::experiments::record_run(o, [live](std::int64_t step, std::int64_t steps) {
     if (live && (step % 50 == 0 || step == steps))
       std::cerr << "\rrecord: step " << step << " / " << steps << std::flush;
   });
   if (live) std::cerr << '\n';
+  const auto& s = r.summary;
   nlohmann::json j;
   j["robot"] = c.device;
   j["controller"] = c.controller;
   j["log"] = c.out;
-  j["steps"] = summary.steps;
-  j["completed"] = summary.completed;
-  put_link(j, summary.stop, summary.safe_stop.stopped, summary.safe_stop.failure, summary.link);
-  j["hash"] = antkit::kernel::hash_hex(summary.hash);
+  j["steps"] = s.steps;
+  j["completed"] = s.completed;
+  if (s.tour) {
+    const auto& t = *s.tour;
+    j["start"] = {t.start.x, t.start.y};
+    nlohmann::json path = nlohmann::json::array();
+    for (const auto& p : t.path) path.push_back({p.x, p.y});
+    j["path"] = std::move(path);
+    if (t.reachable_subcells) j["reachable_subcells"] = *t.reachable_subcells;
+    j["covered"] = t.covered;
+    j["repeats"] = t.repeats;
+    j["returned_to_start"] = t.returned_to_start;
+    j["hash"] = t.tour_hash ? nlohmann::json(antkit::kernel::hash_hex(*t.tour_hash))
+                            : nlohmann::json(nullptr);
+    j["run_hash"] = antkit::kernel::hash_hex(s.hash);
+    j["turn_ms"] = t.turn_ms;
+    j["tour_ok"] = r.tour_ok;
+    j["first_violation"] =
+        r.audit ? antkit::cli::first_violation_json(*r.audit) : nlohmann::json(nullptr);
+  } else {
+    j["hash"] = antkit::kernel::hash_hex(s.hash);
+  }
+  j["stopped"] = s.stop;
+  j["robot_stopped"] = s.safe_stop.stopped;
+  j["safe_stop"] = s.safe_stop.failure.empty() ? "acknowledged" : s.safe_stop.failure;
+  j["exchanges"] = s.link.exchanges;
+  j["retries"] = s.link.retries;
+  j["faults"] = {{"timeouts", s.link.timeouts},
+                 {"bad_replies", s.link.bad_replies},
+                 {"overflows", s.link.overflows},
+                 {"stale", s.link.stale}};
   antkit::cli::emit(j, c.format, std::cout);
-  if (!summary.safe_stop.stopped)
-    throw antkit::cli::CheckFailed("the robot may still be moving: " + summary.safe_stop.failure);
-  if (!summary.succeeded())
-    throw antkit::cli::CheckFailed("the run stopped early: " + summary.stop);
+  if (r.succeeded()) return;
+  if (!s.safe_stop.stopped)
+    throw antkit::cli::CheckFailed("the robot may still be moving: " + s.safe_stop.failure);
+  if (s.kind != devices::StopKind::Done)
+    throw antkit::cli::CheckFailed("the run stopped early: " + s.stop);
+  throw antkit::cli::CheckFailed("the tour is not a coverage tour: " + r.tour_broken);
 }
 
 void register_record(CLI::App& app) {
@@ -226,9 +156,7 @@ void register_record(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "record", "Run a controller on a robot or an emulator over a serial port and log every step "
                 "(JSON Lines) for replay");
-  sub->add_option("--device", c->device,
-                  "khepera, khepera-webots (Webots' TCP/IP relay), hemisson, epuck or stc-floor")
-      ->required();
+  sub->add_option("--device", c->device, "The robot: " + devices::device_names())->required();
   sub->add_option("--port", c->port,
                   "The serial device or pty (e.g. /dev/ttyUSB0), or tcp:HOST:PORT (Webots' relay "
                   "listens on 10020; antkit emulate --listen)")
@@ -238,11 +166,16 @@ void register_record(CLI::App& app) {
   sub->add_option("--map", c->map,
                   "stc-floor: the map, for the start, reachable_subcells and the tour hash");
   sub->add_option("--start", c->start, "stc-floor: the start sub-cell X,Y (default as antkit stc)");
-  sub->add_option("--heading", c->heading, "stc-floor: heading at the start, 0 E 1 N 2 W 3 S");
+  c->heading_opt =
+      sub->add_option("--heading", c->heading,
+                      "stc-floor: heading at the start, 0 E 1 N 2 W 3 S (--param heading)");
   sub->add_option("--calibration", c->calibration,
                   "stc-floor: the camera's calibration file (antkit stc-floor-calibrate)");
-  sub->add_option("--turn-ms", c->turn_ms, "stc-floor: the first time T of a quarter turn");
-  sub->add_option("--led-ms", c->led_ms, "stc-floor: LED time before each forward move");
+  c->turn_opt = sub->add_option("--turn-ms", c->turn_ms,
+                                "stc-floor: the first time T of a quarter turn (--param "
+                                "quarter_turn_ms)");
+  c->led_opt = sub->add_option("--led-ms", c->led_ms,
+                               "stc-floor: LED time before each forward move (--param led_ms)");
   sub->add_option("--seed", c->seed, "Seed of the controller's keyed streams (default 1)");
   sub->add_option("--trial", c->trial, "The controller's trial number (default 0)");
   sub->add_option("--visit", c->visit, "buffon: visit 1 (lay the trail) or 2 (count crossings)");

@@ -3,10 +3,12 @@
 
 #include <antkit/buffon/world.hpp>
 #include <antkit/devices/adapter.hpp>
+#include <antkit/devices/device.hpp>
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/odometry.hpp>
 #include <antkit/devices/stop_signals.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/maps/map_io.hpp>
 #include <antkit/uniform/controllers.hpp>
 #include <csignal>
 #include <optional>
@@ -130,6 +132,11 @@ void act(Body& body, bool wander, std::span<const std::int64_t> cmd, std::vector
 
 } // namespace detail
 
+MapPlace read_map_place(const std::string& file) {
+  maps::GridMap map = maps::load_map(file);
+  return {std::move(map.cells), map.start, file};
+}
+
 std::chrono::milliseconds model_period(const RobotDescription& robot) {
   // A simulator step moves kDefaultSpeed body diameters at unit speed; the robot covers that at
   // speed_full x speed_unit_um_s micrometres per second.
@@ -169,29 +176,26 @@ std::string stop_reason(StopKind kind, const std::string& detail, const SafeStop
 }
 
 RecordSummary record(const RecordOptions& options, const RecordProgress& progress) {
-  if (options.steps < 0 || options.steps > 1000000000)
+  if (options.steps && (*options.steps < 0 || *options.steps > 1000000000))
     throw kernel::InputError("--steps", "expected a whole number in [0, 1000000000]");
-  auto controller = make_controller(options.controller);
+  const Device& dev = device(options.device, "--device");
+  PreparedRun run = dev.prepare(options);
   // A log is never replaced by accident: a mistyped name must not lose a recorded visit.
   check_new_log(options.out, options.force);
 
-  LogHeader header;
+  LogHeader header = std::move(run.header);
   header.antkit_version = ANTKIT_DEVICES_VERSION;
-  header.robot = std::string(robot_name(options.robot));
   header.port = options.port;
-  header.baud = options.line.baud;
-  header.framing = options.line.framing();
-  header.controller = options.controller.name;
-  header.params = options.controller.params;
-  header.seed = options.controller.seed;
-  header.arena = options.arena;
+  header.baud = run.line.baud;
+  header.framing = run.line.framing();
 
   RecordSummary summary;
   // The port first: a bad --port is bad input and must leave no log behind. A link that cannot be
   // reached (a TCP relay that refuses) is a link failure: its log says so, and the run exits 1.
   std::optional<SerialPort> port;
   try {
-    port.emplace(SerialPort::open(options.port, options.line));
+    port.emplace(run.max_line > 0 ? SerialPort::open(options.port, run.line, run.max_line)
+                                  : SerialPort::open(options.port, run.line));
   } catch (const LinkError& e) {
     LogWriter log(options.out, header, 0, options.force);
     summary.kind = StopKind::Link;
@@ -203,40 +207,32 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
     return summary;
   }
   StopSignals::Scope signals;
-  RobotLink link(std::move(*port), options.robot, options.link);
-  const std::chrono::milliseconds period =
-      options.period ? *options.period : default_period(describe(options.robot));
-  detail::Body body(link, period);
+  const std::unique_ptr<Session> session = run.connect(std::move(*port), options.link);
   LogWriter log(options.out, header, options.sync_every, options.force);
 
-  RunHash run;
+  RunHash hash;
   LogRecord rec;
   std::vector<Exchange> pending; // exchanges of the step under way
   const auto t0 = Clock::now();
-  const bool wander = options.controller.name == "wander";
   std::string detail;
   try {
-    body.start(pending);
-    for (std::int64_t step = 0; step < options.steps; ++step) {
+    session->start(pending);
+    bool more = true;
+    for (std::int64_t step = 0; more && step < run.steps; ++step) {
       if (StopSignals::requested()) throw LinkError(LinkError::Kind::Interrupted, "stop signal");
-      const Proximity readings = body.read_sensors(pending);
-      controller->observe(body.robot(), readings, rec.obs);
-      controller->step(body.robot(), rec.obs, rec.cmd);
-      detail::act(body, wander, rec.cmd, pending);
-      const WheelTravel odo = body.odometry(pending);
+      more = session->step(rec, pending);
       rec.step = step;
       rec.time_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count();
       rec.io.swap(pending);
       pending.clear();
-      rec.odo.assign({odo.left, odo.right});
-      rec.state = controller->state_hash();
       log.write(rec);
-      run.add(rec.step, rec.obs, rec.cmd, rec.state);
+      hash.add(rec.step, rec.obs, rec.cmd, rec.state);
       summary.steps = step + 1;
-      if (progress) progress(summary.steps, options.steps);
+      if (progress) progress(summary.steps, run.steps);
     }
-    summary.completed = true;
-    summary.kind = StopKind::Done;
+    detail = session->failure();
+    summary.completed = detail.empty();
+    summary.kind = detail.empty() ? StopKind::Done : StopKind::Error;
   } catch (const LinkError& e) {
     if (e.kind() == LinkError::Kind::Interrupted) {
       summary.kind = StopKind::Interrupted;
@@ -252,11 +248,12 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
   // The safe stop: a pending stop signal would interrupt it, so it is taken first (the stop
   // reason already says it came).
   StopSignals::reset();
-  summary.safe_stop = safe_stop(link, pending);
+  summary.safe_stop = session->safe_stop(pending);
   summary.stop = stop_reason(summary.kind, detail, summary.safe_stop);
   log.finish({summary.steps, summary.stop, std::move(pending)});
-  summary.link = link.stats();
-  summary.hash = run.value();
+  summary.link = session->stats();
+  summary.hash = hash.value();
+  session->report(summary);
   return summary;
 }
 

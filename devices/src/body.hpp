@@ -5,10 +5,13 @@
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/odometry.hpp>
+#include <antkit/devices/replay.hpp>
 #include <antkit/uniform/controllers.hpp>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace antkit::devices::detail {
@@ -43,5 +46,9 @@ private:
 
 // Carries a controller's command out (adapter.hpp, step 3).
 void act(Body& body, bool wander, std::span<const std::int64_t> cmd, std::vector<Exchange>& io);
+
+// The replay of a serial robot's log (replay.hpp): the body above over the log's exchanges.
+ReplayResult replay_serial(LogReader& reader, const std::string& path,
+                           std::optional<std::int64_t> until, RobotKind kind);
 
 } // namespace antkit::devices::detail

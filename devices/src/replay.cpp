@@ -3,11 +3,11 @@
 
 #include <antkit/devices/adapter.hpp>
 #include <antkit/devices/controllers.hpp>
+#include <antkit/devices/device.hpp>
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/protocol.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/devices/robot.hpp>
-#include <antkit/devices/stc_floor/record.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 
@@ -221,20 +221,25 @@ ReplayResult replay(const std::string& path, std::optional<std::int64_t> until) 
 }
 
 ReplayResult replay(LogReader& reader, const std::string& path, std::optional<std::int64_t> until) {
-  if (reader.header().robot == "stc-floor") return stc_floor::replay_log(reader, path, until);
+  const Device* dev = find_device(reader.header().robot);
+  if (dev == nullptr)
+    throw kernel::InputError(
+        path, 1, 1, "unknown robot '" + reader.header().robot + "': expected " + device_names());
+  return dev->replay(reader, path, until);
+}
+
+namespace detail {
+
+ReplayResult replay_serial(LogReader& reader, const std::string& path,
+                           std::optional<std::int64_t> until, RobotKind kind) {
   const LogHeader& header = reader.header();
-  const auto kind = parse_robot(header.robot);
-  if (!kind)
-    throw kernel::InputError(path, 1, 1,
-                             "unknown robot '" + header.robot + "': expected " +
-                                 std::string(robot_names()) + " or stc-floor");
   std::unique_ptr<LoggedController> controller;
   try {
     controller = make_controller({header.controller, header.params, header.seed});
   } catch (const kernel::InputError& e) {
     throw kernel::InputError(path, 1, 1, e.message());
   }
-  const Codec codec(*kind);
+  const Codec codec(kind);
   const RobotDescription& robot = codec.robot();
   const bool wander = header.controller == "wander";
   // The same body as record() (body.hpp), over the log's exchanges.
@@ -292,5 +297,7 @@ ReplayResult replay(LogReader& reader, const std::string& path, std::optional<st
     }
   return result;
 }
+
+} // namespace detail
 
 } // namespace antkit::devices

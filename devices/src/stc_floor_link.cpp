@@ -251,9 +251,10 @@ std::vector<Exchange> LinkedRobot::take_io() {
 
 std::string LinkedRobot::safe_stop() noexcept {
   try {
+    // LEDs off is idempotent: resent like the other commands that may be, within `tries`.
     exchange(
-        leds_command(false), 1, [](const std::string& l) { return bool(decode_ack(l, 'l')); },
-        nullptr);
+        leds_command(false), options_.tries,
+        [](const std::string& l) { return bool(decode_ack(l, 'l')); }, nullptr);
     return "";
   } catch (const std::exception& e) {
     return e.what();

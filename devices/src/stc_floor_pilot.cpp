@@ -98,94 +98,104 @@ Image SimulatedRobot::capture(bool dark) {
   return world_.capture(dark);
 }
 
+Pilot::Pilot(FloorRobot& robot, const View& view, const PilotOptions& options)
+    : robot_(robot), view_(view), o_(options),
+      controller_(options.controller, stc::quadrant_of(options.start)), path_{options.start},
+      pos_(options.start), h_(options.heading & 3), T_(options.quarter_turn_ms),
+      dark_(robot.capture(true)) {}
+
+// One quarter turn (sign +1 left, -1 right) with the paper's calibration; `before` is the
+// unwarped marks image before it and becomes the one after it.
+void Pilot::quarter_turn(int sign, Image& before, PilotStep& s) {
+  const std::int64_t quarter = kernel::Angle::kQuarterTurn;
+  const std::int32_t pps = view_.calibration().pixels_per_subcell;
+  robot_.rotate(static_cast<std::int32_t>(sign * T_));
+  ++s.turns;
+  Image after = view_.marks_image(robot_.capture(false), dark_);
+  for (std::int32_t k = 0; k <= o_.max_corrections; ++k) {
+    const auto dev = measure_turn(before, after, sign, view_.params(), pps);
+    if (!dev) break;
+    if (k == 0) ++measured_;
+    if ((*dev >= 0 ? *dev : -*dev) <= o_.tolerance || k == o_.max_corrections) break;
+    if (k == 0) // T from the full quarter turn only: it turned quarter - sign * dev
+      T_ = calibrate_rotation(T_, quarter - sign * *dev, o_.max_change_ppm);
+    const auto ms = static_cast<std::int32_t>(
+        (static_cast<kernel::int128>(*dev) * T_ + (*dev >= 0 ? quarter / 2 : -quarter / 2)) /
+        quarter);
+    if (ms == 0) break;
+    robot_.rotate(ms);
+    ++s.corrections;
+    ++corrections_;
+    after = view_.marks_image(robot_.capture(false), dark_);
+  }
+  before = std::move(after);
+}
+
+PilotStep Pilot::step() {
+  PilotStep s;
+  s.step = steps_;
+  const Image frame = robot_.capture(false);
+  s.frame = frame_digest(frame);
+  Seen seen = view_.see(frame, dark_, stc::quadrant_of(pos_), h_);
+  s.obs = controller_.observation(seen.edges);
+  controller_.step(s.obs, s.cmd);
+  s.state = controller_.state_hash();
+  const auto move = static_cast<stc::Move>(s.cmd[0]);
+  if (move != stc::Move::Stop) {
+    const int d = static_cast<int>(move);
+    const int turn = (d - h_) & 3;
+    if (turn != 0) {
+      Image before = std::move(seen.marks);
+      if (turn == 3) {
+        quarter_turn(-1, before, s);
+      } else {
+        for (int t = 0; t < turn; ++t) quarter_turn(+1, before, s);
+      }
+      h_ = d;
+    }
+    s.moved = robot_.forward(s.cmd[1] != 0 ? o_.led_ms : 0);
+    if (s.moved) {
+      pos_ = stc::step(pos_, d);
+      path_.push_back(pos_);
+    }
+  }
+  s.position = pos_;
+  s.heading = h_;
+  s.turn_ms = T_;
+  run_.add(s.step, s.obs, s.cmd, s.state);
+  ++steps_;
+  if (move == stc::Move::Stop)
+    closed_ = true;
+  else if (!s.moved)
+    refused_ = true;
+  return s;
+}
+
+PilotResult Pilot::result() const {
+  PilotResult r;
+  r.path = path_;
+  r.steps = steps_;
+  r.closed = closed_;
+  r.refused = refused_;
+  const PathCounts counts = path_counts(path_);
+  r.covered = counts.covered;
+  r.repeats = counts.repeats;
+  r.turn_ms = T_;
+  r.measured = measured_;
+  r.corrections = corrections_;
+  r.hash = run_.value();
+  return r;
+}
+
 PilotResult run_pilot(FloorRobot& robot, const View& view, const PilotOptions& o,
                       const std::function<void(const PilotStep&)>& on_step) {
   check_controller(o.controller, "--controller");
-  const std::int64_t quarter = kernel::Angle::kQuarterTurn;
-  FloorController controller(o.controller, stc::quadrant_of(o.start));
-  PilotResult r;
-  r.path.push_back(o.start);
-  stc::SubCell pos = o.start;
-  int h = o.heading & 3;
-  std::int64_t T = o.quarter_turn_ms;
-  RunHash run;
-  const Image dark = robot.capture(true);
-  const std::int32_t pps = view.calibration().pixels_per_subcell;
-
-  // One quarter turn (sign +1 left, -1 right) with the paper's calibration; `before` is the
-  // unwarped marks image before it and becomes the one after it.
-  auto quarter_turn = [&](int sign, Image& before, PilotStep& s) {
-    robot.rotate(static_cast<std::int32_t>(sign * T));
-    ++s.turns;
-    Image after = view.marks_image(robot.capture(false), dark);
-    for (std::int32_t k = 0; k <= o.max_corrections; ++k) {
-      const auto dev = measure_turn(before, after, sign, view.params(), pps);
-      if (!dev) break;
-      if (k == 0) ++r.measured;
-      if ((*dev >= 0 ? *dev : -*dev) <= o.tolerance || k == o.max_corrections) break;
-      if (k == 0) // T from the full quarter turn only: it turned quarter - sign * dev
-        T = calibrate_rotation(T, quarter - sign * *dev, o.max_change_ppm);
-      const auto ms = static_cast<std::int32_t>(
-          (static_cast<kernel::int128>(*dev) * T + (*dev >= 0 ? quarter / 2 : -quarter / 2)) /
-          quarter);
-      if (ms == 0) break;
-      robot.rotate(ms);
-      ++s.corrections;
-      ++r.corrections;
-      after = view.marks_image(robot.capture(false), dark);
-    }
-    before = std::move(after);
-  };
-
-  for (std::int64_t step = 0; step < o.max_steps; ++step) {
-    PilotStep s;
-    s.step = step;
-    const Image frame = robot.capture(false);
-    s.frame = frame_digest(frame);
-    Seen seen = view.see(frame, dark, stc::quadrant_of(pos), h);
-    s.obs = controller.observation(seen.edges);
-    controller.step(s.obs, s.cmd);
-    s.state = controller.state_hash();
-    const auto move = static_cast<stc::Move>(s.cmd[0]);
-    if (move != stc::Move::Stop) {
-      const int d = static_cast<int>(move);
-      const int turn = (d - h) & 3;
-      if (turn != 0) {
-        Image before = std::move(seen.marks);
-        if (turn == 3) {
-          quarter_turn(-1, before, s);
-        } else {
-          for (int t = 0; t < turn; ++t) quarter_turn(+1, before, s);
-        }
-        h = d;
-      }
-      s.moved = robot.forward(s.cmd[1] != 0 ? o.led_ms : 0);
-      if (s.moved) {
-        pos = stc::step(pos, d);
-        r.path.push_back(pos);
-      }
-    }
-    s.position = pos;
-    s.heading = h;
-    s.turn_ms = T;
-    run.add(step, s.obs, s.cmd, s.state);
-    ++r.steps;
+  Pilot pilot(robot, view, o);
+  for (std::int64_t step = 0; step < o.max_steps && !pilot.ended(); ++step) {
+    const PilotStep s = pilot.step();
     if (on_step) on_step(s);
-    if (move == stc::Move::Stop) {
-      r.closed = true;
-      break;
-    }
-    if (!s.moved) {
-      r.refused = true;
-      break;
-    }
   }
-  const PathCounts counts = path_counts(r.path);
-  r.covered = counts.covered;
-  r.repeats = counts.repeats;
-  r.turn_ms = T;
-  r.hash = run.value();
-  return r;
+  return pilot.result();
 }
 
 } // namespace antkit::devices::stc_floor

@@ -58,7 +58,7 @@ inline devices::RecordOptions record_options(devices::RobotKind robot, const std
                                              const devices::Params& params, std::int64_t steps,
                                              const std::string& out) {
   devices::RecordOptions o;
-  o.robot = robot;
+  o.device = std::string(devices::robot_name(robot));
   o.port = port;
   o.line = devices::describe(robot).line;
   o.controller = devices::make_spec(controller, 7, params, "test");

@@ -187,7 +187,7 @@ TEST_CASE("a long run through drops, garbage, cut and late replies at once, by d
                     with_faults(26, {"drop=0.05", "garbage=0.05", "cut=0.05", "delay=0.002:60"}));
   const auto log = dir.file("long.jsonl");
   devices::RecordOptions o;
-  o.robot = RobotKind::Khepera;
+  o.device = std::string(devices::robot_name(RobotKind::Khepera));
   o.port = emu.port();
   o.line = devices::describe(RobotKind::Khepera).line;
   o.controller = devices::make_spec("buffon", 3, {}, "test");

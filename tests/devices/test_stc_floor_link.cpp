@@ -9,6 +9,7 @@
 #include <antkit/stc/world.hpp>
 #include <catch2/catch.hpp>
 #include <fstream>
+#include <functional>
 #include <rapidcheck/catch.h>
 
 namespace devices = antkit::devices;
@@ -87,25 +88,32 @@ TEST_CASE("stc floor link: a recorded run over a pty is the simulated tour and r
   for (const auto variant : {stc::Variant::AntEdge, stc::Variant::Ant}) {
     INFO(stc::variant_name(variant));
     FloorOnPty robot(map, stc::SubCell{0, 0}, 1, sf::FloorOptions{});
-    sf::RecordOptions o;
+    devices::RecordOptions o;
+    o.device = "stc-floor";
     o.port = robot.port();
-    o.pilot.controller = variant;
-    o.pilot.start = {0, 0};
+    o.controller.name = std::string(stc::variant_name(variant));
+    o.start = stc::SubCell{0, 0};
     o.out = dir.file(std::string(stc::variant_name(variant)) + ".jsonl");
     // A fault-free robot: a generous timeout keeps a loaded machine (the sanitizer build renders
     // frames slowly) from adding faults of its own; the tour must be the simulated one.
     o.link.timeout = std::chrono::milliseconds(3000);
-    const auto s = sf::record(o);
+    const auto s = devices::record(o);
     robot.stop();
     CHECK(s.stop == "done");
-    CHECK(s.closed);
-    CHECK(s.safe_stop.empty());
+    CHECK(s.kind == devices::StopKind::Done);
+    CHECK(s.succeeded());
+    REQUIRE(s.tour);
+    CHECK(s.tour->closed);
+    CHECK(s.tour->returned_to_start);
+    CHECK(s.safe_stop.complete);
+    CHECK(s.safe_stop.failure.empty());
     const auto sim = stc::run_stc(map, {0, 0}, variant);
-    CHECK(s.path == sim.path);
-    CHECK(stc::tour_hash(map.width(), map.height(), s.path) == sim.hash);
+    CHECK(s.tour->path == sim.path);
+    CHECK(stc::tour_hash(map.width(), map.height(), s.tour->path) == sim.hash);
     CHECK(robot.emulator().world().path() == sim.path);
     CHECK(robot.emulator().world().repeats() == 0);
-    CHECK(s.covered == sim.reachable_subcells);
+    CHECK(s.tour->covered == sim.reachable_subcells);
+    CHECK(s.tour->repeats == 0);
     const auto r = devices::replay(o.out);
     CHECK(r.identical);
     CHECK(r.steps == s.steps);
@@ -119,12 +127,14 @@ TEST_CASE("stc floor link: an edited log is caught at the edited step and field"
   TempDir dir;
   const auto map = board();
   FloorOnPty robot(map, stc::SubCell{0, 0}, 1, sf::FloorOptions{});
-  sf::RecordOptions o;
+  devices::RecordOptions o;
+  o.device = "stc-floor";
+  o.controller.name = "ant-edge";
   o.port = robot.port();
-  o.pilot.start = {0, 0};
+  o.start = stc::SubCell{0, 0};
   o.out = dir.file("floor.jsonl");
   o.link.timeout = std::chrono::milliseconds(3000);
-  REQUIRE(sf::record(o).closed);
+  REQUIRE(devices::record(o).tour->closed);
   robot.stop();
   const auto lines = antkit::test::lines_of(o.out);
   struct Edit {
@@ -191,19 +201,84 @@ TEST_CASE("stc floor link: a robot that does not answer ends the run with its re
           "[devices]") {
   TempDir dir;
   devices::Pty pty = devices::Pty::open(); // nobody answers on the master
-  sf::RecordOptions o;
+  devices::RecordOptions o;
+  o.device = "stc-floor";
+  o.controller.name = "ant-edge";
   o.port = pty.slave_path();
-  o.pilot.start = {0, 0};
+  o.start = stc::SubCell{0, 0};
   o.link.timeout = std::chrono::milliseconds(20);
   o.link.tries = 2;
   o.out = dir.file("silent.jsonl");
-  const auto s = sf::record(o);
-  CHECK_FALSE(s.closed);
+  const auto s = devices::record(o);
+  REQUIRE(s.tour);
+  CHECK_FALSE(s.tour->closed);
+  CHECK(s.kind == devices::StopKind::Link);
   CHECK(s.steps == 0);
   CHECK(s.stop.find("'C,1' failed after 2 sends: no reply") != std::string::npos);
-  CHECK(s.link.retries == 1);
+  // The dark frame's C,1 and the safe stop's L,0, each sent twice.
+  CHECK(s.link.retries == 2);
+  CHECK(s.safe_stop.stopped);
+  CHECK_FALSE(s.safe_stop.acknowledged);
+  CHECK(s.stop.find("; safe stop: ") != std::string::npos);
   const auto r = devices::replay(o.out);
   CHECK(r.identical);
   REQUIRE(r.stop);
   CHECK(r.stop->reason.rfind("link: ", 0) == 0);
+}
+
+TEST_CASE("stc floor link: the stop record is checked: its words, its bytes, its safe stop",
+          "[devices]") {
+  // Issue 26: the marker-floor robot's log goes through the same checks as the other robots'
+  // (replay.hpp): an edited stop record replays as a divergence in stop.*.
+  TempDir dir;
+  const auto map = board();
+  FloorOnPty robot(map, stc::SubCell{0, 0}, 1, sf::FloorOptions{});
+  devices::RecordOptions o;
+  o.device = "stc-floor";
+  o.controller.name = "ant-edge";
+  o.port = robot.port();
+  o.start = stc::SubCell{0, 0};
+  o.out = dir.file("floor.jsonl");
+  o.link.timeout = std::chrono::milliseconds(3000);
+  REQUIRE(devices::record(o).succeeded());
+  robot.stop();
+  const auto original = devices::replay(o.out);
+  REQUIRE(original.identical);
+  REQUIRE(original.complete);
+  REQUIRE(original.stop);
+  CHECK(original.stop->reason == "done");
+  REQUIRE_FALSE(original.stop->io.empty());
+  CHECK(original.stop->io.back().sent == "L,0\r"); // the safe stop, acknowledged
+  struct Edit {
+    std::string what;
+    std::function<void(devices::LogStop&)> apply;
+  };
+  const std::vector<Edit> edits{
+      {"an unknown reason", [](devices::LogStop& s) { s.reason = "finished"; }},
+      {"a bump that did not happen",
+       [](devices::LogStop& s) { s.reason = "error: the robot bumped and did not move"; }},
+      {"a failed safe stop that was acknowledged",
+       [](devices::LogStop& s) { s.reason += "; safe stop: no reply"; }},
+      {"a robot that may be moving",
+       [](devices::LogStop& s) { s.reason += "; robot may be moving: no reply"; }},
+      {"the safe stop's bytes", [](devices::LogStop& s) { s.io.back().sent = "L,1\r"; }},
+      {"the safe stop's acknowledgement",
+       [](devices::LogStop& s) { s.io.back().received = "x\r\n"; }},
+      {"no safe stop", [](devices::LogStop& s) { s.io.clear(); }},
+  };
+  const auto lines = antkit::test::lines_of(o.out);
+  for (const auto& edit : edits) {
+    INFO(edit.what);
+    auto stop = *original.stop;
+    edit.apply(stop);
+    auto edited = lines;
+    edited.back() = devices::format_stop(stop);
+    const auto path = dir.file("edited-stop.jsonl");
+    antkit::test::write_lines(path, edited);
+    const auto r = devices::replay(path);
+    CHECK_FALSE(r.identical);
+    CHECK(r.steps == original.steps);
+    REQUIRE(r.first_divergence);
+    CHECK(r.first_divergence->field.rfind("stop.", 0) == 0);
+  }
 }

@@ -73,7 +73,7 @@ std::string ask(devices::SerialPort& port, std::string_view command) {
 devices::RecordOptions options_for(RobotKind robot, const std::string& port, std::int64_t steps,
                                    const std::string& out) {
   devices::RecordOptions o;
-  o.robot = robot;
+  o.device = std::string(devices::robot_name(robot));
   o.port = port;
   o.line = devices::describe(robot).line;
   o.controller = devices::make_spec("buffon", 7, {{"visit", 1}}, "test");

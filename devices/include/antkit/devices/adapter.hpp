@@ -30,27 +30,52 @@
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/robot.hpp>
+#include <antkit/kernel/grid.hpp>
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace antkit::devices {
 
+// A grid map file as a run reads it (the marker-floor robot's): its cells and the start the file
+// names, if any ('S' in an ASCII map); `file` names it in messages.
+struct MapPlace {
+  kernel::OccupancyGrid cells;
+  std::optional<kernel::Cell> start;
+  std::string file;
+};
+// Reads a map file (geometry's map_io: MovingAI, ROS, ASCII); kernel::InputError naming it.
+MapPlace read_map_place(const std::string& file);
+
+// What a run is asked to do, for every device (device.hpp); a device refuses the options it does
+// not take (kernel::InputError naming the option).
 struct RecordOptions {
-  RobotKind robot = RobotKind::Khepera;
-  std::string port;  // a tty or pty path, or tcp:HOST:PORT (serial.hpp)
-  LineSettings line; // usually describe(robot).line
+  std::string device = "khepera";   // a registry name (device.hpp)
+  std::string port;                 // a tty or pty path, or tcp:HOST:PORT (serial.hpp)
+  std::optional<LineSettings> line; // unset: the device's
+  // The controller: its name, parameters (any order; the device makes them canonical) and seed.
+  // The serial robots: controllers.hpp. The marker-floor robot: ant or ant-edge, params heading
+  // (0 E, 1 N, 2 W, 3 S; default 1), quarter_turn_ms (the first T, default 1500), led_ms (2000).
   ControllerSpec controller;
-  std::int64_t steps = 1000;
-  std::string out;    // the log
+  std::optional<std::int64_t> steps; // unset: 1000; the marker-floor robot: until its tour closes
+  std::string out;                   // the log
   bool force = false; // replace `out` if it exists (otherwise an existing log is bad input)
-  std::string arena;  // the arena, when known (an emulator's spec), for the log's header
   LinkOptions link;
-  // The shortest time between two sensor reads (a control period; 0: as fast as the link allows).
-  // Unset: default_period(robot).
+  // The serial robots: the shortest time between two sensor reads (a control period; 0: as fast
+  // as the link allows). Unset: default_period(robot).
   std::optional<std::chrono::milliseconds> period;
+  std::string
+      arena; // the serial robots: the arena, when known (an emulator's spec), for the header
+  // The marker-floor robot: the map (for the start, the reachable sub-cells and the tour's hash),
+  // the start sub-cell (default: the map's, else as antkit stc; without a map it must be given),
+  // and the camera's calibration file (default: the ideal calibration).
+  std::string map; // a map file
+  std::optional<kernel::Cell> start;
+  std::string calibration;
   std::uint32_t sync_every = 0; // fdatasync the log every N records (0: only at the end)
 };
 
@@ -84,6 +109,20 @@ struct RecordSummary {
   bool completed = false; // all the requested steps ran
   SafeStopResult safe_stop;
   std::uint64_t hash = 0; // RunHash of the run (replay() recomputes it)
+  // The marker-floor robot's tour, believed, in map sub-cells.
+  struct Tour {
+    kernel::Cell start{};
+    std::vector<kernel::Cell> path; // the start first
+    bool closed = false;            // the controller stopped: the tour is over
+    bool returned_to_start = false; // closed, next to the start
+    std::int64_t covered = 0, repeats = 0;
+    std::int64_t turn_ms = 0; // the last T
+    // With a map: the sub-cells the tour must enter, and the tour's hash as antkit stc's.
+    std::optional<std::int64_t> reachable_subcells;
+    std::optional<std::uint64_t> tour_hash;
+    std::shared_ptr<const MapPlace> map; // the map read for the run, when one was given
+  };
+  std::optional<Tour> tour;
   // What the run's exit status follows: it did what it set out to do (every step, or stopped on
   // request) and the robot is known to be stopped.
   [[nodiscard]] bool succeeded() const noexcept {
@@ -93,10 +132,12 @@ struct RecordSummary {
 
 using RecordProgress = std::function<void(std::int64_t step, std::int64_t steps)>;
 
-// Refuses an existing `out` unless `force`, opens the port (a bad --port is bad input and leaves no
-// log; a refused TCP connection leaves a log with only its stop record, kind Link), then writes the
-// log as it runs. Installs the SIGINT / SIGTERM handlers for its duration (StopSignals::Scope).
-// Throws kernel::InputError for bad options; every failure of the run itself ends in the summary.
+// One record loop for every device (device.hpp): validates the options with the device (bad input
+// is kernel::InputError, before anything is opened), refuses an existing `out` unless `force`,
+// opens the port (a bad --port is bad input and leaves no log; a refused TCP connection leaves a
+// log with only its stop record, kind Link), then writes the log as it runs. Installs the SIGINT /
+// SIGTERM handlers for its duration (StopSignals::Scope). Every failure of the run itself ends in
+// the summary.
 RecordSummary record(const RecordOptions& options, const RecordProgress& progress = {});
 
 } // namespace antkit::devices

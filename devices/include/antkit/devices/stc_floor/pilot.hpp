@@ -29,6 +29,7 @@
 //   ant      obs: free_neighbours, here, neighbour E, N, W, S (4-bit covered-sub-cell masks)
 //   cmd:          move (0 E, 1 N, 2 W, 3 S, 4 stop), mark (0 / 1)
 // Its state hash: kernel::TraceHash over the controller object's bytes (two: q and done).
+#include <antkit/devices/run_hash.hpp>
 #include <antkit/devices/stc_floor/view.hpp>
 #include <antkit/stc/ant.hpp>
 #include <antkit/stc/subcell.hpp>
@@ -115,6 +116,38 @@ struct PathCounts {
 };
 [[nodiscard]] PathCounts path_counts(std::span<const stc::SubCell> path);
 
+// The pilot one step at a time (what record()'s loop drives, devices/device.hpp): the dark frame
+// is taken at construction; step() runs one step as above. The run has ended when the controller
+// stopped (closed) or the robot bumped (refused); step() may not be called after that.
+class Pilot {
+public:
+  Pilot(FloorRobot& robot, const View& view, const PilotOptions& options);
+  PilotStep step();
+  [[nodiscard]] bool ended() const noexcept { return closed_ || refused_; }
+  [[nodiscard]] bool closed() const noexcept { return closed_; }
+  [[nodiscard]] bool refused() const noexcept { return refused_; }
+  [[nodiscard]] const std::vector<stc::SubCell>& path() const noexcept { return path_; }
+  [[nodiscard]] std::int64_t turn_ms() const noexcept { return T_; }
+  // The run so far as run_pilot() reports it.
+  [[nodiscard]] PilotResult result() const;
+
+private:
+  void quarter_turn(int sign, Image& before, PilotStep& s);
+  FloorRobot& robot_;
+  const View& view_;
+  PilotOptions o_;
+  FloorController controller_;
+  std::vector<stc::SubCell> path_;
+  stc::SubCell pos_;
+  int h_;
+  std::int64_t T_;
+  Image dark_;
+  std::int64_t steps_ = 0, measured_ = 0, corrections_ = 0;
+  bool closed_ = false, refused_ = false;
+  RunHash run_;
+};
+
+// Runs a Pilot until it ends or max_steps ran.
 PilotResult run_pilot(FloorRobot& robot, const View& view, const PilotOptions& options,
                       const std::function<void(const PilotStep&)>& on_step = {});
 

@@ -1,0 +1,133 @@
+#pragma once
+// One robot model for every robot antkit drives (DESIGN.md, devices/): a Device is a robot as the
+// command line names it (`--device khepera`), with what record(), replay() and emulate() need of
+// it; a registry lists them. The loops are written once, for every device:
+//   record()   (adapter.hpp) opens the port, asks the device for a Session, and runs
+//              start, then step after step (each step's record written and flushed before the
+//              next), then the safe stop and the stop record, on every way out;
+//   replay()   (replay.hpp) reads the log's header, finds its device by the header's robot and
+//              checks every record through the device's checker inside the shared record loop
+//              (replay_records);
+//   emulate()  serves the device's firmware emulator on a pty or over TCP until SIGINT / SIGTERM.
+// A log has one schema for every device (log.hpp): a header, step records (io, obs, cmd, odo,
+// state) and a stop record; what a device puts in obs, cmd and odo is written beside its session.
+//
+// The devices (registry.cpp):
+//   khepera, khepera-webots, hemisson, epuck   the serial robots of paper 000's family
+//                                              (robot.hpp), running the controllers of
+//                                              controllers.hpp (buffon, rs, wander)
+//   stc-floor                                  paper 002's marker-floor robot (stc_floor/), running
+//                                              ant or ant-edge through the camera pipeline
+// Adding a robot is one set of files (its description or codec, its Session, its Device) and one
+// line in registry.cpp: CONTRIBUTING.md walks through it.
+#include <antkit/devices/adapter.hpp>
+#include <antkit/devices/log.hpp>
+#include <antkit/devices/replay.hpp>
+#include <antkit/devices/serial.hpp>
+#include <antkit/kernel/grid.hpp>
+#include <antkit/kernel/segment.hpp>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace antkit::devices {
+
+// One robot under one controller for one run, connected: the robot's half of record()'s loop.
+// Every exchange goes into the `io` given (the step's record, or the stop record's).
+class Session {
+public:
+  virtual ~Session() = default;
+  // Before the first step (the wheel counters' reset, the marker-floor robot's dark frame).
+  virtual void start(std::vector<Exchange>& io) = 0;
+  // One control step: fills rec.obs, rec.cmd, rec.odo and rec.state (record() sets step, t_ns
+  // and io). Returns false when the controller ended the run with this step (a closed tour);
+  // throws LinkError when the link fails, another exception for anything else.
+  virtual bool step(LogRecord& rec, std::vector<Exchange>& io) = 0;
+  // Never throws: the robot stopped, confirmed where the robot can say (link.hpp).
+  virtual SafeStopResult safe_stop(std::vector<Exchange>& io) noexcept = 0;
+  [[nodiscard]] virtual LinkStats stats() const = 0;
+  // Why the run, ended by a step that returned false, fell short of what it set out to do ("":
+  // it did not; the marker-floor robot: it bumped and did not move). The run's stop is then an
+  // error with these words.
+  [[nodiscard]] virtual std::string failure() const { return {}; }
+  // The device's own results into the summary (the marker-floor robot's tour).
+  virtual void report(RecordSummary& summary) const { (void)summary; }
+};
+
+// A run prepared from the options, before anything is opened: its log header and how to connect.
+struct PreparedRun {
+  LogHeader header; // the device's fields: robot, controller, params, seed, arena
+  LineSettings line;
+  std::size_t max_line = 0; // the longest reply line the link accepts (0: SerialPort's default)
+  std::int64_t steps = 0;
+  std::function<std::unique_ptr<Session>(SerialPort port, const LinkOptions& link)> connect;
+};
+
+// The emulator's options as the command line gives them; a device refuses those it does not take
+// (InputError naming the option).
+struct EmulateOptions {
+  std::uint64_t seed = 1;
+  std::optional<std::string> arena;     // the serial robots: the arena's spec, for the report
+  std::vector<kernel::FxSegment> walls; // ... and its walls (the default arena's when not given)
+  std::vector<std::string> faults;      // the serial robots: --fault (emulator.hpp)
+  bool pace = false;                    // the serial robots
+  std::optional<std::string> listen;    // HOST:PORT: serve over TCP (the serial robots)
+  std::optional<std::string> map;       // the marker-floor robot: the floor's map file
+  std::optional<kernel::Cell> start;    // ... the start sub-cell (default: as antkit stc)
+  std::optional<std::int64_t> heading;  // ... 0 E, 1 N, 2 W, 3 S (default 1)
+  std::optional<std::int64_t> noise, dark_offset, fade_s, rotation_error, drift; // ... its camera
+};
+
+// What an emulator served (emulate()'s summary).
+struct EmulateReport {
+  std::string listen; // tcp:HOST:PORT when served over TCP
+  std::uint64_t sessions = 0, commands = 0, faults = 0;
+  // The serial robots: the last session's control periods and end position (body diameters).
+  std::optional<std::uint64_t> periods;
+  std::optional<std::pair<double, double>> position;
+  // The marker-floor robot: the truth of the last session.
+  std::optional<kernel::Cell> start;
+  std::int64_t frames = 0;
+  std::uint64_t positions = 0;
+  std::int64_t covered = 0, repeats = 0, reachable_subcells = 0;
+  double max_offset_subcells = 0, max_heading_error_degrees = 0, clock_s = 0;
+};
+
+class Device {
+public:
+  virtual ~Device() = default;
+  [[nodiscard]] virtual std::string_view name() const noexcept = 0;
+  // The line the robot talks on (record's --baud and --framing go over it).
+  [[nodiscard]] virtual LineSettings line() const noexcept = 0;
+  // Validates the options for this device (kernel::InputError naming the option otherwise).
+  [[nodiscard]] virtual PreparedRun prepare(const RecordOptions& options) const = 0;
+  // The replay of a log whose header names this device (replay.hpp).
+  [[nodiscard]] virtual ReplayResult replay(LogReader& reader, const std::string& path,
+                                            std::optional<std::int64_t> until) const = 0;
+  // Serves the firmware emulator: `ready` gets the pty's path (or tcp:HOST:PORT) once clients may
+  // connect; returns after SIGINT / SIGTERM (or a disconnect fault).
+  [[nodiscard]] virtual EmulateReport
+  emulate(const EmulateOptions& options,
+          const std::function<void(const std::string& port)>& ready) const = 0;
+};
+
+// Every device, in the order of device_names().
+[[nodiscard]] std::span<const Device* const> all_devices();
+// The device named `name`, or nullptr.
+[[nodiscard]] const Device* find_device(std::string_view name) noexcept;
+// The device named `name`; throws kernel::InputError(where, "unknown device ...: expected ...").
+[[nodiscard]] const Device& device(std::string_view name, const std::string& where);
+// "khepera, khepera-webots, hemisson, epuck, stc-floor", for messages and --help.
+[[nodiscard]] std::string device_names();
+
+// Serves `device`'s emulator (the library call behind `antkit emulate`); installs the SIGINT /
+// SIGTERM handlers for its duration.
+EmulateReport emulate(const std::string& device, const EmulateOptions& options,
+                      const std::function<void(const std::string& port)>& ready);
+
+} // namespace antkit::devices

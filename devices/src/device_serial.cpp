@@ -1,0 +1,155 @@
+// The serial robots of paper 000's family as devices (device.hpp): khepera, khepera-webots,
+// hemisson and epuck, each a RobotDescription (robot.hpp) driven by the body (body.hpp) over a
+// RobotLink (link.hpp) under a controller of controllers.hpp.
+//
+// A session's step (adapter.hpp, "One control step"): the proximity read, the controller, the
+// command carried out, the odometry. Its record: obs and cmd as controllers.hpp writes them, odo
+// the wheel travel [left, right] (counters less the start's baseline; the Hemisson's commanded
+// travel in micrometres), state the controller's state hash.
+#include "body.hpp"
+#include "registry.hpp"
+
+#include <antkit/devices/device.hpp>
+#include <antkit/devices/emulator.hpp>
+#include <antkit/kernel/input_error.hpp>
+
+namespace antkit::devices {
+
+namespace {
+
+class SerialSession final : public Session {
+public:
+  SerialSession(SerialPort port, RobotKind robot, const LinkOptions& link,
+                std::unique_ptr<LoggedController> controller, bool wander,
+                std::chrono::milliseconds period)
+      : link_(std::move(port), robot, link), body_(link_, period),
+        controller_(std::move(controller)), wander_(wander) {}
+
+  void start(std::vector<Exchange>& io) override { body_.start(io); }
+
+  bool step(LogRecord& rec, std::vector<Exchange>& io) override {
+    const Proximity readings = body_.read_sensors(io);
+    controller_->observe(body_.robot(), readings, rec.obs);
+    controller_->step(body_.robot(), rec.obs, rec.cmd);
+    detail::act(body_, wander_, rec.cmd, io);
+    const WheelTravel odo = body_.odometry(io);
+    rec.odo.assign({odo.left, odo.right});
+    rec.state = controller_->state_hash();
+    return true;
+  }
+
+  SafeStopResult safe_stop(std::vector<Exchange>& io) noexcept override {
+    return devices::safe_stop(link_, io);
+  }
+  [[nodiscard]] LinkStats stats() const override { return link_.stats(); }
+
+private:
+  RobotLink link_;
+  detail::Body body_;
+  std::unique_ptr<LoggedController> controller_;
+  bool wander_;
+};
+
+class SerialDevice final : public Device {
+public:
+  constexpr explicit SerialDevice(RobotKind robot) : robot_(robot) {}
+  [[nodiscard]] std::string_view name() const noexcept override { return robot_name(robot_); }
+  [[nodiscard]] LineSettings line() const noexcept override { return describe(robot_).line; }
+
+  [[nodiscard]] PreparedRun prepare(const RecordOptions& o) const override {
+    const std::string others = " is an option of the stc-floor robot";
+    if (!o.map.empty()) throw kernel::InputError("--map", others);
+    if (o.start) throw kernel::InputError("--start", others);
+    if (!o.calibration.empty()) throw kernel::InputError("--calibration", others);
+    ControllerSpec spec =
+        make_spec(o.controller.name, o.controller.seed, o.controller.params, "--controller");
+    (void)make_controller(spec); // refuses a spec it cannot build, before anything is opened
+    const RobotDescription& robot = describe(robot_);
+    PreparedRun run;
+    run.header.robot = std::string(robot.name);
+    run.header.controller = spec.name;
+    run.header.params = spec.params;
+    run.header.seed = spec.seed;
+    run.header.arena = o.arena;
+    run.line = o.line ? *o.line : line();
+    run.steps = o.steps ? *o.steps : 1000;
+    const std::chrono::milliseconds period = o.period ? *o.period : default_period(robot);
+    const bool wander = spec.name == "wander";
+    const RobotKind kind = robot_;
+    run.connect = [kind, period, wander, spec](SerialPort port, const LinkOptions& link) {
+      return std::make_unique<SerialSession>(std::move(port), kind, link, make_controller(spec),
+                                             wander, period);
+    };
+    return run;
+  }
+
+  [[nodiscard]] ReplayResult replay(LogReader& reader, const std::string& path,
+                                    std::optional<std::int64_t> until) const override {
+    return detail::replay_serial(reader, path, until, robot_);
+  }
+
+  [[nodiscard]] EmulateReport
+  emulate(const EmulateOptions& o,
+          const std::function<void(const std::string&)>& ready) const override {
+    const std::string others = " is an option of the stc-floor robot";
+    if (o.map) throw kernel::InputError("--map", others);
+    if (o.start) throw kernel::InputError("--start", others);
+    if (o.heading) throw kernel::InputError("--heading", others);
+    if (o.noise) throw kernel::InputError("--noise", others);
+    if (o.dark_offset) throw kernel::InputError("--dark-offset", others);
+    if (o.fade_s) throw kernel::InputError("--fade", others);
+    if (o.rotation_error) throw kernel::InputError("--rotation-error", others);
+    if (o.drift) throw kernel::InputError("--drift", others);
+    EmulatorOptions options;
+    options.seed = o.seed;
+    options.faults = parse_faults(o.faults);
+    options.pace = o.pace;
+    std::optional<TcpListener> listener;
+    if (o.listen)
+      listener.emplace(
+          TcpListener::listen(parse_tcp_endpoint(*o.listen, "--listen", true), "--listen"));
+    FirmwareEmulator emulator(robot_, o.walls, options);
+    EmulateReport r;
+    if (listener) {
+      r.listen = listener->port_spec();
+      ready(r.listen);
+      emulator.serve(*listener);
+    } else {
+      Pty pty = Pty::open();
+      ready(pty.slave_path());
+      emulator.serve(pty);
+    }
+    r.sessions = emulator.sessions();
+    r.commands = emulator.commands();
+    r.faults = emulator.faults();
+    r.periods = emulator.trail().size() - 1;
+    r.position = {static_cast<double>(emulator.pose().position.x.raw()) / 65536.0,
+                  static_cast<double>(emulator.pose().position.y.raw()) / 65536.0};
+    return r;
+  }
+
+private:
+  RobotKind robot_;
+};
+
+const SerialDevice kKhepera(RobotKind::Khepera), kKheperaWebots(RobotKind::KheperaWebots),
+    kHemisson(RobotKind::Hemisson), kEpuck(RobotKind::Epuck);
+
+} // namespace
+
+namespace detail {
+const Device& khepera_device() noexcept {
+  return kKhepera;
+}
+const Device& khepera_webots_device() noexcept {
+  return kKheperaWebots;
+}
+const Device& hemisson_device() noexcept {
+  return kHemisson;
+}
+const Device& epuck_device() noexcept {
+  return kEpuck;
+}
+} // namespace detail
+
+} // namespace antkit::devices

@@ -1,0 +1,45 @@
+// The registry of devices (device.hpp): a robot is one line here.
+#include "registry.hpp"
+
+#include <antkit/devices/stop_signals.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <array>
+
+namespace antkit::devices {
+
+std::span<const Device* const> all_devices() {
+  static const std::array<const Device*, 5> kDevices{
+      &detail::khepera_device(), &detail::khepera_webots_device(), &detail::hemisson_device(),
+      &detail::epuck_device(), &detail::stc_floor_device()};
+  return kDevices;
+}
+
+const Device* find_device(std::string_view name) noexcept {
+  for (const Device* d : all_devices())
+    if (d->name() == name) return d;
+  return nullptr;
+}
+
+std::string device_names() {
+  std::string out;
+  for (const Device* d : all_devices()) {
+    if (!out.empty()) out += ", ";
+    out += d->name();
+  }
+  return out;
+}
+
+const Device& device(std::string_view name, const std::string& where) {
+  if (const Device* d = find_device(name)) return *d;
+  throw kernel::InputError(where, "unknown device '" + std::string(name) + "': expected " +
+                                      device_names());
+}
+
+EmulateReport emulate(const std::string& name, const EmulateOptions& options,
+                      const std::function<void(const std::string& port)>& ready) {
+  const Device& d = device(name, "robot");
+  StopSignals::Scope signals;
+  return d.emulate(options, ready);
+}
+
+} // namespace antkit::devices

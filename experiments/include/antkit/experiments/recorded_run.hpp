@@ -1,0 +1,35 @@
+#pragma once
+// A run on a robot, audited (`antkit record`): devices::record() (the one record loop, every
+// device) and, when the run is a tour (the marker-floor robot), its verdict by the oracle of
+// `antkit check stc` (testing/stc_audit.hpp). It sits here, above the devices and the checkers,
+// because it needs both (DESIGN.md, the layers).
+#include <antkit/devices/adapter.hpp>
+#include <antkit/testing/stc_audit.hpp>
+#include <optional>
+#include <string>
+
+namespace antkit::experiments {
+
+struct RecordedRun {
+  devices::RecordSummary summary;
+  // A tour's verdict. With a map: the believed tour held against it by the oracle, rule
+  // ExactlyOnce (every reachable sub-cell entered exactly once, back next to the start). Without
+  // one: closed next to the start, no sub-cell entered twice.
+  std::optional<testing::StcAudit> audit; // with a map
+  bool tour_ok = true;
+  std::string tour_broken; // the broken rule in words ("" when the tour passes or there is none)
+
+  // What the exit status follows: the robot is known to be stopped, and the run did what it set
+  // out to do (every step, or stopped on request; a tour closed and passed its verdict).
+  [[nodiscard]] bool succeeded() const noexcept {
+    if (!summary.safe_stop.stopped) return false;
+    if (summary.kind == devices::StopKind::Interrupted) return true;
+    return summary.kind == devices::StopKind::Done && tour_ok;
+  }
+};
+
+// Throws kernel::InputError for bad options (devices::record()).
+RecordedRun record_run(const devices::RecordOptions& options,
+                       const devices::RecordProgress& progress = {});
+
+} // namespace antkit::experiments
