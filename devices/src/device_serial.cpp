@@ -12,6 +12,8 @@
 #include <antkit/devices/device.hpp>
 #include <antkit/devices/emulator.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <array>
+#include <optional>
 
 namespace antkit::devices {
 
@@ -50,9 +52,11 @@ private:
   bool wander_;
 };
 
+} // namespace
+
 class SerialDevice final : public Device {
 public:
-  constexpr explicit SerialDevice(RobotKind robot) : robot_(robot) {}
+  explicit SerialDevice(const RobotDescription& robot) : robot_(robot.kind) {}
   [[nodiscard]] std::string_view name() const noexcept override { return robot_name(robot_); }
   [[nodiscard]] LineSettings line() const noexcept override { return describe(robot_).line; }
 
@@ -132,24 +136,16 @@ private:
   RobotKind robot_;
 };
 
-const SerialDevice kKhepera(RobotKind::Khepera), kKheperaWebots(RobotKind::KheperaWebots),
-    kHemisson(RobotKind::Hemisson), kEpuck(RobotKind::Epuck);
-
-} // namespace
-
 namespace detail {
-const Device& khepera_device() noexcept {
-  return kKhepera;
+
+const Device& serial_device(const RobotDescription& robot) {
+  // One device per serial robot, made on first use (the registry's list, registry.cpp).
+  static std::array<std::optional<SerialDevice>, std::size(kSerialRobots)> devices;
+  auto& d = devices.at(static_cast<std::size_t>(robot.kind));
+  if (!d) d.emplace(robot);
+  return *d;
 }
-const Device& khepera_webots_device() noexcept {
-  return kKheperaWebots;
-}
-const Device& hemisson_device() noexcept {
-  return kHemisson;
-}
-const Device& epuck_device() noexcept {
-  return kEpuck;
-}
+
 } // namespace detail
 
 } // namespace antkit::devices

@@ -73,22 +73,6 @@ std::int32_t floor_div(i128 a, i128 b) {
   return static_cast<std::int32_t>(static_cast<std::uint32_t>(static_cast<std::uint64_t>(q)));
 }
 
-std::string version_reply(RobotKind robot) {
-  // Shapes as the manuals print them (PROTOCOLS.md): Khepera "b,5.02,5.01"; HemiOS "b,<version>";
-  // e-puck "v,<version text>". The texts name the emulator so nobody mistakes it for a robot.
-  switch (robot) {
-  case RobotKind::Khepera:
-    return "b,5.02,5.01\r\n";
-  case RobotKind::Hemisson:
-    return "b,HemiOS_v1.50 antkit emulator\r\n";
-  case RobotKind::Epuck:
-    return "v,Version 1.2.2 antkit emulator\r\n";
-  case RobotKind::KheperaWebots: // "a pretend version string" (tcpip.c)
-    return "b,0,0\r\n";
-  }
-  return {};
-}
-
 } // namespace
 
 FaultSpec parse_faults(const std::vector<std::string>& specs) {
@@ -150,10 +134,9 @@ std::int32_t FirmwareEmulator::counter(int wheel) const noexcept {
   // pulses = travel / pulse = (travel2 / 2) [raw um] * 1000 / (65536 * pulse_nm)
   const i128 num = travel2_[wheel] * 1000, den = i128{2} * 65536 * d.odometry_pulse_nm;
   // The Webots relay casts 50 * angle / pi to int: toward zero; the firmwares count whole pulses.
-  const auto pulses = d.kind == RobotKind::KheperaWebots
-                          ? static_cast<std::int32_t>(
-                                static_cast<std::uint32_t>(static_cast<std::uint64_t>(num / den)))
-                          : floor_div(num, den);
+  const auto pulses = d.webots_relay ? static_cast<std::int32_t>(static_cast<std::uint32_t>(
+                                           static_cast<std::uint64_t>(num / den)))
+                                     : floor_div(num, den);
   return static_cast<std::int32_t>(static_cast<std::uint32_t>(pulses) +
                                    static_cast<std::uint32_t>(offset_[wheel]));
 }
@@ -221,10 +204,8 @@ std::string FirmwareEmulator::answer(const Fields& cmd) {
     return codec_.reply(letter);
   }
   if (letter == 'L' && args(2)) return codec_.reply('L');
-  if ((letter == 'B' && d.kind != RobotKind::Epuck) ||
-      (letter == 'V' && d.kind == RobotKind::Epuck))
-    return version_reply(d.kind);
-  if (d.kind == RobotKind::Epuck && letter == 'S' && args(0)) {
+  if (letter == d.version_letter) return std::string(d.version_reply);
+  if (d.stop_letter != 0 && letter == d.stop_letter && args(0)) {
     speed_left_ = speed_right_ = 0;
     return codec_.reply('S');
   }
@@ -247,7 +228,7 @@ std::string FirmwareEmulator::relay_answer(std::string_view line) {
   case 'G': // the position counters are not reset
     return codec_.reply(letter);
   case 'B':
-    return version_reply(d.kind);
+    return std::string(d.version_reply);
   case 'N': {
     advance();
     std::array<std::int32_t, 8> raw{};
@@ -283,7 +264,7 @@ FirmwareEmulator::Response FirmwareEmulator::handle(std::string_view line) {
     return out;
   }
   std::string reply;
-  if (codec_.robot().kind == RobotKind::KheperaWebots) {
+  if (codec_.robot().webots_relay) {
     if (line.substr(0, 4) == "exit") { // tcpip.c: strncmp(buffer, "exit", 4) closes the socket
       out.close_session = true;
       return out;

@@ -143,19 +143,13 @@ std::string Codec::set_led(std::int32_t led, std::int32_t action) const {
   return command(*robot_, 'L', {led, action});
 }
 std::string Codec::version() const {
-  return command(*robot_, robot_->kind == RobotKind::Epuck ? 'V' : 'B', {});
+  return command(*robot_, robot_->version_letter, {});
 }
 std::vector<std::string> Codec::safe_stop() const {
-  switch (robot_->kind) {
-  case RobotKind::Khepera:       // wheels, then both LEDs off (L,n,0)
-  case RobotKind::KheperaWebots: // the relay has L for LEDs 0 and 1 (tcpip.c)
-    return {set_speed(0, 0), set_led(0, 0), set_led(1, 0)};
-  case RobotKind::Hemisson: // wheels; HemiOS's LED commands differ between versions: none sent
-    return {set_speed(0, 0)};
-  case RobotKind::Epuck: // S: "stop and LEDs off" in one command (asercom)
-    return {set_speed(0, 0), command(*robot_, 'S', {})};
-  }
-  return {};
+  std::vector<std::string> out;
+  for (const auto c : robot_->safe_stop)
+    if (!c.empty()) out.push_back(std::string(c) + std::string(robot_->terminator));
+  return out;
 }
 
 Decoded<bool> Codec::decode_ack(std::string_view line, char command_letter) const {
@@ -167,7 +161,7 @@ Decoded<bool> Codec::decode_ack(std::string_view line, char command_letter) cons
 }
 
 Decoded<Proximity> Codec::decode_proximity(std::string_view line) const {
-  const std::size_t extra = robot_->kind == RobotKind::Epuck ? 2 : 0;
+  const std::size_t extra = robot_->proximity_extra;
   const auto f = scan_reply(line, 'n', 8, 8 + extra, robot_->proximity_min, robot_->proximity_max);
   if (!f) return error_at<Proximity>(f.error.column, f.error.message);
   if (f.value->count != 8 && f.value->count != 8 + extra)
@@ -200,7 +194,7 @@ Decoded<Fields> Codec::decode_reply(std::string_view sent_command, std::string_v
   const char c = lower(sent_command[0]);
   const auto& r = *robot_;
   if (c == 'n' || c == 'o') {
-    const std::size_t extra = r.kind == RobotKind::Epuck ? 2 : 0;
+    const std::size_t extra = r.proximity_extra;
     const auto f = scan_reply(line, c, 8, 8 + extra, r.proximity_min, r.proximity_max);
     if (f && f.value->count != 8 && f.value->count != 8 + extra)
       return error_at<Fields>(line.size() - 1, "expected 8 or 10 values");
@@ -214,26 +208,24 @@ Decoded<Fields> Codec::decode_reply(std::string_view sent_command, std::string_v
 }
 
 Decoded<Fields> Codec::parse_command(std::string_view line) const {
-  return scan_command(line, robot_->kind == RobotKind::Epuck);
+  return scan_command(line, robot_->lower_case_commands);
 }
 
 std::string Codec::reply(char command_letter, std::span<const std::int32_t> values) const {
   const char c = lower(command_letter);
   std::string s(1, c);
   // HemiOS pads sensor readings to three digits (see protocol.hpp).
-  const bool pad = robot_->kind == RobotKind::Hemisson && (c == 'n' || c == 'o');
+  const std::size_t pad = c == 'n' || c == 'o' ? robot_->reading_digits : 0;
   for (const auto v : values) {
     std::string digits = std::to_string(v);
-    if (pad && v >= 0 && digits.size() < 3) digits.insert(0, 3 - digits.size(), '0');
+    if (v >= 0 && digits.size() < pad) digits.insert(0, pad - digits.size(), '0');
     s += "," + digits;
   }
   return s + "\r\n";
 }
 
 std::string Codec::unknown_command_reply(std::string_view) const {
-  // The Webots relay answers what it does not know with a bare LF (tcpip.c: send(fd, "\n", 1)).
-  if (robot_->kind == RobotKind::KheperaWebots) return "\n";
-  return robot_->kind == RobotKind::Epuck ? "z,Command not found\r\n" : "z,Protocol error\r\n";
+  return std::string(robot_->unknown_reply); // robot_<name>.cpp
 }
 
 Fx normalise_reading(const RobotDescription& robot, std::int32_t raw) {

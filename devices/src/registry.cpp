@@ -4,13 +4,33 @@
 #include <antkit/devices/stop_signals.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <array>
+#include <vector>
 
 namespace antkit::devices {
 
+namespace detail {
+
+std::span<const RobotDescription* const> serial_robots() {
+  // A serial robot is its description (robot_<name>.cpp) and one line here.
+  static const std::array<const RobotDescription*, 4> kRobots{
+      &khepera_description(),
+      &khepera_webots_description(),
+      &hemisson_description(),
+      &epuck_description(),
+  };
+  return kRobots;
+}
+
+} // namespace detail
+
 std::span<const Device* const> all_devices() {
-  static const std::array<const Device*, 5> kDevices{
-      &detail::khepera_device(), &detail::khepera_webots_device(), &detail::hemisson_device(),
-      &detail::epuck_device(), &detail::stc_floor_device()};
+  static const std::vector<const Device*> kDevices = [] {
+    std::vector<const Device*> out;
+    for (const RobotDescription* robot : detail::serial_robots())
+      out.push_back(&detail::serial_device(*robot));
+    out.push_back(&detail::stc_floor_device()); // paper 002's marker-floor robot
+    return out;
+  }();
   return kDevices;
 }
 

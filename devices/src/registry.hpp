@@ -1,13 +1,17 @@
 #pragma once
-// The devices' definitions, for the registry (registry.cpp; internal).
+// The registry's parts (registry.cpp; internal).
+#include "robots.hpp"
+
 #include <antkit/devices/device.hpp>
+#include <span>
 
 namespace antkit::devices::detail {
 
-const Device& khepera_device() noexcept;        // device_serial.cpp
-const Device& khepera_webots_device() noexcept; // device_serial.cpp
-const Device& hemisson_device() noexcept;       // device_serial.cpp
-const Device& epuck_device() noexcept;          // device_serial.cpp
-const Device& stc_floor_device() noexcept;      // device_stc_floor.cpp
+// The serial robots' descriptions, in the registry's order (one line each in registry.cpp):
+// describe() finds a robot's among them.
+std::span<const RobotDescription* const> serial_robots();
+// The device of a serial robot (device_serial.cpp); only the registry's list calls it.
+const Device& serial_device(const RobotDescription& robot);
+const Device& stc_floor_device() noexcept; // device_stc_floor.cpp
 
 } // namespace antkit::devices::detail

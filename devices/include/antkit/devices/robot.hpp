@@ -13,7 +13,8 @@
 namespace antkit::devices {
 
 enum class RobotKind : std::uint8_t { Khepera, Hemisson, Epuck, KheperaWebots };
-// Every robot of the serial protocols, for loops over them (tests, fuzz targets, benchmarks).
+// Every robot of the serial protocols, for loops over them (tests, fuzz targets, benchmarks); each
+// has its description in devices/src/robot_<name>.cpp and its line in the registry (registry.cpp).
 inline constexpr RobotKind kSerialRobots[] = {RobotKind::Khepera, RobotKind::Hemisson,
                                               RobotKind::Epuck, RobotKind::KheperaWebots};
 // "khepera", "hemisson", "epuck", "khepera-webots".
@@ -49,6 +50,22 @@ struct RobotDescription {
   // `E` reads the wheel speeds back (all but the Webots relay, which answers only B, D, G, H, L, N
   // and O): the safe stop confirms the wheels at zero with it (link.hpp).
   bool reads_speed = true;
+  // What else the protocol does its own way (the codec, protocol.cpp, and the emulator read these):
+  char version_letter = 'B'; // the command asking for the firmware's version (B; the e-puck: V)
+  // The emulator's answer to it, in the shape the manual prints (Khepera "b,5.02,5.01", HemiOS
+  // "b,<version>", e-puck "v,<version text>"), its text naming the emulator so that nobody takes
+  // it for a robot.
+  std::string_view version_reply;
+  std::array<std::string_view, 3> safe_stop{}; // the safe stop's commands (no terminator), the
+                                               // wheels' stop first; empty entries are unused
+  char stop_letter = 0; // a command that stops the wheels (and more) in one (the e-puck's S)
+  std::size_t proximity_extra = 0;  // readings an N reply may carry beyond proximity_count
+  bool lower_case_commands = false; // the firmware also takes commands in lower case
+  std::uint8_t reading_digits = 0;  // readings padded with zeros to this many digits (HemiOS: 3)
+  std::string_view unknown_reply;   // the answer to a command the firmware does not know
+  // The Webots relay controller (tcpip.c): the emulator answers only its commands, closes on
+  // "exit", ignores G, and truncates its counters toward zero.
+  bool webots_relay = false;
 };
 const RobotDescription& describe(RobotKind robot);
 

@@ -1,0 +1,48 @@
+// The Khepera (K-Team): its description (robot.hpp). Sources, as gathered in
+// ../shared/devices/PROTOCOLS.md:
+//  Khepera: K-Team, Khepera User Manual ch. 6 and Khepera II User Manual v1.1 section 6.2 (9600
+//    8N2, D in pulses per 10 ms = 8 mm/s, H/G counters of 0.08 mm, N: 8 readings 0-1023, six at
+//    the front left to right then two at the back; 55 mm body, 53 mm between the wheels).
+// The choices made where the sources are silent are listed in robot.cpp.
+#include "robots.hpp"
+
+namespace antkit::devices::detail {
+
+namespace {
+
+constexpr RobotDescription kKhepera{
+    .kind = RobotKind::Khepera,
+    .name = "khepera",
+    .line = {9600, 8, 2, Parity::None},
+    .terminator = "\r",
+    .speed_min = -127,
+    .speed_max = 127,
+    .speed_full = 10,
+    .speed_unit_um_s = 8000,
+    .proximity_count = 8,
+    .proximity_min = 0,
+    .proximity_max = 1023,
+    .proximity_scale = 1023,
+    .sensor_range_um = 40000,
+    .proximity_angle_deg = {90, 45, 10, -10, -45, -90, -165, 165},
+    .ground = {false, false, false, false, false, false, false, false},
+    .front_six = {0, 1, 2, 3, 4, 5},
+    .diameter_um = 55000,
+    .wheel_base_um = 53000,
+    .has_odometry = true,
+    .odometry_read = 'H',
+    .odometry_set = 'G',
+    .odometry_pulse_nm = 80000,
+    .version_letter = 'B',
+    .version_reply = "b,5.02,5.01\r\n",
+    .safe_stop = {"D,0,0", "L,0,0", "L,1,0"}, // wheels, then both LEDs off (L,n,0)
+    .unknown_reply = "z,Protocol error\r\n",
+};
+
+} // namespace
+
+const RobotDescription& khepera_description() noexcept {
+  return kKhepera;
+}
+
+} // namespace antkit::devices::detail
