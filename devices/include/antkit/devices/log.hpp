@@ -28,6 +28,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -106,6 +107,9 @@ class LogReader {
 public:
   explicit LogReader(const std::string& path);
   LogReader(std::string name, std::string contents);
+  ~LogReader();
+  LogReader(const LogReader&) = delete;
+  LogReader& operator=(const LogReader&) = delete;
   [[nodiscard]] const LogHeader& header() const noexcept { return header_; }
   bool next(LogRecord& out);
   [[nodiscard]] bool truncated() const noexcept { return truncated_; }
@@ -115,7 +119,10 @@ public:
 private:
   void read_header();
   std::string name_;
-  std::string data_;
+  std::string owned_;   // the log, when given in memory or read (not mapped)
+  void* map_ = nullptr; // the log's file, mapped read-only (a replay copies nothing)
+  std::size_t map_size_ = 0;
+  std::string_view data_; // the log's bytes
   std::size_t pos_ = 0;
   std::size_t line_ = 0;
   LogHeader header_;
