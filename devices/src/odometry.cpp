@@ -92,6 +92,7 @@ LoggedTrail read_trail(LogReader& reader, const std::string& path, buffon::WallE
   out.robot = reader.header().robot;
   std::optional<DeadReckoning> dr;
   RunHash run;
+  kernel::TraceHash head;
   LogRecord r;
   while (reader.next(r)) {
     if (r.odo.size() != 2)
@@ -112,6 +113,18 @@ LoggedTrail read_trail(LogReader& reader, const std::string& path, buffon::WallE
       walls->observe(o);
     }
     run.add(r.step, r.obs, r.cmd, r.state);
+    if (out.head_steps < LoggedTrail::kHead) {
+      head.add_i64(r.step).add_i64(r.time_ns).add_u64(r.state);
+      for (const auto& x : r.io)
+        head.add_u32(static_cast<std::uint32_t>(x.sent.size()))
+            .add_bytes(
+                std::span(reinterpret_cast<const std::uint8_t*>(x.sent.data()), x.sent.size()))
+            .add_u32(static_cast<std::uint32_t>(x.received.size()))
+            .add_bytes(std::span(reinterpret_cast<const std::uint8_t*>(x.received.data()),
+                                 x.received.size()));
+      for (const auto v : r.odo) head.add_i64(v);
+      out.head[out.head_steps++] = head.finish();
+    }
     const WheelTravel w{r.odo[0], r.odo[1]};
     if (!dr) {
       dr.emplace(describe(*kind), w);
@@ -242,6 +255,13 @@ BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& vi
                          kernel::hash_hex(out.visit1.run_hash) + " over " +
                          std::to_string(out.visit1.steps) +
                          " steps; two copies of one run are not two visits");
+  // ... or a cut copy: the same first records, times to the nanosecond included.
+  if (const std::size_t n = std::min(out.visit1.head_steps, out.visit2.head_steps);
+      n > 0 && out.visit1.head[n - 1] == out.visit2.head[n - 1])
+    throw InputError(visit2, 1, 1,
+                     "the same run as VISIT1 (" + visit1 + "): its first " + std::to_string(n) +
+                         " records are visit 1's, times to the nanosecond included (a copy, cut "
+                         "short); two copies of one run are not two visits");
   check_visit_header(visit1, h1, 1);
   check_visit_header(visit2, h2, 2);
   if (out.visit1.robot != out.visit2.robot)

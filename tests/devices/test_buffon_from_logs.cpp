@@ -175,6 +175,20 @@ TEST_CASE("buffon_from_logs refuses one file given twice and two copies of one r
   edit_header(copy, "\"visit\":1", "\"visit\":2");
   msg = refusal([&] { devices::buffon_from_logs(v.v1, copy, kWidth); });
   CHECK(msg.find("the same run as VISIT1") != std::string::npos);
+  // ... cut short (a partial copy, as a crash or a careless cp leaves it), header edited too:
+  // its run hash differs, its first records do not.
+  for (const std::size_t keep : {std::size_t{3}, std::size_t{40}, std::size_t{250}}) {
+    INFO(keep);
+    auto lines = lines_of(v.v1);
+    REQUIRE(lines.size() > keep + 1);
+    lines.resize(keep + 1); // the header and `keep` step records, no stop record
+    const auto cut = dir.file("cut.jsonl");
+    write_lines(cut, lines);
+    edit_header(cut, "\"visit\":1", "\"visit\":2");
+    msg = refusal([&] { devices::buffon_from_logs(v.v1, cut, kWidth); });
+    CHECK(msg.find("the same run as VISIT1") != std::string::npos);
+    CHECK(msg.find("records are visit 1's") != std::string::npos);
+  }
   // The two real visits are two runs.
   CHECK_NOTHROW(devices::buffon_from_logs(v.v1, v.v2, kWidth));
 }

@@ -26,6 +26,7 @@
 #include <antkit/kernel/angle.hpp>
 #include <antkit/kernel/fixed.hpp>
 #include <antkit/kernel/segment.hpp>
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -83,6 +84,12 @@ struct LoggedTrail {
   std::uint64_t steps = 0;
   bool truncated = false;
   std::uint64_t run_hash = 0;
+  // The log's first records as they were written (times and bytes included): head[k] is a hash
+  // of records 0..k, for k < head_steps = min(steps, kHead). Two recordings never share their
+  // times to the nanosecond; a copy of one run, cut or not, shares its head.
+  static constexpr std::size_t kHead = 16;
+  std::array<std::uint64_t, kHead> head{};
+  std::size_t head_steps = 0;
 };
 LoggedTrail trail_from_log(const std::string& path);
 
