@@ -1,10 +1,13 @@
-// Fuzz target: the devices' option parsers: `antkit emulate --fault` (parse_faults) and the
-// controller spec of `antkit record` and of a log header (make_spec). Each input line is one
-// --fault value, or with a leading '@', a controller name and KEY=VALUE parameters separated by
-// spaces. Bad input must be an InputError; an accepted fault spec must hold probabilities in
-// [0, 1e6] ppm; an accepted controller spec must be canonical (make_spec of itself is itself) and
-// build a controller.
+// Fuzz target: the devices' option parsers: `antkit emulate --fault` (parse_faults), the
+// controller spec of `antkit record` and of a log header (make_spec), and a device's preparation
+// of a run (Device::prepare, every device of the registry). Each input line is one --fault value,
+// or with a leading '@', a controller name and KEY=VALUE parameters separated by spaces, or with a
+// leading '#', a device name, then the same. Bad input must be an InputError; an accepted fault
+// spec must hold probabilities in [0, 1e6] ppm; an accepted controller spec must be canonical
+// (make_spec of itself is itself) and build a controller; an accepted run must name its device in
+// its header and have a way to connect, and preparing it twice must give the same header.
 #include <antkit/devices/controllers.hpp>
+#include <antkit/devices/device.hpp>
 #include <antkit/devices/emulator.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <cstddef>
@@ -14,10 +17,10 @@
 
 namespace {
 
-void controller_line(const std::string& line) {
+std::vector<std::string> split(const std::string& text) {
   std::vector<std::string> words;
   std::string word;
-  for (const char c : line.substr(1) + " ") {
+  for (const char c : text + " ") {
     if (c == ' ') {
       if (!word.empty()) words.push_back(word);
       word.clear();
@@ -25,18 +28,50 @@ void controller_line(const std::string& line) {
       word += c;
     }
   }
-  if (words.empty()) return;
-  antkit::devices::Params params;
-  for (std::size_t i = 1; i < words.size(); ++i) {
+  return words;
+}
+
+// KEY=VALUE words from `from` on, with small non-negative values; false for anything else.
+bool params_of(const std::vector<std::string>& words, std::size_t from,
+               antkit::devices::Params& params) {
+  for (std::size_t i = from; i < words.size(); ++i) {
     const auto eq = words[i].find('=');
-    if (eq == std::string::npos) return;
+    if (eq == std::string::npos) return false;
     std::int64_t v = 0;
     for (const char c : words[i].substr(eq + 1)) {
-      if (c < '0' || c > '9' || v > 100000000000000000) return;
+      if (c < '0' || c > '9' || v > 100000000000000000) return false;
       v = v * 10 + (c - '0');
     }
     params.emplace_back(words[i].substr(0, eq), v);
   }
+  return true;
+}
+
+// "#DEVICE CONTROLLER KEY=VALUE ...": a run prepared on the device (no port is opened).
+void device_line(const std::string& line) {
+  const auto words = split(line.substr(1));
+  if (words.size() < 2) return;
+  antkit::devices::RecordOptions o;
+  o.device = words[0];
+  o.controller.name = words[1];
+  if (!params_of(words, 2, o.controller.params)) return;
+  o.start = antkit::kernel::Cell{0, 0}; // the marker-floor robot needs one without a map
+  o.port = "/nonexistent/port";
+  o.out = "/nonexistent/log.jsonl";
+  try {
+    const auto& device = antkit::devices::device(o.device, "--device");
+    const auto run = device.prepare(o);
+    if (run.header.robot != device.name() || !run.connect || run.steps <= 0) __builtin_trap();
+    if (device.prepare(o).header != run.header) __builtin_trap();
+  } catch (const antkit::kernel::InputError&) {
+  }
+}
+
+void controller_line(const std::string& line) {
+  const auto words = split(line.substr(1));
+  if (words.empty()) return;
+  antkit::devices::Params params;
+  if (!params_of(words, 1, params)) return;
   try {
     const auto spec = antkit::devices::make_spec(words[0], 1, params, "--controller");
     const auto again = antkit::devices::make_spec(spec.name, spec.seed, spec.params, "x");
@@ -58,6 +93,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         text.substr(start, end == std::string::npos ? std::string::npos : end - start);
     if (!line.empty() && line[0] == '@')
       controller_line(line);
+    else if (!line.empty() && line[0] == '#')
+      device_line(line);
     else
       faults.push_back(line);
     if (end == std::string::npos) break;

@@ -154,13 +154,8 @@ std::optional<Divergence> check_floor_stop(const LogStop& stop, bool last_refuse
   return std::nullopt;
 }
 
-} // namespace
-
-namespace {
-
-constexpr std::string_view kOnlySerial = " is an option of the serial robots ("
-                                         "khepera, "
-                                         "khepera-webots, hemisson, epuck)";
+constexpr std::string_view kOnlySerial =
+    " is an option of the serial robots (khepera, khepera-webots, hemisson, epuck)";
 
 // The pilot's options from the controller's name and params (record.hpp).
 PilotOptions pilot_options(const ControllerSpec& spec) {
@@ -186,8 +181,8 @@ PilotOptions pilot_options(const ControllerSpec& spec) {
     else if (key == "led_ms")
       p.led_ms = in(0, kMaxLedMs, "expected 0 to 60000 ms");
     else
-      throw kernel::InputError("--param", "the stc-floor robot takes heading, quarter_turn_ms and "
-                                          "led_ms, not '" +
+      throw kernel::InputError("--param", "the stc-floor robot takes heading, quarter_turn_ms "
+                                          "and led_ms, not '" +
                                               key + "'");
   }
   return p;

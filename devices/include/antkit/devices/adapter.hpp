@@ -68,8 +68,8 @@ struct RecordOptions {
   // The serial robots: the shortest time between two sensor reads (a control period; 0: as fast
   // as the link allows). Unset: default_period(robot).
   std::optional<std::chrono::milliseconds> period;
-  std::string
-      arena; // the serial robots: the arena, when known (an emulator's spec), for the header
+  // The serial robots: the arena, when known (an emulator's spec), for the log's header.
+  std::string arena;
   // The marker-floor robot: the map (for the start, the reachable sub-cells and the tour's hash),
   // the start sub-cell (default: the map's, else as antkit stc; without a map it must be given),
   // and the camera's calibration file (default: the ideal calibration).
