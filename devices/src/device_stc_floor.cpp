@@ -416,16 +416,10 @@ ReplayResult replay_log(LogReader& reader, const std::string& path,
   stc::SubCell pos{static_cast<std::int32_t>(sx), static_cast<std::int32_t>(sy)};
   FloorController controller(*variant, stc::quadrant_of(pos));
   auto h = static_cast<int>(heading);
-  std::int64_t last_t = 0;
   bool last_refused = false;
   auto result =
       replay_records(reader, until, [&](const LogRecord& r, std::vector<std::int64_t>& cmd) {
         std::optional<Divergence> d;
-        if (r.time_ns < last_t)
-          return std::optional<Divergence>(
-              Divergence{r.step, "t_ns", std::to_string(r.time_ns),
-                         "a time >= the previous step's " + std::to_string(last_t)});
-        last_t = r.time_ns;
         if (auto bad = check_floor_io(r)) return bad;
         std::optional<bool> moved;
         for (std::size_t i = 0; i < r.io.size(); ++i) {

@@ -199,8 +199,15 @@ ReplayResult replay_records(LogReader& reader, std::optional<std::int64_t> until
   RunHash run;
   LogRecord r;
   std::vector<std::int64_t> cmd;
+  std::int64_t last_t = 0;
   while ((!until || out.steps < *until) && reader.next(r)) {
-    if (auto d = check(r, cmd)) {
+    // Every device's times never decrease (the recording's steady clock).
+    auto d = r.time_ns < last_t ? std::optional<Divergence>(Divergence{
+                                      r.step, "t_ns", std::to_string(r.time_ns),
+                                      "a time >= the previous step's " + std::to_string(last_t)})
+                                : check(r, cmd);
+    last_t = r.time_ns;
+    if (d) {
       out.identical = false;
       out.first_divergence = std::move(d);
       break;
@@ -247,15 +254,9 @@ ReplayResult replay_serial(LogReader& reader, const std::string& path,
   detail::Body body(link);
   std::vector<std::int64_t> obs;
   std::vector<Exchange> seen;
-  std::int64_t last_t = 0;
   auto result =
       replay_records(reader, until, [&](const LogRecord& r, std::vector<std::int64_t>& cmd) {
         std::optional<Divergence> d;
-        if (r.time_ns < last_t)
-          return std::optional<Divergence>(
-              Divergence{r.step, "t_ns", std::to_string(r.time_ns),
-                         "a time >= the previous step's " + std::to_string(last_t)});
-        last_t = r.time_ns;
         link.load(r.io, r.step, "io");
         seen.clear();
         try {

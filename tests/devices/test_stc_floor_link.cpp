@@ -81,6 +81,25 @@ TEST_CASE("stc floor link: the emulator's replies decode and anything else is re
   });
 }
 
+namespace {
+
+// A marker-floor run from sub-cell 0,0 over `port`. A fault-free robot: a generous timeout keeps a
+// loaded machine (the sanitizer build renders frames slowly) from adding faults of its own; the
+// tour must be the simulated one.
+devices::RecordOptions floor_options(const std::string& controller, const std::string& port,
+                                     const std::string& out) {
+  devices::RecordOptions o;
+  o.device = "stc-floor";
+  o.controller.name = controller;
+  o.port = port;
+  o.start = stc::SubCell{0, 0};
+  o.out = out;
+  o.link.timeout = std::chrono::milliseconds(3000);
+  return o;
+}
+
+} // namespace
+
 TEST_CASE("stc floor link: a recorded run over a pty is the simulated tour and replays",
           "[devices]") {
   TempDir dir;
@@ -88,15 +107,8 @@ TEST_CASE("stc floor link: a recorded run over a pty is the simulated tour and r
   for (const auto variant : {stc::Variant::AntEdge, stc::Variant::Ant}) {
     INFO(stc::variant_name(variant));
     FloorOnPty robot(map, stc::SubCell{0, 0}, 1, sf::FloorOptions{});
-    devices::RecordOptions o;
-    o.device = "stc-floor";
-    o.port = robot.port();
-    o.controller.name = std::string(stc::variant_name(variant));
-    o.start = stc::SubCell{0, 0};
-    o.out = dir.file(std::string(stc::variant_name(variant)) + ".jsonl");
-    // A fault-free robot: a generous timeout keeps a loaded machine (the sanitizer build renders
-    // frames slowly) from adding faults of its own; the tour must be the simulated one.
-    o.link.timeout = std::chrono::milliseconds(3000);
+    const auto name = std::string(stc::variant_name(variant));
+    const auto o = floor_options(name, robot.port(), dir.file(name + ".jsonl"));
     const auto s = devices::record(o);
     robot.stop();
     CHECK(s.stop == "done");
@@ -127,13 +139,7 @@ TEST_CASE("stc floor link: an edited log is caught at the edited step and field"
   TempDir dir;
   const auto map = board();
   FloorOnPty robot(map, stc::SubCell{0, 0}, 1, sf::FloorOptions{});
-  devices::RecordOptions o;
-  o.device = "stc-floor";
-  o.controller.name = "ant-edge";
-  o.port = robot.port();
-  o.start = stc::SubCell{0, 0};
-  o.out = dir.file("floor.jsonl");
-  o.link.timeout = std::chrono::milliseconds(3000);
+  const auto o = floor_options("ant-edge", robot.port(), dir.file("floor.jsonl"));
   REQUIRE(devices::record(o).tour->closed);
   robot.stop();
   const auto lines = antkit::test::lines_of(o.out);
@@ -233,13 +239,7 @@ TEST_CASE("stc floor link: the stop record is checked: its words, its bytes, its
   TempDir dir;
   const auto map = board();
   FloorOnPty robot(map, stc::SubCell{0, 0}, 1, sf::FloorOptions{});
-  devices::RecordOptions o;
-  o.device = "stc-floor";
-  o.controller.name = "ant-edge";
-  o.port = robot.port();
-  o.start = stc::SubCell{0, 0};
-  o.out = dir.file("floor.jsonl");
-  o.link.timeout = std::chrono::milliseconds(3000);
+  const auto o = floor_options("ant-edge", robot.port(), dir.file("floor.jsonl"));
   REQUIRE(devices::record(o).succeeded());
   robot.stop();
   const auto original = devices::replay(o.out);

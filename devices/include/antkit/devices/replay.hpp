@@ -49,9 +49,10 @@ struct ReplayResult {
   LogHeader header;
 };
 
-// The loop every robot's replay shares: reads the records before `until`; check() compares one
-// record with this build (filling cmd with the command it computes) and returns the first
-// difference, which ends the replay; the identical records are folded into the run hash.
+// The loop every robot's replay shares: reads the records before `until`, each one's t_ns no less
+// than the one before; check() compares one record with this build (filling cmd with the command it
+// computes) and returns the first difference, which ends the replay; the identical records are
+// folded into the run hash.
 ReplayResult replay_records(LogReader& reader, std::optional<std::int64_t> until,
                             const std::function<std::optional<Divergence>(
                                 const LogRecord& r, std::vector<std::int64_t>& cmd)>& check);
