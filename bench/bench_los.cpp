@@ -1,5 +1,5 @@
 // Issue 5: the full exploration of a 512x512 map by the pair (target: under 1 s on one core), and
-// of the largest real map in ../shared/maps (brc202d, 530x481).
+// of the largest real map in data/maps (brc202d, 530x481).
 //   antkit_bench --benchmark_filter=Los
 #include <antkit/los/explore.hpp>
 #include <antkit/maps/map_io.hpp>
@@ -43,7 +43,7 @@ void BM_LosFrontier512(benchmark::State& state) {
 void BM_LosBrc202d(benchmark::State& state) {
   // bench/ has no define for the shared folder: find it beside the source tree.
   const std::filesystem::path path =
-      std::filesystem::path(__FILE__).parent_path() / "../../shared/maps/movingai/brc202d.map";
+      std::filesystem::path(__FILE__).parent_path() / "../data/maps/movingai/brc202d.map";
   if (!std::filesystem::exists(path)) {
     state.SkipWithError("brc202d.map not found");
     return;

@@ -38,7 +38,7 @@ struct ReproduceCommand {
   std::string only;
   std::int64_t threads = 2;
   std::uint64_t seed = 1;
-  std::string maps = "../shared/maps";
+  std::string maps = "data/maps";
   std::string out;
   antkit::cli::Format format = antkit::cli::Format::Table;
 };
@@ -129,8 +129,8 @@ void register_reproduce(CLI::App& app) {
   sub->add_option("--threads", c->threads, "Threads (default 2; per MPI rank)");
   sub->add_option("--seed", c->seed, "Seed of the keyed streams (default 1)");
   sub->add_option("--maps", c->maps,
-                  "The shared maps for paper 002 (default ../shared/maps; when missing, random "
-                  "maps only)");
+                  "The real maps for paper 002 (default data/maps, the checkout's copy; when missing, "
+                  "random maps only)");
   sub->add_option("--out", c->out, "Output directory")->required();
   antkit::cli::add_format_option(*sub, c->format);
   sub->callback([c] { run(*c); });

@@ -4,7 +4,7 @@
 // map_movingai.cpp, which needs no CGAL) and the marker-floor robot's integer camera, floor and
 // pilot (devices/src/stc_floor_*.cpp but its calibration file: no JSON library), so that any
 // compiler builds it and it cross-compiles to a big-endian CPU: Buffon's arenas are walls built
-// with the kernel's own sine and cosine, grid maps are real maps from ../shared/maps/movingai or
+// with the kernel's own sine and cosine, grid maps are real maps from data/maps/movingai or
 // come from the families' keyed generators.
 //
 //   antkit_determinism --maps DIR [--threads T]   prints "name hash" per scenario
@@ -80,7 +80,7 @@ std::vector<FxSegment> square_with_pillar() {
   return walls;
 }
 
-// A MovingAI map of ../shared/maps/movingai, read with the library's own parser.
+// A MovingAI map of data/maps/movingai, read with the library's own parser.
 class MapShelf {
 public:
   explicit MapShelf(std::string dir) : dir_(std::move(dir)) {}
@@ -89,7 +89,7 @@ public:
     if (it != maps_.end()) return it->second;
     const std::string path = dir_ + "/movingai/" + name + ".map";
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw kernel::InputError(path, "cannot read (--maps names ../shared/maps)");
+    if (!in) throw kernel::InputError(path, "cannot read (--maps names data/maps)");
     std::ostringstream text;
     text << in.rdbuf();
     return maps_.emplace(name, maps::parse_movingai(text.str(), path).cells).first->second;

@@ -15,7 +15,7 @@ set -euo pipefail
 antkit=${1:-build/release/cli/antkit}
 out=${DEMO_OUT:-build/demo}
 here=$(cd "$(dirname "$0")/.." && pwd)
-maps="$here/../shared/maps"
+maps="$here/data/maps"
 mkdir -p "$out"
 # Absolute, so that the sections that run from the checkout find them.
 antkit=$(realpath "$antkit")
@@ -36,7 +36,7 @@ for spec in standard circle:d=10 square:d=100 ellipse:e=0.968 ellipse:e=0.998 \
 done
 
 if [ -d "$maps" ]; then
-  section "Shared real maps (../shared/maps)"
+  section "Real maps (data/maps)"
   printf '%-36s %9s %9s %9s %9s %10s\n' map size free blocked unknown components
   for m in movingai/room-32-32-4.map movingai/Berlin_1_256.map movingai/brc202d.map \
     ros/turtlebot3_world.yaml ros/willow-2010-02-18-0.10.yaml; do
@@ -47,11 +47,11 @@ if [ -d "$maps" ]; then
       done
   done
 else
-  section "../shared/maps not found beside the checkout: skipping the real maps"
+  section "data/maps not found in the checkout: skipping the real maps"
 fi
 
 section "The papers reproduced: antkit reproduce --quick (report: $out/README.md)"
-# From the checkout, so that the report's command names the maps as ../shared/maps.
+# From the checkout, so that the report's command names the maps as data/maps.
 (cd "$here" && "$antkit" reproduce --quick --out "$out")
 
 section "A robot over a serial link: Khepera emulator, two recorded visits, replay, area from logs"

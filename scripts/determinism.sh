@@ -23,7 +23,7 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
 
 golden=determinism/golden.txt
-maps=${ANTKIT_MAPS:-$here/../shared/maps}
+maps=${ANTKIT_MAPS:-$here/data/maps}
 jobs=${JOBS:-$(nproc)}
 all_configs=(gcc-O0 gcc-O3 clang-O0 clang-O3 s390x)
 ci_configs=(clang-O0 s390x)
@@ -45,7 +45,7 @@ else
   done
 fi
 if [ ! -d "$maps/movingai" ]; then
-  echo "determinism.sh: $maps/movingai: not found (the shared maps beside the checkout, or ANTKIT_MAPS)" >&2
+  echo "determinism.sh: $maps/movingai: not found (data/maps in the checkout, or ANTKIT_MAPS)" >&2
   exit 2
 fi
 

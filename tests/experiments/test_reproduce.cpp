@@ -36,7 +36,7 @@ ex::ReproduceOptions options(const fs::path& out) {
   ex::ReproduceOptions o;
   o.only = {"los", "stc"};
   o.out = out;
-  o.maps_dir = fs::path(ANTKIT_SHARED_DIR) / "maps";
+  o.maps_dir = fs::path(ANTKIT_MAPS_DIR);
   return o;
 }
 

@@ -1,4 +1,4 @@
-// Every real map in ../shared/maps (MovingAI and ROS, up to 530x481 and ~600x600 cells): both
+// Every real map in data/maps (MovingAI and ROS, up to 530x481 and ~600x600 cells): both
 // algorithms finish, the final map is sound, and every observable cell is explored.
 #include "run_antkit.hpp"
 

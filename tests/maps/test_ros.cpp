@@ -150,7 +150,7 @@ TEST_CASE("ROS yaml: what is outside the subset or out of range is an InputError
 
 TEST_CASE("ROS trinary: the README's thresholds over every 8-bit grey value",
           "[maps][ros][proof]") {
-  // ../shared/maps/README.md: with 0.65 / 0.196, free <=> v >= 206, occupied <=> v <= 89,
+  // data/maps/README.md: with 0.65 / 0.196, free <=> v >= 206, occupied <=> v <= 89,
   // unknown <=> 90 <= v <= 205 (205 gives p = 0.19608, just above 0.196: strict comparisons).
   const auto y = thresholds(0.65, 0.196);
   for (int v = 0; v <= 255; ++v) {

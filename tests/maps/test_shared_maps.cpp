@@ -1,4 +1,4 @@
-// Every map in ../shared/maps loads, and gives the counts ../shared/maps/README.md publishes for it
+// Every map in data/maps loads, and gives the counts data/maps/README.md publishes for it
 // (width x height, free / blocked / unknown cells, 4-connected components of free cells and the
 // largest one). The README's counts were made independently of this reader, so they are the oracle.
 #include "run_antkit.hpp"

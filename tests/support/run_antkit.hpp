@@ -38,9 +38,9 @@ inline RunResult run_antkit(const std::string& args) {
   return r;
 }
 
-// A shared map file by its path below ../shared/maps.
+// A shared map file by its path below data/maps (the real maps, vendored from ../shared/maps).
 inline std::string shared_map(const std::string& relative) {
-  return std::string(ANTKIT_SHARED_DIR) + "/maps/" + relative;
+  return std::string(ANTKIT_MAPS_DIR) + "/" + relative;
 }
 
 } // namespace antkit::test

@@ -19,7 +19,7 @@
 //
 // Format notes and the choices made where the formats are silent:
 //
-// MovingAI (Sturtevant's benchmark format; ../shared/maps/README.md section 1.1):
+// MovingAI (Sturtevant's benchmark format; data/maps/README.md section 1.1):
 //   `type octile`, `height H`, `width W`, `map`, then H rows of exactly W cells. Keywords are lower
 //   case; `height` and `width` are accepted in either order (both orders occur in the wild), each
 //   exactly once; the type must be `octile` (the only type the benchmarks define). Runs of spaces
@@ -57,7 +57,7 @@
 namespace antkit::maps {
 
 // 16384 x 16384 cells: a 1-byte-per-cell grid of 256 MiB, far above any benchmark map (the largest
-// in ../shared/maps is 530 x 481), as large as `antkit stc` covers at scale (issue 15; it was 8192
+// in data/maps is 530 x 481), as large as `antkit stc` covers at scale (issue 15; it was 8192
 // x 8192 before). A fuzzer cannot reach it: a declared size must be backed by the bytes present.
 inline constexpr std::int64_t kMaxMapCells = std::int64_t{1} << 28;
 // A P2 image of kMaxMapCells pixels of up to 5 digits each fits below this.
