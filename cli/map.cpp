@@ -77,7 +77,9 @@ void register_map(CLI::App& app) {
   auto info_opts = std::make_shared<InfoOptions>();
   auto* info = map->add_subcommand(
       "info", "Size, free/blocked/unknown counts and 4-connected free components of a map");
-  info->add_option("FILE", info_opts->file, "The map (.map, .yaml, .txt or .ascii)")->required();
+  // Positional as before, and --map as every other subcommand that reads a map takes it.
+  info->add_option("FILE,--map", info_opts->file, "The map (.map, .yaml, .txt or .ascii)")
+      ->required();
   antkit::cli::add_format_option(*info, info_opts->format);
   info->callback(
       [info_opts] { antkit::cli::emit(map_info(info_opts->file), info_opts->format, std::cout); });
@@ -85,9 +87,9 @@ void register_map(CLI::App& app) {
   auto convert_opts = std::make_shared<ConvertOptions>();
   auto* convert = map->add_subcommand(
       "convert", "Rewrite a map in the format OUT's extension names (.map, .txt or .ascii)");
-  convert->add_option("IN", convert_opts->in, "The map to read (.map, .yaml, .txt or .ascii)")
+  convert->add_option("IN,--map", convert_opts->in, "The map to read (.map, .yaml, .txt or .ascii)")
       ->required();
-  convert->add_option("OUT", convert_opts->out, "The map to write (.map, .txt or .ascii)")
+  convert->add_option("OUT,--out", convert_opts->out, "The map to write (.map, .txt or .ascii)")
       ->required();
   antkit::cli::add_format_option(*convert, convert_opts->format);
   convert->callback([convert_opts] {

@@ -189,3 +189,25 @@ TEST_CASE("antkit map: names that are not maps, and an existing output that must
   CHECK(r.status == 2);
   CHECK(slurp(out) == "#S#\n");
 }
+
+TEST_CASE("antkit map info and convert take the map as --map too, as the other subcommands do",
+          "[cli][maps]") {
+  TempDir dir;
+  const auto map = shared_map("movingai/room-32-32-4.map");
+  const auto positional = run_antkit("map info " + map + " --format json");
+  const auto named = run_antkit("map info --map " + map + " --format json");
+  REQUIRE(positional.status == 0);
+  REQUIRE(named.status == 0);
+  CHECK(named.out == positional.out);
+  const auto out = (dir.path / "room.txt").string();
+  const auto converted = run_antkit("map convert --map " + map + " --out " + out);
+  REQUIRE(converted.status == 0);
+  const auto again = run_antkit("map info --map " + out + " --format json");
+  REQUIRE(again.status == 0);
+  const auto a = nlohmann::json::parse(positional.out), b = nlohmann::json::parse(again.out);
+  CHECK(a["free"] == b["free"]);
+  CHECK(a["blocked"] == b["blocked"]);
+  CHECK(a["components"] == b["components"]);
+  // Both forms at once are one map given twice: refused as bad usage.
+  CHECK(run_antkit("map info " + map + " --map " + map).status == 2);
+}
