@@ -1,7 +1,8 @@
 // `antkit check`: an oracle for any planner's output (issue 18). The checks are antkit::testing's
 // (testing/include/antkit/testing/); this file parses options, calls one function and prints.
 //
-//   antkit check stc --map F --path P [--start X,Y] [--coverage] [--format table|json]
+//   antkit check stc --map F --path P [--start X,Y] [--coverage] [--order xy|rc]
+//                    [--format table|json]
 //   antkit check explore --map F --cells C [--format table|json]
 //   antkit check cover --map F --log L [--sensor R] [--format table|json]
 //
@@ -30,7 +31,7 @@ nlohmann::json cell_json(antkit::kernel::Cell c) {
 }
 
 struct StcCheckCommand {
-  std::string map, path, start;
+  std::string map, path, start, order = "xy";
   bool coverage = false;
   Format format = Format::Table;
 };
@@ -41,6 +42,7 @@ void run_stc(const StcCheckCommand& c) {
   request.tour_file = c.path;
   if (!c.start.empty()) request.start = antkit::algorithms::parse_cell("--start", c.start);
   request.rule = c.coverage ? testing::TourRule::Coverage : testing::TourRule::ExactlyOnce;
+  request.order = c.order == "rc" ? testing::TourOrder::RowCol : testing::TourOrder::XY;
   const testing::StcCheckReport r = testing::check_stc_files(request);
   const testing::StcAudit& a = r.audit;
   nlohmann::json j;
@@ -52,6 +54,8 @@ void run_stc(const StcCheckCommand& c) {
   j["height"] = r.height;
   j["start"] = cell_json(r.start);
   j["start_from"] = r.start_from;
+  j["order"] = std::string(testing::tour_order_name(r.order));
+  j["order_from"] = r.order_from_header ? "header" : "--order";
   j["positions"] = a.positions;
   j["closed_form"] = a.closed_form;
   j["reachable_subcells"] = a.reachable;
@@ -154,6 +158,11 @@ void register_check(CLI::App& app) {
   stc->add_option("--start", s->start,
                   "The start sub-cell X,Y (default: the tour file's start, else the map's, else "
                   "the tour's first position)");
+  stc->add_option("--order", s->order,
+                  "The order of the tour's pairs when the file does not say: xy (column, row; the "
+                  "default) or rc (row, col: numpy's). A CSV header x,y, row,col or y,x decides "
+                  "for its file; --start is always X,Y; the report's cells are x,y")
+      ->check(CLI::IsMember({"xy", "rc"}));
   stc->add_flag("--coverage", s->coverage,
                 "Every reachable free sub-cell at least once, repeats counted (Full-STC, "
                 "boustrophedon), instead of exactly once");

@@ -1,8 +1,9 @@
 // Fuzz target: the tour reader of `antkit check stc` (testing/src/stc_audit.cpp) and the audit it
 // feeds. Bad input must be an InputError; an accepted tour must read back the same from its CSV
-// and JSON forms, and its audit on a small map (with blocked sub-cells, a partly blocked cell and
-// an odd column) must add up: every position is a first entry, a repeat or off limits, and the
-// covered and missed sub-cells make the reachable ones.
+// and JSON forms, in x,y and as row,col pairs (by header and by --order), and its audit on a small
+// map (with blocked sub-cells, a partly blocked cell and an odd column) must add up: every position
+// is a first entry, a repeat or off limits, and the covered and missed sub-cells make the reachable
+// ones.
 #include "fuzz_bytes.hpp"
 
 #include <antkit/kernel/input_error.hpp>
@@ -30,6 +31,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   json += "]}";
   if (!tour.path.empty()) ANTKIT_FUZZ_REQUIRE(testing::read_tour(csv, "csv").path == tour.path);
   ANTKIT_FUZZ_REQUIRE(testing::read_tour(json, "json").path == tour.path);
+  // The same positions as row,col pairs: by header, and by order (CSV and JSON).
+  std::string rc = "row,col\n", rc_json = "[";
+  for (std::size_t i = 0; i < tour.path.size(); ++i) {
+    const auto c = tour.path[i];
+    rc += std::to_string(c.y) + "," + std::to_string(c.x) + "\n";
+    rc_json += (i ? ",[" : "[") + std::to_string(c.y) + "," + std::to_string(c.x) + "]";
+  }
+  rc_json += "]";
+  if (!tour.path.empty()) {
+    ANTKIT_FUZZ_REQUIRE(testing::read_tour(rc, "rc").path == tour.path);
+    ANTKIT_FUZZ_REQUIRE(testing::read_tour(rc.substr(8), "rc", testing::TourOrder::RowCol).path ==
+                        tour.path);
+  }
+  ANTKIT_FUZZ_REQUIRE(testing::read_tour(rc_json, "rc", testing::TourOrder::RowCol).path ==
+                      tour.path);
 
   kernel::OccupancyGrid map(7, 4, kernel::Occupancy::Free);
   map[{2, 0}] = kernel::Occupancy::Blocked; // cell (1, 0) partly blocked

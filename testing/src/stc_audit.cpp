@@ -10,6 +10,7 @@
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 namespace antkit::testing {
 
@@ -159,9 +160,10 @@ private:
 
 using detail::blank;
 
-// CSV: "x,y" per line.
-TourFile read_csv(std::string_view text, const std::string& source) {
+// CSV: "x,y" (or, by its header or `order`, "row,col") per line.
+TourFile read_csv(std::string_view text, const std::string& source, TourOrder order) {
   TourFile out;
+  out.order = order;
   detail::Lines lines(text);
   std::string_view l;
   bool first = true;
@@ -176,7 +178,12 @@ TourFile read_csv(std::string_view text, const std::string& source) {
     if (i == l.size()) continue; // blank line
     if (first) {
       first = false;
-      if (detail::is_header(l, "x,y")) continue;
+      if (detail::is_header(l, "x,y") || detail::is_header(l, "row,col") ||
+          detail::is_header(l, "y,x")) {
+        out.order = detail::is_header(l, "x,y") ? TourOrder::XY : TourOrder::RowCol;
+        out.order_from_header = true;
+        continue;
+      }
     }
     std::array<std::int32_t, 2> v{};
     for (int k = 0; k < 2; ++k) {
@@ -186,8 +193,11 @@ TourFile read_csv(std::string_view text, const std::string& source) {
       if (!n.digits) {
         i = from;
         throw InputError(source, line, col(),
-                         k == 0 ? "expected x,y (two whole numbers)"
-                                : "expected y after the comma");
+                         k == 0 ? (out.order == TourOrder::XY ? "expected x,y (two whole numbers)"
+                                                              : "expected row,col (two whole "
+                                                                "numbers)")
+                                : (out.order == TourOrder::XY ? "expected y after the comma"
+                                                              : "expected col after the comma"));
       }
       if (n.overflow || n.value < std::numeric_limits<std::int32_t>::min() ||
           n.value > std::numeric_limits<std::int32_t>::max()) {
@@ -201,15 +211,22 @@ TourFile read_csv(std::string_view text, const std::string& source) {
         ++i;
       }
     }
-    if (i != l.size()) throw InputError(source, line, col(), "unexpected text after x,y");
+    if (i != l.size())
+      throw InputError(source, line, col(),
+                       out.order == TourOrder::XY ? "unexpected text after x,y"
+                                                  : "unexpected text after row,col");
     if (out.path.size() >= kMaxPositions)
       throw InputError(source, line, 1, "more than 2^28 positions");
-    out.path.push_back({v[0], v[1]});
+    out.path.push_back(out.order == TourOrder::XY ? Cell{v[0], v[1]} : Cell{v[1], v[0]});
   }
   return out;
 }
 
 } // namespace
+
+std::string_view tour_order_name(TourOrder order) noexcept {
+  return order == TourOrder::XY ? "xy" : "rc";
+}
 
 std::string_view tour_rule_name(TourRule rule) noexcept {
   return rule == TourRule::ExactlyOnce ? "exactly-once" : "coverage";
@@ -255,7 +272,7 @@ StcAudit audit_stc_tour(const OccupancyGrid& map, Cell start, std::span<const Ce
   return a;
 }
 
-TourFile read_tour(std::string_view text, const std::string& source) {
+TourFile read_tour(std::string_view text, const std::string& source, TourOrder order) {
   if (stc::path_format::is_binary(text)) {
     auto d = stc::path_format::decode(text, source, kMaxPositions);
     return {std::move(d.path), d.start};
@@ -263,21 +280,28 @@ TourFile read_tour(std::string_view text, const std::string& source) {
   std::size_t i = 0;
   while (i < text.size() && (blank(text[i]) || text[i] == '\n' || text[i] == '\r')) ++i;
   if (i == text.size()) throw InputError(source, "empty: no tour");
-  if (text[i] != '[' && text[i] != '{') return read_csv(text, source);
+  if (text[i] != '[' && text[i] != '{') return read_csv(text, source, order);
   TourFile out;
   TourSax sax(text, source, out);
   nlohmann::json::sax_parse(text.begin(), text.end(), &sax);
+  out.order = order;
+  if (order == TourOrder::RowCol) { // JSON pairs as [row, col]
+    for (auto& p : out.path) std::swap(p.x, p.y);
+    if (out.start) std::swap(out.start->x, out.start->y);
+  }
   return out;
 }
 
-TourFile read_tour_file(const std::filesystem::path& path) {
-  return read_tour(read_text_file(path, "tour", std::size_t{1} << 30), path.string());
+TourFile read_tour_file(const std::filesystem::path& path, TourOrder order) {
+  return read_tour(read_text_file(path, "tour", std::size_t{1} << 30), path.string(), order);
 }
 
 StcCheckReport check_stc_files(const StcCheckRequest& request) {
   const maps::GridMap map = maps::load_map(request.map_file);
-  const TourFile tour = read_tour_file(request.tour_file);
+  const TourFile tour = read_tour_file(request.tour_file, request.order);
   StcCheckReport r;
+  r.order = tour.order;
+  r.order_from_header = tour.order_from_header;
   r.width = map.cells.width();
   r.height = map.cells.height();
   auto require_free = [&](Cell s, const std::string& where) {

@@ -90,6 +90,42 @@ TEST_CASE("antkit check stc: another planner's row/column pairs, converted to CS
   CHECK(j.at("end_distance") == 1);
 }
 
+TEST_CASE("antkit check stc --order rc and a row,col header read a planner's pairs as it wrote "
+          "them, and a transposed tour on a map that is not symmetric fails",
+          "[cli][check]") {
+  // 6 wide, 4 high, all free: the same (row, col) numbers read as x,y leave the map.
+  const auto map = write("wide.txt", "......\n......\n......\n......\n");
+  const auto xy = run_antkit("stc --map " + map.string() + " --variant offline --format json");
+  REQUIRE(xy.status == 0);
+  const auto tour = nlohmann::json::parse(xy.out).at("path");
+  std::string rows_cols, json = "[";
+  for (const auto& p : tour) {
+    rows_cols += std::to_string(p[1].get<int>()) + "," + std::to_string(p[0].get<int>()) + "\n";
+    json += (json.size() > 1 ? ",[" : "[") + std::to_string(p[1].get<int>()) + "," +
+            std::to_string(p[0].get<int>()) + "]";
+  }
+  json += "]";
+  const auto headed = write("headed.csv", "row,col\n" + rows_cols);
+  const auto bare = write("bare.csv", rows_cols);
+  const auto pairs = write("pairs.json", json);
+  const auto check = [&](const std::filesystem::path& path, const std::string& extra) {
+    return run_antkit("check stc --map " + map.string() + " --path " + path.string() +
+                      " --format json" + extra);
+  };
+  const auto by_header = check(headed, "");
+  INFO(by_header.err);
+  REQUIRE(by_header.status == 0);
+  CHECK(nlohmann::json::parse(by_header.out).at("order") == "rc");
+  CHECK(nlohmann::json::parse(by_header.out).at("order_from") == "header");
+  for (const auto& path : {bare, pairs}) {
+    const auto by_option = check(path, " --order rc");
+    REQUIRE(by_option.status == 0);
+    CHECK(nlohmann::json::parse(by_option.out).at("order_from") == "--order");
+    CHECK(check(path, "").status == 1); // read as x,y: transposed, off the map
+  }
+  CHECK(check(bare, " --order yx").status == 2);
+}
+
 TEST_CASE("antkit check stc: a damaged tour exits 1 and its report counts every violation",
           "[cli][check]") {
   const auto map = write("square.txt", "....\n....\n....\n....\n");

@@ -137,6 +137,33 @@ TEST_CASE("read_tour: JSON arrays, antkit stc's object, CSV - the same positions
   CHECK(testing::read_tour("[]", "T").path.empty());
 }
 
+TEST_CASE("read_tour: row,col pairs by header or by order come back as x,y", "[testing]") {
+  const std::vector<Cell> want{{0, 0}, {1, 0}, {1, 2}};
+  // A header decides for its file, whatever the order asked.
+  for (const auto order : {testing::TourOrder::XY, testing::TourOrder::RowCol}) {
+    const auto rc = testing::read_tour("row,col\n0,0\n0,1\n2,1\n", "T", order);
+    CHECK(rc.path == want);
+    CHECK(rc.order == testing::TourOrder::RowCol);
+    CHECK(rc.order_from_header);
+    CHECK(testing::read_tour(" y , x\r\n0,0\n0,1\n2,1", "T", order).path == want);
+    const auto xy = testing::read_tour("x,y\n0,0\n1,0\n1,2\n", "T", order);
+    CHECK(xy.path == want);
+    CHECK(xy.order == testing::TourOrder::XY);
+  }
+  // No header: the order asked, in CSV and in JSON (the pairs and the start).
+  const auto csv = testing::read_tour("0,0\n0,1\n2,1\n", "T", testing::TourOrder::RowCol);
+  CHECK(csv.path == want);
+  CHECK_FALSE(csv.order_from_header);
+  CHECK(testing::read_tour("0,0\n0,1\n2,1\n", "T").path ==
+        std::vector<Cell>{{0, 0}, {0, 1}, {2, 1}});
+  const auto json = testing::read_tour("{\"start\": [2, 1], \"path\": [[0,0],[0,1],[2,1]]}", "T",
+                                       testing::TourOrder::RowCol);
+  CHECK(json.path == want);
+  REQUIRE(json.start);
+  CHECK(*json.start == Cell{1, 2});
+  CHECK(testing::tour_order_name(testing::TourOrder::RowCol) == "rc");
+}
+
 TEST_CASE("read_tour: malformed tours are refused with the place", "[testing]") {
   CHECK(where_of("") == "T: empty: no tour");
   CHECK(where_of("[[0,0],\n[1,0,]") == "T:2:6: JSON: syntax error while parsing value - "

@@ -54,10 +54,17 @@ struct StcAudit {
 [[nodiscard]] StcAudit audit_stc_tour(const kernel::OccupancyGrid& map, kernel::Cell start,
                                       std::span<const kernel::Cell> path, TourRule rule);
 
-// A tour read from a file, and the start it names (antkit stc's JSON output has one).
+// The order of a tour's pairs: x,y (column, row: antkit's) or row,col (y,x: numpy's, most image
+// and matrix code's).
+enum class TourOrder : std::uint8_t { XY, RowCol };
+[[nodiscard]] std::string_view tour_order_name(TourOrder order) noexcept; // "xy" / "rc"
+
+// A tour read from a file, and the start it names (antkit stc's JSON output has one), in x,y.
 struct TourFile {
   std::vector<kernel::Cell> path;
   std::optional<kernel::Cell> start;
+  TourOrder order = TourOrder::XY; // the order the file's pairs were read in
+  bool order_from_header = false;  // a CSV header said it (x,y; row,col or y,x)
 };
 
 // Reads a tour. A file that starts with "ANTKPTH1" is antkit's binary path (stc/path_format.hpp:
@@ -66,13 +73,18 @@ struct TourFile {
 //   '[' a JSON array of [x, y] pairs;  '{' a JSON object with "path" (that array) and optionally
 //   "start" ([x, y]), as `antkit stc --format json` prints it (other keys are ignored);
 //   anything else: CSV, one "x,y" per line (spaces and tabs around the numbers, CRLF and blank
-//   lines allowed, an optional first line "x,y").
+//   lines allowed, an optional first line "x,y", or "row,col" or "y,x" for pairs in that order).
+// `order` is the order of the pairs when the file does not say it (JSON pairs and the "start",
+// headerless CSV); a CSV header overrides it. antkit's binary path is always x,y. The pairs are
+// returned as x,y.
 // Coordinates are whole numbers in [-2^31, 2^31). At most 2^28 positions. Errors are
 // kernel::InputError naming `source` and the place: "SOURCE:LINE:COL" for syntax,
 // "SOURCE: path[i]" for a well-formed JSON value of the wrong shape.
-[[nodiscard]] TourFile read_tour(std::string_view text, const std::string& source);
+[[nodiscard]] TourFile read_tour(std::string_view text, const std::string& source,
+                                 TourOrder order = TourOrder::XY);
 // Reads a file (at most 1 GiB); one that cannot be read is an InputError naming it.
-[[nodiscard]] TourFile read_tour_file(const std::filesystem::path& path);
+[[nodiscard]] TourFile read_tour_file(const std::filesystem::path& path,
+                                      TourOrder order = TourOrder::XY);
 
 // `antkit check stc`: the map file, the tour file and the start. The start is --start when given,
 // else the tour file's "start", else the map's own start ('S' in an ASCII map), else the tour's
@@ -82,12 +94,15 @@ struct StcCheckRequest {
   std::string tour_file;
   std::optional<kernel::Cell> start;
   TourRule rule = TourRule::ExactlyOnce;
+  TourOrder order = TourOrder::XY; // the tour file's pairs when it does not say (read_tour)
 };
 
 struct StcCheckReport {
   StcAudit audit;
   kernel::Cell start{};
   std::string start_from; // "--start", "tour file", "map" or "first position"
+  TourOrder order = TourOrder::XY;
+  bool order_from_header = false;
   std::int32_t width = 0, height = 0;
 };
 
