@@ -1,7 +1,7 @@
 // `antkit check`: an oracle for any planner's output (issue 18). The checks are antkit::testing's
 // (testing/include/antkit/testing/); this file parses options, calls one function and prints.
 //
-//   antkit check stc --map F --path P [--start X,Y] [--coverage] [--order xy|rc]
+//   antkit check stc --map F --path P [--start X,Y] [--coverage] [--order xy|rc] [--cells]
 //                    [--format table|json]
 //   antkit check explore --map F --cells C [--format table|json]
 //   antkit check cover --map F --log L [--sensor R] [--format table|json]
@@ -32,7 +32,7 @@ nlohmann::json cell_json(antkit::kernel::Cell c) {
 
 struct StcCheckCommand {
   std::string map, path, start, order = "xy";
-  bool coverage = false;
+  bool coverage = false, cells = false;
   Format format = Format::Table;
 };
 
@@ -43,6 +43,7 @@ void run_stc(const StcCheckCommand& c) {
   if (!c.start.empty()) request.start = antkit::algorithms::parse_cell("--start", c.start);
   request.rule = c.coverage ? testing::TourRule::Coverage : testing::TourRule::ExactlyOnce;
   request.order = c.order == "rc" ? testing::TourOrder::RowCol : testing::TourOrder::XY;
+  request.cells = c.cells;
   const testing::StcCheckReport r = testing::check_stc_files(request);
   const testing::StcAudit& a = r.audit;
   nlohmann::json j;
@@ -56,6 +57,8 @@ void run_stc(const StcCheckCommand& c) {
   j["start_from"] = r.start_from;
   j["order"] = std::string(testing::tour_order_name(r.order));
   j["order_from"] = r.order_from_header ? "header" : "--order";
+  j["cells"] = r.cells;
+  j["start_cell"] = r.start_cell ? cell_json(*r.start_cell) : nlohmann::json(nullptr);
   j["positions"] = a.positions;
   j["closed_form"] = a.closed_form;
   j["reachable_subcells"] = a.reachable;
@@ -163,6 +166,10 @@ void register_check(CLI::App& app) {
                   "default) or rc (row, col: numpy's). A CSV header x,y, row,col or y,x decides "
                   "for its file; --start is always X,Y; the report's cells are x,y")
       ->check(CLI::IsMember({"xy", "rc"}));
+  stc->add_flag("--cells", s->cells,
+                "The map, --start and the tour file's start are in robot-sized cells (2 x 2 "
+                "sub-cells each); the tour in sub-cells, starting in any sub-cell of the start "
+                "cell. Reachable: every sub-cell of the free cells 4-connected to the start cell");
   stc->add_flag("--coverage", s->coverage,
                 "Every reachable free sub-cell at least once, repeats counted (Full-STC, "
                 "boustrophedon), instead of exactly once");

@@ -297,38 +297,69 @@ TourFile read_tour_file(const std::filesystem::path& path, TourOrder order) {
 }
 
 StcCheckReport check_stc_files(const StcCheckRequest& request) {
-  const maps::GridMap map = maps::load_map(request.map_file);
+  maps::GridMap map = maps::load_map(request.map_file);
   const TourFile tour = read_tour_file(request.tour_file, request.order);
   StcCheckReport r;
   r.order = tour.order;
   r.order_from_header = tour.order_from_header;
+  r.cells = request.cells;
+  // With `cells`, the places the request names (the start, the map's and the tour file's start)
+  // are cells; the map is checked in sub-cells, 2 x 2 per cell.
+  const OccupancyGrid cells_map = map.cells;
+  if (request.cells) {
+    if (cells_map.width() > (1 << 29) || cells_map.height() > (1 << 29))
+      throw InputError(request.map_file, "too large to split into sub-cells");
+    OccupancyGrid sub(2 * cells_map.width(), 2 * cells_map.height(), Occupancy::Blocked);
+    for (std::int32_t y = 0; y < sub.height(); ++y)
+      for (std::int32_t x = 0; x < sub.width(); ++x)
+        sub[{x, y}] =
+            cells_map[{x / 2, y / 2}] == Occupancy::Free ? Occupancy::Free : Occupancy::Blocked;
+    map.cells = std::move(sub);
+  }
   r.width = map.cells.width();
   r.height = map.cells.height();
+  const OccupancyGrid& named = request.cells ? cells_map : map.cells;
+  const std::string unit = request.cells ? "cell" : "sub-cell";
   auto require_free = [&](Cell s, const std::string& where) {
-    if (!map.cells.in_bounds(s))
+    if (!named.in_bounds(s))
       throw InputError(where, "the start (" + std::to_string(s.x) + ", " + std::to_string(s.y) +
-                                  ") is outside the " + std::to_string(r.width) + "x" +
-                                  std::to_string(r.height) + " map");
-    if (map.cells[s] != Occupancy::Free)
+                                  ") is outside the " + std::to_string(named.width()) + "x" +
+                                  std::to_string(named.height()) + " map");
+    if (named[s] != Occupancy::Free)
       throw InputError(where, "the start (" + std::to_string(s.x) + ", " + std::to_string(s.y) +
-                                  ") is not a free sub-cell of the map");
+                                  ") is not a free " + unit + " of the map");
   };
+  std::optional<Cell> start;
   if (request.start) {
-    r.start = *request.start;
+    start = *request.start;
     r.start_from = "--start";
-    require_free(r.start, "--start");
+    require_free(*start, "--start");
   } else if (tour.start) {
-    r.start = *tour.start;
+    start = *tour.start;
     r.start_from = "tour file";
-    require_free(r.start, request.tour_file);
+    require_free(*start, request.tour_file);
   } else if (map.start) {
-    r.start = *map.start;
+    start = *map.start;
     r.start_from = "map";
   } else if (!tour.path.empty()) {
     r.start = tour.path.front();
     r.start_from = "first position";
   } else {
     throw InputError(request.tour_file, "the tour is empty and no start is given");
+  }
+  if (start && request.cells) {
+    // The tour may begin in any sub-cell of the start cell: that sub-cell is the start.
+    r.start_cell = *start;
+    r.start = {2 * start->x, 2 * start->y};
+    if (!tour.path.empty()) {
+      const Cell first = tour.path.front();
+      if (first.x / 2 == start->x && first.y / 2 == start->y && first.x >= 0 && first.y >= 0)
+        r.start = first;
+    }
+  } else if (start) {
+    r.start = *start;
+  } else if (request.cells) {
+    r.start_cell = Cell{r.start.x / 2, r.start.y / 2};
   }
   r.audit = audit_stc_tour(map.cells, r.start, tour.path, request.rule);
   return r;

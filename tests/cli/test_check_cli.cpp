@@ -126,6 +126,39 @@ TEST_CASE("antkit check stc --order rc and a row,col header read a planner's pai
   CHECK(check(bare, " --order yx").status == 2);
 }
 
+TEST_CASE("antkit check stc --cells: the map and the start in robot-sized cells, the tour in "
+          "sub-cells from any sub-cell of the start cell",
+          "[cli][check]") {
+  // 3 x 2 cells with one blocked; the planner's world is that map, its tour is in sub-cells.
+  const auto cells = write("cells.txt", ".#.\n...\n");
+  const auto subcells = write("subcells.txt", "..##..\n..##..\n......\n......\n");
+  for (const std::string start : {"4,0", "5,1"}) {
+    INFO(start);
+    const auto made = run_antkit("stc --map " + subcells.string() +
+                                 " --variant offline --format json --start " + start);
+    REQUIRE(made.status == 0);
+    const auto path = write("cells-tour.json", nlohmann::json::parse(made.out).at("path").dump());
+    const auto r = run_antkit("check stc --cells --map " + cells.string() + " --path " +
+                              path.string() + " --start 2,0 --format json");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j.at("cells") == true);
+    CHECK(j.at("start_cell") == nlohmann::json::array({2, 0}));
+    CHECK(j.at("start") == nlohmann::json::parse("[" + start + "]"));
+    CHECK(j.at("reachable_subcells") == 20);
+    CHECK(j.at("width") == 6);
+    // Another start cell: the tour does not start in it.
+    CHECK(run_antkit("check stc --cells --map " + cells.string() + " --path " + path.string() +
+                     " --start 0,1")
+              .status == 1);
+    // The start cell must be a free cell of the cells' map.
+    CHECK(run_antkit("check stc --cells --map " + cells.string() + " --path " + path.string() +
+                     " --start 1,0")
+              .status == 2);
+  }
+}
+
 TEST_CASE("antkit check stc: a damaged tour exits 1 and its report counts every violation",
           "[cli][check]") {
   const auto map = write("square.txt", "....\n....\n....\n....\n");

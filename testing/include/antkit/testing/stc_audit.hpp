@@ -95,6 +95,12 @@ struct StcCheckRequest {
   std::optional<kernel::Cell> start;
   TourRule rule = TourRule::ExactlyOnce;
   TourOrder order = TourOrder::XY; // the tour file's pairs when it does not say (read_tour)
+  // The map, the start and the tour file's start are in robot-sized cells, as planners that merge
+  // 2 x 2 sub-cells give them: each map cell becomes 2 x 2 sub-cells (blocked or free as the
+  // cell), the tour stays in sub-cells, and its first position may be any sub-cell of the start
+  // cell (which then is the start). "Reachable" is then every sub-cell of the free cells
+  // 4-connected to the start cell.
+  bool cells = false;
 };
 
 struct StcCheckReport {
@@ -103,6 +109,8 @@ struct StcCheckReport {
   std::string start_from; // "--start", "tour file", "map" or "first position"
   TourOrder order = TourOrder::XY;
   bool order_from_header = false;
+  bool cells = false; // the request's `cells`: width, height and start are sub-cells
+  std::optional<kernel::Cell> start_cell; // with `cells`: the start cell the start lies in
   std::int32_t width = 0, height = 0;
 };
 
