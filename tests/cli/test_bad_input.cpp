@@ -145,7 +145,7 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"map info {D}/ragged.txt", "{D}/ragged.txt:2:3:", "row 1 has 3 cells"},
       {"map info {D}/missing.map", "{D}/missing.map:", "cannot open"},
       {"map info {D}/junk.pgm", "{D}/junk.pgm:", "unknown map extension"},
-      {"map info", "FILE is required", ""},
+      {"map info", "--map is required", ""},
       {"map convert {M} {D}/out.bmp", "{D}/out.bmp:", "unknown map extension"},
       {"map convert {D}/junk.map {D}/out.map", "{D}/junk.map:1:1:", "type octile"},
       // check stc
