@@ -166,7 +166,10 @@ PilotOptions pilot_options(const ControllerSpec& spec) {
                              "the stc-floor robot runs ant or ant-edge, not '" + spec.name + "'");
   p.controller = *variant;
   std::vector<std::string> seen;
-  for (const auto& [key, value] : spec.params) {
+  for (const auto& param : spec.params) {
+    // Not structured bindings: clang 14 cannot capture those in the lambda below.
+    const std::string& key = param.first;
+    const std::int64_t value = param.second;
     if (std::find(seen.begin(), seen.end(), key) != seen.end())
       throw kernel::InputError("--param", "'" + key + "' given twice");
     seen.push_back(key);
