@@ -151,9 +151,11 @@ std::string RobotLink::transact(const std::string& command, std::vector<Exchange
                                                 std::to_string(options_.tries) + " tries: " + why);
 }
 
-SafeStopResult safe_stop(CommandLink& link, std::vector<Exchange>& io) noexcept {
+namespace detail {
+
+SafeStopResult safe_stop_steps(CommandLink& link, std::vector<Exchange>& io) {
   SafeStopResult out;
-  try {
+  {
     const Codec& codec = link.codec();
     const auto& o = link.options();
     const auto rounds = std::max<std::uint32_t>(1, o.stop_rounds);
@@ -210,11 +212,24 @@ SafeStopResult safe_stop(CommandLink& link, std::vector<Exchange>& io) noexcept 
                        std::string("wheels not confirmed at 0 (") + why + ")";
     }
     out.complete = out.failure.empty();
-  } catch (const std::exception& e) { // allocation failure: nothing more can be said safely
-    out.failure += std::string("; ") + e.what();
-    out.complete = false;
   }
   return out;
+}
+
+} // namespace detail
+
+SafeStopResult safe_stop(CommandLink& link, std::vector<Exchange>& io) noexcept {
+  try {
+    return detail::safe_stop_steps(link, io);
+  } catch (const std::exception& e) { // allocation failure: nothing more can be said safely
+    SafeStopResult out;
+    out.failure = std::string("the safe stop failed: ") + e.what();
+    return out;
+  } catch (...) {
+    SafeStopResult out;
+    out.failure = "the safe stop failed";
+    return out;
+  }
 }
 
 } // namespace antkit::devices

@@ -143,7 +143,7 @@ std::optional<Divergence> check_stop(const LogStop& stop, const Codec& codec) {
     std::vector<Exchange> seen;
     SafeStopResult r;
     try {
-      r = safe_stop(link, seen);
+      r = detail::safe_stop_steps(link, seen);
     } catch (const Diverged& d) {
       last = d.d;
       continue;

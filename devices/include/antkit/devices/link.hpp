@@ -145,4 +145,11 @@ struct SafeStopResult {
 // See above. Never throws (a stop signal during it is ignored: it is the stop).
 SafeStopResult safe_stop(CommandLink& link, std::vector<Exchange>& io) noexcept;
 
+namespace detail {
+// The same steps, letting through what the link throws beyond LinkError: a replay's link
+// (replay.cpp) throws its divergence from inside the safe stop, which the noexcept safe_stop
+// would turn into std::terminate (found by the replay_log fuzz target).
+SafeStopResult safe_stop_steps(CommandLink& link, std::vector<Exchange>& io);
+} // namespace detail
+
 } // namespace antkit::devices
