@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace antkit;
@@ -22,27 +23,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const kernel::InputError&) {
     return 0;
   }
-  std::string csv = "x,y\n", json = "{\"path\": [";
-  for (std::size_t i = 0; i < tour.path.size(); ++i) {
-    const auto c = tour.path[i];
-    csv += std::to_string(c.x) + "," + std::to_string(c.y) + "\n";
-    json += (i ? ",[" : "[") + std::to_string(c.x) + "," + std::to_string(c.y) + "]";
-  }
-  json += "]}";
-  if (!tour.path.empty()) ANTKIT_FUZZ_REQUIRE(testing::read_tour(csv, "csv").path == tour.path);
-  ANTKIT_FUZZ_REQUIRE(testing::read_tour(json, "json").path == tour.path);
+  // The tour's pairs as CSV lines and a JSON array, x,y or (rc) row,col.
+  const auto written = [&](bool rc) {
+    std::string csv, json = "[";
+    for (std::size_t i = 0; i < tour.path.size(); ++i) {
+      const auto c = tour.path[i];
+      const auto a = std::to_string(rc ? c.y : c.x), b = std::to_string(rc ? c.x : c.y);
+      csv += a + "," + b + "\n";
+      json += (i ? ",[" : "[") + a + "," + b + "]";
+    }
+    return std::pair{csv, json + "]"};
+  };
+  const auto [csv, json] = written(false);
+  if (!tour.path.empty())
+    ANTKIT_FUZZ_REQUIRE(testing::read_tour("x,y\n" + csv, "csv").path == tour.path);
+  ANTKIT_FUZZ_REQUIRE(testing::read_tour("{\"path\": " + json + "}", "json").path == tour.path);
   // The same positions as row,col pairs: by header, and by order (CSV and JSON).
-  std::string rc = "row,col\n", rc_json = "[";
-  for (std::size_t i = 0; i < tour.path.size(); ++i) {
-    const auto c = tour.path[i];
-    rc += std::to_string(c.y) + "," + std::to_string(c.x) + "\n";
-    rc_json += (i ? ",[" : "[") + std::to_string(c.y) + "," + std::to_string(c.x) + "]";
-  }
-  rc_json += "]";
+  const auto [rc, rc_json] = written(true);
   if (!tour.path.empty()) {
-    ANTKIT_FUZZ_REQUIRE(testing::read_tour(rc, "rc").path == tour.path);
-    ANTKIT_FUZZ_REQUIRE(testing::read_tour(rc.substr(8), "rc", testing::TourOrder::RowCol).path ==
-                        tour.path);
+    ANTKIT_FUZZ_REQUIRE(testing::read_tour("row,col\n" + rc, "rc").path == tour.path);
+    ANTKIT_FUZZ_REQUIRE(testing::read_tour(rc, "rc", testing::TourOrder::RowCol).path == tour.path);
   }
   ANTKIT_FUZZ_REQUIRE(testing::read_tour(rc_json, "rc", testing::TourOrder::RowCol).path ==
                       tour.path);

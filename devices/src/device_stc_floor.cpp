@@ -420,8 +420,9 @@ ReplayResult replay_log(LogReader& reader, const std::string& path,
   FloorController controller(*variant, stc::quadrant_of(pos));
   auto h = static_cast<int>(heading);
   bool last_refused = false;
-  auto result =
-      replay_records(reader, until, [&](const LogRecord& r, std::vector<std::int64_t>& cmd) {
+  return replay_records(
+      reader, until,
+      [&](const LogRecord& r, std::vector<std::int64_t>& cmd) {
         std::optional<Divergence> d;
         if (auto bad = check_floor_io(r)) return bad;
         std::optional<bool> moved;
@@ -454,13 +455,8 @@ ReplayResult replay_log(LogReader& reader, const std::string& path,
         compare_fields(std::span(r.odo).first(std::min<std::size_t>(r.odo.size(), 3)), odo, r.step,
                        "odo", d);
         return d;
-      });
-  if (result.identical && !until && result.stop)
-    if (auto d = check_floor_stop(*result.stop, last_refused)) {
-      result.identical = false;
-      result.first_divergence = std::move(d);
-    }
-  return result;
+      },
+      [&](const LogStop& stop) { return check_floor_stop(stop, last_refused); });
 }
 
 } // namespace antkit::devices::stc_floor

@@ -191,9 +191,11 @@ bool compare_fields(std::span<const std::int64_t> expected, std::span<const std:
   return true;
 }
 
-ReplayResult replay_records(LogReader& reader, std::optional<std::int64_t> until,
-                            const std::function<std::optional<Divergence>(
-                                const LogRecord& r, std::vector<std::int64_t>& cmd)>& check) {
+ReplayResult replay_records(
+    LogReader& reader, std::optional<std::int64_t> until,
+    const std::function<std::optional<Divergence>(const LogRecord& r,
+                                                  std::vector<std::int64_t>& cmd)>& check,
+    const std::function<std::optional<Divergence>(const LogStop& stop)>& check_stop) {
   ReplayResult out;
   out.header = reader.header();
   RunHash run;
@@ -219,6 +221,11 @@ ReplayResult replay_records(LogReader& reader, std::optional<std::int64_t> until
   out.stop = reader.stop();
   out.complete = out.stop.has_value() && !out.truncated;
   out.hash = run.value();
+  if (check_stop && out.identical && !until && out.stop)
+    if (auto d = check_stop(*out.stop)) {
+      out.identical = false;
+      out.first_divergence = std::move(d);
+    }
   return out;
 }
 
@@ -254,8 +261,9 @@ ReplayResult replay_serial(LogReader& reader, const std::string& path,
   detail::Body body(link);
   std::vector<std::int64_t> obs;
   std::vector<Exchange> seen;
-  auto result =
-      replay_records(reader, until, [&](const LogRecord& r, std::vector<std::int64_t>& cmd) {
+  return replay_records(
+      reader, until,
+      [&](const LogRecord& r, std::vector<std::int64_t>& cmd) {
         std::optional<Divergence> d;
         link.load(r.io, r.step, "io");
         seen.clear();
@@ -290,13 +298,8 @@ ReplayResult replay_serial(LogReader& reader, const std::string& path,
                          "'" + printable(r.io[link.position()].sent) + "'",
                          "no further exchange in this step"});
         return d;
-      });
-  if (result.identical && !until && result.stop)
-    if (auto d = check_stop(*result.stop, codec)) {
-      result.identical = false;
-      result.first_divergence = std::move(d);
-    }
-  return result;
+      },
+      [&](const LogStop& stop) { return check_stop(stop, codec); });
 }
 
 } // namespace detail

@@ -53,9 +53,13 @@ struct ReplayResult {
 // than the one before; check() compares one record with this build (filling cmd with the command it
 // computes) and returns the first difference, which ends the replay; the identical records are
 // folded into the run hash.
-ReplayResult replay_records(LogReader& reader, std::optional<std::int64_t> until,
-                            const std::function<std::optional<Divergence>(
-                                const LogRecord& r, std::vector<std::int64_t>& cmd)>& check);
+// check_stop() then holds the stop record against the run, when every record replayed identically
+// and the whole log was asked for.
+ReplayResult replay_records(
+    LogReader& reader, std::optional<std::int64_t> until,
+    const std::function<std::optional<Divergence>(const LogRecord& r,
+                                                  std::vector<std::int64_t>& cmd)>& check,
+    const std::function<std::optional<Divergence>(const LogStop& stop)>& check_stop = {});
 
 // Recorded against computed values: false, with the first difference as `field[i]` in `out`
 // (unless out already holds one), when they differ.
