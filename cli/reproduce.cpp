@@ -128,9 +128,10 @@ void register_reproduce(CLI::App& app) {
   sub->add_option("--only", c->only, "Comma-separated: buffon, los, stc, uniform (default: all)");
   sub->add_option("--threads", c->threads, "Threads (default 2; per MPI rank)");
   sub->add_option("--seed", c->seed, "Seed of the keyed streams (default 1)");
-  sub->add_option("--maps", c->maps,
-                  "The real maps for paper 002 (default data/maps, the checkout's copy; when missing, "
-                  "random maps only)");
+  sub->add_option(
+      "--maps", c->maps,
+      "The real maps for paper 002 (default data/maps, the checkout's copy; when missing, "
+      "random maps only)");
   sub->add_option("--out", c->out, "Output directory")->required();
   antkit::cli::add_format_option(*sub, c->format);
   sub->callback([c] { run(*c); });

@@ -234,8 +234,8 @@ TEST_CASE("stc floor: on every shared map cut to 24 x 24 cells the rendered robo
           "[devices][slow]") {
   std::vector<std::filesystem::path> files;
   for (const auto& dir : {"movingai", "ros"})
-    for (const auto& e : std::filesystem::directory_iterator(
-             std::filesystem::path(ANTKIT_MAPS_DIR) / dir))
+    for (const auto& e :
+         std::filesystem::directory_iterator(std::filesystem::path(ANTKIT_MAPS_DIR) / dir))
       if (e.path().extension() == ".map" || e.path().extension() == ".yaml")
         files.push_back(e.path());
   std::sort(files.begin(), files.end());

@@ -1,7 +1,7 @@
 #pragma once
 // A test server that behaves as Webots' Khepera TCP/IP relay controller does, written from the
-// facts in ../shared/devices/PROTOCOLS.md ("Khepera in Webots, over TCP"), not from antkit's
-// emulator, so that an adapter tested against it is not only tested against our own code:
+// facts in PROTOCOLS.md, the shared devices notes ("Khepera in Webots, over TCP"), not from
+// antkit's emulator, so that an adapter tested against it is not only tested against our own code:
 //   * it listens with a backlog of 1 (on 127.0.0.1 here; the real relay on port 10020 of any
 //     address: the port is a parameter, 0 for any free one) and accepts one client, once: it never
 //     calls accept() again, so a second client's connect completes in the kernel's backlog and is

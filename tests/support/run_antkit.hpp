@@ -38,7 +38,7 @@ inline RunResult run_antkit(const std::string& args) {
   return r;
 }
 
-// A shared map file by its path below data/maps (the real maps, vendored from ../shared/maps).
+// A real map file by its path below the repository's data/maps.
 inline std::string shared_map(const std::string& relative) {
   return std::string(ANTKIT_MAPS_DIR) + "/" + relative;
 }
