@@ -173,17 +173,24 @@ kernel::Grid<CellState> read_los_cells(std::string_view text, const std::string&
 
 ExploreCheckReport check_explore_files(const std::string& map_file, const std::string& cells_file) {
   const maps::GridMap map = maps::load_map(map_file);
-  const auto states =
-      read_los_cells(read_text_file(cells_file, "cell states", std::size_t{1} << 30), cells_file);
-  if (states.width() != map.cells.width() || states.height() != map.cells.height())
-    throw InputError(cells_file, "the cell states are " + std::to_string(states.width()) + "x" +
-                                     std::to_string(states.height()) + ", the map " +
-                                     std::to_string(map.cells.width()) + "x" +
-                                     std::to_string(map.cells.height()));
+  return check_explore(
+      map.cells,
+      read_los_cells(read_text_file(cells_file, "cell states", std::size_t{1} << 30), cells_file),
+      cells_file);
+}
+
+ExploreCheckReport check_explore(const kernel::OccupancyGrid& map,
+                                 const kernel::Grid<los::CellState>& states,
+                                 const std::string& cells_source) {
+  if (states.width() != map.width() || states.height() != map.height())
+    throw InputError(cells_source, "the cell states are " + std::to_string(states.width()) + "x" +
+                                       std::to_string(states.height()) + ", the map " +
+                                       std::to_string(map.width()) + "x" +
+                                       std::to_string(map.height()));
   ExploreCheckReport r;
   r.width = states.width();
   r.height = states.height();
-  r.audit = audit_los_cells(map.cells, states);
+  r.audit = audit_los_cells(map, states);
   return r;
 }
 
@@ -388,13 +395,24 @@ CoverAudit audit_cover_trace(const OccupancyGrid& map, const CoverTrace& trace,
 
 CoverCheckReport check_cover_files(const std::string& map_file, const std::string& trace_file,
                                    std::optional<std::int64_t> sensor) {
+  check_sensor_range(sensor);
+  const maps::GridMap map = maps::load_map(map_file);
+  return check_cover(
+      map.cells,
+      read_cover_trace(read_text_file(trace_file, "trace", std::size_t{1} << 30), trace_file),
+      sensor, trace_file);
+}
+
+void check_sensor_range(std::optional<std::int64_t> sensor) {
   if (sensor && (*sensor < 0 || *sensor > uniform::kMaxSensorRange))
     throw InputError("--sensor", "expected a sensor distance in [0, " +
                                      std::to_string(uniform::kMaxSensorRange) + "] cells, not " +
                                      std::to_string(*sensor));
-  const maps::GridMap map = maps::load_map(map_file);
-  const CoverTrace trace =
-      read_cover_trace(read_text_file(trace_file, "trace", std::size_t{1} << 30), trace_file);
+}
+
+CoverCheckReport check_cover(const kernel::OccupancyGrid& map, const CoverTrace& trace,
+                             std::optional<std::int64_t> sensor, const std::string& trace_source) {
+  check_sensor_range(sensor);
   CoverCheckReport r;
   if (sensor) {
     r.sensor = static_cast<std::int32_t>(*sensor);
@@ -403,11 +421,11 @@ CoverCheckReport check_cover_files(const std::string& map_file, const std::strin
     r.sensor = *trace.sensor;
     r.sensor_from = "trace";
   } else {
-    throw InputError(trace_file, "no \"# sensor: R\" line: give the sensor range with --sensor");
+    throw InputError(trace_source, "no \"# sensor: R\" line: give the sensor range with --sensor");
   }
   r.claim_viewed = trace.claim_viewed;
   r.claim_viewable = trace.claim_viewable;
-  r.audit = audit_cover_trace(map.cells, trace, r.sensor);
+  r.audit = audit_cover_trace(map, trace, r.sensor);
   return r;
 }
 

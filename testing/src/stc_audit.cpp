@@ -297,8 +297,11 @@ TourFile read_tour_file(const std::filesystem::path& path, TourOrder order) {
 }
 
 StcCheckReport check_stc_files(const StcCheckRequest& request) {
-  maps::GridMap map = maps::load_map(request.map_file);
-  const TourFile tour = read_tour_file(request.tour_file, request.order);
+  return check_stc(maps::load_map(request.map_file),
+                   read_tour_file(request.tour_file, request.order), request);
+}
+
+StcCheckReport check_stc(maps::GridMap map, const TourFile& tour, const StcCheckRequest& request) {
   StcCheckReport r;
   r.order = tour.order;
   r.order_from_header = tour.order_from_header;

@@ -47,6 +47,10 @@ struct ExploreCheckReport {
 // `antkit check explore`: the map and the states must have the same size (bad input otherwise).
 [[nodiscard]] ExploreCheckReport check_explore_files(const std::string& map_file,
                                                      const std::string& cells_file);
+// The same on a map and states in memory; `cells_source` names the states in messages.
+[[nodiscard]] ExploreCheckReport check_explore(const kernel::OccupancyGrid& map,
+                                               const kernel::Grid<los::CellState>& states,
+                                               const std::string& cells_source);
 
 // ---- Uniform coverage: is the run legal, and does it cover what it claims? ----------------------
 // A trace is every robot's pose after every tick, tick 0 the start (`antkit cover --trace`):
@@ -107,6 +111,13 @@ struct CoverCheckReport {
 [[nodiscard]] CoverCheckReport check_cover_files(const std::string& map_file,
                                                  const std::string& trace_file,
                                                  std::optional<std::int64_t> sensor);
+// The same on a map and a trace in memory; `trace_source` names the trace in messages.
+[[nodiscard]] CoverCheckReport check_cover(const kernel::OccupancyGrid& map,
+                                           const CoverTrace& trace,
+                                           std::optional<std::int64_t> sensor,
+                                           const std::string& trace_source);
+// An InputError "--sensor" for a range outside [0, uniform::kMaxSensorRange].
+void check_sensor_range(std::optional<std::int64_t> sensor);
 
 // Reads a whole text file (at most `max_bytes`); one that cannot be read is an InputError naming
 // it, `what` saying what it should have been ("tour", "trace", ...).

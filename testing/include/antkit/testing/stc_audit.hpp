@@ -20,6 +20,7 @@
 // A tour that ends on its first position is read as closed: that last entry is the return to the
 // start, not a second visit (planners differ on whether they list it; STC's own does not).
 #include <antkit/kernel/grid.hpp>
+#include <antkit/maps/map_io.hpp>
 #include <antkit/testing/stc.hpp>
 #include <cstdint>
 #include <filesystem>
@@ -115,6 +116,11 @@ struct StcCheckReport {
 };
 
 [[nodiscard]] StcCheckReport check_stc_files(const StcCheckRequest& request);
+
+// The same on a map and a tour in memory (the Python package's check_stc): `request`'s map_file
+// and tour_file only name them in messages; its order is the one `tour` was read in.
+[[nodiscard]] StcCheckReport check_stc(maps::GridMap map, const TourFile& tour,
+                                       const StcCheckRequest& request);
 
 [[nodiscard]] std::string_view tour_rule_name(TourRule rule) noexcept;
 
