@@ -9,6 +9,7 @@
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/reports/reports.hpp>
 #include <cctype>
 #include <iostream>
 #include <memory>
@@ -24,15 +25,6 @@ struct ArenaOptions {
   std::string out_wkt;
   antkit::cli::Format format = antkit::cli::Format::Table;
 };
-
-// An argument that ends in ".wkt" (any case) is a file; anything else is a named spec. The rule is
-// the file name's, not the file system's, so a typo in a spec never silently reads a stray file.
-bool is_wkt_path(const std::string& s) {
-  if (s.size() < 4) return false;
-  std::string tail = s.substr(s.size() - 4);
-  for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return tail == ".wkt";
-}
 
 // MovingAI's map format (movingai.com/benchmarks/formats.html): '.' passable, '@' out of bounds.
 // Kept minimal and local here; the general map writer lives with the maps.
@@ -53,7 +45,7 @@ void run(const ArenaOptions& o) {
   nlohmann::json result;
   std::optional<Arena> arena;
   std::optional<double> ideal;
-  if (is_wkt_path(o.source)) {
+  if (antkit::reports::is_wkt_path(o.source)) {
     arena = read_wkt_file(o.source);
   } else {
     auto named = build_arena_spec(o.source, "SPEC");

@@ -57,6 +57,7 @@
 #include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/reports/reports.hpp>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -158,7 +159,7 @@ void run(const BuffonCommand& c) {
   if (!(c.noise >= 0 && c.noise <= 1))
     throw InputError("--noise", "the sensor noise must be in [0, 1]");
 
-  geometry::Arena arena = antkit::cli::is_wkt_path(c.arena)
+  geometry::Arena arena = antkit::reports::is_wkt_path(c.arena)
                               ? geometry::read_wkt_file(c.arena)
                               : geometry::build_arena_spec(c.arena, "--arena").arena;
   buffon::BodyParams body;

@@ -40,11 +40,9 @@
 #include "output.hpp"
 
 #include <antkit/devices/odometry.hpp>
-#include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
-#include <antkit/geometry/wkt.hpp>
-#include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/reports/reports.hpp>
 #include <iostream>
 #include <memory>
 
@@ -60,65 +58,13 @@ struct FromLogsCommand {
   Format format = Format::Table;
 };
 
-nlohmann::json visit_json(const devices::LoggedTrail& t) {
-  return {{"steps", t.steps},
-          {"length", static_cast<double>(t.length_raw) / 65536.0},
-          {"truncated", t.truncated},
-          {"hash", antkit::kernel::hash_hex(t.run_hash)}};
-}
-
-nlohmann::json maybe(const std::optional<double>& v, double scale = 1) {
-  return v ? nlohmann::json(*v * scale) : nlohmann::json(nullptr);
-}
-
-nlohmann::json interval(const devices::AreaInterval& ci, double scale = 1) {
-  return nlohmann::json::array({maybe(ci.lower, scale), maybe(ci.upper, scale)});
-}
-
-// A spec's exact area: a WKT file's polygon or a named spec's built arena (cli/buffon.cpp's rule).
-double arena_area(const std::string& spec, const std::string& where) {
-  return antkit::cli::is_wkt_path(spec)
-             ? antkit::geometry::read_wkt_file(spec).area()
-             : antkit::geometry::build_arena_spec(spec, where).arena.area();
-}
-
 void run(const FromLogsCommand& c) {
   if (!(c.width >= 0.01 && c.width <= 10))
     throw antkit::kernel::InputError("--width", "the trail width must be in [0.01, 10] units");
   const auto width = antkit::geometry::fixed_from_double<antkit::kernel::Fx>(c.width, "--width");
-  const auto r = devices::buffon_from_logs(c.visit1, c.visit2, width, {c.arena, &arena_area});
-  const double m2 = r.diameter_m * r.diameter_m;
-  const auto& e = r.estimate;
-  nlohmann::json j;
-  j["robot"] = r.visit1.robot;
-  j["diameter_m"] = r.diameter_m;
-  j["visit1"] = visit_json(r.visit1);
-  j["visit2"] = visit_json(r.visit2);
-  j["width"] = c.width;
-  j["bc"] = r.bc;
-  j["crossings_exact"] = r.crossings_exact;
-  j["area"] = maybe(r.area);
-  j["area_m2"] = maybe(r.area, m2);
-  j["area_bc"] = maybe(r.area_bc);
-  j["area_bc_m2"] = maybe(r.area_bc, m2);
-  j["area_raw"] = maybe(e.area_raw);
-  j["area_raw_ci"] = interval(e.raw_ci);
-  j["area_corrected"] = maybe(e.area_corrected);
-  j["area_corrected_m2"] = maybe(e.area_corrected, m2);
-  j["area_corrected_ci"] = interval(e.corrected_ci);
-  j["area_corrected_ci_m2"] = interval(e.corrected_ci, m2);
-  j["erosion_factor"] = e.erosion_factor;
-  j["wall_encounters"] = r.wall_encounters;
-  j["variance_visit1"] = r.variance_visit1;
-  j["variance_visit2"] = r.variance_visit2;
-  j["arena"] = r.arena.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.arena);
-  j["arena_source"] = r.arena.empty() ? nlohmann::json(nullptr)
-                                      : nlohmann::json(devices::arena_source_name(r.arena_source));
-  j["area_true"] = maybe(r.area_true);
-  j["area_true_m2"] = maybe(r.area_true, m2);
-  j["relative_error"] = maybe(r.relative_error);
-  j["relative_error_raw"] = maybe(r.relative_error_raw);
-  antkit::cli::emit(j, c.format, std::cout);
+  const auto r = devices::buffon_from_logs(c.visit1, c.visit2, width,
+                                           {c.arena, &antkit::reports::arena_spec_area});
+  antkit::cli::emit(antkit::reports::buffon_from_logs_json(r, c.width), c.format, std::cout);
 }
 
 void register_from_logs(CLI::App& app) {
@@ -162,7 +108,7 @@ void register_rs(CLI::App& app) {
     nlohmann::json j;
     j["robot"] = r.walk.robot;
     j["diameter_m"] = r.diameter_m;
-    j["walk"] = visit_json(r.walk);
+    j["walk"] = antkit::reports::trail_json(r.walk);
     j["cells"] = r.cells;
     j["area"] = r.area;
     j["area_m2"] = r.area * r.diameter_m * r.diameter_m;

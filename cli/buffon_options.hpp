@@ -2,7 +2,6 @@
 // The run-size options shared by `antkit buffon` and `antkit buffon-experiment`: one range check,
 // one message each, so the two commands reject the same values the same way (exit 2).
 #include <antkit/kernel/input_error.hpp>
-#include <cctype>
 #include <cstdint>
 #include <string>
 
@@ -16,14 +15,6 @@ inline void check_buffon_run_size(std::int64_t trials, std::int64_t steps, std::
     throw InputError("--steps", "the steps per visit must be in [1, 10000000]");
   if (threads < 1 || threads > 256)
     throw InputError("--threads", "the number of threads must be in [1, 256]");
-}
-
-// An --arena value names a WKT file when it ends in .wkt (any case), else it is a named spec.
-inline bool is_wkt_path(const std::string& s) {
-  if (s.size() < 4) return false;
-  std::string tail = s.substr(s.size() - 4);
-  for (auto& ch : tail) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return tail == ".wkt";
 }
 
 } // namespace antkit::cli

@@ -1,5 +1,6 @@
 // `antkit check`: an oracle for any planner's output (issue 18). The checks are antkit::testing's
-// (testing/include/antkit/testing/); this file parses options, calls one function and prints.
+// (testing/include/antkit/testing/), their JSON reports/; this file parses options, calls one
+// function and prints.
 //
 //   antkit check stc --map F --path P [--start X,Y] [--coverage] [--order xy|rc] [--cells]
 //                    [--format table|json]
@@ -10,10 +11,9 @@
 // first broken rule on stderr), 2 bad input (a malformed map or tour file, a start off the map).
 #include "commands.hpp"
 #include "output.hpp"
-#include "stc_violation.hpp"
 
 #include <antkit/algorithms/options.hpp>
-#include <antkit/los/cell_state.hpp>
+#include <antkit/reports/reports.hpp>
 #include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
 #include <iostream>
@@ -25,10 +25,6 @@ namespace {
 
 using antkit::cli::Format;
 namespace testing = antkit::testing;
-
-nlohmann::json cell_json(antkit::kernel::Cell c) {
-  return nlohmann::json::array({c.x, c.y});
-}
 
 struct StcCheckCommand {
   std::string map, path, start, order = "xy";
@@ -46,32 +42,7 @@ void run_stc(const StcCheckCommand& c) {
   request.cells = c.cells;
   const testing::StcCheckReport r = testing::check_stc_files(request);
   const testing::StcAudit& a = r.audit;
-  nlohmann::json j;
-  j["check"] = "stc";
-  j["rule"] = std::string(testing::tour_rule_name(a.rule));
-  j["ok"] = a.ok();
-  j["map"] = c.map;
-  j["width"] = r.width;
-  j["height"] = r.height;
-  j["start"] = cell_json(r.start);
-  j["start_from"] = r.start_from;
-  j["order"] = std::string(testing::tour_order_name(r.order));
-  j["order_from"] = r.order_from_header ? "header" : "--order";
-  j["cells"] = r.cells;
-  j["start_cell"] = r.start_cell ? cell_json(*r.start_cell) : nlohmann::json(nullptr);
-  j["positions"] = a.positions;
-  j["closed_form"] = a.closed_form;
-  j["reachable_subcells"] = a.reachable;
-  j["covered"] = a.covered;
-  j["missed"] = a.missed;
-  j["repeats"] = a.repeats;
-  j["illegal_moves"] = a.illegal_moves;
-  j["off_limits"] = a.off_limits;
-  j["end_distance"] = a.end_distance;
-  nlohmann::json missed = nlohmann::json::array();
-  for (const auto s : a.missed_sample) missed.push_back(cell_json(s));
-  j["missed_sample"] = std::move(missed);
-  j["first_violation"] = antkit::cli::first_violation_json(a);
+  const nlohmann::json j = antkit::reports::check_stc_json(r, c.map);
   antkit::cli::emit(j, c.format, std::cout);
   if (!a.ok()) throw antkit::cli::CheckFailed(c.path + ": " + a.first.describe());
 }
@@ -84,23 +55,7 @@ struct ExploreCheckCommand {
 void run_explore(const ExploreCheckCommand& c) {
   const auto r = testing::check_explore_files(c.map, c.cells);
   const auto& a = r.audit;
-  nlohmann::json j;
-  j["check"] = "explore";
-  j["ok"] = a.ok();
-  j["map"] = c.map;
-  j["width"] = r.width;
-  j["height"] = r.height;
-  nlohmann::json states;
-  for (const auto s :
-       {antkit::los::CellState::F, antkit::los::CellState::S, antkit::los::CellState::LOS,
-        antkit::los::CellState::S_LOS, antkit::los::CellState::NLOS, antkit::los::CellState::O})
-    states[std::string(1, antkit::los::code(s))] = a.by_state[static_cast<std::size_t>(s)];
-  j["states"] = std::move(states);
-  j["free_cells"] = a.free_cells;
-  j["known_free"] = a.known_free;
-  j["known_free_not_free"] = a.known_free_not_free;
-  j["obstacle_but_free"] = a.obstacle_but_free;
-  j["first_violation"] = a.ok() ? nlohmann::json(nullptr) : nlohmann::json(a.first);
+  const nlohmann::json j = antkit::reports::check_explore_json(r, c.map);
   antkit::cli::emit(j, c.format, std::cout);
   if (!a.ok()) throw antkit::cli::CheckFailed(c.cells + ": " + a.first);
 }
@@ -116,29 +71,7 @@ void run_cover(const CoverCheckCommand& c) {
   if (c.sensor != -1) sensor = c.sensor;
   const auto r = testing::check_cover_files(c.map, c.log, sensor);
   const auto& a = r.audit;
-  nlohmann::json j;
-  j["check"] = "cover";
-  j["ok"] = a.ok();
-  j["map"] = c.map;
-  j["sensor"] = r.sensor;
-  j["sensor_from"] = r.sensor_from;
-  j["ticks"] = a.ticks;
-  j["robots"] = a.robots;
-  j["moves"] = a.moves;
-  j["turns"] = a.turns;
-  j["illegal_moves"] = a.illegal_moves;
-  j["bad_turns"] = a.bad_turns;
-  j["collisions"] = a.collisions;
-  j["viewed"] = a.viewed;
-  j["viewable"] = a.viewable;
-  j["coverage"] = a.viewable == 0
-                      ? 0.0
-                      : 100.0 * static_cast<double>(a.viewed) / static_cast<double>(a.viewable);
-  j["claim_viewed"] = r.claim_viewed ? nlohmann::json(*r.claim_viewed) : nlohmann::json(nullptr);
-  j["claim_viewable"] =
-      r.claim_viewable ? nlohmann::json(*r.claim_viewable) : nlohmann::json(nullptr);
-  j["claims_match"] = a.claims_match;
-  j["first_violation"] = a.ok() ? nlohmann::json(nullptr) : nlohmann::json(a.first);
+  const nlohmann::json j = antkit::reports::check_cover_json(r, c.map);
   antkit::cli::emit(j, c.format, std::cout);
   if (!a.ok()) throw antkit::cli::CheckFailed(c.log + ": " + a.first);
 }

@@ -25,6 +25,7 @@
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/reports/reports.hpp>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -59,7 +60,7 @@ void run(const EmulateCommand& c) {
   devices::EmulateOptions o;
   o.seed = c.seed;
   o.arena = given(c.arena_opt, c.arena);
-  const auto arena = antkit::cli::is_wkt_path(c.arena)
+  const auto arena = antkit::reports::is_wkt_path(c.arena)
                          ? antkit::geometry::read_wkt_file(c.arena)
                          : antkit::geometry::build_arena_spec(c.arena, "--arena").arena;
   o.walls = arena.walls_fx();

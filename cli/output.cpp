@@ -44,18 +44,6 @@ antkit::experiments::Progress stage_progress(const std::string& tool) {
   };
 }
 
-antkit::kernel::Cell choose_stc_start(const antkit::maps::GridMap& map,
-                                      antkit::stc::Variant variant, const std::string& option,
-                                      const std::string& file) {
-  if (!option.empty()) return antkit::algorithms::parse_cell("--start", option);
-  if (map.start) return *map.start;
-  if (const auto start = antkit::stc::default_start(map.cells, variant)) return *start;
-  throw antkit::kernel::InputError(
-      file, antkit::stc::is_exact(variant)
-                ? "the map has no free cell (2 x 2 free sub-cells) to start in"
-                : "the map has no free sub-cell to start in");
-}
-
 void make_out_dir(const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

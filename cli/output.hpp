@@ -22,13 +22,6 @@ enum class Format { Table, Json };
 // terminal, else a line per quarter of each stage ("tool: stage: done/total units, t s").
 antkit::experiments::Progress stage_progress(const std::string& tool);
 
-// The STC start: --start if given (X,Y in sub-cells), else the map's own start ('S' in an ASCII
-// map), else stc::default_start (the largest region's first place). Throws InputError(file) when
-// the map has no place to start.
-antkit::kernel::Cell choose_stc_start(const antkit::maps::GridMap& map,
-                                      antkit::stc::Variant variant, const std::string& option,
-                                      const std::string& file);
-
 // Adds `--format table|json` to a subcommand.
 void add_format_option(CLI::App& sub, Format& format);
 

@@ -10,8 +10,8 @@
 #include "output.hpp"
 
 #include <antkit/devices/replay.hpp>
-#include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/reports/reports.hpp>
 #include <iostream>
 #include <memory>
 
@@ -30,22 +30,7 @@ void run(const ReplayCommand& c) {
   if (c.until < -1) throw antkit::kernel::InputError("--until", "expected a step number >= 0");
   const auto r =
       devices::replay(c.log, c.until >= 0 ? std::optional<std::int64_t>(c.until) : std::nullopt);
-  nlohmann::json j;
-  j["steps"] = r.steps;
-  j["identical"] = r.identical;
-  if (r.first_divergence) {
-    const auto& d = *r.first_divergence;
-    j["first_divergence"] = {
-        {"step", d.step}, {"field", d.field}, {"expected", d.expected}, {"actual", d.actual}};
-  } else {
-    j["first_divergence"] = nullptr;
-  }
-  j["truncated"] = r.truncated;
-  j["complete"] = r.complete;
-  j["hash"] = antkit::kernel::hash_hex(r.hash);
-  j["robot"] = r.header.robot;
-  j["controller"] = r.header.controller;
-  j["stopped"] = r.stop ? nlohmann::json(r.stop->reason) : nlohmann::json(nullptr);
+  const nlohmann::json j = antkit::reports::replay_json(r);
   antkit::cli::emit(j, c.format, std::cout);
   if (r.truncated)
     std::cerr << "antkit: warning: " << c.log

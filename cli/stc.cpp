@@ -29,6 +29,7 @@
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
+#include <antkit/reports/reports.hpp>
 #include <antkit/stc/path_format.hpp>
 #include <antkit/stc/world.hpp>
 #include <charconv>
@@ -165,7 +166,10 @@ void run_stc_command(const StcOptions& o) {
     run.noise = {algorithms::parse_probability_ppm("--noise", o.noise), o.seed, 0};
   }
   const auto map = antkit::maps::load_map(o.map);
-  const Cell start = antkit::cli::choose_stc_start(map, variant, o.start, o.map);
+  const Cell start = antkit::reports::choose_stc_start(
+      map, variant,
+      o.start.empty() ? std::nullopt : std::optional(algorithms::parse_cell("--start", o.start)),
+      o.map);
   // Every bad input is refused before the first byte of output: the path file's name is checked
   // and the file opened (write_file_atomic) before the run, and run_stc checks the start before
   // the first position, which writes the JSON's head.
@@ -237,21 +241,11 @@ void run_stc_command(const StcOptions& o) {
     *out << "\n}\n";
     out->flush();
   } else {
-    nlohmann::json j;
-    j["variant"] = std::string(variant_name(variant));
-    j["width"] = map.cells.width();
-    j["height"] = map.cells.height();
-    j["start"] = {start.x, start.y};
+    nlohmann::json j = antkit::reports::stc_json(
+        r, map.cells.width(), map.cells.height(), start,
+        o.noise.empty() ? std::nullopt
+                        : std::optional(antkit::reports::StcNoiseFields{run.noise.ppm, o.seed}));
     j["path"] = "(" + std::to_string(r.positions) + " items; use --format json)";
-    j["reachable_subcells"] = r.reachable_subcells;
-    j["covered"] = r.covered;
-    j["repeats"] = r.repeats;
-    j["returned_to_start"] = r.returned_to_start;
-    j["hash"] = antkit::kernel::hash_hex(r.hash);
-    if (!o.noise.empty()) {
-      j["noise_ppm"] = run.noise.ppm;
-      j["seed"] = o.seed;
-    }
     antkit::cli::emit(j, o.format, std::cout);
   }
   if (o.noise.empty() || run.noise.ppm == 0) {
@@ -290,7 +284,10 @@ void run_noise_command(const NoiseOptions& o) {
     from = comma + 1;
   }
   const auto map = antkit::maps::load_map(o.map);
-  const Cell start = antkit::cli::choose_stc_start(map, variant, o.start, o.map);
+  const Cell start = antkit::reports::choose_stc_start(
+      map, variant,
+      o.start.empty() ? std::nullopt : std::optional(algorithms::parse_cell("--start", o.start)),
+      o.map);
   std::vector<std::uint32_t> ppm;
   for (const auto& level : levels) ppm.push_back(level.second);
   std::int64_t reachable = 0;
