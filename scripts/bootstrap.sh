@@ -10,6 +10,7 @@ packages=(
   build-essential cmake ninja-build pkg-config ccache git
   clang-14 libclang-rt-14-dev clang-format
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
+  python3-dev python3-pybind11 python3-numpy python3-pytest python3-hypothesis
   catch2 librapidcheck-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev jq
   libz3-dev coq libcairo2-dev
   g++-s390x-linux-gnu qemu-user

@@ -1,0 +1,40 @@
+"""Shared fixtures of the Python tests: the antkit command (ANTKIT_CLI, set by ctest) to hold every
+binding against, and the repository's maps (ANTKIT_MAPS_DIR)."""
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, settings
+
+# Reproducible from the log: no example database (nothing carried between runs), derandomised
+# unless ctest passes --hypothesis-seed (it does: ANTKIT_HYPOTHESIS_SEED, printed by pytest).
+settings.register_profile(
+    "antkit", database=None, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
+settings.load_profile("antkit")
+
+CLI = os.environ.get("ANTKIT_CLI", "")
+MAPS = Path(os.environ.get("ANTKIT_MAPS_DIR", Path(__file__).resolve().parents[2] / "data" / "maps"))
+
+
+def cli(*args, status=0):
+    """Runs `antkit ARGS --format json` and returns (exit status, parsed stdout or None, stderr)."""
+    if not CLI:
+        pytest.fail("ANTKIT_CLI is not set: run the tests through ctest (label python)")
+    r = subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=600)
+    assert r.returncode == status, f"antkit {' '.join(map(str, args))}: {r.returncode}\n{r.stderr}"
+    out = json.loads(r.stdout) if r.stdout.strip() else None
+    return out, r.stderr
+
+
+@pytest.fixture(scope="session")
+def maps_dir():
+    assert MAPS.is_dir(), f"{MAPS}: no maps"
+    return MAPS
+
+
+def pytest_report_header(config):
+    seed = config.getoption("hypothesis_seed", None)
+    return f"hypothesis seed: {seed} (ctest passes ANTKIT_HYPOTHESIS_SEED; rerun with --hypothesis-seed={seed})"
