@@ -5,7 +5,8 @@ The same library as the ``antkit`` command, on numpy arrays and plain Python typ
 * maps: :func:`read_map`, :meth:`Map.from_array`, :meth:`Map.to_array`, :meth:`Map.write`;
 * Spanning Tree Coverage: :func:`stc` (offline, online, ant, ant-edge, full) and :func:`tour_hash`;
 * the oracles for anyone's planner: :func:`check_stc`, :func:`check_explore`, :func:`check_cover`;
-* paper 000's Buffon measurement: :func:`buffon_estimate`, :func:`buffon_from_logs`;
+* paper 000's Buffon measurement: :func:`buffon_estimate`, :func:`buffon_from_trails`,
+  :func:`buffon_from_logs`;
 * hardware logs: :func:`read_log`, :func:`replay`.
 
 Every result is the command's ``--format json`` object (the same keys, values and meanings),
@@ -44,6 +45,7 @@ __all__ = [
     "check_explore",
     "check_cover",
     "buffon_estimate",
+    "buffon_from_trails",
     "buffon_from_logs",
     "read_log",
     "replay",
@@ -257,6 +259,17 @@ def buffon_estimate(
     interval end is None when N cannot give it."""
     return Result(
         _antkit._buffon_estimate(float(length1), float(length2), int(crossings), int(wall_encounters))
+    )
+
+
+def buffon_from_trails(trail1: Any, trail2: Any, wall_encounters: int = 0) -> Result:
+    """Paper 000's estimate from two trails given as points ((n, 2) arrays, in body diameters):
+    the exact proper crossings of the two polylines (the kernel's predicate, on the points rounded
+    to its Q15.16 coordinates, |x|, |y| < 32768), their lengths, and :func:`buffon_estimate`'s
+    fields. Fields: length1, length2, crossings, wall_encounters, area_raw, area_raw_ci,
+    erosion_factor, area_corrected, area_corrected_ci."""
+    return Result(
+        _antkit._buffon_from_trails(np.asarray(trail1), np.asarray(trail2), int(wall_encounters))
     )
 
 

@@ -12,12 +12,14 @@
 #include <antkit/geometry/fixed_convert.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/kernel/segment.hpp>
 #include <antkit/los/cell_state.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/reports/reports.hpp>
 #include <antkit/stc/world.hpp>
 #include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <pybind11/numpy.h>
@@ -313,16 +315,7 @@ py::object buffon_from_logs(const std::string& visit1, const std::string& visit2
   return to_python(j);
 }
 
-py::dict buffon_estimate(double length1, double length2, std::uint64_t crossings,
-                         std::uint64_t wall_encounters) {
-  if (!(length1 >= 0 && length2 >= 0 && length1 < 1e9 && length2 < 1e9))
-    throw InputError("length", "trail lengths are in [0, 1e9) body diameters");
-  antkit::devices::BuffonCounts counts;
-  counts.length1_raw = static_cast<std::int64_t>(length1 * 65536.0 + 0.5);
-  counts.length2_raw = static_cast<std::int64_t>(length2 * 65536.0 + 0.5);
-  counts.crossings = crossings;
-  counts.wall_encounters = wall_encounters;
-  const auto e = antkit::devices::estimate_area(counts);
+py::dict estimate_dict(const antkit::devices::BuffonEstimate& e) {
   const auto opt = [](const std::optional<double>& v) -> py::object {
     return v ? py::object(py::float_(*v)) : py::object(py::none());
   };
@@ -332,6 +325,61 @@ py::dict buffon_estimate(double length1, double length2, std::uint64_t crossings
   d["erosion_factor"] = e.erosion_factor;
   d["area_corrected"] = opt(e.area_corrected);
   d["area_corrected_ci"] = py::make_tuple(opt(e.corrected_ci.lower), opt(e.corrected_ci.upper));
+  return d;
+}
+
+py::dict buffon_estimate(double length1, double length2, std::uint64_t crossings,
+                         std::uint64_t wall_encounters) {
+  if (!(length1 >= 0 && length2 >= 0 && length1 < 1e9 && length2 < 1e9))
+    throw InputError("length", "trail lengths are in [0, 1e9) body diameters");
+  antkit::devices::BuffonCounts counts;
+  counts.length1_raw = static_cast<std::int64_t>(length1 * 65536.0 + 0.5);
+  counts.length2_raw = static_cast<std::int64_t>(length2 * 65536.0 + 0.5);
+  counts.crossings = crossings;
+  counts.wall_encounters = wall_encounters;
+  return estimate_dict(antkit::devices::estimate_area(counts));
+}
+
+py::dict buffon_from_trails(const py::array& trail1, const py::array& trail2,
+                            std::uint64_t wall_encounters) {
+  const auto points = [](const py::array& a, const char* what) {
+    if (a.ndim() != 2 || a.shape(1) != 2)
+      throw InputError(what, "expected an (n, 2) array of points, not shape " +
+                                 std::string(py::str(a.attr("shape"))));
+    const auto v = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    if (!v) throw InputError(what, "cannot read the array as numbers");
+    const auto r = v.unchecked<2>();
+    std::vector<antkit::kernel::FxPoint> out;
+    out.reserve(static_cast<std::size_t>(r.shape(0)));
+    for (py::ssize_t i = 0; i < r.shape(0); ++i) {
+      const std::string where = std::string(what) + "[" + std::to_string(i) + "]";
+      out.push_back({antkit::geometry::fixed_from_double<antkit::kernel::Fx>(r(i, 0), where),
+                     antkit::geometry::fixed_from_double<antkit::kernel::Fx>(r(i, 1), where)});
+    }
+    return out;
+  };
+  const auto p1 = points(trail1, "trail1");
+  const auto p2 = points(trail2, "trail2");
+  py::gil_scoped_release release;
+  const auto length_raw = [](const std::vector<antkit::kernel::FxPoint>& p) {
+    double sum = 0;
+    for (std::size_t i = 1; i < p.size(); ++i)
+      sum += std::hypot(static_cast<double>(p[i].x.raw() - p[i - 1].x.raw()),
+                        static_cast<double>(p[i].y.raw() - p[i - 1].y.raw()));
+    return static_cast<std::int64_t>(std::llround(sum));
+  };
+  antkit::devices::BuffonCounts counts;
+  counts.length1_raw = length_raw(p1);
+  counts.length2_raw = length_raw(p2);
+  counts.crossings = antkit::kernel::count_proper_crossings(p1, p2);
+  counts.wall_encounters = wall_encounters;
+  const auto e = antkit::devices::estimate_area(counts);
+  py::gil_scoped_acquire acquire;
+  py::dict d = estimate_dict(e);
+  d["length1"] = static_cast<double>(counts.length1_raw) / 65536.0;
+  d["length2"] = static_cast<double>(counts.length2_raw) / 65536.0;
+  d["crossings"] = counts.crossings;
+  d["wall_encounters"] = wall_encounters;
   return d;
 }
 
@@ -466,6 +514,7 @@ PYBIND11_MODULE(_antkit, m) {
   m.def("_check_cover_text", &check_cover_text);
   m.def("_buffon_from_logs", &buffon_from_logs);
   m.def("_buffon_estimate", &buffon_estimate);
+  m.def("_buffon_from_trails", &buffon_from_trails);
   m.def("_replay", &replay);
   m.def("_read_log", &read_log);
 }

@@ -5,6 +5,7 @@ import os
 import subprocess
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import antkit
@@ -95,3 +96,36 @@ def test_buffon_estimate_closed_form():
     assert lo < e.area_raw < hi
     none = antkit.buffon_estimate(10.0, 10.0, 0)
     assert none.area_raw is None and none.area_raw_ci[1] is None
+
+
+def proper_crossings(a, b):
+    """The pair loop, exactly, on integer (Q15.16 raw) points: segments that cross at one point
+    strictly inside both."""
+
+    def orient(p, q, r):
+        v = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+        return (v > 0) - (v < 0)
+
+    n = 0
+    for i in range(len(a) - 1):
+        for j in range(len(b) - 1):
+            p, q, r, s = a[i], a[i + 1], b[j], b[j + 1]
+            o1, o2, o3, o4 = orient(p, q, r), orient(p, q, s), orient(r, s, p), orient(r, s, q)
+            n += o1 * o2 < 0 and o3 * o4 < 0
+    return n
+
+
+def test_buffon_from_trails_counts_every_crossing_exactly():
+    rng = np.random.default_rng(7)
+    t1 = np.cumsum(rng.normal(0, 0.4, size=(300, 2)), axis=0)
+    t2 = np.cumsum(rng.normal(0, 0.4, size=(300, 2)), axis=0)
+    r = antkit.buffon_from_trails(t1, t2)
+    raw = lambda t: [tuple(int(v) for v in np.round(p * 65536)) for p in t]
+    assert r.crossings == proper_crossings(raw(t1), raw(t2)) > 0
+    length = lambda t: float(np.sum(np.hypot(*np.diff(t, axis=0).T)))
+    assert r.length1 == pytest.approx(length(t1), rel=1e-6)
+    e = antkit.buffon_estimate(r.length1, r.length2, r.crossings)
+    assert r.area_raw == e.area_raw
+    with pytest.raises(antkit.InputError) as err:
+        antkit.buffon_from_trails(t1, np.array([[0.0, 0.0], [40000.0, 0.0]]))
+    assert err.value.where == "trail2[1]"
