@@ -46,18 +46,15 @@ void wander_move(detail::Body& body, uniform::Action action, std::vector<Exchang
   const i128 per_period = (one.right < 0 ? -one.right : one.right) / (2 * 65536);
   const std::int64_t periods =
       per_period > 0 ? static_cast<std::int64_t>((target_um + per_period - 1) / per_period) : 1;
-  WheelTravel start{};
-  if (robot.has_odometry) start = body.odometry(io);
+  // The odometry in nanometres per unit: encoder pulses, or the Hemisson's reckoned micrometres.
+  const std::int64_t unit_nm = robot.has_odometry ? robot.odometry_pulse_nm : 1000;
+  const WheelTravel start = body.odometry(io);
   body.set_wheels(left, right, io);
   for (std::int64_t k = 0; k < 2 * periods; ++k) {
     body.read_sensors(io);
-    if (!robot.has_odometry) {
-      if (k + 1 >= periods) break;
-      continue;
-    }
     const WheelTravel now = body.odometry(io);
     const std::int64_t travelled_units = std::abs(now.right - start.right);
-    if (i128{travelled_units} * robot.odometry_pulse_nm >= i128{target_um} * 1000) break;
+    if (i128{travelled_units} * unit_nm >= i128{target_um} * 1000) break;
   }
   body.set_wheels(0, 0, io);
 }
@@ -70,7 +67,7 @@ std::string signal_name(int sig) {
 
 namespace detail {
 
-Body::Body(CommandLink& link, std::chrono::milliseconds period)
+Body::Body(CommandLink& link, std::chrono::nanoseconds period)
     : link_(link), robot_(link.codec().robot()), period_(period) {}
 
 void Body::start(std::vector<Exchange>& io) {
@@ -85,39 +82,53 @@ void Body::start(std::vector<Exchange>& io) {
 }
 
 Proximity Body::read_sensors(std::vector<Exchange>& io) {
-  // One sensor read per control period: the odometry of a robot without encoders counts periods.
+  // One sensor read per control period at most.
   if (period_.count() > 0) {
     std::this_thread::sleep_until(next_read_);
     next_read_ = Clock::now() + period_;
   }
-  const std::uint64_t before = link_.sends();
   const std::string reply = link_.transact(link_.codec().read_proximity(), io);
-  // Every proximity read sent is a control period in which the wheels turned at the speeds in
-  // force (the emulator's clock; a real robot's too, roughly): the Hemisson's odometry counts it.
-  for (std::uint64_t k = before; k < link_.sends(); ++k) period_elapsed();
+  // The robot senses where the wheels took it by the time the read was sent.
+  if (!robot_.has_odometry) reckon_until(link_.last_send_ns());
   return *link_.codec().decode_proximity(reply).value;
 }
 
 void Body::set_wheels(std::int32_t left, std::int32_t right, std::vector<Exchange>& io) {
   link_.transact(link_.codec().set_speed(left, right), io);
+  // The old speeds were in force until the acknowledged command was sent (a choice: an earlier
+  // attempt whose reply was lost may have reached the robot sooner; the difference is one timeout
+  // at most, and only on a faulty line).
+  if (!robot_.has_odometry) reckon_until(link_.last_send_ns());
   left_ = left;
   right_ = right;
 }
 
 WheelTravel Body::odometry(std::vector<Exchange>& io) {
-  if (!robot_.has_odometry)
-    return {static_cast<std::int64_t>(travel2_.left / (2 * 65536)),
-            static_cast<std::int64_t>(travel2_.right / (2 * 65536))};
+  if (!robot_.has_odometry) {
+    // travel2 over one model step, times ns in force, over the model step's ns: the step is
+    // kDefaultSpeed x diameter micrometres at speed_full x speed_unit micrometres per second
+    // (model_period), so ns per step = um_per_step x 1e9 / um_per_s, both x 2^16.
+    const i128 um_per_step = i128{buffon::kDefaultSpeed.raw()} * robot_.diameter_um;
+    const i128 um_per_s = i128{robot_.speed_full} * robot_.speed_unit_um_s * 65536;
+    const i128 den = um_per_step * 1000000000 * 2 * 65536;
+    return {static_cast<std::int64_t>(weighted_.left * um_per_s / den),
+            static_cast<std::int64_t>(weighted_.right * um_per_s / den)};
+  }
   const std::string reply = link_.transact(link_.codec().read_odometry(), io);
   const WheelPair w = *link_.codec().decode_odometry(reply).value;
   return {w.left - baseline_.left, w.right - baseline_.right};
 }
 
-void Body::period_elapsed() {
-  const Travel2 t = step_travel2(robot_, buffon::kDefaultSpeed, from_wheel_command(robot_, left_),
-                                 from_wheel_command(robot_, right_), true);
-  travel2_.left += t.left;
-  travel2_.right += t.right;
+void Body::reckon_until(std::int64_t t_ns) {
+  if (t_ns < 0) throw std::logic_error("a send without its time");
+  if (reckoned_ns_ >= 0 && t_ns > reckoned_ns_) {
+    const Travel2 one =
+        step_travel2(robot_, buffon::kDefaultSpeed, from_wheel_command(robot_, left_),
+                     from_wheel_command(robot_, right_), true);
+    weighted_.left += one.left * (t_ns - reckoned_ns_);
+    weighted_.right += one.right * (t_ns - reckoned_ns_);
+  }
+  reckoned_ns_ = std::max(reckoned_ns_, t_ns);
 }
 
 void act(Body& body, bool wander, std::span<const std::int64_t> cmd, std::vector<Exchange>& io) {
@@ -137,18 +148,18 @@ MapPlace read_map_place(const std::string& file) {
   return {std::move(map.cells), map.start, file};
 }
 
-std::chrono::milliseconds model_period(const RobotDescription& robot) {
+std::chrono::nanoseconds model_period(const RobotDescription& robot) {
   // A simulator step moves kDefaultSpeed body diameters at unit speed; the robot covers that at
   // speed_full x speed_unit_um_s micrometres per second.
   const i128 um_per_step = i128{buffon::kDefaultSpeed.raw()} * robot.diameter_um; // x 2^16
   const i128 um_per_s = i128{robot.speed_full} * robot.speed_unit_um_s * 65536;   // x 2^16
-  if (um_per_s <= 0) return std::chrono::milliseconds(0);
-  return std::chrono::milliseconds(
-      static_cast<std::int64_t>((um_per_step * 1000 + um_per_s / 2) / um_per_s));
+  if (um_per_s <= 0) return std::chrono::nanoseconds(0);
+  return std::chrono::nanoseconds(
+      static_cast<std::int64_t>((um_per_step * 1000000000 + um_per_s / 2) / um_per_s));
 }
 
-std::chrono::milliseconds default_period(const RobotDescription& robot) {
-  return robot.has_odometry ? std::chrono::milliseconds(0) : model_period(robot);
+std::chrono::nanoseconds default_period(const RobotDescription& robot) {
+  return robot.has_odometry ? std::chrono::nanoseconds(0) : model_period(robot);
 }
 
 std::string_view stop_kind_name(StopKind kind) noexcept {
@@ -207,13 +218,16 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
     return summary;
   }
   StopSignals::Scope signals;
-  const std::unique_ptr<Session> session = run.connect(std::move(*port), options.link);
+  // One clock for the run: the records' t_ns and every exchange's time count from t0.
+  const auto t0 = Clock::now();
+  LinkOptions link_options = options.link;
+  link_options.origin = t0;
+  const std::unique_ptr<Session> session = run.connect(std::move(*port), link_options);
   LogWriter log(options.out, header, options.sync_every, options.force);
 
   RunHash hash;
   LogRecord rec;
   std::vector<Exchange> pending; // exchanges of the step under way
-  const auto t0 = Clock::now();
   std::string detail;
   try {
     session->start(pending);

@@ -20,7 +20,7 @@ class Body {
 public:
   // `period`: the shortest time between two sensor reads (0: as fast as the link allows; a replay
   // passes 0, it does not wait).
-  explicit Body(CommandLink& link, std::chrono::milliseconds period = {});
+  explicit Body(CommandLink& link, std::chrono::nanoseconds period = {});
 
   // Before the first step: the wheel counters to zero (robots with encoders), or, where the robot
   // cannot set them (the Webots relay acknowledges G and does nothing, PROTOCOLS.md), their value
@@ -28,19 +28,25 @@ public:
   void start(std::vector<Exchange>& io);
   Proximity read_sensors(std::vector<Exchange>& io);
   void set_wheels(std::int32_t left, std::int32_t right, std::vector<Exchange>& io);
-  // Odometry after the step: the counters less the baseline, or the Hemisson's commanded travel in
-  // micrometres (adapter.hpp).
+  // Odometry after the step: the counters less the baseline, or, for a robot without encoders
+  // (the Hemisson), the travel its wheel commands give by the motion model over the times they
+  // were in force, in micrometres (reckon_until below).
   WheelTravel odometry(std::vector<Exchange>& io);
   [[nodiscard]] const RobotDescription& robot() const noexcept { return robot_; }
 
 private:
-  void period_elapsed();
+  // A robot without encoders: the wheels turned at the speeds in force from the last send to this
+  // one (link.last_send_ns(): the recording's clock, or the logged time in a replay).
+  void reckon_until(std::int64_t t_ns);
   CommandLink& link_;
   const RobotDescription& robot_;
-  std::chrono::milliseconds period_;
+  std::chrono::nanoseconds period_;
   std::chrono::steady_clock::time_point next_read_{};
   std::int32_t left_ = 0, right_ = 0;
-  Travel2 travel2_;
+  // The reckoning: sum over intervals of (one model step's travel2 at the interval's speeds) x
+  // (the interval in ns), exact; divided only when read (so nothing is lost to rounding).
+  std::int64_t reckoned_ns_ = -1; // the time reckoned up to (-1: no send yet)
+  Travel2 weighted_;
   WheelTravel baseline_;
 };
 

@@ -23,7 +23,7 @@ class SerialSession final : public Session {
 public:
   SerialSession(SerialPort port, RobotKind robot, const LinkOptions& link,
                 std::unique_ptr<LoggedController> controller, bool wander,
-                std::chrono::milliseconds period)
+                std::chrono::nanoseconds period)
       : link_(std::move(port), robot, link), body_(link_, period),
         controller_(std::move(controller)), wander_(wander) {}
 
@@ -77,7 +77,8 @@ public:
     run.header.arena = o.arena;
     run.line = o.line ? *o.line : line();
     run.steps = o.steps ? *o.steps : 1000;
-    const std::chrono::milliseconds period = o.period ? *o.period : default_period(robot);
+    const std::chrono::nanoseconds period =
+        o.period ? std::chrono::nanoseconds(*o.period) : default_period(robot);
     const bool wander = spec.name == "wander";
     const RobotKind kind = robot_;
     run.connect = [kind, period, wander, spec](SerialPort port, const LinkOptions& link) {

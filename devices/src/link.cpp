@@ -79,7 +79,12 @@ void RobotLink::drain(std::vector<Exchange>& io) {
   }
   if (bytes.empty()) return;
   ++stats_.stale;
-  io.push_back({{}, std::move(bytes)});
+  io.push_back({{}, std::move(bytes), now_ns()});
+}
+
+std::int64_t RobotLink::now_ns() const noexcept {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - options_.origin)
+      .count();
 }
 
 std::string RobotLink::transact(const std::string& command, std::vector<Exchange>& io) {
@@ -101,11 +106,12 @@ std::string RobotLink::transact(const std::string& command, std::vector<Exchange
     } catch (const LinkError&) {
       // A line already gone: the attempt is still logged, so that a log shows every command tried
       // (replay finds the safe stop by its first command even when nothing could be sent).
-      io.push_back({command, {}});
+      io.push_back({command, {}, now_ns()});
       ++stats_.exchanges;
       throw;
     }
-    io.push_back({command, {}});
+    last_send_ns_ = now_ns();
+    io.push_back({command, {}, last_send_ns_});
     const std::size_t at = io.size() - 1;
     ++stats_.exchanges;
     port_.write_all(command, options_.timeout);

@@ -68,6 +68,10 @@ void put_io(std::string& out, const std::vector<Exchange>& io) {
     put_bytes(out, io[i].sent);
     out += ',';
     put_bytes(out, io[i].received);
+    if (io[i].t_ns >= 0) {
+      out += ',';
+      put_int(out, io[i].t_ns);
+    }
     out += ']';
   }
   out += ']';
@@ -240,7 +244,13 @@ public:
       string(out[n].sent);
       expect(',', "','");
       string(out[n].received);
-      expect(']', "']' after an exchange's two strings");
+      out[n].t_ns = -1;
+      if (at(',')) { // the send's time (older logs have none)
+        ++p_;
+        out[n].t_ns = integer();
+        if (out[n].t_ns < 0) fail("an exchange's time is a count of nanoseconds >= 0");
+      }
+      expect(']', "']' after an exchange's two strings and its time");
       ++n;
       if (at(',')) {
         ++p_;

@@ -45,6 +45,7 @@ public:
   void pause(std::chrono::milliseconds) override {}
   void rearm() noexcept override {}
   [[nodiscard]] std::uint64_t sends() const noexcept override { return sends_; }
+  [[nodiscard]] std::int64_t last_send_ns() const noexcept override { return last_send_ns_; }
 
   // The exchanges are the log's: nothing is appended to `io`.
   std::string transact(const std::string& command, std::vector<Exchange>&) override {
@@ -68,6 +69,7 @@ public:
                         "'" + printable(e.sent) + "'", "'" + printable(command) + "'"}};
       }
       ++sends_;
+      last_send_ns_ = e.t_ns;
       const std::size_t at = k_++;
       sent = true;
       // The attempt's bytes, line by line, as the live link read them.
@@ -98,6 +100,7 @@ private:
   std::string field_;
   bool end_is_failure_ = false;
   std::uint64_t sends_ = 0;
+  std::int64_t last_send_ns_ = -1;
 };
 
 // The stop record against the run: its reason in the words stop_reason() writes, and its safe
@@ -203,11 +206,22 @@ ReplayResult replay_records(
   std::vector<std::int64_t> cmd;
   std::int64_t last_t = 0;
   while ((!until || out.steps < *until) && reader.next(r)) {
-    // Every device's times never decrease (the recording's steady clock).
+    // Every device's times never decrease (the recording's steady clock): the records' and the
+    // exchanges' (those that have one), each exchange no later than its step's end.
     auto d = r.time_ns < last_t ? std::optional<Divergence>(Divergence{
                                       r.step, "t_ns", std::to_string(r.time_ns),
                                       "a time >= the previous step's " + std::to_string(last_t)})
-                                : check(r, cmd);
+                                : std::nullopt;
+    for (std::size_t k = 0; !d && k < r.io.size(); ++k) {
+      const std::int64_t t = r.io[k].t_ns;
+      if (t < 0) continue;
+      if (t < last_t || t > r.time_ns)
+        d = Divergence{r.step, "io[" + std::to_string(k) + "].t", std::to_string(t),
+                       "a time in [" + std::to_string(last_t) + ", " + std::to_string(r.time_ns) +
+                           "]: after the exchange before it, before the step's end"};
+      last_t = std::max(last_t, t);
+    }
+    if (!d) d = check(r, cmd);
     last_t = r.time_ns;
     if (d) {
       out.identical = false;
@@ -265,6 +279,15 @@ ReplayResult replay_serial(LogReader& reader, const std::string& path,
       reader, until,
       [&](const LogRecord& r, std::vector<std::int64_t>& cmd) {
         std::optional<Divergence> d;
+        if (!robot.has_odometry)
+          for (const Exchange& e : r.io)
+            if (!e.sent.empty() && e.t_ns < 0)
+              throw kernel::InputError(
+                  path, reader.line(), 1,
+                  "an exchange without its time: the " + std::string(robot.name) +
+                      " has no wheel encoders and its odometry is reckoned from the times its "
+                      "commands were sent (a log written before they were logged: re-record "
+                      "the run)");
         link.load(r.io, r.step, "io");
         seen.clear();
         try {

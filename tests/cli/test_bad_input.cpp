@@ -103,6 +103,15 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
   write(d / "empty.jsonl", "");
   write(d / "header.jsonl", "{\"antkit_log\":1}\n");
   write(d / "nested.jsonl", std::string(4096, '[') + "\n");
+  // A Hemisson log from before exchange times were logged: its odometry cannot be reckoned again.
+  write(
+      d / "untimed.jsonl",
+      "{\"schema\":1,\"antkit\":\"0.1.0\",\"robot\":\"hemisson\",\"port\":{\"path\":\"/dev/pts/1\","
+      "\"baud\":115200,\"framing\":\"8N1\"},\"controller\":{\"name\":\"buffon\",\"params\":"
+      "{\"trial\":0,\"visit\":1}},\"seed\":1}\n"
+      "{\"step\":0,\"t_ns\":5000,\"io\":[[\"N\\r\",\"n,0,0,0,0,0,0,0,0\\r\\n\"],[\"D,4,4\\r\","
+      "\"d\\r\\n\"]],"
+      "\"obs\":[0,0,0,0,0,0],\"cmd\":[0,0,4,4],\"odo\":[0,0],\"state\":\"0000000000000000\"}\n");
   // tours (antkit check stc)
   write(d / "tour_text.csv", "zero,one\n");
   write(d / "tour_row.csv", "x,y\n0,0\n1,zero\n");
@@ -300,6 +309,7 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"replay {D}/header.jsonl", "{D}/header.jsonl:1:", "antkit_log"},
       {"replay {D}/nested.jsonl", "{D}/nested.jsonl:1:1:", "expected '{'"},
       {"replay {D}/missing.jsonl", "{D}/missing.jsonl:", "cannot read"},
+      {"replay {D}/untimed.jsonl", "{D}/untimed.jsonl:2:1:", "an exchange without its time"},
       {"replay {D}/junk.jsonl --until abc", "Could not convert: --until = abc", ""},
       {"buffon-from-logs {D}/junk.jsonl {D}/junk.jsonl", "{D}/junk.jsonl:1:1:", ""},
       {"buffon-from-logs {D}/header.jsonl", "visit2 is required", ""},

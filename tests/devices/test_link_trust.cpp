@@ -4,11 +4,15 @@
 // against the firmware emulators.
 #include "emulated_robot.hpp"
 
+#include <antkit/buffon/world.hpp>
 #include <antkit/devices/adapter.hpp>
 #include <antkit/devices/log.hpp>
+#include <antkit/devices/odometry.hpp>
+#include <antkit/devices/protocol.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 
@@ -251,7 +255,12 @@ TEST_CASE("replay checks every byte of the log: a tooth per field", "[devices]")
         {"state", "state", [](devices::LogRecord& r) { r.state ^= 4; }},
         {"odo", "odo[1]", [](devices::LogRecord& r) { r.odo[1] += 1; }},
         {"t_ns", "t_ns", [](devices::LogRecord& r) { r.time_ns = 0; }},
+        {"an exchange's time out of order", "io[",
+         [&](devices::LogRecord& r) { find(r, 'N').t_ns = 0; }},
     };
+    if (robot == RobotKind::Hemisson) // the D's send ends the old speeds' time: it feeds odo
+      edits.push_back({"the time of a speed change", "odo[",
+                       [&](devices::LogRecord& r) { find(r, 'D').t_ns = find(r, 'N').t_ns; }});
     if (robot == RobotKind::Khepera)
       edits.push_back({"counter reply", "odo[0]", [&](devices::LogRecord& r) {
                          auto& h = find(r, 'H');
@@ -345,31 +354,66 @@ TEST_CASE("two recordings back to back on one emulator are two sessions from the
   CHECK(emu.emulator().sessions() == 6);
 }
 
-TEST_CASE("a robot without encoders is read once per model period, which its odometry counts",
+TEST_CASE("a robot without encoders is read once per model period and reckons its odometry from "
+          "the logged times",
           "[devices]") {
-  // The Hemisson's odometry is the commanded travel of every control period by the motion model
-  // (adapter.hpp), whose step is kDefaultSpeed body diameters at unit speed: 0.1683 x 120 mm at
-  // 9 x 20 mm/s = 112 ms. Recording it as fast as the link allows made that odometry count
-  // periods a real robot never drove; its recordings now default to the model's period.
+  // The Hemisson's odometry is the travel the motion model gives the speeds in force, per model
+  // period, times the time they were in force (adapter.hpp, step 4). The model's step is
+  // kDefaultSpeed body diameters at unit speed: 11031 / 65536 x 120 mm at 9 x 20 mm/s =
+  // 112.213135 ms; its recordings default to reading once per such period.
   using namespace std::chrono_literals;
   const auto& hemisson = devices::describe(RobotKind::Hemisson);
-  CHECK(devices::model_period(hemisson) == 112ms);
-  CHECK(devices::default_period(hemisson) == 112ms);
-  CHECK(devices::default_period(devices::describe(RobotKind::Khepera)) == 0ms);
+  CHECK(devices::model_period(hemisson) == 112213135ns);
+  CHECK(devices::default_period(hemisson) == 112213135ns);
+  CHECK(devices::default_period(devices::describe(RobotKind::Khepera)) == 0ns);
   TempDir dir;
   EmulatedRobot emu(RobotKind::Hemisson, "circle:d=8");
   const auto log = dir.file("paced.jsonl");
-  auto o = record_options(RobotKind::Hemisson, emu.port(), "buffon", {}, 4, log);
+  auto o = record_options(RobotKind::Hemisson, emu.port(), "buffon", {}, 6, log);
   o.period.reset(); // the robot's default
   REQUIRE(devices::record(o).succeeded());
   emu.stop();
   devices::LogReader reader(log);
   devices::LogRecord r;
-  std::int64_t steps = 0, last = 0;
-  while (reader.next(r)) ++steps, last = r.time_ns;
+  std::vector<devices::LogRecord> records;
+  while (reader.next(r)) records.push_back(r);
   // The k-th read (from 0) comes no sooner than k periods after the first, and a step's time is
   // taken after its read. A lower bound only: nothing is timed against an upper bound.
-  REQUIRE(steps == 4);
-  CHECK(last >= 3 * 112000000);
+  REQUIRE(records.size() == 6);
+  CHECK(records.back().time_ns >= 5 * 112213135);
+  // Every exchange has its send's time, in order, within its step.
+  std::int64_t last = 0;
+  for (const auto& rec : records)
+    for (const auto& e : rec.io) {
+      CHECK(e.t_ns >= last);
+      CHECK(e.t_ns <= rec.time_ns);
+      last = e.t_ns;
+    }
+  // The odometry recomputed here from the logged times and commands: the speeds of each D in force
+  // from its send to the next D's, one model step's travel per 112213135 ns (step_travel2), in
+  // micrometres (truncated), at every step's end (its D's send).
+  __extension__ using i128 = __int128;
+  i128 weighted[2] = {0, 0};
+  std::int32_t left = 0, right = 0;
+  std::int64_t since = -1;
+  const i128 um_per_step = i128{11031} * 120000, um_per_s = i128{9} * 20000 * 65536;
+  for (const auto& rec : records) {
+    for (const auto& e : rec.io) {
+      if (e.sent.empty()) continue;
+      if (since >= 0) {
+        const auto one = devices::step_travel2(hemisson, antkit::buffon::kDefaultSpeed,
+                                               devices::from_wheel_command(hemisson, left),
+                                               devices::from_wheel_command(hemisson, right), true);
+        weighted[0] += one.left * (e.t_ns - since);
+        weighted[1] += one.right * (e.t_ns - since);
+      }
+      since = e.t_ns;
+      if (e.sent[0] == 'D') REQUIRE(std::sscanf(e.sent.c_str(), "D,%d,%d", &left, &right) == 2);
+    }
+    const i128 den = um_per_step * 1000000000 * 2 * 65536;
+    CHECK(rec.odo[0] == static_cast<std::int64_t>(weighted[0] * um_per_s / den));
+    CHECK(rec.odo[1] == static_cast<std::int64_t>(weighted[1] * um_per_s / den));
+  }
+  CHECK(records.back().odo[0] + records.back().odo[1] > 0); // it drove
   CHECK(devices::replay(log).identical);
 }

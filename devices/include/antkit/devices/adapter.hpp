@@ -12,12 +12,14 @@
 //        wander:      a 45-degree turn or a step of one cell (half a body diameter, a choice):
 //                     the wheels at half speed (turning: opposite), then one sensor read per
 //                     control period until the wheel travel reaches the target (robots with
-//                     encoders: closed loop on the counters; the Hemisson: the nominal number of
-//                     periods), then the wheels to zero; Wait does nothing;
+//                     encoders: closed loop on the counters; the Hemisson: on the travel it
+//                     reckons from the times, step 4), then the wheels to zero; Wait does nothing;
 //   4. read the odometry: the wheel counters (Khepera `H`, e-puck `Q`; reset to 0 with `G`/`P`
-//      before the first step); the Hemisson has no encoders, so its odometry is the commanded
-//      wheel travel of every control period (a sensor read) at the speeds in force, in
-//      micrometres, by the simulator's motion model (odometry.hpp, step_travel2).
+//      before the first step); the Hemisson has no encoders, so its odometry is reckoned: the
+//      wheel travel the motion model gives the speeds in force (odometry.hpp, step_travel2, per
+//      model period), times the time they were in force, from each command's send to the next
+//      (the times the log holds for every exchange, so a replay reckons it again from them and
+//      an edited time shows in "odo"), in micrometres.
 // Then the step's record (every exchange of the step, the observation, the command, the odometry
 // and the controller's state hash) is written and flushed before the next step starts.
 //
@@ -80,11 +82,13 @@ struct RecordOptions {
 };
 
 // The control period the simulator's motion model assumes for `robot` (a step of kDefaultSpeed body
-// diameters at the wheels' unit speed): about 112 ms for the Hemisson. A robot without encoders
-// counts its odometry in such periods (step 4 above), so its recordings default to it; robots with
-// encoders read their counters and default to 0 (as fast as the link allows).
-std::chrono::milliseconds model_period(const RobotDescription& robot);
-std::chrono::milliseconds default_period(const RobotDescription& robot);
+// diameters at the wheels' unit speed), to the nanosecond: 11031 / 65536 x 120 mm at 9 x 20 mm/s =
+// 112.214 ms for the Hemisson. A robot without encoders reads its sensors once per such period
+// by default (the emulator, lock-stepped, moves one model step per read, so the travel reckoned
+// from the times is the emulated one to within the pacing's jitter); robots with encoders read
+// their counters and default to 0 (as fast as the link allows).
+std::chrono::nanoseconds model_period(const RobotDescription& robot);
+std::chrono::nanoseconds default_period(const RobotDescription& robot);
 
 // How a run ended, typed (the log's stop record says it in words: stop_reason()).
 enum class StopKind : std::uint8_t {

@@ -18,6 +18,10 @@
 // command takes no time (setting speeds, reading counters, LEDs). So a run does not depend on how
 // fast the host is, and the adapter's loop -- read sensors, decide, set speeds, read odometry -- is
 // the simulator's step. A resent `N` is a second period (on a real robot a resend costs time too).
+// A robot without encoders (the Hemisson) reckons its travel from real time (adapter.hpp, step 4):
+// the emulated body matches it when the reads come once per model period, the recording's default
+// for such a robot; read faster, the body moves a period per read while the robot reckons less (a
+// choice: lock-step keeps every emulated run independent of the host's speed).
 //
 // Odometry: the wheel counters (Khepera H/G, e-puck Q/P) count what the wheels really turned, in
 // the robot's pulses (RobotDescription::odometry_pulse_nm) from the exact running total, so there

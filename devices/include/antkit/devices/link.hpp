@@ -70,6 +70,9 @@ struct LinkOptions {
   std::chrono::milliseconds backoff_max{40}; // ...up to this
   std::chrono::milliseconds watchdog{0};     // 0: none (each command's tries bound it, above)
   std::uint32_t stop_rounds = 3;             // the safe stop: rounds of `tries` sends per command
+  // The run's clock origin: every exchange is stamped with its send's time since it (Exchange::
+  // t_ns). record() sets it to the run's start, the origin of its records' t_ns.
+  std::chrono::steady_clock::time_point origin{};
 };
 
 struct LinkStats {
@@ -107,8 +110,12 @@ public:
   virtual void pause(std::chrono::milliseconds d) = 0;
   // Re-arms the watchdog: the safe stop is tried in full even after the link went quiet.
   virtual void rearm() noexcept = 0;
-  // Commands sent so far, resends included (the Hemisson's odometry counts its sensor reads).
+  // Commands sent so far, resends included.
   [[nodiscard]] virtual std::uint64_t sends() const noexcept = 0;
+  // The time of the last send (of the command whose reply transact() returned last), ns since
+  // the run's start: the clock a robot without encoders reckons its travel by. A replay returns the
+  // logged time (-1 where the log has none).
+  [[nodiscard]] virtual std::int64_t last_send_ns() const noexcept = 0;
 };
 
 class RobotLink final : public CommandLink {
@@ -124,9 +131,12 @@ public:
   void pause(std::chrono::milliseconds d) override;
   void rearm() noexcept override { last_ok_ = std::chrono::steady_clock::now(); }
   [[nodiscard]] std::uint64_t sends() const noexcept override { return stats_.exchanges; }
+  [[nodiscard]] std::int64_t last_send_ns() const noexcept override { return last_send_ns_; }
 
 private:
   void drain(std::vector<Exchange>& io);
+  [[nodiscard]] std::int64_t now_ns() const noexcept;
+  std::int64_t last_send_ns_ = -1;
   SerialPort port_;
   Codec codec_;
   LinkOptions options_;

@@ -3,12 +3,17 @@
 // per control step, then a stop record that says how the run ended:
 //   {"schema":1,"antkit":"0.1.0","robot":"khepera","port":{"path":"/dev/pts/3","baud":9600,
 //    "framing":"8N2"},"controller":{"name":"buffon","params":{"trial":0,"visit":1}},"seed":1}
-//   {"step":0,"t_ns":1234,"io":[["N\r","n,0,0,0,0,0,0,0,0\r\n"],["D,3,4\r","d\r\n"]],
+//   {"step":0,"t_ns":1234,"io":[["N\r","n,0,0,0,0,0,0,0,0\r\n",812],["D,3,4\r","d\r\n",1101]],
 //    "obs":[0,0],"cmd":[1,-2],"odo":[10,20],"state":"0123456789abcdef"}
 //   {"stop":"done","step":1000,"io":[["D,0,0\r","d\r\n"]]}
 // An exchange is one send and every byte read after it until the next send: its reply, when it got
 // one, is the last line, and any lines before it are late replies to earlier commands (link.hpp);
 // an exchange with nothing sent holds bytes drained from the line before a send (late, so dropped).
+// Its third element is the time of the send (of the drain, for drained bytes) in nanoseconds since
+// the run started, on the clock of "t_ns" (a record's time, taken when its step ended): a robot
+// without wheel encoders (the Hemisson) derives its odometry from these times, and a replay from
+// the same logged times. Logs written before exchange times were logged have two elements; they
+// read as times -1 (unknown), and a Hemisson log without them cannot be replayed.
 // The header may end with "arena":"SPEC" (the emulator's arena, when `antkit record --arena` gave
 // it); it is written only when known.
 // The writer emits exactly this form (keys in this order, no spaces). Bytes on the wire are JSON
@@ -37,6 +42,7 @@ namespace antkit::devices {
 struct Exchange {
   std::string sent;
   std::string received;
+  std::int64_t t_ns = -1; // when it was sent (drained), ns since the run's start; -1 unknown
   friend bool operator==(const Exchange&, const Exchange&) = default;
 };
 

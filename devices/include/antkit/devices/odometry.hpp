@@ -4,7 +4,8 @@
 //
 // Dead reckoning: the logged odometry of each step is the two wheels' cumulative travel in the
 // robot's odometry units (RobotDescription::odometry_pulse_nm: Khepera and e-puck encoder pulses;
-// for a robot without encoders, the Hemisson, micrometres of commanded travel, see adapter.hpp).
+// for a robot without encoders, the Hemisson, micrometres of travel reckoned from the logged
+// times, see adapter.hpp).
 // The heading after a step comes from the totals, not from a sum of increments:
 //     theta = theta_0 + ((R - R_0) - (L - L_0)) pulse / wheel_base,
 // so it does not drift with the number of steps (only the position integrates), and each step
@@ -40,7 +41,7 @@ namespace antkit::devices {
 // World::move's model at behaviour speeds m_l, m_r (fwd = speed (m_l + m_r) / 2 body units, turn =
 // speed (m_r - m_l) radians) on wheels that do not slip, each wheel travels fwd * diameter -/+
 // turn * wheel_base / 2; a blocked step (moved == false) turns on the spot. The emulator's
-// encoders and the Hemisson's commanded-travel odometry both count this.
+// encoders and the Hemisson's reckoned odometry (per model period) both count this.
 struct Travel2 {
   __extension__ __int128 left = 0, right = 0;
 };

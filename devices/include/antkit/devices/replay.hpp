@@ -12,8 +12,9 @@
 //   obs[i]          the observation from the step's proximity reply;
 //   cmd[i], state   the controller's command and state hash for the recorded observation;
 //   odo[i]          the odometry: the counters' reply less the start's baseline, or for the
-//                   Hemisson the commanded travel re-derived from the logged sends;
-//   t_ns            never decreasing;
+//                   Hemisson the travel reckoned again from the logged times of its exchanges
+//                   (a Hemisson log without them is refused as bad input);
+//   t_ns, io[k].t   never decreasing, each exchange's time within its step;
 //   stop            the stop record's reason in stop_reason()'s words, and its safe stop re-run
 //                   over its exchanges: a stop acknowledged and read back at zero in the bytes may
 //                   not be reported as failed, and one never acknowledged must say the robot may
