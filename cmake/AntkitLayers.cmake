@@ -1,0 +1,101 @@
+# The layers and what each may use: the one statement of the layer order, which the build holds.
+#
+#   kernel        the C++ standard library only
+#   geometry      kernel (and CGAL, Eigen: the only layer that includes CGAL)
+#   algorithms    kernel
+#   mpi           (MPI only)
+#   devices       kernel, geometry (the map files), algorithms
+#   testing       kernel, geometry, algorithms, mpi (the campaign's ranks)
+#   experiments   kernel, geometry, algorithms, devices, testing
+#   reports       kernel, geometry, algorithms, devices, testing
+#   python        kernel, geometry, algorithms, devices, testing, reports
+#   cli           every layer
+#
+# DESIGN.md draws experiments and devices side by side; here experiments sits above devices (paper
+# 002's marker-floor experiment runs the robot's pilot and camera from devices/stc_floor). Tools
+# (tests/, bench/, fuzz/, determinism/, proofs/) may use any layer.
+#
+# Held two ways: antkit_check_layer_links() below refuses, at configure time, a layer target's
+# link line against this table; and the ctest layers.includes (cmake/check_layers.cmake) reads every
+# #include <antkit/...> of every layer's sources and fails on an arrow against it (its tooth,
+# layers.includes.teeth, plants two). Not yet by the compiler: the kernel's headers sit under
+# geometry's include root (geometry/include/antkit/kernel/), which every layer reaches through the
+# kernel, so a target can include a header of a layer it does not link; a kernel folder with a
+# root of its own is issue 31's next step (it recompiles everything).
+set(ANTKIT_LAYERS kernel geometry algorithms mpi devices testing experiments reports python cli)
+set(ANTKIT_LAYER_USES_kernel "")
+set(ANTKIT_LAYER_USES_geometry kernel)
+set(ANTKIT_LAYER_USES_algorithms kernel)
+set(ANTKIT_LAYER_USES_mpi "")
+set(ANTKIT_LAYER_USES_devices kernel geometry algorithms)
+set(ANTKIT_LAYER_USES_testing kernel geometry algorithms mpi)
+set(ANTKIT_LAYER_USES_experiments kernel geometry algorithms devices testing)
+set(ANTKIT_LAYER_USES_reports kernel geometry algorithms devices testing)
+set(ANTKIT_LAYER_USES_python kernel geometry algorithms devices testing reports)
+set(ANTKIT_LAYER_USES_cli kernel geometry algorithms mpi devices testing experiments reports)
+# The source folders of each layer (a file belongs to the layer of the longest folder that holds it).
+set(ANTKIT_LAYER_DIRS_kernel geometry/include/antkit/kernel)
+set(ANTKIT_LAYER_DIRS_geometry geometry)
+foreach(layer IN ITEMS algorithms mpi devices testing experiments reports python cli)
+  set(ANTKIT_LAYER_DIRS_${layer} ${layer})
+endforeach()
+# The header folders (antkit/<name>/) each layer owns.
+set(ANTKIT_LAYER_HEADERS_kernel kernel)
+set(ANTKIT_LAYER_HEADERS_geometry geometry maps)
+set(ANTKIT_LAYER_HEADERS_algorithms algorithms buffon frontier los stc uniform)
+set(ANTKIT_LAYER_HEADERS_mpi mpi)
+set(ANTKIT_LAYER_HEADERS_devices devices)
+set(ANTKIT_LAYER_HEADERS_testing testing campaign)
+set(ANTKIT_LAYER_HEADERS_experiments experiments)
+set(ANTKIT_LAYER_HEADERS_reports reports)
+set(ANTKIT_LAYER_HEADERS_python "")
+set(ANTKIT_LAYER_HEADERS_cli "")
+# The layer targets (for the link check).
+set(ANTKIT_LAYER_TARGETS_kernel antkit_kernel)
+set(ANTKIT_LAYER_TARGETS_geometry antkit_geometry)
+set(ANTKIT_LAYER_TARGETS_algorithms antkit_algorithms)
+set(ANTKIT_LAYER_TARGETS_mpi antkit_mpi)
+set(ANTKIT_LAYER_TARGETS_devices antkit_devices)
+set(ANTKIT_LAYER_TARGETS_testing antkit_testing antkit_campaign)
+set(ANTKIT_LAYER_TARGETS_experiments antkit_experiments)
+set(ANTKIT_LAYER_TARGETS_reports antkit_reports)
+set(ANTKIT_LAYER_TARGETS_python antkit_python)
+set(ANTKIT_LAYER_TARGETS_cli antkit)
+
+# The layer a target belongs to, or "" for a target outside the layers (third-party, options).
+function(antkit_layer_of_target target out)
+  foreach(layer IN LISTS ANTKIT_LAYERS)
+    if(target IN_LIST ANTKIT_LAYER_TARGETS_${layer})
+      set(${out} ${layer} PARENT_SCOPE)
+      return()
+    endif()
+  endforeach()
+  set(${out} "" PARENT_SCOPE)
+endfunction()
+
+# Refuses (FATAL_ERROR) a layer target that links another layer's target against the table.
+function(antkit_check_layer_links)
+  foreach(layer IN LISTS ANTKIT_LAYERS)
+    foreach(target IN LISTS ANTKIT_LAYER_TARGETS_${layer})
+      if(NOT TARGET ${target})
+        continue()
+      endif()
+      get_target_property(type ${target} TYPE)
+      if(type STREQUAL "INTERFACE_LIBRARY")
+        get_target_property(links ${target} INTERFACE_LINK_LIBRARIES)
+      else()
+        get_target_property(links ${target} LINK_LIBRARIES)
+      endif()
+      foreach(link IN LISTS links)
+        string(REGEX REPLACE "^\\$<BUILD_INTERFACE:(.*)>$" "\\1" link "${link}")
+        string(REGEX REPLACE "^antkit::" "antkit_" link "${link}")
+        antkit_layer_of_target("${link}" used)
+        if(used AND NOT used STREQUAL layer AND NOT used IN_LIST ANTKIT_LAYER_USES_${layer})
+          message(FATAL_ERROR "layers: ${target} (layer ${layer}) links ${link} (layer ${used}); "
+                              "${layer} may use: ${ANTKIT_LAYER_USES_${layer}} "
+                              "(cmake/AntkitLayers.cmake)")
+        endif()
+      endforeach()
+    endforeach()
+  endforeach()
+endfunction()
