@@ -121,6 +121,9 @@ WheelTravel Body::odometry(std::vector<Exchange>& io) {
 
 void Body::reckon_until(std::int64_t t_ns) {
   if (t_ns < 0) throw std::logic_error("a send without its time");
+  if (t_ns > kMaxRunNs)
+    throw std::runtime_error("the run is longer than 2^55 ns (about 13 months), the longest "
+                             "whose travel a robot without encoders reckons");
   if (reckoned_ns_ >= 0 && t_ns > reckoned_ns_) {
     const Travel2 one =
         step_travel2(robot_, buffon::kDefaultSpeed, from_wheel_command(robot_, left_),

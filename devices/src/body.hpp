@@ -16,6 +16,11 @@
 
 namespace antkit::devices::detail {
 
+// The longest run a robot without encoders reckons (2^55 ns, about 13 months): its sums of travel
+// x time stay far inside 128 bits (travel per model step below 2^34, times 2^55, times the speed
+// scale below 2^35). A recording stops with an error there; a replay refuses a later time.
+inline constexpr std::int64_t kMaxRunNs = std::int64_t{1} << 55;
+
 class Body {
 public:
   // `period`: the shortest time between two sensor reads (0: as fast as the link allows; a replay

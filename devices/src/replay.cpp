@@ -219,6 +219,9 @@ ReplayResult replay_records(
         d = Divergence{r.step, "io[" + std::to_string(k) + "].t", std::to_string(t),
                        "a time in [" + std::to_string(last_t) + ", " + std::to_string(r.time_ns) +
                            "]: after the exchange before it, before the step's end"};
+      else if (t > detail::kMaxRunNs)
+        d = Divergence{r.step, "io[" + std::to_string(k) + "].t", std::to_string(t),
+                       "a time below 2^55 ns (about a year: the longest run reckoned)"};
       last_t = std::max(last_t, t);
     }
     if (!d) d = check(r, cmd);
