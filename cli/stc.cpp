@@ -100,8 +100,8 @@ private:
   std::string buf_;
 };
 
-// --path-out's content: CSV lines, or the binary path (stc/path_format.hpp), whose move count is
-// written into the header at the end. The file itself is geometry::write_file_atomic's.
+// --path-out's content: CSV lines, or the binary path (stc/path_format.hpp's Encoder), whose move
+// count is written into the header at the end. The file itself is geometry::write_file_atomic's.
 class PathWriter {
 public:
   PathWriter(std::ostream& file, bool binary, const OccupancyGrid& map, Cell start)
@@ -117,42 +117,34 @@ public:
       out_ << std::int64_t{s.x} << "," << std::int64_t{s.y} << "\n";
       return;
     }
-    if (have_last_) {
-      const int code = path_format::move_code(last_, s);
-      if (code < 0) throw std::logic_error("a tour move that is not 4-adjacent");
-      byte_ = static_cast<unsigned char>(byte_ | (code << (2 * (moves_ % 4))));
-      if (++moves_ % 4 == 0) {
-        const char c = static_cast<char>(byte_);
-        out_ << std::string_view(&c, 1);
-        byte_ = 0;
-      }
-    }
-    have_last_ = true;
-    last_ = s;
+    if (!encoder_.add(s, bytes_)) throw std::logic_error("a tour move that is not 4-adjacent");
+    if (bytes_.size() >= 4096) flush_bytes();
   }
 
   void finish() {
-    if (binary_ && moves_ % 4 != 0) {
-      const char c = static_cast<char>(byte_);
-      out_ << std::string_view(&c, 1);
+    if (binary_) {
+      encoder_.finish(bytes_);
+      flush_bytes();
     }
     out_.flush();
     if (binary_) { // the number of moves, now known
       std::string count;
-      path_format::put_le(count, moves_, 8);
+      path_format::put_le(count, encoder_.moves(), 8);
       file_.seekp(24);
       file_.write(count.data(), 8);
     }
   }
 
 private:
+  void flush_bytes() {
+    out_ << std::string_view(bytes_);
+    bytes_.clear();
+  }
   std::ostream& file_;
   Out out_;
   bool binary_;
-  std::uint64_t moves_ = 0;
-  bool have_last_ = false;
-  SubCell last_{};
-  unsigned char byte_ = 0;
+  path_format::Encoder encoder_;
+  std::string bytes_;
 };
 
 void run_stc_command(const StcOptions& o) {

@@ -1,5 +1,7 @@
 // Invariants 1-5 of issue 3 on random maps (rapidcheck).
+#include <antkit/kernel/input_error.hpp>
 #include <antkit/stc/offline.hpp>
+#include <antkit/stc/path_format.hpp>
 #include <antkit/stc/world.hpp>
 #include <antkit/testing/generators.hpp>
 #include <antkit/testing/stc.hpp>
@@ -115,6 +117,34 @@ TEST_CASE(
       RC_ASSERT(b.hash == a.hash);
       RC_ASSERT(b.positions == a.positions);
       RC_ASSERT(b.covered == a.covered);
+    }
+  });
+}
+
+TEST_CASE("the binary path: decode(encode(tour)) is the tour, of every variant and length",
+          "[stc][property]") {
+  // path_format.hpp's Encoder (what `antkit stc --path-out F.bin` streams) against its decoder:
+  // tours of every variant on random maps, cut at a random length so that every remainder of
+  // moves mod 4 (the last byte's padding) occurs; and a non-adjacent move is refused.
+  rc::prop("every variant, every prefix", [] {
+    const auto [map, start] = *gen::stc_case({.partial_cells = true, .start_in_free_cell = true});
+    const Variant v = *rc::gen::element(Variant::Offline, Variant::Online, Variant::Ant,
+                                        Variant::AntEdge, Variant::Full);
+    std::vector<antkit::kernel::Cell> tour = run_stc(map, start, v).path;
+    RC_PRE(!tour.empty());
+    tour.resize(*rc::gen::inRange<std::size_t>(1, tour.size() + 1));
+    const std::string bytes = path_format::encode(map.width(), map.height(), tour);
+    RC_ASSERT(bytes.size() == path_format::kHeaderBytes + (tour.size() - 1 + 3) / 4);
+    const auto d = path_format::decode(bytes, "encoded", std::uint64_t{1} << 28);
+    RC_ASSERT(d.width == map.width());
+    RC_ASSERT(d.height == map.height());
+    RC_ASSERT(d.start == tour.front());
+    RC_ASSERT(d.path == tour);
+    if (tour.size() >= 2) {
+      auto jump = tour;
+      jump.back() = {jump.back().x + 3, jump.back().y}; // never 4-adjacent to the one before
+      RC_ASSERT_THROWS_AS(path_format::encode(map.width(), map.height(), jump),
+                          antkit::kernel::InputError);
     }
   });
 }

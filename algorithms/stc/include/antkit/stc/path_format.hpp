@@ -56,6 +56,55 @@ inline int move_code(kernel::Cell a, kernel::Cell b) noexcept {
   return -1;
 }
 
+// The moves of a tour as they come, packed two bits each (the command streams a tour of any length
+// through it; encode() below is the whole-tour form). add() takes each position, the start first,
+// and appends every completed byte to `out`; finish() appends the last, partial byte. The header
+// (header(), with moves()) is the caller's: a stream writes it first and patches the count.
+class Encoder {
+public:
+  // False (nothing appended) when `s` is not 4-adjacent to the position before it.
+  bool add(kernel::Cell s, std::string& out) {
+    if (have_last_) {
+      const int code = move_code(last_, s);
+      if (code < 0) return false;
+      byte_ = static_cast<unsigned char>(byte_ | (code << (2 * (moves_ % 4))));
+      if (++moves_ % 4 == 0) {
+        out += static_cast<char>(byte_);
+        byte_ = 0;
+      }
+    }
+    have_last_ = true;
+    last_ = s;
+    return true;
+  }
+  void finish(std::string& out) {
+    if (moves_ % 4 != 0) out += static_cast<char>(byte_);
+    byte_ = 0;
+  }
+  [[nodiscard]] std::uint64_t moves() const noexcept { return moves_; }
+
+private:
+  std::uint64_t moves_ = 0;
+  bool have_last_ = false;
+  kernel::Cell last_{};
+  unsigned char byte_ = 0;
+};
+
+// A whole tour (the start first) in this format: decode(encode(...)) gives it back. Throws
+// kernel::InputError("path", ...) at the first move that is not to a 4-adjacent sub-cell.
+inline std::string encode(std::int32_t width, std::int32_t height,
+                          const std::vector<kernel::Cell>& path) {
+  if (path.empty()) throw kernel::InputError("path", "an empty tour has no start");
+  Encoder e;
+  std::string moves;
+  for (std::size_t i = 0; i < path.size(); ++i)
+    if (!e.add(path[i], moves))
+      throw kernel::InputError("path", "position " + std::to_string(i) +
+                                           " is not 4-adjacent to the one before it");
+  e.finish(moves);
+  return header(width, height, path.front(), e.moves()) + moves;
+}
+
 inline bool is_binary(std::string_view text) noexcept {
   return text.substr(0, kMagic.size()) == kMagic;
 }
