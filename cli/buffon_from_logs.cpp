@@ -35,13 +35,10 @@
 //                              path in a header is read from the current directory
 //   "relative_error"           (area_corrected - area_true) / area_true (null without an arena)
 //   "relative_error_raw"       (area_raw - area_true) / area_true, for comparison
-#include "buffon_options.hpp"
 #include "commands.hpp"
 #include "output.hpp"
 
 #include <antkit/devices/odometry.hpp>
-#include <antkit/geometry/fixed_convert.hpp>
-#include <antkit/kernel/input_error.hpp>
 #include <antkit/reports/reports.hpp>
 #include <iostream>
 #include <memory>
@@ -59,11 +56,7 @@ struct FromLogsCommand {
 };
 
 void run(const FromLogsCommand& c) {
-  if (!(c.width >= 0.01 && c.width <= 10))
-    throw antkit::kernel::InputError("--width", "the trail width must be in [0.01, 10] units");
-  const auto width = antkit::geometry::fixed_from_double<antkit::kernel::Fx>(c.width, "--width");
-  const auto r = devices::buffon_from_logs(c.visit1, c.visit2, width,
-                                           {c.arena, &antkit::reports::arena_spec_area});
+  const auto r = antkit::reports::buffon_from_logs(c.visit1, c.visit2, c.width, c.arena, "--width");
   antkit::cli::emit(antkit::reports::buffon_from_logs_json(r, c.width), c.format, std::cout);
 }
 

@@ -65,13 +65,6 @@ struct StcOptions {
   Format format = Format::Table;
 };
 
-Variant parse_variant_option(const std::string& name) {
-  if (const auto v = parse_variant(name)) return *v;
-  throw InputError("--variant", "'" + name +
-                                    "' is not a variant: expected offline, online, ant, "
-                                    "ant-edge or full");
-}
-
 // stdout or a file, through a large buffer; numbers written with to_chars.
 class Out {
 public:
@@ -148,15 +141,9 @@ private:
 };
 
 void run_stc_command(const StcOptions& o) {
-  const Variant variant = parse_variant_option(o.variant);
+  const Variant variant = antkit::reports::stc_variant(o.variant, "--variant");
   RunOptions run;
-  if (!o.noise.empty()) {
-    if (variant != Variant::Ant && variant != Variant::AntEdge)
-      throw InputError("--noise", "marker noise applies to the variants that read marks, ant and "
-                                  "ant-edge, not " +
-                                      std::string(variant_name(variant)));
-    run.noise = {algorithms::parse_probability_ppm("--noise", o.noise), o.seed, 0};
-  }
+  if (!o.noise.empty()) run.noise = antkit::reports::stc_noise(variant, o.noise, o.seed, "--noise");
   const auto map = antkit::maps::load_map(o.map);
   const Cell start = antkit::reports::choose_stc_start(
       map, variant,
@@ -262,7 +249,7 @@ struct NoiseOptions {
 };
 
 void run_noise_command(const NoiseOptions& o) {
-  const Variant variant = parse_variant_option(o.variant);
+  const Variant variant = antkit::reports::stc_variant(o.variant, "--variant");
   if (variant != Variant::Ant && variant != Variant::AntEdge)
     throw InputError("--variant", "marker noise applies to ant and ant-edge only");
   if (o.trials < 1 || o.trials > 100000)

@@ -21,6 +21,7 @@ Long calls release the GIL.
 from __future__ import annotations
 
 import copy
+import decimal
 import os
 from collections.abc import Mapping
 from typing import Any, Iterator, Optional, Sequence, Tuple, Union
@@ -171,9 +172,13 @@ def stc(
 
     ``variant``: "offline", "online", "ant", "ant-edge" or "full". ``start``: the start sub-cell
     (x, y); by default the map's own start, else the first place of the largest region. ``noise``:
-    the probability that a mark is misread (ant and ant-edge only), drawn from ``seed``'s stream.
+    the probability that a mark is misread (ant and ant-edge only; at most six decimals, as on the
+    command line), drawn from ``seed``'s stream.
     """
-    fields, path = _antkit._stc(_map(map), variant, _pair(start, "start"), noise, int(seed))
+    # The probability as the command reads it: its shortest decimal (repr), written out without an
+    # exponent, so that a value with more than six decimals is refused as on the command line.
+    text = None if noise is None else format(decimal.Decimal(repr(float(noise))), "f")
+    fields, path = _antkit._stc(_map(map), variant, _pair(start, "start"), text, int(seed))
     return StcResult(fields, path)
 
 

@@ -183,24 +183,13 @@ void write_map(const PyMap& m, const std::string& path) {
 
 py::tuple run_stc(const PyMap& m, const std::string& variant_name,
                   const std::optional<std::pair<std::int64_t, std::int64_t>>& start_xy,
-                  std::optional<double> noise, std::uint64_t seed) {
-  const auto variant = antkit::stc::parse_variant(variant_name);
-  if (!variant)
-    throw InputError("variant", "'" + variant_name +
-                                    "' is not a variant: expected offline, online, ant, "
-                                    "ant-edge or full");
+                  const std::optional<std::string>& noise, std::uint64_t seed) {
+  const auto variant = antkit::reports::stc_variant(variant_name, "variant");
   antkit::stc::RunOptions run;
   std::optional<antkit::reports::StcNoiseFields> noise_fields;
   if (noise) {
-    if (*variant != antkit::stc::Variant::Ant && *variant != antkit::stc::Variant::AntEdge)
-      throw InputError("noise", "marker noise applies to the variants that read marks, ant and "
-                                "ant-edge, not " +
-                                    variant_name);
-    if (!(*noise >= 0 && *noise <= 1))
-      throw InputError("noise", "a probability is in [0, 1], not " + std::to_string(*noise));
-    const auto ppm = static_cast<std::uint32_t>(*noise * 1e6 + 0.5);
-    run.noise = {ppm, seed, 0};
-    noise_fields = antkit::reports::StcNoiseFields{ppm, seed};
+    run.noise = antkit::reports::stc_noise(variant, *noise, seed, "noise");
+    noise_fields = antkit::reports::StcNoiseFields{run.noise.ppm, seed};
   }
   const auto name = m.source.empty() ? std::string("map") : m.source;
   nlohmann::json j;
@@ -208,9 +197,9 @@ py::tuple run_stc(const PyMap& m, const std::string& variant_name,
   {
     py::gil_scoped_release release;
     const Cell start =
-        antkit::reports::choose_stc_start(m.map, *variant, optional_cell(start_xy, "start"), name);
+        antkit::reports::choose_stc_start(m.map, variant, optional_cell(start_xy, "start"), name);
     try {
-      r = antkit::stc::run_stc(m.map.cells, start, *variant, run);
+      r = antkit::stc::run_stc(m.map.cells, start, variant, run);
     } catch (const InputError& e) { // name the argument or the map the start came from
       throw InputError(start_xy ? "start" : name, e.message());
     }
@@ -302,15 +291,12 @@ py::object check_cover_text(const PyMap& m, const std::string& text, const std::
 
 py::object buffon_from_logs(const std::string& visit1, const std::string& visit2, double width,
                             const std::optional<std::string>& arena) {
-  if (!(width >= 0.01 && width <= 10))
-    throw InputError("width", "the trail width must be in [0.01, 10] units");
   nlohmann::json j;
   {
     py::gil_scoped_release release;
-    const auto w = antkit::geometry::fixed_from_double<antkit::kernel::Fx>(width, "width");
-    const auto r = antkit::devices::buffon_from_logs(
-        visit1, visit2, w, {arena.value_or(""), &antkit::reports::arena_spec_area});
-    j = antkit::reports::buffon_from_logs_json(r, width);
+    j = antkit::reports::buffon_from_logs_json(
+        antkit::reports::buffon_from_logs(visit1, visit2, width, arena.value_or(""), "width"),
+        width);
   }
   return to_python(j);
 }

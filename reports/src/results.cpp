@@ -1,9 +1,27 @@
 // The JSON of `antkit stc`, `antkit replay` and `antkit buffon-from-logs` (reports.hpp).
+#include <antkit/algorithms/options.hpp>
+#include <antkit/geometry/fixed_convert.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/reports/reports.hpp>
 
 namespace antkit::reports {
+
+stc::Variant stc_variant(const std::string& name, const std::string& where) {
+  if (const auto v = stc::parse_variant(name)) return *v;
+  throw kernel::InputError(where, "'" + name +
+                                      "' is not a variant: expected offline, online, ant, "
+                                      "ant-edge or full");
+}
+
+stc::NoiseModel stc_noise(stc::Variant variant, const std::string& probability, std::uint64_t seed,
+                          const std::string& where) {
+  if (variant != stc::Variant::Ant && variant != stc::Variant::AntEdge)
+    throw kernel::InputError(where, "marker noise applies to the variants that read marks, ant "
+                                    "and ant-edge, not " +
+                                        std::string(stc::variant_name(variant)));
+  return {algorithms::parse_probability_ppm(where, probability), seed, 0};
+}
 
 kernel::Cell choose_stc_start(const maps::GridMap& map, stc::Variant variant,
                               std::optional<kernel::Cell> given, const std::string& map_name) {
@@ -71,6 +89,16 @@ nlohmann::json interval(const devices::AreaInterval& ci, double scale = 1) {
   return nlohmann::json::array({maybe(ci.lower, scale), maybe(ci.upper, scale)});
 }
 } // namespace
+
+devices::BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& visit2,
+                                         double width, const std::string& arena,
+                                         const std::string& width_where) {
+  if (!(width >= 0.01 && width <= 10))
+    throw kernel::InputError(width_where, "the trail width must be in [0.01, 10] units");
+  return devices::buffon_from_logs(visit1, visit2,
+                                   geometry::fixed_from_double<kernel::Fx>(width, width_where),
+                                   {arena, &arena_spec_area});
+}
 
 nlohmann::json buffon_from_logs_json(const devices::BuffonFromLogs& r, double width) {
   const double m2 = r.diameter_m * r.diameter_m;

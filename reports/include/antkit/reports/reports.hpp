@@ -32,6 +32,14 @@ namespace antkit::reports {
 [[nodiscard]] nlohmann::json check_cover_json(const testing::CoverCheckReport& report,
                                               const std::string& map);
 
+// `antkit stc`'s variant by name, or an InputError(where) listing the variants.
+[[nodiscard]] stc::Variant stc_variant(const std::string& name, const std::string& where);
+// Marker noise for `variant`: `probability` as the command takes it (a decimal in [0, 1], at most
+// six decimals: algorithms::parse_probability_ppm), drawn from `seed`'s stream; an
+// InputError(where) for a variant that reads no marks (ant and ant-edge do).
+[[nodiscard]] stc::NoiseModel stc_noise(stc::Variant variant, const std::string& probability,
+                                        std::uint64_t seed, const std::string& where);
+
 // The STC start: `given` if any (sub-cells), else the map's own start ('S' in an ASCII map), else
 // stc::default_start (the largest region's first place). Throws InputError(map_name) when the map
 // has no place to start.
@@ -53,7 +61,15 @@ struct StcNoiseFields {
 // `antkit replay`.
 [[nodiscard]] nlohmann::json replay_json(const devices::ReplayResult& result);
 
-// `antkit buffon-from-logs`; `width` the band width in body diameters.
+// `antkit buffon-from-logs`: the measurement from two logs (devices::buffon_from_logs) with the
+// pheromone band `width` in body diameters, in [0.01, 10] (else an InputError(width_where)), and
+// the arena's true area from its spec or WKT file (arena_spec_area) when `arena` or the headers
+// name one.
+[[nodiscard]] devices::BuffonFromLogs buffon_from_logs(const std::string& visit1,
+                                                       const std::string& visit2, double width,
+                                                       const std::string& arena,
+                                                       const std::string& width_where);
+// Its JSON; `width` the band width in body diameters.
 [[nodiscard]] nlohmann::json buffon_from_logs_json(const devices::BuffonFromLogs& result,
                                                    double width);
 // An arena argument names a WKT file when it ends in ".wkt" (any case), else it is a named spec:
