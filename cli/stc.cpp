@@ -93,53 +93,6 @@ private:
   std::string buf_;
 };
 
-// --path-out's content: CSV lines, or the binary path (stc/path_format.hpp's Encoder), whose move
-// count is written into the header at the end. The file itself is geometry::write_file_atomic's.
-class PathWriter {
-public:
-  PathWriter(std::ostream& file, bool binary, const OccupancyGrid& map, Cell start)
-      : file_(file), out_(file), binary_(binary) {
-    if (binary_)
-      out_ << path_format::header(map.width(), map.height(), start, 0);
-    else
-      out_ << "x,y\n";
-  }
-
-  void add(SubCell s) {
-    if (!binary_) {
-      out_ << std::int64_t{s.x} << "," << std::int64_t{s.y} << "\n";
-      return;
-    }
-    if (!encoder_.add(s, bytes_)) throw std::logic_error("a tour move that is not 4-adjacent");
-    if (bytes_.size() >= 4096) flush_bytes();
-  }
-
-  void finish() {
-    if (binary_) {
-      encoder_.finish(bytes_);
-      flush_bytes();
-    }
-    out_.flush();
-    if (binary_) { // the number of moves, now known
-      std::string count;
-      path_format::put_le(count, encoder_.moves(), 8);
-      file_.seekp(24);
-      file_.write(count.data(), 8);
-    }
-  }
-
-private:
-  void flush_bytes() {
-    out_ << std::string_view(bytes_);
-    bytes_.clear();
-  }
-  std::ostream& file_;
-  Out out_;
-  bool binary_;
-  path_format::Encoder encoder_;
-  std::string bytes_;
-};
-
 void run_stc_command(const StcOptions& o) {
   const Variant variant = antkit::reports::stc_variant(o.variant, "--variant");
   RunOptions run;
@@ -155,7 +108,7 @@ void run_stc_command(const StcOptions& o) {
   const auto ext = std::filesystem::path(o.path_out).extension();
   if (!o.path_out.empty() && ext != ".csv" && ext != ".bin")
     throw InputError("--path-out", "'" + o.path_out + "': give a .csv or a .bin file name");
-  PathWriter* path_file = nullptr;
+  path_format::TourWriter* path_file = nullptr;
   const bool json = o.format == Format::Json;
   std::optional<Out> out;
   std::int64_t written = 0;
@@ -191,7 +144,8 @@ void run_stc_command(const StcOptions& o) {
     tour();
   } else {
     antkit::geometry::write_file_atomic(o.path_out, [&](std::ostream& file) {
-      PathWriter writer(file, ext == ".bin", map.cells, start);
+      path_format::TourWriter writer(file, ext == ".bin", map.cells.width(), map.cells.height(),
+                                     start);
       path_file = &writer;
       tour();
       writer.finish();

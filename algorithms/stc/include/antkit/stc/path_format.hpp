@@ -12,8 +12,11 @@
 // A 16384 x 16384 map's tour takes 64 MiB this way against about 3 GiB as CSV.
 #include <antkit/kernel/grid.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <charconv>
 #include <cstdint>
 #include <cstdio>
+#include <ostream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -104,6 +107,55 @@ inline std::string encode(std::int32_t width, std::int32_t height,
   e.finish(moves);
   return header(width, height, path.front(), e.moves()) + moves;
 }
+
+// A tour file written as the positions come (`antkit stc --path-out`): CSV (a first line "x,y",
+// then "x,y" per position) or the binary form above. finish() writes what is buffered and, for the
+// binary form, the move count into the header, so the stream must be seekable (a file). add()
+// throws std::logic_error for a binary move that is not 4-adjacent (a tour never makes one).
+class TourWriter {
+public:
+  TourWriter(std::ostream& out, bool binary, std::int32_t width, std::int32_t height,
+             kernel::Cell start)
+      : out_(out), binary_(binary) {
+    buf_ = binary_ ? header(width, height, start, 0) : std::string("x,y\n");
+  }
+
+  void add(kernel::Cell s) {
+    if (binary_) {
+      if (!encoder_.add(s, buf_)) throw std::logic_error("a tour move that is not 4-adjacent");
+    } else {
+      char digits[32];
+      char* end = std::to_chars(digits, digits + 12, s.x).ptr;
+      *end++ = ',';
+      end = std::to_chars(end, end + 12, s.y).ptr;
+      *end++ = '\n';
+      buf_.append(digits, end);
+    }
+    if (buf_.size() >= kBuffer) flush();
+  }
+
+  void finish() {
+    if (binary_) encoder_.finish(buf_);
+    flush();
+    if (binary_) { // the number of moves, now known
+      std::string count;
+      put_le(count, encoder_.moves(), 8);
+      out_.seekp(24);
+      out_.write(count.data(), 8);
+    }
+  }
+
+private:
+  static constexpr std::size_t kBuffer = std::size_t{1} << 20;
+  void flush() {
+    out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
+    buf_.clear();
+  }
+  std::ostream& out_;
+  bool binary_;
+  Encoder encoder_;
+  std::string buf_;
+};
 
 inline bool is_binary(std::string_view text) noexcept {
   return text.substr(0, kMagic.size()) == kMagic;
