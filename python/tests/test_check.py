@@ -26,7 +26,6 @@ def check_both(tmp_path, map_path, path_xy, *args, **kwargs):
         flags.append("--cells")
     if kwargs.get("start") is not None:
         flags += ["--start", "{},{}".format(*kwargs["start"])]
-    status = None
     r_array = antkit.check_stc(str(map_path), path_xy, **kwargs)
     r_file = antkit.check_stc(str(map_path), str(csv), **kwargs)
     expected, _ = cli("check", "stc", "--map", map_path, "--path", csv, *flags,

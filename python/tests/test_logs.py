@@ -1,6 +1,7 @@
 """Hardware logs from Python: read_log and replay against `antkit replay`, on the logs the fuzz
 corpus keeps (every robot, faults, a cut log, edited logs), and buffon_from_logs on two visits that
 `antkit record` made against `antkit emulate` over a real pseudo-terminal."""
+import json
 import os
 import subprocess
 from pathlib import Path
@@ -27,8 +28,6 @@ def test_replay_equals_the_command(log):
             antkit.replay(log)
         assert r.stderr.strip() == f"antkit: error: {e.value}"
         return
-    import json
-
     expected = json.loads(r.stdout)
     got = antkit.replay(log)
     assert got.to_dict() == expected

@@ -9,8 +9,13 @@ nlohmann::json cell_json(kernel::Cell c) {
 }
 
 namespace {
-nlohmann::json name_or_null(const std::string& name) {
-  return name.empty() ? nlohmann::json(nullptr) : nlohmann::json(name);
+// The keys every check's report starts with; the map's name null when it has none.
+nlohmann::json check_head(const char* check, bool ok, const std::string& map) {
+  nlohmann::json j;
+  j["check"] = check;
+  j["ok"] = ok;
+  j["map"] = map.empty() ? nlohmann::json(nullptr) : nlohmann::json(map);
+  return j;
 }
 } // namespace
 
@@ -24,11 +29,8 @@ nlohmann::json first_violation_json(const testing::StcAudit& a) {
 
 nlohmann::json check_stc_json(const testing::StcCheckReport& r, const std::string& map) {
   const testing::StcAudit& a = r.audit;
-  nlohmann::json j;
-  j["check"] = "stc";
+  nlohmann::json j = check_head("stc", a.ok(), map);
   j["rule"] = std::string(testing::tour_rule_name(a.rule));
-  j["ok"] = a.ok();
-  j["map"] = name_or_null(map);
   j["width"] = r.width;
   j["height"] = r.height;
   j["start"] = cell_json(r.start);
@@ -55,10 +57,7 @@ nlohmann::json check_stc_json(const testing::StcCheckReport& r, const std::strin
 
 nlohmann::json check_explore_json(const testing::ExploreCheckReport& r, const std::string& map) {
   const auto& a = r.audit;
-  nlohmann::json j;
-  j["check"] = "explore";
-  j["ok"] = a.ok();
-  j["map"] = name_or_null(map);
+  nlohmann::json j = check_head("explore", a.ok(), map);
   j["width"] = r.width;
   j["height"] = r.height;
   nlohmann::json states;
@@ -76,10 +75,7 @@ nlohmann::json check_explore_json(const testing::ExploreCheckReport& r, const st
 
 nlohmann::json check_cover_json(const testing::CoverCheckReport& r, const std::string& map) {
   const auto& a = r.audit;
-  nlohmann::json j;
-  j["check"] = "cover";
-  j["ok"] = a.ok();
-  j["map"] = name_or_null(map);
+  nlohmann::json j = check_head("cover", a.ok(), map);
   j["sensor"] = r.sensor;
   j["sensor_from"] = r.sensor_from;
   j["ticks"] = a.ticks;
