@@ -28,7 +28,11 @@ demo: build
 # The whole test suite (unit, property, proof, fuzz-regression, slow).
 test: build
 	@echo "rapidcheck seed: $$(grep -m1 '^ANTKIT_RC_SEED' $(BUILD)/CMakeCache.txt | cut -d= -f2)"
-	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+	@status=0; ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) $(CTEST_ARGS) \
+	  -O $(BUILD)/ctest.log || status=$$?; \
+	skipped=$$(grep -cE '^[[:space:]]+[0-9]+ - .*[(]Skipped[)]$$' $(BUILD)/ctest.log || true); \
+	echo "skipped: $$skipped test(s) (each says why in its output; listed above)"; \
+	exit $$status
 
 bench: configure
 	cmake --build $(BUILD) -j $(JOBS) --target antkit_bench

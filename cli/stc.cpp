@@ -251,6 +251,38 @@ void run_noise_command(const NoiseOptions& o) {
   antkit::cli::emit(j, o.format, std::cout);
 }
 
+struct McuInputOptions {
+  std::string map, variant, start, noise, out;
+  std::uint64_t seed = 0;
+};
+
+// The Cortex-M image's input (stc/mcu_input.hpp) for scripts/run-on-mcu.sh: the same options, the
+// same start and the same refusals as `antkit stc`, and a map too large for the chip refused.
+void run_mcu_input_command(const McuInputOptions& o) {
+  const Variant variant = antkit::reports::stc_variant(o.variant, "--variant");
+  NoiseModel noise;
+  if (!o.noise.empty()) noise = antkit::reports::stc_noise(variant, o.noise, o.seed, "--noise");
+  const auto map = antkit::maps::load_map(o.map);
+  const Cell start = antkit::reports::choose_stc_start(
+      map, variant,
+      o.start.empty() ? std::nullopt : std::optional(algorithms::parse_cell("--start", o.start)),
+      o.map);
+  std::vector<std::uint8_t> bytes;
+  try {
+    bytes = mcu_input(map.cells, start, variant, noise);
+  } catch (const InputError& e) {
+    const std::string where = e.where() == "variant" ? "--variant"
+                              : e.where() == "map"   ? o.map
+                              : o.start.empty()      ? o.map
+                                                     : "--start";
+    throw InputError(where, e.message());
+  }
+  antkit::geometry::write_file_atomic(
+      o.out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  std::cout << o.out << ": " << bytes.size() << " bytes, start " << start.x << "," << start.y
+            << "\n";
+}
+
 void register_stc(CLI::App& app) {
   auto o = std::make_shared<StcOptions>();
   auto* cmd = app.add_subcommand(
@@ -276,6 +308,18 @@ void register_stc(CLI::App& app) {
                   "stc/path_format.hpp); antkit check stc reads both");
   antkit::cli::add_format_option(*cmd, o->format);
   cmd->callback([o] { run_stc_command(*o); });
+
+  auto m = std::make_shared<McuInputOptions>();
+  auto* mcu = app.add_subcommand("stc-mcu-input",
+                                 "Write one ant or ant-edge STC run as the Cortex-M image's input "
+                                 "(scripts/run-on-mcu.sh runs it under QEMU; stc/mcu_input.hpp)");
+  mcu->add_option("--map", m->map, "The map (.map, .yaml or .txt)")->required();
+  mcu->add_option("--variant", m->variant, "ant or ant-edge")->required();
+  mcu->add_option("--start", m->start, "Start sub-cell X,Y (default as for `antkit stc`)");
+  mcu->add_option("--noise", m->noise, "Mark misread probability (as for `antkit stc`)");
+  mcu->add_option("--seed", m->seed, "Seed of the keyed noise stream (default 0)");
+  mcu->add_option("--out", m->out, "The input file to write")->required();
+  mcu->callback([m] { run_mcu_input_command(*m); });
 
   auto n = std::make_shared<NoiseOptions>();
   auto* noise = app.add_subcommand(

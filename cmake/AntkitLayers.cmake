@@ -3,6 +3,7 @@
 #   kernel        the C++ standard library only
 #   geometry      kernel (and CGAL, Eigen: the only layer that includes CGAL)
 #   algorithms    kernel
+#   c             kernel, algorithms (the C API for firmware; the Cortex-M image builds its source)
 #   mpi           (MPI only)
 #   devices       kernel, geometry (the map files), algorithms
 #   testing       kernel, geometry, algorithms, mpi (the campaign's ranks)
@@ -13,7 +14,7 @@
 #
 # DESIGN.md draws experiments and devices side by side; here experiments sits above devices (paper
 # 002's marker-floor experiment runs the robot's pilot and camera from devices/stc_floor). Tools
-# (tests/, bench/, fuzz/, determinism/, proofs/) may use any layer.
+# (tests/, bench/, fuzz/, determinism/, proofs/, mcu/, examples/) may use any layer.
 #
 # Held two ways: antkit_check_layer_links() below refuses, at configure time, a layer target's
 # link line against this table; and the ctest layers.includes (cmake/check_layers.cmake) reads every
@@ -22,10 +23,11 @@
 # geometry's include root (geometry/include/antkit/kernel/), which every layer reaches through the
 # kernel, so a target can include a header of a layer it does not link; a kernel folder with a
 # root of its own is issue 31's next step (it recompiles everything).
-set(ANTKIT_LAYERS kernel geometry algorithms mpi devices testing experiments reports python cli)
+set(ANTKIT_LAYERS kernel geometry algorithms c mpi devices testing experiments reports python cli)
 set(ANTKIT_LAYER_USES_kernel "")
 set(ANTKIT_LAYER_USES_geometry kernel)
 set(ANTKIT_LAYER_USES_algorithms kernel)
+set(ANTKIT_LAYER_USES_c kernel algorithms)
 set(ANTKIT_LAYER_USES_mpi "")
 set(ANTKIT_LAYER_USES_devices kernel geometry algorithms)
 set(ANTKIT_LAYER_USES_testing kernel geometry algorithms mpi)
@@ -36,13 +38,14 @@ set(ANTKIT_LAYER_USES_cli kernel geometry algorithms mpi devices testing experim
 # The source folders of each layer (a file belongs to the layer of the longest folder that holds it).
 set(ANTKIT_LAYER_DIRS_kernel geometry/include/antkit/kernel)
 set(ANTKIT_LAYER_DIRS_geometry geometry)
-foreach(layer IN ITEMS algorithms mpi devices testing experiments reports python cli)
+foreach(layer IN ITEMS algorithms c mpi devices testing experiments reports python cli)
   set(ANTKIT_LAYER_DIRS_${layer} ${layer})
 endforeach()
 # The header folders (antkit/<name>/) each layer owns.
 set(ANTKIT_LAYER_HEADERS_kernel kernel)
 set(ANTKIT_LAYER_HEADERS_geometry geometry maps)
 set(ANTKIT_LAYER_HEADERS_algorithms algorithms buffon frontier los stc uniform)
+set(ANTKIT_LAYER_HEADERS_c c)
 set(ANTKIT_LAYER_HEADERS_mpi mpi)
 set(ANTKIT_LAYER_HEADERS_devices devices)
 set(ANTKIT_LAYER_HEADERS_testing testing campaign)
@@ -54,6 +57,7 @@ set(ANTKIT_LAYER_HEADERS_cli "")
 set(ANTKIT_LAYER_TARGETS_kernel antkit_kernel)
 set(ANTKIT_LAYER_TARGETS_geometry antkit_geometry)
 set(ANTKIT_LAYER_TARGETS_algorithms antkit_algorithms)
+set(ANTKIT_LAYER_TARGETS_c antkit_c)
 set(ANTKIT_LAYER_TARGETS_mpi antkit_mpi)
 set(ANTKIT_LAYER_TARGETS_devices antkit_devices)
 set(ANTKIT_LAYER_TARGETS_testing antkit_testing antkit_campaign)

@@ -14,6 +14,8 @@ packages=(
   catch2 librapidcheck-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev jq
   libz3-dev coq libcairo2-dev
   g++-s390x-linux-gnu qemu-user
+  gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm
+  g++-arm-linux-gnueabihf
   libopenmpi-dev openmpi-bin
   time
 )

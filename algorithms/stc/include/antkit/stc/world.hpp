@@ -2,21 +2,16 @@
 // The simulated body the STC controllers run in (DESIGN.md: a body turns commands into motion and
 // produces the next observation), and one function that runs a variant to the end.
 //
-// The world holds the sub-cell map, the robot's sub-cell, the marks on the floor (sub-cell marks
-// for `ant`, lit edges for `ant-edge`) and how often each sub-cell was entered. Marker noise lives
-// here, on the sensing side: each mark bit the robot reads is misread (a missed mark or a phantom)
-// with probability noise.ppm / 1'000'000, drawn from the keyed stream
-// (seed, kNoiseExperiment, trial, robot 0, kNoisePurpose). The controllers stay deterministic
-// functions of what they read.
-//
-// Trace hash (DESIGN.md rule 5), over the canonical little-endian stream:
-//   u32 width, u32 height (sub-cells), i32 start.x, i32 start.y, then per position of the tour
-//   (the start first) i32 x, i32 y.
-// Only positions enter it, so two variants that produce the same tour have the same hash; that is
-// invariant 5 read off one number.
+// The world owns the storage of the floor (floor.hpp: the sub-cell map, the robot's sub-cell, the
+// marks on the floor, sub-cell marks for `ant` and lit edges for `ant-edge`, which sub-cells were
+// entered, and the marker noise) and steps it with the floor's functions, the very ones the
+// Cortex-M image runs (mcu/). The trace hash of a tour is defined in floor.hpp (tour_hash_begin,
+// tour_hash_add): only positions enter it, so two variants that produce the same tour have the same
+// hash; that is invariant 5 read off one number.
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/random.hpp>
 #include <antkit/stc/ant.hpp>
+#include <antkit/stc/floor.hpp>
 #include <antkit/stc/online.hpp>
 #include <antkit/stc/subcell.hpp>
 #include <cstdint>
@@ -39,19 +34,9 @@ inline constexpr std::array<Variant, 5> kVariants{Variant::Offline, Variant::Onl
   return v != Variant::Full;
 }
 
-// Keys of the noise stream.
-inline constexpr std::uint64_t kNoiseExperiment = 3;       // issue 3
-inline constexpr std::uint64_t kNoisePurpose = 0x6D61726B; // "mark"
-
-struct NoiseModel {
-  std::uint32_t ppm = 0; // misread probability, parts per million (0 .. 1'000'000)
-  std::uint64_t seed = 0;
-  std::uint64_t trial = 0;
-};
-
-// What the robot leaves when a command says `mark`: a mark on the sub-cell it leaves (`ant`), or
-// the lit edge behind it (`ant-edge`, the paper's real robot).
-enum class Marker : std::uint8_t { WholeSubCell, Edge };
+// Fills `bits` (floor_size(map.width(), map.height()).bit_bytes bytes) with the map's free
+// sub-cells of the cell area, in the layout of Floor's free_bits.
+void fill_free_bits(const kernel::OccupancyGrid& map, std::span<std::uint8_t> bits) noexcept;
 
 class StcWorld {
 public:
@@ -60,72 +45,42 @@ public:
            Marker marker = Marker::WholeSubCell) {
     reset(map, start, noise, marker);
   }
+  // StcWorld owns the floor's storage; copying it would leave the copy's floor on this one's.
+  StcWorld(const StcWorld&) = delete;
+  StcWorld& operator=(const StcWorld&) = delete;
+  StcWorld(StcWorld&&) noexcept = default; // the vectors' buffers, and so the floor's, move along
+  StcWorld& operator=(StcWorld&&) noexcept = default;
   // Starts over on a map (reusing the buffers: the exhaustive tests run millions of tours).
   // The start must be a free sub-cell inside the cell area (the runners check).
   void reset(const kernel::OccupancyGrid& map, SubCell start, NoiseModel noise = {},
              Marker marker = Marker::WholeSubCell);
 
-  [[nodiscard]] CellObservation observe_cells() const noexcept;
-  [[nodiscard]] MarkObservation observe_marks() noexcept;
-  [[nodiscard]] EdgeObservation observe_edges() noexcept;
+  // The floor's step (floor.hpp), over this world's storage.
+  [[nodiscard]] Floor& floor() noexcept { return floor_; }
+  [[nodiscard]] CellObservation observe_cells() const noexcept { return floor_.observe_cells(); }
+  [[nodiscard]] MarkObservation observe_marks() noexcept { return floor_.observe_marks(); }
+  [[nodiscard]] EdgeObservation observe_edges() noexcept { return floor_.observe_edges(); }
+  bool apply(const Command& command) noexcept { return floor_.apply(command); }
+  [[nodiscard]] SubCell position() const noexcept { return floor_.position(); }
+  [[nodiscard]] bool sub_free(SubCell s) const noexcept { return floor_.sub_free(s); }
+  [[nodiscard]] bool marked(SubCell s) const noexcept { return floor_.marked(s); }
+  [[nodiscard]] std::uint16_t cell_edges(Cell c) const noexcept { return floor_.cell_edges(c); }
+  void light_edge(SubCell s, int d) noexcept { floor_.light_edge(s, d); }
+  [[nodiscard]] std::int64_t covered() const noexcept { return floor_.covered(); }
+  [[nodiscard]] std::int64_t repeats() const noexcept { return floor_.repeats(); }
+  [[nodiscard]] std::int32_t width() const noexcept { return floor_.width(); }
+  [[nodiscard]] std::int32_t height() const noexcept { return floor_.height(); }
 
-  // Carries out a command: leaves the mark, then moves. Returns false, without moving, for Stop
-  // and for a move off the cell area or into a sub-cell that is not free.
-  bool apply(const Command& command) noexcept;
-
-  [[nodiscard]] SubCell position() const noexcept { return position_; }
   // Sub-cells reachable from the robot's position: 4 x the free cells 4-connected to its cell
   // (whole_cells), or the free sub-cells of the cell area 4-connected to it.
   [[nodiscard]] std::int64_t reachable_subcells(bool whole_cells);
-  [[nodiscard]] bool sub_free(SubCell s) const noexcept;
-  [[nodiscard]] bool marked(SubCell s) const noexcept {
-    return ((cell_marks(cell_of(s)) >> quadrant_of(s)) & 1) != 0;
-  }
-  // The 12-bit edge mask of a cell (bits as documented in ant.hpp).
-  [[nodiscard]] std::uint16_t cell_edges(Cell c) const noexcept;
-  // Lights the edge of sub-cell s (inside the cell area) in direction d.
-  void light_edge(SubCell s, int d) noexcept;
-  // Sub-cells entered at least once, and entries into a sub-cell entered before.
-  [[nodiscard]] std::int64_t covered() const noexcept { return covered_; }
-  [[nodiscard]] std::int64_t repeats() const noexcept { return repeats_; }
-  [[nodiscard]] std::int32_t width() const noexcept { return width_; }
-  [[nodiscard]] std::int32_t height() const noexcept { return height_; }
 
 private:
-  [[nodiscard]] std::size_t index(SubCell s) const noexcept {
-    return static_cast<std::size_t>(s.y) * static_cast<std::size_t>(width_) +
-           static_cast<std::size_t>(s.x);
-  }
-  // Index into the cell arrays, which have a one-cell border.
-  [[nodiscard]] std::size_t cell_index(Cell c) const noexcept {
-    return static_cast<std::size_t>(c.y + 1) * stride_ + static_cast<std::size_t>(c.x + 1);
-  }
-  [[nodiscard]] std::uint8_t cell_marks(Cell c) const noexcept;
-  std::uint32_t misread(std::uint32_t bits, int count) noexcept;
-  void enter(SubCell s) noexcept;
-
-  std::int32_t width_ = 0, height_ = 0;
-  CellGridShape shape_{};
-  std::size_t stride_ = 2;
-  std::array<std::size_t, 4> offset_{}; // cell index steps E, N, W, S
-  Marker marker_ = Marker::WholeSubCell;
-  std::vector<std::uint8_t> free_;      // per sub-cell, inside the cell area only
-  std::vector<std::uint8_t> cell_free_; // per cell, 0 on the border
-  // The floor, per cell (so that one observation reads five bytes, not twenty): bit q of marks_
-  // is sub-cell q's mark; edges_ holds each cell's twelve edges as documented in ant.hpp (an
-  // exterior edge is stored in both cells it separates).
-  std::vector<std::uint8_t> marks_;
-  // Bit 7 of marks_ and bit 15 of edges_ copy cell_free_ (never lit: marks use bits 0-3, edges
-  // 0-11), so an observation reads the neighbours' freedom from the words it loads anyway instead
-  // of five more bytes from cell_free_ (observe_cells was 15 % of an ant-edge run).
+  std::vector<std::uint8_t> free_bits_, entered_bits_, marks_;
   std::vector<std::uint16_t> edges_;
-  std::vector<std::uint8_t> entered_; // per sub-cell
+  Floor floor_;
   std::vector<std::uint8_t> scratch_;
   std::vector<Cell> queue_;
-  std::int64_t covered_ = 0, repeats_ = 0;
-  SubCell position_{};
-  NoiseModel noise_{};
-  kernel::Stream stream_{0};
 };
 
 struct RunOptions {
@@ -163,7 +118,18 @@ struct RunResult {
 RunResult run_stc(const kernel::OccupancyGrid& map, SubCell start, Variant variant,
                   const RunOptions& options = {});
 
-// The trace hash above of a tour given as its positions, the start first (what a robot that
+// Throws kernel::InputError("start", ...) unless `start` is a place `variant` can start from: a
+// free sub-cell of the cell area, in a free cell for the exact variants (run_stc checks this
+// first).
+void check_start(const kernel::OccupancyGrid& map, SubCell start, Variant variant);
+
+// The Cortex-M image's input for one run of `ant` or `ant-edge` (mcu_input.hpp): the start is
+// checked as run_stc checks it (InputError "start"); InputError "variant" for another variant, and
+// "map" when its floor would not fit the image's arena (the message gives both sizes).
+std::vector<std::uint8_t> mcu_input(const kernel::OccupancyGrid& map, SubCell start,
+                                    Variant variant, NoiseModel noise = {});
+
+// The trace hash (floor.hpp) of a tour given as its positions, the start first (what a robot that
 // reports its path, such as the marker-floor robot, compares with run_stc's hash).
 std::uint64_t tour_hash(std::int32_t width, std::int32_t height, std::span<const SubCell> path);
 

@@ -1,0 +1,103 @@
+#pragma once
+// The input of the Cortex-M image (mcu/, scripts/run-on-mcu.sh): one marker STC run, as bytes the
+// host prepares (`antkit stc-mcu-input`) and the chip reads through semihosting. Freestanding: the
+// chip's reader is this header; the host's writer is mcu_input() in world.hpp.
+//
+// Little-endian, 48 bytes of header, then the map:
+//   0  char[8] "ANTKMCU1"
+//   8  u32     marker: 1 ant (sub-cell marks), 2 ant-edge (lit edges)
+//  12  i32     width, 16 i32 height: the map in sub-cells
+//  20  i32     start x, 24 i32 start y
+//  28  u32     noise: misread probability in parts per million
+//  32  u64     noise seed, 40 u64 noise trial
+//  48  the free sub-cells of the cell area, floor_size(width, height).bit_bytes bytes, in the
+//      layout of Floor's free_bits (floor.hpp)
+// The image keeps its floor in one static array of kMcuFloorBytes; a map whose floor needs more
+// (floor_bytes) is refused on the host, with the limit in the message, and again on the chip.
+#include <antkit/stc/floor.hpp>
+#include <cstddef>
+#include <cstdint>
+
+namespace antkit::stc {
+
+inline constexpr char kMcuMagic[8] = {'A', 'N', 'T', 'K', 'M', 'C', 'U', '1'};
+inline constexpr std::size_t kMcuHeaderBytes = 48;
+// The image's floor arena: the STM32F405's 128 KiB of SRAM less 16 KiB for the stack, the
+// image's other data and the input header (mcu/netduinoplus2.ld).
+inline constexpr std::size_t kMcuFloorBytes = 112 * 1024;
+// The largest map side the input accepts (the map formats' own cap, maps/map_io.hpp, is larger;
+// a floor this size would not fit the arena anyway).
+inline constexpr std::int32_t kMcuMaxSide = 1 << 14;
+
+struct McuRun {
+  Marker marker = Marker::WholeSubCell;
+  std::int32_t width = 0, height = 0;
+  SubCell start{};
+  NoiseModel noise{};
+};
+
+enum class McuInputError : std::uint8_t {
+  None,
+  Short,    // fewer bytes than the header
+  Magic,    // not an antkit Cortex-M input
+  Marker,   // a marker code other than 1 or 2
+  Size,     // width or height out of [2, kMcuMaxSide]
+  Start,    // the start outside the cell area
+  TooLarge, // the floor needs more than kMcuFloorBytes
+};
+
+[[nodiscard]] constexpr const char* describe(McuInputError e) noexcept {
+  switch (e) {
+  case McuInputError::None:
+    return "ok";
+  case McuInputError::Short:
+    return "shorter than the 48-byte header";
+  case McuInputError::Magic:
+    return "not an antkit Cortex-M input (magic ANTKMCU1)";
+  case McuInputError::Marker:
+    return "marker is neither 1 (ant) nor 2 (ant-edge)";
+  case McuInputError::Size:
+    return "width or height outside [2, 16384]";
+  case McuInputError::Start:
+    return "start outside the map's cells";
+  case McuInputError::TooLarge:
+    return "the floor needs more than the image's 114688 bytes";
+  }
+  return "?";
+}
+
+namespace detail {
+constexpr std::uint64_t le(const std::uint8_t* p, int bytes) noexcept {
+  std::uint64_t v = 0;
+  for (int i = bytes - 1; i >= 0; --i) v = (v << 8) | p[i];
+  return v;
+}
+} // namespace detail
+
+// Reads the header; the map's bytes follow it (floor_size(width, height).bit_bytes of them).
+[[nodiscard]] constexpr McuInputError read_mcu_header(const std::uint8_t* p, std::size_t n,
+                                                      McuRun& run) noexcept {
+  if (n < kMcuHeaderBytes) return McuInputError::Short;
+  for (int i = 0; i < 8; ++i)
+    if (p[i] != static_cast<std::uint8_t>(kMcuMagic[i])) return McuInputError::Magic;
+  const auto marker = static_cast<std::uint32_t>(detail::le(p + 8, 4));
+  if (marker != 1 && marker != 2) return McuInputError::Marker;
+  run.marker = marker == 2 ? Marker::Edge : Marker::WholeSubCell;
+  run.width = static_cast<std::int32_t>(static_cast<std::uint32_t>(detail::le(p + 12, 4)));
+  run.height = static_cast<std::int32_t>(static_cast<std::uint32_t>(detail::le(p + 16, 4)));
+  if (run.width < 2 || run.height < 2 || run.width > kMcuMaxSide || run.height > kMcuMaxSide)
+    return McuInputError::Size;
+  run.start = {static_cast<std::int32_t>(static_cast<std::uint32_t>(detail::le(p + 20, 4))),
+               static_cast<std::int32_t>(static_cast<std::uint32_t>(detail::le(p + 24, 4)))};
+  const CellGridShape shape{run.width / 2, run.height / 2};
+  if (run.start.x < 0 || run.start.y < 0 || !shape.in_bounds(cell_of(run.start)))
+    return McuInputError::Start;
+  run.noise.ppm = static_cast<std::uint32_t>(detail::le(p + 28, 4));
+  run.noise.seed = detail::le(p + 32, 8);
+  run.noise.trial = detail::le(p + 40, 8);
+  if (floor_bytes(run.width, run.height, run.marker) > kMcuFloorBytes)
+    return McuInputError::TooLarge;
+  return McuInputError::None;
+}
+
+} // namespace antkit::stc

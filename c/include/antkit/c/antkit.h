@@ -1,0 +1,113 @@
+/* antkit's C API for firmware (C99): the controllers a robot runs, and the trace hash.
+ *
+ * Each controller is a fixed-size struct, an init function and a step function that takes the
+ * robot's readings and returns its command. Nothing here allocates, blocks, throws or keeps a
+ * pointer: the state is the struct you pass, so a firmware can keep it in a static, copy it, or
+ * store it in backup RAM. The step functions are the very C++ code `antkit stc` runs (the structs
+ * hold the C++ controllers' bytes), compiled freestanding; scripts/run-on-mcu.sh runs them on an
+ * emulated Cortex-M4 and prints the same tour hash as the host (issue 27). examples/epuck2_stc.c is
+ * a complete control loop for an e-puck2.
+ *
+ * Conventions (algorithms/stc/include/antkit/stc/subcell.hpp):
+ *   - Directions, counter-clockwise as drawn on a map with y downward: 0 east, 1 north (y - 1),
+ *     2 west, 3 south (y + 1). Bit d of a mask refers to direction d.
+ *   - The floor is cut into robot-sized sub-cells; each 2 x 2 block is a cell. A sub-cell's
+ *     quadrant q names its place in its cell: 0 SE, 1 NE, 2 NW, 3 SW (antkit_stc_quadrant).
+ *   - Marks: bit q of a cell's mask is set when its sub-cell q is marked (ant), or the cell's 12
+ *     edge bits as ant.hpp documents them (ant-edge: the paper's robot lights the edge behind it).
+ *
+ * Build: link the antkit_c library (host), or compile c/src/antkit.cpp with the freestanding flags
+ * of mcu/CMakeLists.txt (-fno-exceptions -fno-rtti; no heap, no iostream) into your firmware.
+ */
+#ifndef ANTKIT_C_ANTKIT_H
+#define ANTKIT_C_ANTKIT_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define ANTKIT_C_API_VERSION 1
+
+/* ---- commands ------------------------------------------------------------------------------- */
+
+/* What a controller asks of its body: drive one sub-cell in direction `move` (ANTKIT_EAST ..
+ * ANTKIT_SOUTH), or ANTKIT_STOP (the tour is closed). `mark` non-zero: leave the variant's marker
+ * on the sub-cell being left (ant: mark that sub-cell; ant-edge: light the edge behind the robot,
+ * the one opposite `move`), before moving. */
+enum { ANTKIT_EAST = 0, ANTKIT_NORTH = 1, ANTKIT_WEST = 2, ANTKIT_SOUTH = 3, ANTKIT_STOP = 4 };
+
+typedef struct antkit_stc_command {
+  uint8_t move;
+  uint8_t mark;
+} antkit_stc_command;
+
+/* The quadrant (0 SE, 1 NE, 2 NW, 3 SW) of sub-cell (x, y). */
+int antkit_stc_quadrant(int32_t x, int32_t y);
+
+/* ---- ant-like STC (paper 002): marks on the floor are the robot's only memory -------------- */
+
+/* Two bytes: the quadrant the robot stands in, and whether it has stopped. */
+typedef struct antkit_ant_stc {
+  uint8_t opaque[2];
+} antkit_ant_stc;
+
+/* What the robot reads before each step, for its own cell and the four neighbour cells (the
+ * paper's five cells in the camera's view). free_neighbours: bit d set when the neighbour cell in
+ * direction d is free (all four sub-cells free and inside the arena). here, neighbour[d]: bit q
+ * set when sub-cell q of that cell is marked (a neighbour that is not free reads 0). */
+typedef struct antkit_mark_reading {
+  uint8_t free_neighbours;
+  uint8_t here;
+  uint8_t neighbour[4];
+} antkit_mark_reading;
+
+/* Starts a tour from the sub-cell of quadrant start_quadrant (its cell must be free). */
+void antkit_ant_stc_init(antkit_ant_stc* state, int start_quadrant);
+antkit_stc_command antkit_ant_stc_step(antkit_ant_stc* state, const antkit_mark_reading* reading);
+
+/* ---- ant-edge STC: the same decision read from lit edges (the paper's real robot) ----------- */
+
+typedef struct antkit_ant_edge_stc {
+  uint8_t opaque[2];
+} antkit_ant_edge_stc;
+
+/* here, neighbour[d]: the cell's 12 edge bits (ant.hpp): bit e its sub-cell e's cross box, bit
+ * 4 + e e's turn box, bit 8 + e e's own exterior edge in direction e. */
+typedef struct antkit_edge_reading {
+  uint8_t free_neighbours;
+  uint16_t here;
+  uint16_t neighbour[4];
+} antkit_edge_reading;
+
+void antkit_ant_edge_stc_init(antkit_ant_edge_stc* state, int start_quadrant);
+antkit_stc_command antkit_ant_edge_stc_step(antkit_ant_edge_stc* state,
+                                            const antkit_edge_reading* reading);
+
+/* ---- the trace hash (geometry/include/antkit/kernel/hash.hpp) ------------------------------- */
+
+/* A 64-bit hash over a canonical little-endian byte stream; the same value on every CPU. */
+typedef struct antkit_trace_hash {
+  uint64_t opaque[4];
+} antkit_trace_hash;
+
+void antkit_trace_hash_init(antkit_trace_hash* hash, uint64_t seed);
+void antkit_trace_hash_add_u8(antkit_trace_hash* hash, uint8_t value);
+void antkit_trace_hash_add_u32(antkit_trace_hash* hash, uint32_t value);
+void antkit_trace_hash_add_i32(antkit_trace_hash* hash, int32_t value);
+void antkit_trace_hash_add_u64(antkit_trace_hash* hash, uint64_t value);
+/* The hash of everything added so far (the hash stays usable). */
+uint64_t antkit_trace_hash_finish(const antkit_trace_hash* hash);
+
+/* An STC tour's trace hash, as `antkit stc` prints it: begin with the arena's size in sub-cells
+ * and the start, then add every position of the tour, the start first. */
+void antkit_stc_tour_hash_begin(antkit_trace_hash* hash, int32_t width, int32_t height,
+                                int32_t start_x, int32_t start_y);
+void antkit_stc_tour_hash_add(antkit_trace_hash* hash, int32_t x, int32_t y);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ANTKIT_C_ANTKIT_H */

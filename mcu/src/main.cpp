@@ -1,0 +1,164 @@
+// The Cortex-M image (issue 27): one run of ant-like STC (`ant` or `ant-edge`) on the robot's own
+// processor. It reads its input (stc/mcu_input.hpp: the map's free sub-cells, the start, the marker
+// and the noise) from the host file named on its semihosting command line, runs the controller
+// through the C API (antkit/c/antkit.h) over the floor of floor.hpp — the host's StcWorld steps
+// the same floor — and prints one JSON object: the tour's trace hash and counts, as `antkit stc
+// --format json` gives them, and the floor's bytes against the image's arena.
+//
+// Exit status (through semihosting): 0 the tour ran (whatever it found), 2 bad input (the message
+// on the host's standard output, "error: ..."), 3 a processor fault (startup.cpp).
+#include "semihost.hpp"
+#include "ticks.hpp"
+
+#include <antkit/c/antkit.h>
+#include <antkit/stc/floor.hpp>
+#include <antkit/stc/mcu_input.hpp>
+#include <cstddef>
+#include <cstdint>
+
+namespace {
+
+using namespace antkit::stc;
+namespace mcu = antkit::mcu;
+
+// The floor's storage: the only large object of the image (mcu_input.hpp).
+alignas(8) std::uint8_t g_arena[kMcuFloorBytes];
+std::uint8_t g_header[kMcuHeaderBytes];
+
+// A fixed buffer for the output, written out in one call.
+class Text {
+public:
+  Text& operator<<(const char* s) noexcept {
+    while (*s != 0 && n_ < sizeof buf_) buf_[n_++] = *s++;
+    return *this;
+  }
+  Text& operator<<(std::int64_t v) noexcept {
+    char digits[24];
+    int k = 0;
+    std::uint64_t u = v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+    do {
+      digits[k++] = static_cast<char>('0' + u % 10);
+      u /= 10;
+    } while (u != 0);
+    if (v < 0) digits[k++] = '-';
+    while (k > 0 && n_ < sizeof buf_) buf_[n_++] = digits[--k];
+    return *this;
+  }
+  Text& hex(std::uint64_t h) noexcept {
+    for (int i = 15; i >= 0 && n_ < sizeof buf_; --i)
+      buf_[n_++] = "0123456789abcdef"[(h >> (4 * i)) & 0xF];
+    return *this;
+  }
+  void flush() noexcept {
+    const std::int32_t out = mcu::open_stdout();
+    mcu::write(out, buf_, n_);
+    mcu::close(out);
+    n_ = 0;
+  }
+
+private:
+  char buf_[512];
+  std::size_t n_ = 0;
+};
+
+int refuse(const char* what, const char* why) {
+  Text t;
+  t << "error: " << what << ": " << why << "\n";
+  t.flush();
+  return 2;
+}
+
+// The C API's controllers behind the interface drive_tour expects.
+struct AntController {
+  antkit_ant_stc state;
+  explicit AntController(int q) noexcept { antkit_ant_stc_init(&state, q); }
+  Command step(const MarkObservation& o) noexcept {
+    antkit_mark_reading r{o.free_neighbours, o.here, {}};
+    for (int d = 0; d < 4; ++d) r.neighbour[d] = o.neighbour[static_cast<std::size_t>(d)];
+    const antkit_stc_command c = antkit_ant_stc_step(&state, &r);
+    return {static_cast<Move>(c.move), c.mark != 0};
+  }
+};
+
+struct AntEdgeController {
+  antkit_ant_edge_stc state;
+  explicit AntEdgeController(int q) noexcept { antkit_ant_edge_stc_init(&state, q); }
+  Command step(const EdgeObservation& o) noexcept {
+    antkit_edge_reading r{o.free_neighbours, o.here, {}};
+    for (int d = 0; d < 4; ++d) r.neighbour[d] = o.neighbour[static_cast<std::size_t>(d)];
+    const antkit_stc_command c = antkit_ant_edge_stc_step(&state, &r);
+    return {static_cast<Move>(c.move), c.mark != 0};
+  }
+};
+
+// One tour (kept out of line so that the map file shows the step path's size).
+template <class Controller, class Observe>
+__attribute__((noinline)) TourEnd tour(Floor& floor, antkit::kernel::TraceHash& hash,
+                                       std::int64_t max_moves, Observe observe) {
+  Controller controller(quadrant_of(floor.position()));
+  return drive_tour(controller, observe, floor, hash, max_moves, [](SubCell) {});
+}
+
+} // namespace
+
+int main() {
+  char line[256];
+  if (!mcu::command_line(line, sizeof line)) return refuse("command line", "longer than 255 bytes");
+  // "antkit_mcu INPUT": the input is the second word.
+  const char* path = line;
+  while (*path != 0 && *path != ' ') ++path;
+  while (*path == ' ') ++path;
+  if (*path == 0) return refuse("command line", "no input file (antkit_mcu INPUT)");
+  const std::int32_t file = mcu::open_read(path);
+  if (file < 0) return refuse(path, "cannot be opened");
+  const std::int32_t size = mcu::file_length(file);
+  McuRun run;
+  const std::size_t got = mcu::read(file, g_header, sizeof g_header);
+  if (const McuInputError e = read_mcu_header(g_header, got, run); e != McuInputError::None)
+    return refuse(path, describe(e));
+  const FloorSize fs = floor_size(run.width, run.height);
+  if (size < 0 || static_cast<std::size_t>(size) != kMcuHeaderBytes + fs.bit_bytes)
+    return refuse(path, "its length is not the header and the map's free sub-cells");
+  // The arena: free bits, entered bits, then the marker's cells (2-byte aligned for edges).
+  FloorStorage storage;
+  storage.free_bits = g_arena;
+  storage.entered_bits = g_arena + fs.bit_bytes;
+  std::uint8_t* cells = g_arena + ((2 * fs.bit_bytes + 1) & ~std::size_t{1});
+  if (run.marker == Marker::Edge)
+    storage.edges = reinterpret_cast<std::uint16_t*>(cells);
+  else
+    storage.marks = cells;
+  if (mcu::read(file, storage.free_bits, fs.bit_bytes) != fs.bit_bytes)
+    return refuse(path, "ends inside the map");
+  mcu::close(file);
+  static Floor floor;
+  floor.reset(run.width, run.height, storage, run.start, run.noise, run.marker);
+  // The start must lie in a free cell (the exact variants' rule, checked on the host too).
+  if (!floor.cell_free(cell_of(run.start)))
+    return refuse(path, "the start lies in a cell with a blocked sub-cell");
+  antkit::kernel::TraceHash hash = tour_hash_begin(run.width, run.height, run.start);
+  tour_hash_add(hash, run.start);
+  const std::int64_t max_moves = 16 * std::int64_t{run.width} * run.height + 16;
+  const bool edge = run.marker == Marker::Edge;
+  mcu::ticks_start();
+  const TourEnd end =
+      edge ? tour<AntEdgeController>(floor, hash, max_moves, [] { return floor.observe_edges(); })
+           : tour<AntController>(floor, hash, max_moves, [] { return floor.observe_marks(); });
+  const std::uint64_t ticks = mcu::ticks_now();
+  const SubCell last = floor.position();
+  const bool returned = end.closed && (last == run.start || adjacent(last, run.start));
+  Text t;
+  t << "{\"variant\": \"" << (edge ? "ant-edge" : "ant")
+    << "\", \"width\": " << std::int64_t{run.width} << ", \"height\": " << std::int64_t{run.height}
+    << ", \"start\": [" << std::int64_t{run.start.x} << ", " << std::int64_t{run.start.y}
+    << "], \"positions\": " << end.moves + 1 << ", \"covered\": " << floor.covered()
+    << ", \"repeats\": " << floor.repeats() << ", \"closed\": " << (end.closed ? "true" : "false")
+    << ", \"returned_to_start\": " << (returned ? "true" : "false") << ", \"hash\": \"";
+  t.hex(hash.finish()) << "\", \"noise_ppm\": " << std::int64_t{run.noise.ppm}
+                       << ", \"floor_bytes\": "
+                       << static_cast<std::int64_t>(floor_bytes(run.width, run.height, run.marker))
+                       << ", \"floor_limit\": " << static_cast<std::int64_t>(kMcuFloorBytes)
+                       << ", \"ticks\": " << static_cast<std::int64_t>(ticks) << "}\n";
+  t.flush();
+  return 0;
+}

@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# Runs antkit's controllers on an emulated Cortex-M4 (issue 27): QEMU's netduinoplus2 (an
+# STM32F405, the nearest model QEMU has to the e-puck2's STM32F407), the image built from mcu/ with
+# Debian's gcc-arm-none-eabi, its input and output through semihosting.
+#
+#   scripts/run-on-mcu.sh stc --map F --variant ant|ant-edge [--start X,Y] [--noise P] [--seed S]
+#
+# prints one JSON object whose hash, covered, repeats and returned_to_start equal those of
+# `antkit stc --format json` with the same arguments. The host prepares the input (`antkit
+# stc-mcu-input`: the map read, the start chosen and checked, the map's free sub-cells as bits);
+# the controller, the floor's steps and the hash run on the emulated chip. Bad input is refused by
+# the host as `antkit stc` refuses it, exit 2 with a located message; a map whose floor exceeds the
+# image's 112 KiB arena is refused with both sizes in the message.
+#
+# Options before the subcommand:
+#   --icount   run QEMU with -icount shift=0 (its virtual clock advances 1 ns per instruction, and
+#              the emulated STM32F405's SysTick counts 168 per us of it) and add to the JSON
+#              "instructions" (of the tour: ticks x 125 / 21) and "instructions_per_move". An
+#              estimate of cycles, not a measurement: QEMU counts instructions, while a real
+#              Cortex-M4 takes more than one cycle for loads, taken branches and flash wait states.
+#
+# Builds what it needs on first use: build/mcu (the image) and, unless ANTKIT_EXE names an antkit
+# binary, build/release's antkit. Exit: 0 ran, 2 bad input, 1 any other failure, 77 the cross
+# compiler or QEMU is missing (scripts/bootstrap.sh installs them).
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+
+usage() {
+  echo "usage: scripts/run-on-mcu.sh [--icount] stc --map F --variant ant|ant-edge [--start X,Y]" \
+    "[--noise P] [--seed S]" >&2
+  exit 2
+}
+
+icount=0
+while [ $# -gt 0 ] && [ "${1#--}" != "$1" ]; do
+  case "$1" in
+  --icount) icount=1 ;;
+  *) usage ;;
+  esac
+  shift
+done
+[ $# -ge 1 ] || usage
+command=$1
+shift
+case "$command" in
+stc) ;;
+buffon)
+  echo "run-on-mcu.sh: buffon: not on the chip yet (issue 27 is open: the Buffon behaviour and" \
+    "detector still use the host's containers)" >&2
+  exit 2
+  ;;
+*)
+  echo "run-on-mcu.sh: unknown command '$command' (stc)" >&2
+  exit 2
+  ;;
+esac
+
+missing=()
+for tool in arm-none-eabi-g++ qemu-system-arm cmake ninja; do
+  command -v "$tool" >/dev/null 2>&1 || missing+=("$tool")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "run-on-mcu.sh: missing ${missing[*]}: run scripts/bootstrap.sh (as root it installs" \
+    "gcc-arm-none-eabi, libstdc++-arm-none-eabi-newlib and qemu-system-arm)" >&2
+  exit 77
+fi
+
+export CCACHE_BASEDIR=$here CCACHE_NOHASHDIR=1
+log=$here/build/mcu.build.log
+mkdir -p "$here/build"
+# ANTKIT_MCU_IMAGE: an image already built (ctest passes the build tree's, which the build made).
+image=${ANTKIT_MCU_IMAGE:-$here/build/mcu/antkit_mcu.elf}
+if [ -z "${ANTKIT_MCU_IMAGE:-}" ]; then
+  if [ ! -f "$here/build/mcu/build.ninja" ]; then
+    cmake -S "$here/mcu" -B "$here/build/mcu" -G Ninja \
+      "-DCMAKE_TOOLCHAIN_FILE=$here/cmake/arm-none-eabi.cmake" >"$log" 2>&1 ||
+      { cat "$log" >&2; exit 1; }
+  fi
+  cmake --build "$here/build/mcu" >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
+fi
+
+antkit=${ANTKIT_EXE:-$here/build/release/cli/antkit}
+if [ -z "${ANTKIT_EXE:-}" ]; then
+  if [ ! -f "$here/build/release/build.ninja" ]; then
+    (cd "$here" && cmake --preset release) >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
+  fi
+  cmake --build "$here/build/release" --target antkit >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+# Bad input: antkit's located message on stderr and its exit status 2, nothing on stdout.
+"$antkit" stc-mcu-input "$@" --out "$work/input.bin" >/dev/null
+
+qemu=(qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none
+  -semihosting-config "enable=on,target=native,arg=antkit_mcu,arg=$work/input.bin"
+  -kernel "$image")
+[ $icount -eq 1 ] && qemu+=(-icount shift=0)
+status=0
+timeout 600 "${qemu[@]}" >"$work/out" 2>"$work/err" || status=$?
+if [ $status -eq 2 ]; then
+  sed 's/^error: /run-on-mcu.sh: the chip refused its input: /' "$work/out" >&2
+  exit 2
+elif [ $status -ne 0 ]; then
+  echo "run-on-mcu.sh: the image failed (QEMU exit $status)" >&2
+  cat "$work/out" "$work/err" >&2
+  exit 1
+fi
+if [ $icount -eq 1 ]; then
+  ticks=$(jq -r .ticks "$work/out")
+  moves=$(($(jq -r .positions "$work/out") - 1))
+  instructions=$((ticks * 125 / 21))
+  jq -c --argjson i "$instructions" --argjson m "$moves" \
+    '. + {instructions: $i, instructions_per_move: (if $m > 0 then ($i / $m | floor) else 0 end)}' \
+    "$work/out"
+else
+  cat "$work/out"
+fi

@@ -1,0 +1,146 @@
+// The C API (antkit/c/antkit.h) against the C++ it wraps: the same commands from the same readings,
+// the same hashes, and a whole tour driven through the C functions over the floor giving run_stc's
+// hash and counts on random maps (noisy too).
+#include <antkit/c/antkit.h>
+#include <antkit/kernel/hash.hpp>
+#include <antkit/stc/ant.hpp>
+#include <antkit/stc/floor.hpp>
+#include <antkit/stc/world.hpp>
+#include <antkit/testing/generators.hpp>
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <rapidcheck/catch.h>
+#include <vector>
+
+using namespace antkit;
+using namespace antkit::stc;
+namespace gen = antkit::testing::gen;
+
+namespace {
+
+// The C ant controller behind the C++ controller interface, for drive_tour.
+struct CAnt {
+  using Observation = MarkObservation;
+  antkit_ant_stc state{};
+  explicit CAnt(int q) { antkit_ant_stc_init(&state, q); }
+  Command step(const MarkObservation& o) {
+    antkit_mark_reading r{o.free_neighbours, o.here, {}};
+    for (int d = 0; d < 4; ++d) r.neighbour[d] = o.neighbour[static_cast<std::size_t>(d)];
+    const antkit_stc_command c = antkit_ant_stc_step(&state, &r);
+    return {static_cast<Move>(c.move), c.mark != 0};
+  }
+};
+
+struct CAntEdge {
+  using Observation = EdgeObservation;
+  antkit_ant_edge_stc state{};
+  explicit CAntEdge(int q) { antkit_ant_edge_stc_init(&state, q); }
+  Command step(const EdgeObservation& o) {
+    antkit_edge_reading r{o.free_neighbours, o.here, {}};
+    for (int d = 0; d < 4; ++d) r.neighbour[d] = o.neighbour[static_cast<std::size_t>(d)];
+    const antkit_stc_command c = antkit_ant_edge_stc_step(&state, &r);
+    return {static_cast<Move>(c.move), c.mark != 0};
+  }
+};
+
+} // namespace
+
+TEST_CASE("C API: the ant controllers give the C++ controllers' commands from any readings",
+          "[c][property]") {
+  rc::prop("ant and ant-edge, random reading sequences", [] {
+    const int q = *rc::gen::inRange(0, 4);
+    const auto steps = *rc::gen::inRange(1, 40);
+    AntStc ant(q);
+    AntEdgeStc edge(q);
+    CAnt c_ant(q);
+    CAntEdge c_edge(q);
+    for (int i = 0; i < steps; ++i) {
+      MarkObservation m;
+      m.free_neighbours = *rc::gen::inRange<std::uint8_t>(0, 16);
+      m.here = *rc::gen::inRange<std::uint8_t>(0, 16);
+      for (auto& n : m.neighbour) n = *rc::gen::inRange<std::uint8_t>(0, 16);
+      RC_ASSERT(c_ant.step(m) == ant.step(m));
+      EdgeObservation e;
+      e.free_neighbours = m.free_neighbours;
+      e.here = *rc::gen::inRange<std::uint16_t>(0, 4096);
+      for (auto& n : e.neighbour) n = *rc::gen::inRange<std::uint16_t>(0, 4096);
+      RC_ASSERT(c_edge.step(e) == edge.step(e));
+    }
+  });
+}
+
+TEST_CASE("C API: the trace hash is the kernel's, byte for byte", "[c][property]") {
+  rc::prop("random mixes of u8, u32, i32 and u64", [] {
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    const auto ops =
+        *rc::gen::container<std::vector<std::uint64_t>>(rc::gen::arbitrary<std::uint64_t>());
+    kernel::TraceHash h(seed);
+    antkit_trace_hash c;
+    antkit_trace_hash_init(&c, seed);
+    for (std::uint64_t v : ops) {
+      switch (v % 4) {
+      case 0:
+        h.add_u8(static_cast<std::uint8_t>(v >> 8));
+        antkit_trace_hash_add_u8(&c, static_cast<std::uint8_t>(v >> 8));
+        break;
+      case 1:
+        h.add_u32(static_cast<std::uint32_t>(v >> 8));
+        antkit_trace_hash_add_u32(&c, static_cast<std::uint32_t>(v >> 8));
+        break;
+      case 2:
+        h.add_i32(static_cast<std::int32_t>(v >> 16));
+        antkit_trace_hash_add_i32(&c, static_cast<std::int32_t>(v >> 16));
+        break;
+      default:
+        h.add_u64(v);
+        antkit_trace_hash_add_u64(&c, v);
+      }
+      RC_ASSERT(antkit_trace_hash_finish(&c) == h.finish());
+    }
+  });
+}
+
+TEST_CASE("C API: a tour driven through the C functions over the floor is run_stc's tour",
+          "[c][property]") {
+  rc::prop("ant and ant-edge on random maps, with and without marker noise", [] {
+    const auto [map, start] = *gen::stc_case({.partial_cells = true, .start_in_free_cell = true});
+    const bool edge = *rc::gen::arbitrary<bool>();
+    const std::uint32_t ppm = *rc::gen::element<std::uint32_t>(0, 0, 20'000, 300'000);
+    const NoiseModel noise{ppm, *rc::gen::inRange<std::uint64_t>(0, 1000), 0};
+    RunOptions options;
+    options.noise = noise;
+    const RunResult expected = run_stc(map, start, edge ? Variant::AntEdge : Variant::Ant, options);
+
+    const FloorSize size = floor_size(map.width(), map.height());
+    std::vector<std::uint8_t> free_bits(size.bit_bytes), entered(size.bit_bytes);
+    std::vector<std::uint8_t> marks(size.cells);
+    std::vector<std::uint16_t> edges(size.cells);
+    fill_free_bits(map, free_bits);
+    Floor floor;
+    floor.reset(map.width(), map.height(),
+                {free_bits.data(), entered.data(), edge ? nullptr : marks.data(),
+                 edge ? edges.data() : nullptr},
+                start, noise, edge ? Marker::Edge : Marker::WholeSubCell);
+    antkit_trace_hash h;
+    antkit_stc_tour_hash_begin(&h, map.width(), map.height(), start.x, start.y);
+    antkit_stc_tour_hash_add(&h, start.x, start.y);
+    kernel::TraceHash unused;
+    const std::int64_t max_moves = 16 * std::int64_t{map.width()} * map.height() + 16;
+    TourEnd end;
+    auto on = [&](SubCell s) { antkit_stc_tour_hash_add(&h, s.x, s.y); };
+    if (edge) {
+      CAntEdge c(antkit_stc_quadrant(start.x, start.y));
+      end = drive_tour(
+          c, [&] { return floor.observe_edges(); }, floor, unused, max_moves, on);
+    } else {
+      CAnt c(antkit_stc_quadrant(start.x, start.y));
+      end = drive_tour(
+          c, [&] { return floor.observe_marks(); }, floor, unused, max_moves, on);
+    }
+    RC_ASSERT(antkit_trace_hash_finish(&h) == expected.hash);
+    RC_ASSERT(end.moves + 1 == expected.positions);
+    RC_ASSERT(end.closed == expected.closed);
+    RC_ASSERT(floor.covered() == expected.covered);
+    RC_ASSERT(floor.repeats() == expected.repeats);
+  });
+}

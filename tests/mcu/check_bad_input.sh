@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# check_bad_input.sh MAPS: bad input to scripts/run-on-mcu.sh is refused with exit 2 and a located
+# message, on the host (the options, as antkit stc refuses them) and on the chip (an input file it
+# cannot read: QEMU run directly on a corrupt file).
+set -uo pipefail
+[ -z "${ANTKIT_MCU_MISSING:-}" ] || { echo "skipped: no arm-none-eabi-g++ or qemu-system-arm"; exit 77; }
+here=$(cd "$(dirname "$0")/../.." && pwd)
+maps=$1
+run=$here/scripts/run-on-mcu.sh
+failed=0
+expect() { # expect NAME PATTERN COMMAND...: exit 2, stderr matching PATTERN, nothing on stdout
+  local name=$1 pattern=$2
+  shift 2
+  local out err status
+  err=$(mktemp)
+  out=$("$@" 2>"$err")
+  status=$?
+  if [ $status -eq 2 ] && [ -z "$out" ] && grep -Eq "$pattern" "$err"; then
+    echo "ok   $name: $(head -1 "$err")"
+  else
+    echo "FAIL $name: exit $status, stdout '$out', stderr '$(cat "$err")'"
+    failed=1
+  fi
+  rm -f "$err"
+}
+den=$maps/movingai/den312d.map
+expect missing-map "error: .*nope\.map: cannot open" "$run" stc --map nope.map --variant ant
+expect start-in-wall "error: --start: .*inside an obstacle" "$run" stc --map "$den" --variant ant --start 0,0
+expect start-off-map "error: --start: .*outside the map" "$run" stc --map "$den" --variant ant --start 900,2
+expect bad-variant "error: --variant" "$run" stc --map "$den" --variant sideways
+expect host-only-variant "error: --variant: .*host only" "$run" stc --map "$den" --variant offline
+expect bad-noise "error: --noise" "$run" stc --map "$den" --variant ant --noise 2
+expect unknown-command "unknown command" "$run" sweep --map "$den"
+
+# The chip's own refusals: a file that is not an input, and one cut short.
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+chip() { # chip FILE: the image on FILE, its exit status and output
+  timeout 60 qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none \
+    -semihosting-config "enable=on,target=native,arg=antkit_mcu,arg=$1" -kernel "$ANTKIT_MCU_IMAGE"
+}
+printf 'this is not an antkit input, but it is long enough to hold a header\n' >"$work/text"
+"$ANTKIT_EXE" stc-mcu-input --map "$den" --variant ant --out "$work/good" >/dev/null
+head -c 100 "$work/good" >"$work/short"
+for f in text short; do
+  out=$(chip "$work/$f")
+  status=$?
+  if [ $status -eq 2 ] && [[ "$out" == "error: $work/$f: "* ]]; then
+    echo "ok   chip-$f: $out"
+  else
+    echo "FAIL chip-$f: exit $status: $out"
+    failed=1
+  fi
+done
+exit $failed
