@@ -13,6 +13,10 @@
 //   antkit_determinism --maps DIR --trace NAME    one line per step of NAME's run: the step, a
 //                                                 hash of the states up to it, and its state (for
 //                                                 finding the first step where two builds part)
+//   antkit_determinism --maps DIR --mcu-inputs DIR2
+//                                                 writes the Cortex-M image's input of every STC
+//                                                 scenario it runs into DIR2, "name file" per line
+//                                                 (the matrix's cortex-m4 configuration)
 //   antkit_determinism --teeth native-endian [--check FILE | --trace teeth/native-endian]
 //                                                 Buffon's first trail hashed over the bytes of its
 //                                                 coordinates as this CPU stores them: FILE's hash
@@ -29,10 +33,12 @@
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/los/explore.hpp>
 #include <antkit/maps/map_io.hpp>
+#include <antkit/stc/mcu_input.hpp>
 #include <antkit/stc/world.hpp>
 #include <antkit/uniform/coverage.hpp>
 #include <antkit/uniform/scenario.hpp>
 #include <antkit/uniform/world.hpp>
+#include <array>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -283,8 +289,11 @@ Cell stc_start(const OccupancyGrid& g) {
   return best;
 }
 
+constexpr std::array<const char*, 3> kStcMaps{"den312d", "warehouse-10-20-10-2-1", "ht_chantry"};
+constexpr stc::NoiseModel kStcNoise{20000, 7, 0}; // the noisy scenarios' misreads
+
 void add_stc(std::vector<Scenario>& out, MapShelf& shelf) {
-  for (const char* map : {"den312d", "warehouse-10-20-10-2-1", "ht_chantry"})
+  for (const char* map : kStcMaps)
     for (const auto variant : stc::kVariants)
       for (const bool noisy : {false, true}) {
         if (noisy && variant != stc::Variant::Ant && variant != stc::Variant::AntEdge) continue;
@@ -293,7 +302,7 @@ void add_stc(std::vector<Scenario>& out, MapShelf& shelf) {
         out.push_back({name, [variant, noisy, map, &shelf](unsigned, Trace& trace) {
                          const auto& grid = shelf.get(map);
                          stc::RunOptions o;
-                         if (noisy) o.noise = {20000, 7, 0};
+                         if (noisy) o.noise = kStcNoise;
                          o.record_path = trace.on();
                          const auto r = stc::run_stc(grid, stc_start(grid), variant, o);
                          for (const auto s : r.path) trace.step(cell_text({s.x, s.y}));
@@ -413,10 +422,34 @@ std::uint64_t native_endian_hash(Trace& trace) {
   return h.finish();
 }
 
+// The Cortex-M image's inputs (stc/mcu_input.hpp) for the STC scenarios it runs (ant and ant-edge,
+// with and without noise: the same maps, starts and noise), one file per scenario in `dir`, named
+// by the scenario with '/' as '_'; prints "name file" per scenario.
+void write_mcu_inputs(MapShelf& shelf, const std::string& dir) {
+  for (const char* map : kStcMaps)
+    for (const auto variant : {stc::Variant::Ant, stc::Variant::AntEdge})
+      for (const bool noisy : {false, true}) {
+        const std::string name = "stc/" + std::string(stc::variant_name(variant)) +
+                                 (noisy ? "-noise0.02" : "") + "/" + map;
+        const auto& grid = shelf.get(map);
+        const auto bytes =
+            stc::mcu_input(grid, stc_start(grid), variant, noisy ? kStcNoise : stc::NoiseModel{});
+        std::string file = dir + "/" + name;
+        for (auto k = file.size() - name.size(); k < file.size(); ++k)
+          if (file[k] == '/') file[k] = '_';
+        std::ofstream out(file, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(bytes.data()),
+                  static_cast<std::streamsize>(bytes.size()));
+        if (!out.flush()) throw kernel::InputError(file, "cannot write");
+        std::printf("%s %s\n", name.c_str(), file.c_str());
+      }
+}
+
 int usage(const std::string& why) {
   std::fprintf(stderr,
                "antkit_determinism: %s\nusage: antkit_determinism --maps DIR [--threads T] "
-               "[--check FILE | --trace NAME | --list]\n       antkit_determinism --teeth "
+               "[--check FILE | --trace NAME | --list | --mcu-inputs DIR]\n       "
+               "antkit_determinism --teeth "
                "native-endian [--check FILE | --trace teeth/native-endian]\n",
                why.c_str());
   return 2;
@@ -470,7 +503,7 @@ int check_against(const std::map<std::string, std::string>& got, const std::stri
 
 int main(int argc, char** argv) {
   unsigned threads = 1;
-  std::string maps_dir, check, trace_name, teeth;
+  std::string maps_dir, check, trace_name, teeth, mcu_dir;
   bool list = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -494,6 +527,8 @@ int main(int argc, char** argv) {
       trace_name = v;
     } else if (a == "--teeth") {
       teeth = v;
+    } else if (a == "--mcu-inputs") {
+      mcu_dir = v;
     } else {
       return usage("unknown option " + a);
     }
@@ -511,6 +546,10 @@ int main(int argc, char** argv) {
       if (!trace_name.empty()) return 0;
     } else {
       MapShelf shelf(maps_dir);
+      if (!mcu_dir.empty()) {
+        write_mcu_inputs(shelf, mcu_dir);
+        return 0;
+      }
       const auto all = scenarios(shelf);
       if (list) {
         for (const auto& s : all) std::printf("%s\n", s.name.c_str());

@@ -4,10 +4,13 @@
 # every one of them to print every golden hash of determinism/golden.txt at 1, 2 and 8 threads.
 #
 #   scripts/determinism.sh            the whole matrix: gcc-12 -O0 and -O3, clang-14 -O0 and -O3,
-#                                     s390x (big-endian, g++-s390x-linux-gnu, run under qemu-s390x)
-#   scripts/determinism.sh --ci       what .ci/run runs: clang-14 -O0 and s390x (the default gcc -O2
-#                                     build checks the same golden file under ctest, label
-#                                     determinism)
+#                                     s390x (big-endian, g++-s390x-linux-gnu, run under qemu-s390x),
+#                                     armhf (32-bit ARM Linux, g++-arm-linux-gnueabihf, run under
+#                                     qemu-arm), cortex-m4 (the Cortex-M image of mcu/ under QEMU's
+#                                     netduinoplus2, issue 27: every scenario that runs on the chip)
+#   scripts/determinism.sh --ci       what .ci/run runs: clang-14 -O0, s390x and cortex-m4 (the
+#                                     default gcc -O2 build checks the same golden file under
+#                                     ctest, label determinism)
 #   scripts/determinism.sh CONFIG...  the named configurations only
 #
 # Every configuration compiles with -ffp-contract=off (the kernel's rule 7, also carried by
@@ -15,6 +18,12 @@
 # its trace (--trace: each step's state and a chained hash of the states so far) differs from the
 # reference build's, with both states. The teeth: the s390x build's native-endian hash must differ
 # from the little-endian golden value, and the script shows where its trace first parts.
+#
+# cortex-m4 is not a build of antkit_determinism: the chip runs the STC scenarios of ant and
+# ant-edge (with and without marker noise, on the three maps), from inputs the clang-O0 build writes
+# (--mcu-inputs: the same map, start and noise), and must print their golden hashes. The other
+# scenarios (Buffon, LOS, online and offline STC, uniform coverage, the marker-floor robot) do not
+# run on the chip yet (issue 27 is open); the configuration names how many ran.
 #
 # Builds go to build/determinism/<config> (ccache when installed). Exit status: 0 every
 # configuration gives every golden hash and the teeth bite, 1 otherwise, 2 bad usage.
@@ -25,8 +34,8 @@ cd "$here"
 golden=determinism/golden.txt
 maps=${ANTKIT_MAPS:-$here/data/maps}
 jobs=${JOBS:-$(nproc)}
-all_configs=(gcc-O0 gcc-O3 clang-O0 clang-O3 s390x)
-ci_configs=(clang-O0 s390x)
+all_configs=(gcc-O0 gcc-O3 clang-O0 clang-O3 s390x armhf cortex-m4)
+ci_configs=(clang-O0 s390x cortex-m4)
 
 configs=()
 if [ $# -eq 0 ]; then
@@ -59,6 +68,11 @@ config_args() {
     compiler=s390x-linux-gnu-g++-12 flags="-O2 -ffp-contract=off"
     extra=(-DCMAKE_SYSTEM_NAME=Linux -DCMAKE_SYSTEM_PROCESSOR=s390x -DCMAKE_EXE_LINKER_FLAGS=-static)
     ;;
+  armhf)
+    compiler=arm-linux-gnueabihf-g++-12 flags="-O2 -ffp-contract=off"
+    extra=(-DCMAKE_SYSTEM_NAME=Linux -DCMAKE_SYSTEM_PROCESSOR=arm -DCMAKE_EXE_LINKER_FLAGS=-static)
+    ;;
+  cortex-m4) compiler=arm-none-eabi-g++ flags="-O2 (mcu/CMakeLists.txt)" ;;
   esac
 }
 
@@ -69,6 +83,8 @@ run() {
   local exe=build/determinism/$config/determinism/antkit_determinism
   if [ "$config" = s390x ]; then
     qemu-s390x "$exe" "$@"
+  elif [ "$config" = armhf ]; then
+    qemu-arm "$exe" "$@"
   else
     "$exe" "$@"
   fi
@@ -112,6 +128,40 @@ first_difference() {
   echo "     $reference: $(sed -n "${line}p" "$b" | cut -d' ' -f2-)"
 }
 
+# cortex_m4: the chip's configuration (see the top). Prints a line per scenario run, "MISMATCH"
+# lines for a hash that is not golden; returns 1 on a mismatch or a failure.
+cortex_m4() {
+  local dir=build/determinism/cortex-m4 host=clang-O0
+  if ! command -v arm-none-eabi-g++ >/dev/null || ! command -v qemu-system-arm >/dev/null; then
+    echo "   arm-none-eabi-g++ or qemu-system-arm is missing (scripts/bootstrap.sh installs them)"
+    return 1
+  fi
+  build "$host" || { echo "   the host build ($host) that writes the inputs failed"; return 1; }
+  if [ ! -f "$dir/build.ninja" ]; then
+    cmake -S mcu -B "$dir" -G Ninja "-DCMAKE_TOOLCHAIN_FILE=$here/cmake/arm-none-eabi.cmake" \
+      >"$dir.configure.log" 2>&1 || { cat "$dir.configure.log"; return 1; }
+  fi
+  cmake --build "$dir" >"$dir.build.log" 2>&1 || { tail -40 "$dir.build.log"; return 1; }
+  mkdir -p "$dir/inputs"
+  local list bad=0 ran=0 name file out hash golden_hash
+  list=$(run "$host" --maps "$maps" --mcu-inputs "$dir/inputs") || return 1
+  while read -r name file; do
+    out=$(timeout 300 qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none \
+      -semihosting-config "enable=on,target=native,arg=antkit_mcu,arg=$file" \
+      -kernel "$dir/antkit_mcu.elf") || { echo "   $name: the image failed: $out"; bad=1; continue; }
+    hash=$(sed -n 's/.*"hash": "\([0-9a-f]*\)".*/\1/p' <<<"$out")
+    golden_hash=$(awk -v n="$name" '$1 == n { print $2 }' "$golden")
+    ran=$((ran + 1))
+    if [ -z "$hash" ] || [ "$hash" != "$golden_hash" ]; then
+      echo "   MISMATCH $name: golden $golden_hash, the chip ${hash:-printed no hash}"
+      bad=1
+    fi
+  done <<<"$list"
+  echo "   $ran scenarios on the chip (of $(grep -cvE '^(#|$)' "$golden") golden lines;" \
+    "the rest do not run on it yet)"
+  [ $bad -eq 0 ] && [ $ran -gt 0 ]
+}
+
 failed=0
 reference=""
 declare -A verdict
@@ -122,6 +172,15 @@ for config in "${configs[@]}"; do
   t0=$SECONDS
   config_args "$config"
   echo "== $config: $compiler $flags ${extra[*]}"
+  if [ "$config" = cortex-m4 ]; then
+    if cortex_m4; then
+      verdict[$config]="every STC scenario the chip runs, hash for hash ($((SECONDS - t0)) s)"
+    else
+      verdict[$config]="MISMATCH or failure (above)"
+      failed=1
+    fi
+    continue
+  fi
   if ! build "$config"; then
     echo "   BUILD FAILED"
     verdict[$config]="build failed"
