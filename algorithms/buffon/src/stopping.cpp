@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <antkit/buffon/stopping.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/kernel/int_ops.hpp>
 #include <array>
 #include <string>
 
@@ -12,8 +13,8 @@ namespace {
 constexpr std::uint64_t kD = kPrecisionDenominator;
 constexpr int kK = PrecisionMonitor::kBatches;
 
-__extension__ typedef unsigned __int128 u128; // GCC and Clang; -Wpedantic wants the marker
-using U256 = std::array<std::uint64_t, 4>;    // little-endian 64-bit limbs
+using u128 = antkit::kernel::uint128;      // int_ops.hpp: __int128, or soft::Int on 32-bit
+using U256 = std::array<std::uint64_t, 4>; // little-endian 64-bit limbs
 
 U256 mul(u128 a, u128 b) {
   const std::uint64_t a0 = static_cast<std::uint64_t>(a), a1 = static_cast<std::uint64_t>(a >> 64);

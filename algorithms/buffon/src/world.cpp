@@ -10,7 +10,7 @@ namespace antkit::buffon {
 
 namespace {
 
-__extension__ using i128 = __int128;
+using i128 = kernel::int128; // int_ops.hpp: __int128, or soft::Int on 32-bit targets
 
 constexpr std::int64_t kUnit = 65536;
 // A wall is registered in every bucket within this distance of it: body radius + sensor range +

@@ -1,7 +1,6 @@
 #pragma once
-// The integer policy the kernel's arithmetic is written against (DESIGN.md, rule 6).
-//
-// Every arithmetic kernel (fixed.hpp, angle.hpp) is a function template over its integer types and
+// The integer policy the kernel's arithmetic is written against (DESIGN.md, rule 6). Every
+// arithmetic kernel (fixed.hpp, angle.hpp) is a function template over its integer types and
 // touches them only through the operations below, never through a raw `+` or `*` that could
 // overflow. For the machine integers (std::int8_t ... std::int64_t, their unsigned partners and the
 // 128-bit pair) this header gives each operation a definition that
@@ -9,26 +8,22 @@
 //     behaviour, and the same bits on every compiler and CPU), and
 //   * with ANTKIT_CHECKED_ARITHMETIC=1 (the `debug` preset) throws ArithmeticRangeError when the
 //     exact result does not fit, so that leaving a documented range is detected instead of wrapped.
-//
 // How a symbolic integer plugs in (for the Z3 proofs of issue 7). The kernels call the operations
 // unqualified (after `using ops::add, ...`), so for a type S that is not a machine integer two
 // routes exist, and they can be mixed:
 //   1. Nothing to write but S itself: the generic definitions at the end of this header map each
 //      operation onto S's own C++ operators and conversions (add -> a + b, shl -> a << k,
 //      widen<To> / narrow<To> / truncate<To> -> To(v), lookup -> a chain of select). A type written
-//      like a C++ integer whose operators record C++'s undefined-behaviour conditions -- signed
-//      overflow, division by zero, min / -1, a left shift that loses the value -- as obligations,
-//      as antkit::proofs::Int<N, Signed> (proofs/z3/z3_int.hpp) does, then carries exactly the
+//      like a C++ integer whose operators record C++'s undefined-behaviour conditions (signed
+//      overflow, division by zero, min / -1, a left shift that loses the value) as obligations, as
+//      antkit::proofs::Int<N, Signed> (proofs/z3/z3_int.hpp) does, then carries exactly the
 //      obligations that the checked machine build checks. S must provide, in its namespace:
-//        == != < <= > >=     returning its boolean type B (a z3 boolean);
-//        select(B, S, S)     z3::ite -- every branch in a kernel goes through select, so both arms
-//                            are evaluated and no control flow depends on data;
-//        require(B, what)    records B as an obligation: a precondition of the documented domain
-//                            (division by zero, a negative square root) or, from narrow, "the
-//                            value fits the narrower type";
-//        S(integer constant), explicit S(other width/signedness) with C++ conversion semantics
-//        (sign- or zero-extension by the source's signedness, low bits when narrowing), and a
-//        static `bits` (used for the extreme values in max_value/min_value).
+//      == != < <= > >= returning its boolean type B (a z3 boolean); select(B, S, S), z3::ite (every
+//      branch in a kernel goes through select: both arms are evaluated, no control flow depends on
+//      data); require(B, what), which records B as an obligation (a precondition of the documented
+//      domain, or from narrow "the value fits the narrower type"); S(integer constant), explicit
+//      S(other width/signedness) with C++ conversion semantics (sign- or zero-extension by the
+//      source's signedness, low bits when narrowing); and a static `bits` (for max/min_value).
 //   2. Overloads of any operation in S's namespace, found by argument-dependent lookup and
 //      preferred to the generic ones (they are templates constrained to non-machine types): e.g. a
 //      lookup that reads a z3 array instead of building a 1026-way ite chain.
@@ -40,9 +35,14 @@
 // the result the same way. Loops in the kernels have trip counts fixed by the type (never by data),
 // so the symbolic run unrolls them. tests/kernel/test_fixed.cpp runs the kernels through route 1
 // with a counting stand-in for S and checks that obligations fail exactly outside the domains.
-//
-// Helper functions are written so that a kernel never calls a machine-only facility: no
-// __builtin_clz, no std::bit_width, no early return on a data value.
+#if defined(__SIZEOF_INT128__) // The 128-bit pair: __int128, a GCC/Clang extension of 64-bit
+#define ANTKIT_INT128 __int128 // targets; 32-bit targets lack it and get soft::Int (int128.hpp).
+#define ANTKIT_UINT128 unsigned __int128 // As macros so that segment.hpp and the Buffon world
+#else                                    // name the type too; elsewhere use kernel::int128 and
+#include <antkit/kernel/int128.hpp>      // kernel::uint128 (below). Helper functions are written
+#define ANTKIT_INT128 ::antkit::kernel::soft::Int128   // so that a kernel never calls a
+#define ANTKIT_UINT128 ::antkit::kernel::soft::UInt128 // machine-only facility: no __builtin_clz,
+#endif // no std::bit_width, no early return on data.
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -51,9 +51,9 @@
 
 namespace antkit::kernel {
 
-// 128-bit integers are a GCC/Clang extension; __extension__ keeps -Wpedantic quiet about them.
-__extension__ using int128 = __int128;
-__extension__ using uint128 = unsigned __int128;
+// __extension__ keeps -Wpedantic quiet about __int128 (the macros above; nothing on 32-bit).
+__extension__ using int128 = ANTKIT_INT128;
+__extension__ using uint128 = ANTKIT_UINT128;
 
 // Thrown in ANTKIT_CHECKED_ARITHMETIC builds when a kernel operation leaves its documented range
 // (a bug in the caller, not bad input, which is why it is not an InputError).

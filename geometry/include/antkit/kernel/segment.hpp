@@ -51,8 +51,8 @@ inline constexpr std::int32_t kExactInt64Raw = std::int32_t{1} << 30;
 
 namespace detail {
 
-// 128-bit integers are a GCC/Clang extension; __extension__ keeps -Wpedantic quiet.
-__extension__ using segment_wide = __int128;
+// kernel::int128 (int_ops.hpp: __int128, or soft::Int on 32-bit targets).
+__extension__ using segment_wide = ANTKIT_INT128;
 
 constexpr bool raw_in_int64_range(std::int32_t v) noexcept {
   // v in [-2^30, 2^30) <=> v + 2^30 in [0, 2^31), computed without signed overflow.
