@@ -6,7 +6,9 @@
 #include <antkit/kernel/hash.hpp>
 #include <antkit/stc/ant.hpp>
 #include <antkit/stc/floor.hpp>
+#include <cstdint>
 #include <cstring>
+#include <new>
 #include <type_traits>
 
 namespace {
@@ -14,6 +16,32 @@ namespace {
 using antkit::kernel::TraceHash;
 using antkit::stc::AntEdgeStc;
 using antkit::stc::AntStc;
+using antkit::stc::Floor;
+using antkit::stc::FloorStorage;
+using antkit::stc::Marker;
+
+// What antkit_stc_floor holds: the floor, its storage and its size, until start.
+struct FloorState {
+  Floor floor;
+  FloorStorage storage;
+  std::int32_t width = 0, height = 0;
+  Marker marker = Marker::WholeSubCell;
+  bool started = false;
+};
+static_assert(sizeof(FloorState) <= sizeof(antkit_stc_floor) &&
+              alignof(FloorState) <= alignof(antkit_stc_floor));
+static_assert(std::is_trivially_destructible_v<FloorState>);
+
+FloorState& state_of(antkit_stc_floor* f) noexcept {
+  return *std::launder(reinterpret_cast<FloorState*>(f->opaque));
+}
+const FloorState& state_of(const antkit_stc_floor* f) noexcept {
+  return *std::launder(reinterpret_cast<const FloorState*>(f->opaque));
+}
+
+bool valid_size(std::int32_t width, std::int32_t height) noexcept {
+  return width >= 2 && height >= 2 && width <= 16384 && height <= 16384;
+}
 
 static_assert(sizeof(AntStc) <= sizeof(antkit_ant_stc) && std::is_trivially_copyable_v<AntStc>);
 static_assert(sizeof(AntEdgeStc) <= sizeof(antkit_ant_edge_stc) &&
@@ -89,6 +117,100 @@ antkit_stc_command antkit_ant_edge_stc_step(antkit_ant_edge_stc* state,
   const antkit::stc::Command command = c.step(o);
   store(state, c);
   return to_c(command);
+}
+
+size_t antkit_stc_floor_bytes(int32_t width, int32_t height, int marker) {
+  if (!valid_size(width, height) ||
+      (marker != ANTKIT_MARKER_SUBCELL && marker != ANTKIT_MARKER_EDGE))
+    return 0;
+  const auto size = antkit::stc::floor_size(width, height);
+  // The bit arrays first, then the cells at an 8-byte boundary.
+  return ((2 * size.bit_bytes + 7) & ~std::size_t{7}) +
+         size.cells * (marker == ANTKIT_MARKER_EDGE ? 2 : 1);
+}
+
+int antkit_stc_floor_init(antkit_stc_floor* floor, void* buffer, size_t size, int32_t width,
+                          int32_t height, int marker) {
+  const std::size_t need = antkit_stc_floor_bytes(width, height, marker);
+  if (need == 0 || size < need || buffer == nullptr ||
+      reinterpret_cast<std::uintptr_t>(buffer) % 8 != 0)
+    return -1;
+  auto* s = new (floor->opaque) FloorState{};
+  const auto fs = antkit::stc::floor_size(width, height);
+  auto* bytes = static_cast<std::uint8_t*>(buffer);
+  std::memset(bytes, 0, need);
+  s->storage.free_bits = bytes;
+  s->storage.entered_bits = bytes + fs.bit_bytes;
+  std::uint8_t* cells = bytes + ((2 * fs.bit_bytes + 7) & ~std::size_t{7});
+  if (marker == ANTKIT_MARKER_EDGE)
+    s->storage.edges = reinterpret_cast<std::uint16_t*>(cells);
+  else
+    s->storage.marks = cells;
+  s->width = width;
+  s->height = height;
+  s->marker = marker == ANTKIT_MARKER_EDGE ? Marker::Edge : Marker::WholeSubCell;
+  return 0;
+}
+
+void antkit_stc_floor_set_free(antkit_stc_floor* floor, int32_t x, int32_t y) {
+  FloorState& s = state_of(floor);
+  const auto fs = antkit::stc::floor_size(s.width, s.height);
+  if (x < 0 || y < 0 || x >= 2 * fs.shape.cells_x || y >= 2 * fs.shape.cells_y) return;
+  const std::size_t k =
+      static_cast<std::size_t>(y) * static_cast<std::size_t>(2 * fs.shape.cells_x) +
+      static_cast<std::size_t>(x);
+  s.storage.free_bits[k >> 3] =
+      static_cast<std::uint8_t>(s.storage.free_bits[k >> 3] | (1u << (k & 7)));
+}
+
+int antkit_stc_floor_start(antkit_stc_floor* floor, int32_t x, int32_t y) {
+  FloorState& s = state_of(floor);
+  const antkit::stc::SubCell start{x, y};
+  const auto shape = antkit::stc::floor_size(s.width, s.height).shape;
+  if (x < 0 || y < 0 || !shape.in_bounds(antkit::stc::cell_of(start))) return -1;
+  s.floor.reset(s.width, s.height, s.storage, start, {}, s.marker);
+  if (!s.floor.cell_free(antkit::stc::cell_of(start))) return -1;
+  s.started = true;
+  return 0;
+}
+
+void antkit_stc_floor_read_marks(antkit_stc_floor* floor, antkit_mark_reading* r) {
+  FloorState& s = state_of(floor);
+  *r = antkit_mark_reading{};
+  if (!s.started || !s.storage.marks) return;
+  const antkit::stc::MarkObservation o = s.floor.observe_marks();
+  r->free_neighbours = o.free_neighbours;
+  r->here = o.here;
+  for (int d = 0; d < 4; ++d) r->neighbour[d] = o.neighbour[static_cast<std::size_t>(d)];
+}
+
+void antkit_stc_floor_read_edges(antkit_stc_floor* floor, antkit_edge_reading* r) {
+  FloorState& s = state_of(floor);
+  *r = antkit_edge_reading{};
+  if (!s.started || !s.storage.edges) return;
+  const antkit::stc::EdgeObservation o = s.floor.observe_edges();
+  r->free_neighbours = o.free_neighbours;
+  r->here = o.here;
+  for (int d = 0; d < 4; ++d) r->neighbour[d] = o.neighbour[static_cast<std::size_t>(d)];
+}
+
+int antkit_stc_floor_apply(antkit_stc_floor* floor, antkit_stc_command c) {
+  FloorState& s = state_of(floor);
+  if (!s.started || c.move > ANTKIT_STOP) return 0;
+  return s.floor.apply({static_cast<antkit::stc::Move>(c.move), c.mark != 0}) ? 1 : 0;
+}
+
+void antkit_stc_floor_position(const antkit_stc_floor* floor, int32_t* x, int32_t* y) {
+  const antkit::stc::SubCell p = state_of(floor).floor.position();
+  *x = p.x;
+  *y = p.y;
+}
+
+int64_t antkit_stc_floor_covered(const antkit_stc_floor* floor) {
+  return state_of(floor).floor.covered();
+}
+int64_t antkit_stc_floor_repeats(const antkit_stc_floor* floor) {
+  return state_of(floor).floor.repeats();
 }
 
 void antkit_trace_hash_init(antkit_trace_hash* hash, uint64_t seed) {

@@ -144,3 +144,84 @@ TEST_CASE("C API: a tour driven through the C functions over the floor is run_st
     RC_ASSERT(floor.repeats() == expected.repeats);
   });
 }
+
+TEST_CASE("C API: a tour run entirely through C functions (floor, controller, hash) is antkit "
+          "stc's",
+          "[c][property]") {
+  rc::prop("ant and ant-edge on random maps", [] {
+    const auto [map, start] = *gen::stc_case({.partial_cells = true, .start_in_free_cell = true});
+    const bool edge = *rc::gen::arbitrary<bool>();
+    const RunResult expected = run_stc(map, start, edge ? Variant::AntEdge : Variant::Ant);
+    const int marker = edge ? ANTKIT_MARKER_EDGE : ANTKIT_MARKER_SUBCELL;
+    const std::size_t bytes = antkit_stc_floor_bytes(map.width(), map.height(), marker);
+    RC_ASSERT(bytes > 0);
+    std::vector<std::uint64_t> buffer((bytes + 7) / 8);
+    antkit_stc_floor floor;
+    RC_ASSERT(antkit_stc_floor_init(&floor, buffer.data(), bytes - 1, map.width(), map.height(),
+                                    marker) == -1); // one byte short
+    RC_ASSERT(antkit_stc_floor_init(&floor, buffer.data(), bytes, map.width(), map.height(),
+                                    marker) == 0);
+    for (std::int32_t y = 0; y < map.height(); ++y)
+      for (std::int32_t x = 0; x < map.width(); ++x)
+        if (map[{x, y}] == kernel::Occupancy::Free) antkit_stc_floor_set_free(&floor, x, y);
+    RC_ASSERT(antkit_stc_floor_start(&floor, start.x, start.y) == 0);
+    antkit_trace_hash h;
+    antkit_stc_tour_hash_begin(&h, map.width(), map.height(), start.x, start.y);
+    antkit_stc_tour_hash_add(&h, start.x, start.y);
+    antkit_ant_stc ant;
+    antkit_ant_edge_stc ant_edge;
+    antkit_ant_stc_init(&ant, antkit_stc_quadrant(start.x, start.y));
+    antkit_ant_edge_stc_init(&ant_edge, antkit_stc_quadrant(start.x, start.y));
+    std::int64_t positions = 1;
+    for (;;) {
+      antkit_stc_command c;
+      if (edge) {
+        antkit_edge_reading r;
+        antkit_stc_floor_read_edges(&floor, &r);
+        c = antkit_ant_edge_stc_step(&ant_edge, &r);
+      } else {
+        antkit_mark_reading r;
+        antkit_stc_floor_read_marks(&floor, &r);
+        c = antkit_ant_stc_step(&ant, &r);
+      }
+      if (c.move == ANTKIT_STOP) break;
+      RC_ASSERT(antkit_stc_floor_apply(&floor, c) == 1);
+      std::int32_t x = 0, y = 0;
+      antkit_stc_floor_position(&floor, &x, &y);
+      antkit_stc_tour_hash_add(&h, x, y);
+      ++positions;
+      RC_ASSERT(positions <= expected.positions);
+    }
+    RC_ASSERT(antkit_trace_hash_finish(&h) == expected.hash);
+    RC_ASSERT(positions == expected.positions);
+    RC_ASSERT(antkit_stc_floor_covered(&floor) == expected.covered);
+    RC_ASSERT(antkit_stc_floor_repeats(&floor) == expected.repeats);
+  });
+}
+
+TEST_CASE("C API: the floor refuses what it cannot hold", "[c]") {
+  CHECK(antkit_stc_floor_bytes(1, 10, ANTKIT_MARKER_SUBCELL) == 0);
+  CHECK(antkit_stc_floor_bytes(10, 16385, ANTKIT_MARKER_EDGE) == 0);
+  CHECK(antkit_stc_floor_bytes(10, 10, 7) == 0);
+  // 10 x 10 sub-cells: 25 cells, 13 bytes per bit array, 49 cells with the border.
+  CHECK(antkit_stc_floor_bytes(10, 10, ANTKIT_MARKER_SUBCELL) == 32 + 49);
+  CHECK(antkit_stc_floor_bytes(10, 10, ANTKIT_MARKER_EDGE) == 32 + 98);
+  alignas(8) std::uint8_t buffer[256];
+  antkit_stc_floor floor;
+  CHECK(antkit_stc_floor_init(&floor, buffer + 1, 200, 10, 10, ANTKIT_MARKER_SUBCELL) == -1);
+  REQUIRE(antkit_stc_floor_init(&floor, buffer, sizeof buffer, 10, 10, ANTKIT_MARKER_SUBCELL) == 0);
+  CHECK(antkit_stc_floor_start(&floor, 2, 2) == -1); // every sub-cell still blocked
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) antkit_stc_floor_set_free(&floor, x, y);
+  antkit_stc_floor_set_free(&floor, 99, 99); // ignored
+  CHECK(antkit_stc_floor_start(&floor, 4, 4) == -1);
+  CHECK(antkit_stc_floor_start(&floor, 20, 0) == -1);
+  REQUIRE(antkit_stc_floor_start(&floor, 0, 0) == 0);
+  CHECK(antkit_stc_floor_apply(&floor, {ANTKIT_WEST, 0}) == 0); // off the map
+  CHECK(antkit_stc_floor_apply(&floor, {ANTKIT_STOP, 0}) == 0);
+  CHECK(antkit_stc_floor_apply(&floor, {ANTKIT_EAST, 1}) == 1);
+  std::int32_t x = -1, y = -1;
+  antkit_stc_floor_position(&floor, &x, &y);
+  CHECK((x == 1 && y == 0));
+  CHECK(antkit_stc_floor_covered(&floor) == 2);
+}

@@ -22,6 +22,7 @@
 #ifndef ANTKIT_C_ANTKIT_H
 #define ANTKIT_C_ANTKIT_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #ifdef __cplusplus
@@ -84,6 +85,42 @@ typedef struct antkit_edge_reading {
 void antkit_ant_edge_stc_init(antkit_ant_edge_stc* state, int start_quadrant);
 antkit_stc_command antkit_ant_edge_stc_step(antkit_ant_edge_stc* state,
                                             const antkit_edge_reading* reading);
+
+/* ---- a simulated floor, to run a firmware loop on a computer -------------------------------- */
+
+/* antkit's STC floor (algorithms/stc/include/antkit/stc/floor.hpp: the world `antkit stc` steps):
+ * free and blocked sub-cells, the marks or lit edges the robot leaves, its position, and which
+ * sub-cells it entered. A firmware author runs the robot's loop against it on a desk (or on the
+ * chip: scripts/run-on-mcu.sh) and compares the tour with `antkit stc`'s. It lives in a buffer you
+ * give it: antkit_stc_floor_bytes says how large. */
+enum { ANTKIT_MARKER_SUBCELL = 1, ANTKIT_MARKER_EDGE = 2 };
+
+typedef struct antkit_stc_floor {
+  uint64_t opaque[40];
+} antkit_stc_floor;
+
+/* The bytes of buffer a floor of width x height sub-cells needs (2 bits per sub-cell, and per
+ * cell with a one-cell border 1 byte for ANTKIT_MARKER_SUBCELL or 2 for ANTKIT_MARKER_EDGE);
+ * 0 when the size is not in [2, 16384]. */
+size_t antkit_stc_floor_bytes(int32_t width, int32_t height, int marker);
+/* Lays the floor out in buffer (8-byte aligned), every sub-cell blocked; 0, or -1 when the size
+ * or the marker is invalid or the buffer too small. */
+int antkit_stc_floor_init(antkit_stc_floor* floor, void* buffer, size_t size, int32_t width,
+                          int32_t height, int marker);
+/* Frees sub-cell (x, y) (before antkit_stc_floor_start; outside the map: ignored). */
+void antkit_stc_floor_set_free(antkit_stc_floor* floor, int32_t x, int32_t y);
+/* Clears the marks and puts the robot on sub-cell (x, y): 0, or -1 unless its cell is free. */
+int antkit_stc_floor_start(antkit_stc_floor* floor, int32_t x, int32_t y);
+/* What the robot reads where it stands. */
+void antkit_stc_floor_read_marks(antkit_stc_floor* floor, antkit_mark_reading* reading);
+void antkit_stc_floor_read_edges(antkit_stc_floor* floor, antkit_edge_reading* reading);
+/* Carries out a command (mark, then move): 1 moved, 0 refused (ANTKIT_STOP, or a move into a
+ * blocked sub-cell or off the map). */
+int antkit_stc_floor_apply(antkit_stc_floor* floor, antkit_stc_command command);
+void antkit_stc_floor_position(const antkit_stc_floor* floor, int32_t* x, int32_t* y);
+/* Sub-cells entered at least once (the start included), and entries into one entered before. */
+int64_t antkit_stc_floor_covered(const antkit_stc_floor* floor);
+int64_t antkit_stc_floor_repeats(const antkit_stc_floor* floor);
 
 /* ---- the trace hash (geometry/include/antkit/kernel/hash.hpp) ------------------------------- */
 

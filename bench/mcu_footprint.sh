@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# The Cortex-M image's footprint (issue 27), as a Markdown table for the README: flash of each
+# controller's step path (from the image's symbol table: nm -S), the stack of each function on it
+# (gcc -fstack-usage), the controllers' state, the whole image (size), and the instructions per move
+# of a tour on den312d under QEMU with -icount (an estimate of cycles: see scripts/run-on-mcu.sh).
+#
+#   bench/mcu_footprint.sh        builds build/mcu if needed (through scripts/run-on-mcu.sh)
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+cd "$here"
+map=data/maps/movingai/den312d.map
+ant=$(scripts/run-on-mcu.sh --icount stc --map $map --variant ant)
+edge=$(scripts/run-on-mcu.sh --icount stc --map $map --variant ant-edge)
+image=build/mcu/antkit_mcu.elf
+symbols=$(arm-none-eabi-nm -S -C "$image")
+stack=$(cat $(find build/mcu -name '*.su'))
+size_of() { # flash bytes of the symbols whose demangled name matches the pattern
+  local total=0 address size rest
+  while read -r address size rest; do total=$((total + 16#$size)); done < <(grep -E "$1" <<<"$symbols")
+  echo $total
+}
+stack_of() { # the largest frame of the functions matching the pattern
+  grep -E "$1" <<<"$stack" | awk -F'\t' '{ if ($2 > m) m = $2 } END { print m + 0 }'
+}
+ctl_ant=$(size_of ' antkit_ant_stc_step$')
+ctl_edge=$(size_of ' antkit_ant_edge_stc_step$')
+loop_ant=$(size_of 'tour<\(anonymous namespace\)::AntController')
+loop_edge=$(size_of 'tour<\(anonymous namespace\)::AntEdgeController')
+apply=$(size_of 'Floor::apply')
+light=$(size_of 'Floor::light_edge')
+hash=$(size_of 'TraceHash::add_u32')
+read -r text data bss _ < <(arm-none-eabi-size "$image" | tail -1)
+echo "Cortex-M4 (arm-none-eabi-gcc $(arm-none-eabi-gcc -dumpversion), -O2, hard float), image $image:"
+echo
+echo "| | ant (sub-cell marks) | ant-edge (lit edges) |"
+echo "|---|---|---|"
+echo "| controller step (C API: \`antkit_ant[_edge]_stc_step\`, the decision inlined) | $ctl_ant B flash, $(stack_of 'antkit_ant_stc_step') B stack | $ctl_edge B flash, $(stack_of 'antkit_ant_edge_stc_step') B stack |"
+echo "| controller state | 2 B (\`antkit_ant_stc\`) | 2 B (\`antkit_ant_edge_stc\`) |"
+echo "| the world's step (tour loop with observe and hash inlined, \`Floor::apply\`, edges: \`light_edge\`, \`TraceHash::add_u32\`) | $((loop_ant + apply + hash)) B flash | $((loop_edge + apply + light + hash)) B flash |"
+echo "| floor (RAM, per map) | 2 bits per sub-cell + 1 B per cell (den312d: $(jq .floor_bytes <<<"$ant") B) | 2 bits per sub-cell + 2 B per cell (den312d: $(jq .floor_bytes <<<"$edge") B) |"
+echo "| instructions per move, den312d (QEMU -icount; controller, floor and hash) | $(jq .instructions_per_move <<<"$ant") | $(jq .instructions_per_move <<<"$edge") |"
+echo
+echo "Whole image: $text B flash (text), $data B data, $bss B bss (of which the floor arena $(jq .floor_limit <<<"$ant") B)."
