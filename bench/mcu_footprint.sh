@@ -11,6 +11,7 @@ cd "$here"
 map=data/maps/movingai/den312d.map
 ant=$(scripts/run-on-mcu.sh --icount stc --map $map --variant ant)
 edge=$(scripts/run-on-mcu.sh --icount stc --map $map --variant ant-edge)
+online=$(scripts/run-on-mcu.sh --icount stc --map $map --variant online)
 image=build/mcu/antkit_mcu.elf
 symbols=$(arm-none-eabi-nm -S -C "$image")
 stack=$(cat $(find build/mcu -name '*.su'))
@@ -24,6 +25,8 @@ stack_of() { # the largest frame of the functions matching the pattern
 }
 ctl_ant=$(size_of ' antkit_ant_stc_step$')
 ctl_edge=$(size_of ' antkit_ant_edge_stc_step$')
+ctl_online=$(size_of ' antkit_online_stc_step$')
+loop_online=$(size_of 'tour<\(anonymous namespace\)::OnlineController')
 loop_ant=$(size_of 'tour<\(anonymous namespace\)::AntController')
 loop_edge=$(size_of 'tour<\(anonymous namespace\)::AntEdgeController')
 apply=$(size_of 'Floor::apply')
@@ -32,12 +35,12 @@ hash=$(size_of 'TraceHash::add_u32')
 read -r text data bss _ < <(arm-none-eabi-size "$image" | tail -1)
 echo "Cortex-M4 (arm-none-eabi-gcc $(arm-none-eabi-gcc -dumpversion), -O2, hard float), image $image:"
 echo
-echo "| | ant (sub-cell marks) | ant-edge (lit edges) |"
-echo "|---|---|---|"
-echo "| controller step (C API: \`antkit_ant[_edge]_stc_step\`, the decision inlined) | $ctl_ant B flash, $(stack_of 'antkit_ant_stc_step') B stack | $ctl_edge B flash, $(stack_of 'antkit_ant_edge_stc_step') B stack |"
-echo "| controller state | 2 B (\`antkit_ant_stc\`) | 2 B (\`antkit_ant_edge_stc\`) |"
-echo "| the world's step (tour loop with observe and hash inlined, \`Floor::apply\`, edges: \`light_edge\`, \`TraceHash::add_u32\`) | $((loop_ant + apply + hash)) B flash | $((loop_edge + apply + light + hash)) B flash |"
-echo "| floor (RAM, per map) | 2 bits per sub-cell + 1 B per cell (den312d: $(jq .floor_bytes <<<"$ant") B) | 2 bits per sub-cell + 2 B per cell (den312d: $(jq .floor_bytes <<<"$edge") B) |"
-echo "| instructions per move, den312d (QEMU -icount; controller, floor and hash) | $(jq .instructions_per_move <<<"$ant") | $(jq .instructions_per_move <<<"$edge") |"
+echo "| | ant (sub-cell marks) | ant-edge (lit edges) | online (memory of cells seen) |"
+echo "|---|---|---|---|"
+echo "| controller step (C API: \`antkit_*_stc_step\`, the decision inlined) | $ctl_ant B flash, $(stack_of 'antkit_ant_stc_step') B stack | $ctl_edge B flash, $(stack_of 'antkit_ant_edge_stc_step') B stack | $ctl_online B flash, $(stack_of 'antkit_online_stc_step') B stack |"
+echo "| controller state | 2 B (\`antkit_ant_stc\`) | 2 B (\`antkit_ant_edge_stc\`) | 128 B (\`antkit_online_stc\`) + a buffer you give it, 256 B per 16 x 16-cell tile seen ($(jq -r '"\(.memory_tiles) tiles on den312d"' <<<"$online")) |"
+echo "| the world's step (tour loop with observation and hash inlined, \`Floor::apply\`, \`light_edge\`, \`TraceHash::add_u32\`) | $((loop_ant + apply + hash)) B flash | $((loop_edge + apply + light + hash)) B flash | $((loop_online + apply + hash)) B flash |"
+echo "| floor (RAM, per map; den312d) | 2 bits per sub-cell + 1 B per cell ($(jq .floor_bytes <<<"$ant") B) | 2 bits per sub-cell + 2 B per cell ($(jq .floor_bytes <<<"$edge") B) | as ant ($(jq .floor_bytes <<<"$online") B) |"
+echo "| instructions per move, den312d (QEMU -icount; controller, floor and hash) | $(jq .instructions_per_move <<<"$ant") | $(jq .instructions_per_move <<<"$edge") | $(jq .instructions_per_move <<<"$online") |"
 echo
 echo "Whole image: $text B flash (text), $data B data, $bss B bss (of which the floor arena $(jq .floor_limit <<<"$ant") B)."

@@ -422,13 +422,14 @@ std::uint64_t native_endian_hash(Trace& trace) {
   return h.finish();
 }
 
-// The Cortex-M image's inputs (stc/mcu_input.hpp) for the STC scenarios it runs (ant and ant-edge,
-// with and without noise: the same maps, starts and noise), one file per scenario in `dir`, named
-// by the scenario with '/' as '_'; prints "name file" per scenario.
+// The Cortex-M image's inputs (stc/mcu_input.hpp) for the STC scenarios it runs (ant and ant-edge
+// with and without noise, online: the same maps, starts and noise), one file per scenario in `dir`,
+// named by the scenario with '/' as '_'; prints "name file" per scenario.
 void write_mcu_inputs(MapShelf& shelf, const std::string& dir) {
   for (const char* map : kStcMaps)
-    for (const auto variant : {stc::Variant::Ant, stc::Variant::AntEdge})
+    for (const auto variant : {stc::Variant::Ant, stc::Variant::AntEdge, stc::Variant::Online})
       for (const bool noisy : {false, true}) {
+        if (noisy && variant == stc::Variant::Online) continue; // online reads no marks
         const std::string name = "stc/" + std::string(stc::variant_name(variant)) +
                                  (noisy ? "-noise0.02" : "") + "/" + map;
         const auto& grid = shelf.get(map);

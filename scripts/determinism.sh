@@ -20,10 +20,10 @@
 # from the little-endian golden value, and the script shows where its trace first parts.
 #
 # cortex-m4 is not a build of antkit_determinism: the chip runs the STC scenarios of ant and
-# ant-edge (with and without marker noise, on the three maps), from inputs the clang-O0 build writes
-# (--mcu-inputs: the same map, start and noise), and must print their golden hashes. The other
-# scenarios (Buffon, LOS, online and offline STC, uniform coverage, the marker-floor robot) do not
-# run on the chip yet (issue 27 is open); the configuration names how many ran.
+# ant-edge (with and without marker noise) and online, on the three maps, from inputs the clang-O0
+# build writes (--mcu-inputs: the same map, start and noise), and must print their golden hashes.
+# The other scenarios (Buffon, LOS, offline and full STC, uniform coverage, the marker-floor robot)
+# do not run on the chip yet (issue 27 is open); the configuration names how many ran.
 #
 # Builds go to build/determinism/<config> (ccache when installed). Exit status: 0 every
 # configuration gives every golden hash and the teeth bite, 1 otherwise, 2 bad usage.

@@ -3,14 +3,16 @@
 # STM32F405, the nearest model QEMU has to the e-puck2's STM32F407), the image built from mcu/ with
 # Debian's gcc-arm-none-eabi, its input and output through semihosting.
 #
-#   scripts/run-on-mcu.sh stc --map F --variant ant|ant-edge [--start X,Y] [--noise P] [--seed S]
+#   scripts/run-on-mcu.sh stc --map F --variant ant|ant-edge|online [--start X,Y] [--noise P]
+#                         [--seed S]
 #
 # prints one JSON object whose hash, covered, repeats and returned_to_start equal those of
 # `antkit stc --format json` with the same arguments. The host prepares the input (`antkit
 # stc-mcu-input`: the map read, the start chosen and checked, the map's free sub-cells as bits);
 # the controller, the floor's steps and the hash run on the emulated chip. Bad input is refused by
 # the host as `antkit stc` refuses it, exit 2 with a located message; a map whose floor exceeds the
-# image's 112 KiB arena is refused with both sizes in the message.
+# image's 112 KiB arena (online: with its memory of the cells seen) is refused with both sizes in
+# the message.
 #
 # Options before the subcommand:
 #   --icount   run QEMU with -icount shift=0 (its virtual clock advances 1 ns per instruction, and
@@ -26,7 +28,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 
 usage() {
-  echo "usage: scripts/run-on-mcu.sh [--icount] stc --map F --variant ant|ant-edge [--start X,Y]" \
+  echo "usage: scripts/run-on-mcu.sh [--icount] stc --map F --variant ant|ant-edge|online [--start X,Y]" \
     "[--noise P] [--seed S]" >&2
   exit 2
 }

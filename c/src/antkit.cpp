@@ -6,6 +6,7 @@
 #include <antkit/kernel/hash.hpp>
 #include <antkit/stc/ant.hpp>
 #include <antkit/stc/floor.hpp>
+#include <antkit/stc/online.hpp>
 #include <cstdint>
 #include <cstring>
 #include <new>
@@ -19,6 +20,17 @@ using antkit::stc::AntStc;
 using antkit::stc::Floor;
 using antkit::stc::FloorStorage;
 using antkit::stc::Marker;
+using OnlineChip = antkit::stc::BasicOnlineStc<antkit::stc::FixedCellMemory>;
+static_assert(sizeof(OnlineChip) <= sizeof(antkit_online_stc) &&
+              alignof(OnlineChip) <= alignof(antkit_online_stc));
+static_assert(std::is_trivially_destructible_v<OnlineChip>);
+
+OnlineChip& online_of(antkit_online_stc* s) noexcept {
+  return *std::launder(reinterpret_cast<OnlineChip*>(s->opaque));
+}
+const OnlineChip& online_of(const antkit_online_stc* s) noexcept {
+  return *std::launder(reinterpret_cast<const OnlineChip*>(s->opaque));
+}
 
 // What antkit_stc_floor holds: the floor, its storage and its size, until start.
 struct FloorState {
@@ -119,14 +131,40 @@ antkit_stc_command antkit_ant_edge_stc_step(antkit_ant_edge_stc* state,
   return to_c(command);
 }
 
+size_t antkit_online_stc_bytes(size_t tiles) {
+  return antkit::stc::FixedCellMemory::bytes_for(tiles);
+}
+
+int antkit_online_stc_init(antkit_online_stc* state, void* buffer, size_t bytes,
+                           int start_quadrant) {
+  if (buffer == nullptr || reinterpret_cast<std::uintptr_t>(buffer) % 8 != 0 ||
+      antkit::stc::FixedCellMemory::capacity_for(bytes) == 0)
+    return -1;
+  new (state->opaque) OnlineChip(start_quadrant, antkit::stc::FixedCellMemory(buffer, bytes));
+  return 0;
+}
+
+antkit_stc_command antkit_online_stc_step(antkit_online_stc* state,
+                                          const antkit_cell_reading* reading) {
+  return to_c(online_of(state).step({reading->free_neighbours}));
+}
+
+int antkit_online_stc_overflowed(const antkit_online_stc* state) {
+  return online_of(state).overflowed() ? 1 : 0;
+}
+size_t antkit_online_stc_tiles(const antkit_online_stc* state) {
+  return online_of(state).memory().tiles();
+}
+size_t antkit_online_stc_capacity(const antkit_online_stc* state) {
+  return online_of(state).memory().capacity();
+}
+
 size_t antkit_stc_floor_bytes(int32_t width, int32_t height, int marker) {
   if (!valid_size(width, height) ||
       (marker != ANTKIT_MARKER_SUBCELL && marker != ANTKIT_MARKER_EDGE))
     return 0;
-  const auto size = antkit::stc::floor_size(width, height);
-  // The bit arrays first, then the cells at an 8-byte boundary.
-  return ((2 * size.bit_bytes + 7) & ~std::size_t{7}) +
-         size.cells * (marker == ANTKIT_MARKER_EDGE ? 2 : 1);
+  return antkit::stc::floor_bytes(
+      width, height, marker == ANTKIT_MARKER_EDGE ? Marker::Edge : Marker::WholeSubCell);
 }
 
 int antkit_stc_floor_init(antkit_stc_floor* floor, void* buffer, size_t size, int32_t width,
@@ -136,19 +174,11 @@ int antkit_stc_floor_init(antkit_stc_floor* floor, void* buffer, size_t size, in
       reinterpret_cast<std::uintptr_t>(buffer) % 8 != 0)
     return -1;
   auto* s = new (floor->opaque) FloorState{};
-  const auto fs = antkit::stc::floor_size(width, height);
-  auto* bytes = static_cast<std::uint8_t*>(buffer);
-  std::memset(bytes, 0, need);
-  s->storage.free_bits = bytes;
-  s->storage.entered_bits = bytes + fs.bit_bytes;
-  std::uint8_t* cells = bytes + ((2 * fs.bit_bytes + 7) & ~std::size_t{7});
-  if (marker == ANTKIT_MARKER_EDGE)
-    s->storage.edges = reinterpret_cast<std::uint16_t*>(cells);
-  else
-    s->storage.marks = cells;
+  std::memset(buffer, 0, need);
+  s->marker = marker == ANTKIT_MARKER_EDGE ? Marker::Edge : Marker::WholeSubCell;
+  s->storage = antkit::stc::floor_storage(buffer, width, height, s->marker);
   s->width = width;
   s->height = height;
-  s->marker = marker == ANTKIT_MARKER_EDGE ? Marker::Edge : Marker::WholeSubCell;
   return 0;
 }
 
@@ -172,6 +202,11 @@ int antkit_stc_floor_start(antkit_stc_floor* floor, int32_t x, int32_t y) {
   if (!s.floor.cell_free(antkit::stc::cell_of(start))) return -1;
   s.started = true;
   return 0;
+}
+
+void antkit_stc_floor_read_cells(antkit_stc_floor* floor, antkit_cell_reading* r) {
+  FloorState& s = state_of(floor);
+  r->free_neighbours = s.started ? s.floor.observe_cells().free_neighbours : 0;
 }
 
 void antkit_stc_floor_read_marks(antkit_stc_floor* floor, antkit_mark_reading* r) {

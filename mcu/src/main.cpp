@@ -69,6 +69,18 @@ int refuse(const char* what, const char* why) {
 }
 
 // The C API's controllers behind the interface drive_tour expects.
+struct OnlineController {
+  antkit_online_stc state;
+  OnlineController(int q, void* memory, std::size_t bytes) noexcept {
+    antkit_online_stc_init(&state, memory, bytes, q);
+  }
+  Command step(const CellObservation& o) noexcept {
+    const antkit_cell_reading r{o.free_neighbours};
+    const antkit_stc_command c = antkit_online_stc_step(&state, &r);
+    return {static_cast<Move>(c.move), c.mark != 0};
+  }
+};
+
 struct AntController {
   antkit_ant_stc state;
   explicit AntController(int q) noexcept { antkit_ant_stc_init(&state, q); }
@@ -93,9 +105,9 @@ struct AntEdgeController {
 
 // One tour (kept out of line so that the map file shows the step path's size).
 template <class Controller, class Observe>
-__attribute__((noinline)) TourEnd tour(Floor& floor, antkit::kernel::TraceHash& hash,
-                                       std::int64_t max_moves, Observe observe) {
-  Controller controller(quadrant_of(floor.position()));
+__attribute__((noinline)) TourEnd tour(Controller& controller, Floor& floor,
+                                       antkit::kernel::TraceHash& hash, std::int64_t max_moves,
+                                       Observe observe) {
   return drive_tour(controller, observe, floor, hash, max_moves, [](SubCell) {});
 }
 
@@ -119,15 +131,10 @@ int main() {
   const FloorSize fs = floor_size(run.width, run.height);
   if (size < 0 || static_cast<std::size_t>(size) != kMcuHeaderBytes + fs.bit_bytes)
     return refuse(path, "its length is not the header and the map's free sub-cells");
-  // The arena: free bits, entered bits, then the marker's cells (2-byte aligned for edges).
-  FloorStorage storage;
-  storage.free_bits = g_arena;
-  storage.entered_bits = g_arena + fs.bit_bytes;
-  std::uint8_t* cells = g_arena + ((2 * fs.bit_bytes + 1) & ~std::size_t{1});
-  if (run.marker == Marker::Edge)
-    storage.edges = reinterpret_cast<std::uint16_t*>(cells);
-  else
-    storage.marks = cells;
+  // The arena: the floor (floor_storage's layout), then online STC's memory.
+  const FloorStorage storage = floor_storage(g_arena, run.width, run.height, run.marker);
+  const std::size_t memory_at =
+      (floor_bytes(run.width, run.height, run.marker) + 7) & ~std::size_t{7};
   if (mcu::read(file, storage.free_bits, fs.bit_bytes) != fs.bit_bytes)
     return refuse(path, "ends inside the map");
   mcu::close(file);
@@ -139,26 +146,46 @@ int main() {
   antkit::kernel::TraceHash hash = tour_hash_begin(run.width, run.height, run.start);
   tour_hash_add(hash, run.start);
   const std::int64_t max_moves = 16 * std::int64_t{run.width} * run.height + 16;
-  const bool edge = run.marker == Marker::Edge;
+  const int q = quadrant_of(run.start);
   mcu::ticks_start();
-  const TourEnd end =
-      edge ? tour<AntEdgeController>(floor, hash, max_moves, [] { return floor.observe_edges(); })
-           : tour<AntController>(floor, hash, max_moves, [] { return floor.observe_marks(); });
+  TourEnd end;
+  std::int64_t tiles = 0, capacity = 0;
+  bool overflowed = false;
+  if (run.variant == McuVariant::Online) {
+    OnlineController controller(q, g_arena + memory_at, kMcuFloorBytes - memory_at);
+    end = tour(controller, floor, hash, max_moves, [] { return floor.observe_cells(); });
+    tiles = static_cast<std::int64_t>(antkit_online_stc_tiles(&controller.state));
+    capacity = static_cast<std::int64_t>(antkit_online_stc_capacity(&controller.state));
+    overflowed = antkit_online_stc_overflowed(&controller.state) != 0;
+  } else if (run.variant == McuVariant::AntEdge) {
+    AntEdgeController controller(q);
+    end = tour(controller, floor, hash, max_moves, [] { return floor.observe_edges(); });
+  } else {
+    AntController controller(q);
+    end = tour(controller, floor, hash, max_moves, [] { return floor.observe_marks(); });
+  }
   const std::uint64_t ticks = mcu::ticks_now();
   const SubCell last = floor.position();
-  const bool returned = end.closed && (last == run.start || adjacent(last, run.start));
+  const bool returned =
+      end.closed && !overflowed && (last == run.start || adjacent(last, run.start));
+  const char* name = run.variant == McuVariant::Online    ? "online"
+                     : run.variant == McuVariant::AntEdge ? "ant-edge"
+                                                          : "ant";
   Text t;
-  t << "{\"variant\": \"" << (edge ? "ant-edge" : "ant")
-    << "\", \"width\": " << std::int64_t{run.width} << ", \"height\": " << std::int64_t{run.height}
-    << ", \"start\": [" << std::int64_t{run.start.x} << ", " << std::int64_t{run.start.y}
-    << "], \"positions\": " << end.moves + 1 << ", \"covered\": " << floor.covered()
-    << ", \"repeats\": " << floor.repeats() << ", \"closed\": " << (end.closed ? "true" : "false")
+  t << "{\"variant\": \"" << name << "\", \"width\": " << std::int64_t{run.width}
+    << ", \"height\": " << std::int64_t{run.height} << ", \"start\": [" << std::int64_t{run.start.x}
+    << ", " << std::int64_t{run.start.y} << "], \"positions\": " << end.moves + 1
+    << ", \"covered\": " << floor.covered() << ", \"repeats\": " << floor.repeats()
+    << ", \"closed\": " << (end.closed ? "true" : "false")
     << ", \"returned_to_start\": " << (returned ? "true" : "false") << ", \"hash\": \"";
   t.hex(hash.finish()) << "\", \"noise_ppm\": " << std::int64_t{run.noise.ppm}
                        << ", \"floor_bytes\": "
-                       << static_cast<std::int64_t>(floor_bytes(run.width, run.height, run.marker))
-                       << ", \"floor_limit\": " << static_cast<std::int64_t>(kMcuFloorBytes)
-                       << ", \"ticks\": " << static_cast<std::int64_t>(ticks) << "}\n";
+                       << static_cast<std::int64_t>(floor_bytes(run.width, run.height, run.marker));
+  if (run.variant == McuVariant::Online)
+    t << ", \"memory_tiles\": " << tiles << ", \"memory_capacity\": " << capacity
+      << ", \"memory_overflowed\": " << (overflowed ? "true" : "false");
+  t << ", \"floor_limit\": " << static_cast<std::int64_t>(kMcuFloorBytes)
+    << ", \"ticks\": " << static_cast<std::int64_t>(ticks) << "}\n";
   t.flush();
   return 0;
 }

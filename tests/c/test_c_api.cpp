@@ -1,6 +1,7 @@
 // The C API (antkit/c/antkit.h) against the C++ it wraps: the same commands from the same readings,
 // the same hashes, and a whole tour driven through the C functions over the floor giving run_stc's
 // hash and counts on random maps (noisy too).
+#include <algorithm>
 #include <antkit/c/antkit.h>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/stc/ant.hpp>
@@ -224,4 +225,76 @@ TEST_CASE("C API: the floor refuses what it cannot hold", "[c]") {
   antkit_stc_floor_position(&floor, &x, &y);
   CHECK((x == 1 && y == 0));
   CHECK(antkit_stc_floor_covered(&floor) == 2);
+}
+
+namespace {
+
+// Online STC through the C API over the C floor, from `start`, with a memory of `tiles` tiles;
+// the positions of the tour, the start first.
+std::vector<SubCell> online_tour(const kernel::OccupancyGrid& map, SubCell start, std::size_t tiles,
+                                 bool& overflowed) {
+  const std::size_t bytes =
+      antkit_stc_floor_bytes(map.width(), map.height(), ANTKIT_MARKER_SUBCELL);
+  std::vector<std::uint64_t> floor_buffer((bytes + 7) / 8);
+  antkit_stc_floor floor;
+  REQUIRE(antkit_stc_floor_init(&floor, floor_buffer.data(), bytes, map.width(), map.height(),
+                                ANTKIT_MARKER_SUBCELL) == 0);
+  for (std::int32_t y = 0; y < map.height(); ++y)
+    for (std::int32_t x = 0; x < map.width(); ++x)
+      if (map[{x, y}] == kernel::Occupancy::Free) antkit_stc_floor_set_free(&floor, x, y);
+  REQUIRE(antkit_stc_floor_start(&floor, start.x, start.y) == 0);
+  std::vector<std::uint64_t> memory((antkit_online_stc_bytes(tiles) + 7) / 8);
+  antkit_online_stc online;
+  REQUIRE(antkit_online_stc_init(&online, memory.data(), memory.size() * 8,
+                                 antkit_stc_quadrant(start.x, start.y)) == 0);
+  REQUIRE(antkit_online_stc_capacity(&online) == tiles);
+  std::vector<SubCell> path{start};
+  for (;;) {
+    antkit_cell_reading r;
+    antkit_stc_floor_read_cells(&floor, &r);
+    const antkit_stc_command c = antkit_online_stc_step(&online, &r);
+    if (c.move == ANTKIT_STOP) break;
+    REQUIRE(antkit_stc_floor_apply(&floor, c) == 1);
+    std::int32_t x = 0, y = 0;
+    antkit_stc_floor_position(&floor, &x, &y);
+    path.push_back({x, y});
+  }
+  overflowed = antkit_online_stc_overflowed(&online) != 0;
+  CHECK(antkit_online_stc_tiles(&online) <= tiles);
+  return path;
+}
+
+} // namespace
+
+TEST_CASE("C API: online STC in a fixed memory takes the host's tour while it has room, and "
+          "stops when it has none",
+          "[c][property]") {
+  rc::prop("random maps, enough tiles and one tile", [] {
+    const auto [map, start] = *gen::stc_case({.partial_cells = true, .start_in_free_cell = true});
+    const RunResult expected = run_stc(map, start, Variant::Online);
+    const auto cells_x = static_cast<std::size_t>(map.width() / 2);
+    const auto cells_y = static_cast<std::size_t>(map.height() / 2);
+    bool overflowed = true;
+    const auto full = online_tour(map, start, (cells_x / 16 + 2) * (cells_y / 16 + 2), overflowed);
+    RC_ASSERT(!overflowed);
+    RC_ASSERT(full == expected.path);
+    // One tile: a prefix of the same tour, and overflowed exactly when the tour left the tile.
+    const auto short_tour = online_tour(map, start, 1, overflowed);
+    RC_ASSERT(short_tour.size() <= full.size());
+    RC_ASSERT(std::equal(short_tour.begin(), short_tour.end(), full.begin()));
+    RC_ASSERT(overflowed == (short_tour.size() < full.size()));
+  });
+}
+
+TEST_CASE("C API: online STC on a map wider than its memory stops with overflowed", "[c]") {
+  kernel::OccupancyGrid map(80, 4, kernel::Occupancy::Free); // 40 x 2 cells: three tiles wide
+  bool overflowed = false;
+  const auto tour = online_tour(map, {0, 0}, 1, overflowed);
+  CHECK(overflowed);
+  CHECK(tour.size() < 160);
+  CHECK(antkit_online_stc_bytes(1) == 256 + 2 * 12);
+  CHECK(antkit_online_stc_bytes(3) == 3 * 256 + 8 * 12);
+  antkit_online_stc online;
+  std::uint64_t too_small[4];
+  CHECK(antkit_online_stc_init(&online, too_small, sizeof too_small, 0) == -1);
 }

@@ -68,44 +68,11 @@ std::uint8_t CellMemory::get(Cell c) {
   return tile ? tile[offset_in_tile(c)] : std::uint8_t{0};
 }
 
-void CellMemory::set(Cell c, std::uint8_t value) {
+bool CellMemory::set(Cell c, std::uint8_t value) {
   tile_for(c, true)[offset_in_tile(c)] = value;
+  return true;
 }
 
-OnlineStc::OnlineStc(int start_quadrant) : q_(start_quadrant & 3), q0_(start_quadrant & 3) {
-  memory_.set(cell_, static_cast<std::uint8_t>(CellMemory::kVisited | dir_add(q0_, 3)));
-}
-
-Command OnlineStc::step(const Observation& seen) {
-  if (done_) return {};
-  const int d = q_;
-  const Cell nb = stc::step(cell_, d);
-  // A new cell: free and never visited. It becomes a child of the current cell.
-  if (((seen.free_neighbours >> d) & 1) != 0 && memory_.get(nb) == 0) {
-    memory_.set(nb, static_cast<std::uint8_t>(CellMemory::kVisited | opposite(d)));
-    cell_ = nb;
-    parent_ = opposite(d);
-    q_ = dir_add(d, 3);
-    return {move_towards(d), false};
-  }
-  if (parent_ == d) {
-    const int arrive = dir_add(d, 3);
-    const bool nb_is_root = nb == Cell{0, 0};
-    if (nb_is_root && arrive == q0_) {
-      done_ = true;
-      return {};
-    }
-    cell_ = nb;
-    q_ = arrive;
-    parent_ = nb_is_root ? -1 : (memory_.get(nb) & 3);
-    return {move_towards(d), false};
-  }
-  q_ = dir_add(q_, 1);
-  if (q_ == q0_ && cell_ == Cell{0, 0}) {
-    done_ = true;
-    return {};
-  }
-  return {move_towards(q_), false};
-}
+template class BasicOnlineStc<CellMemory>;
 
 } // namespace antkit::stc

@@ -286,21 +286,34 @@ RunResult run_stc(StcWorld& world, const kernel::OccupancyGrid& map, SubCell sta
 
 std::vector<std::uint8_t> mcu_input(const kernel::OccupancyGrid& map, SubCell start,
                                     Variant variant, NoiseModel noise) {
-  if (variant != Variant::Ant && variant != Variant::AntEdge)
-    throw kernel::InputError("variant", "the Cortex-M image runs ant and ant-edge; " +
+  if (variant != Variant::Ant && variant != Variant::AntEdge && variant != Variant::Online)
+    throw kernel::InputError("variant", "the Cortex-M image runs ant, ant-edge and online; " +
                                             std::string(variant_name(variant)) +
                                             " runs on the host only (so far)");
   check_start(map, start, variant);
-  const Marker marker = variant == Variant::AntEdge ? Marker::Edge : Marker::WholeSubCell;
-  const std::size_t need = floor_bytes(map.width(), map.height(), marker);
+  McuRun run;
+  run.variant = variant == Variant::Ant       ? McuVariant::Ant
+                : variant == Variant::AntEdge ? McuVariant::AntEdge
+                                              : McuVariant::Online;
+  run.marker = variant == Variant::AntEdge ? Marker::Edge : Marker::WholeSubCell;
+  run.width = map.width();
+  run.height = map.height();
+  const std::size_t need = mcu_bytes(run);
   if (map.width() > kMcuMaxSide || map.height() > kMcuMaxSide || need > kMcuFloorBytes)
     throw kernel::InputError(
-        "map", std::to_string(map.width()) + " x " + std::to_string(map.height()) +
-                   " sub-cells need " + std::to_string(need) + " bytes of floor for " +
-                   std::string(variant_name(variant)) + " on the Cortex-M image, which has " +
-                   std::to_string(kMcuFloorBytes) + " (2 bits per sub-cell and " +
-                   (marker == Marker::Edge ? "2 bytes" : "1 byte") +
-                   " per cell; the STM32F405 has 128 KiB of RAM)");
+        "map",
+        std::to_string(map.width()) + " x " + std::to_string(map.height()) + " sub-cells need " +
+            std::to_string(need) + " bytes of floor" +
+            (variant == Variant::Online ? " and memory" : "") + " for " +
+            std::string(variant_name(variant)) + " on the Cortex-M image, which has " +
+            std::to_string(kMcuFloorBytes) + " (2 bits per sub-cell and " +
+            (run.marker == Marker::Edge ? "2 bytes" : "1 byte") + " per cell" +
+            (variant == Variant::Online ? ", and " +
+                                              std::to_string(FixedCellMemory::bytes_for(
+                                                  mcu_online_tiles(map.width(), map.height()))) +
+                                              " for the tiles of cells online STC may see"
+                                        : std::string()) +
+            "; the STM32F405 has 128 KiB of RAM)");
   const FloorSize size = floor_size(map.width(), map.height());
   std::vector<std::uint8_t> out(kMcuHeaderBytes + size.bit_bytes, 0);
   auto put = [&](std::size_t at, std::uint64_t v, int bytes) {
@@ -308,7 +321,7 @@ std::vector<std::uint8_t> mcu_input(const kernel::OccupancyGrid& map, SubCell st
       out[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v >> (8 * i));
   };
   for (std::size_t i = 0; i < 8; ++i) out[i] = static_cast<std::uint8_t>(kMcuMagic[i]);
-  put(8, marker == Marker::Edge ? 2 : 1, 4);
+  put(8, static_cast<std::uint32_t>(run.variant), 4);
   put(12, static_cast<std::uint32_t>(map.width()), 4);
   put(16, static_cast<std::uint32_t>(map.height()), 4);
   put(20, static_cast<std::uint32_t>(start.x), 4);

@@ -1,12 +1,12 @@
 /* antkit's C API for firmware (C99): the controllers a robot runs, and the trace hash.
  *
  * Each controller is a fixed-size struct, an init function and a step function that takes the
- * robot's readings and returns its command. Nothing here allocates, blocks, throws or keeps a
- * pointer: the state is the struct you pass, so a firmware can keep it in a static, copy it, or
- * store it in backup RAM. The step functions are the very C++ code `antkit stc` runs (the structs
- * hold the C++ controllers' bytes), compiled freestanding; scripts/run-on-mcu.sh runs them on an
- * emulated Cortex-M4 and prints the same tour hash as the host (issue 27). examples/epuck2_stc.c is
- * a complete control loop for an e-puck2.
+ * robot's readings and returns its command (online STC's memory: a buffer you give it). Nothing
+ * here allocates, blocks, throws or keeps a pointer: the state is the struct you pass, so a
+ * firmware can keep it in a static, copy it, or store it in backup RAM. The step functions are the
+ * very C++ code `antkit stc` runs (the structs hold the C++ controllers' bytes), compiled
+ * freestanding; scripts/run-on-mcu.sh runs them on an emulated Cortex-M4 and prints the same tour
+ * hash as the host (issue 27). examples/epuck2_stc.c is a complete control loop for an e-puck2.
  *
  * Conventions (algorithms/stc/include/antkit/stc/subcell.hpp):
  *   - Directions, counter-clockwise as drawn on a map with y downward: 0 east, 1 north (y - 1),
@@ -86,6 +86,35 @@ void antkit_ant_edge_stc_init(antkit_ant_edge_stc* state, int start_quadrant);
 antkit_stc_command antkit_ant_edge_stc_step(antkit_ant_edge_stc* state,
                                             const antkit_edge_reading* reading);
 
+/* ---- online STC: the robot senses free neighbour cells and remembers the cells it has seen --- */
+
+/* Its memory grows with the cells it sees: a table of tiles of 16 x 16 cells (256 bytes each) in a
+ * buffer you give it. A robot that reaches a new cell when every tile is taken stops there
+ * (ANTKIT_STOP; antkit_online_stc_overflowed says why). An arena of W x H cells needs at most
+ * (W / 16 + 2) x (H / 16 + 2) tiles, wherever the robot starts. */
+typedef struct antkit_online_stc {
+  uint64_t opaque[16];
+} antkit_online_stc;
+
+/* free_neighbours: bit d set when the neighbour cell in direction d is free. */
+typedef struct antkit_cell_reading {
+  uint8_t free_neighbours;
+} antkit_cell_reading;
+
+/* The buffer bytes for `tiles` tiles (and the table that finds them). */
+size_t antkit_online_stc_bytes(size_t tiles);
+/* Starts a tour from the sub-cell of quadrant start_quadrant; buffer 8-byte aligned. 0, or -1 when
+ * the buffer holds no tile or is not aligned. */
+int antkit_online_stc_init(antkit_online_stc* state, void* buffer, size_t bytes,
+                           int start_quadrant);
+antkit_stc_command antkit_online_stc_step(antkit_online_stc* state,
+                                          const antkit_cell_reading* reading);
+/* Non-zero when the tour stopped because the memory was full. */
+int antkit_online_stc_overflowed(const antkit_online_stc* state);
+/* Tiles in use, and how many the buffer holds. */
+size_t antkit_online_stc_tiles(const antkit_online_stc* state);
+size_t antkit_online_stc_capacity(const antkit_online_stc* state);
+
 /* ---- a simulated floor, to run a firmware loop on a computer -------------------------------- */
 
 /* antkit's STC floor (algorithms/stc/include/antkit/stc/floor.hpp: the world `antkit stc` steps):
@@ -111,7 +140,9 @@ int antkit_stc_floor_init(antkit_stc_floor* floor, void* buffer, size_t size, in
 void antkit_stc_floor_set_free(antkit_stc_floor* floor, int32_t x, int32_t y);
 /* Clears the marks and puts the robot on sub-cell (x, y): 0, or -1 unless its cell is free. */
 int antkit_stc_floor_start(antkit_stc_floor* floor, int32_t x, int32_t y);
-/* What the robot reads where it stands. */
+/* What the robot reads where it stands (read_cells: on any floor; marks and edges: on the floor of
+ * that marker). */
+void antkit_stc_floor_read_cells(antkit_stc_floor* floor, antkit_cell_reading* reading);
 void antkit_stc_floor_read_marks(antkit_stc_floor* floor, antkit_mark_reading* reading);
 void antkit_stc_floor_read_edges(antkit_stc_floor* floor, antkit_edge_reading* reading);
 /* Carries out a command (mark, then move): 1 moved, 0 refused (ANTKIT_STOP, or a move into a

@@ -65,11 +65,12 @@ struct FloorSize {
   return s;
 }
 
-// The bytes a run of one marker needs: both bit arrays and that marker's array.
+// The bytes a run of one marker needs in one buffer (floor_storage's layout): both bit arrays,
+// then that marker's array at an 8-byte boundary.
 [[nodiscard]] constexpr std::size_t floor_bytes(std::int32_t width, std::int32_t height,
                                                 Marker marker) noexcept {
   const FloorSize s = floor_size(width, height);
-  return 2 * s.bit_bytes + s.cells * (marker == Marker::Edge ? 2 : 1);
+  return ((2 * s.bit_bytes + 7) & ~std::size_t{7}) + s.cells * (marker == Marker::Edge ? 2 : 1);
 }
 
 struct FloorStorage {
@@ -78,6 +79,23 @@ struct FloorStorage {
   std::uint8_t* marks = nullptr;        // cells entries, or null
   std::uint16_t* edges = nullptr;       // cells entries, or null
 };
+
+// Lays a floor's storage out in `buffer` (8-byte aligned, floor_bytes long): free bits, entered
+// bits, then the marker's array (marks for WholeSubCell, edges for Edge). Nothing is written.
+[[nodiscard]] inline FloorStorage floor_storage(void* buffer, std::int32_t width,
+                                                std::int32_t height, Marker marker) noexcept {
+  const FloorSize s = floor_size(width, height);
+  auto* bytes = static_cast<std::uint8_t*>(buffer);
+  FloorStorage f;
+  f.free_bits = bytes;
+  f.entered_bits = bytes + s.bit_bytes;
+  std::uint8_t* cells = bytes + ((2 * s.bit_bytes + 7) & ~std::size_t{7});
+  if (marker == Marker::Edge)
+    f.edges = reinterpret_cast<std::uint16_t*>(cells);
+  else
+    f.marks = cells;
+  return f;
+}
 
 class Floor {
 public:

@@ -1,20 +1,22 @@
 #pragma once
-// The input of the Cortex-M image (mcu/, scripts/run-on-mcu.sh): one marker STC run, as bytes the
+// The input of the Cortex-M image (mcu/, scripts/run-on-mcu.sh): one STC run, as bytes the
 // host prepares (`antkit stc-mcu-input`) and the chip reads through semihosting. Freestanding: the
 // chip's reader is this header; the host's writer is mcu_input() in world.hpp.
 //
 // Little-endian, 48 bytes of header, then the map:
 //   0  char[8] "ANTKMCU1"
-//   8  u32     marker: 1 ant (sub-cell marks), 2 ant-edge (lit edges)
+//   8  u32     variant: 1 ant (sub-cell marks), 2 ant-edge (lit edges), 3 online
 //  12  i32     width, 16 i32 height: the map in sub-cells
 //  20  i32     start x, 24 i32 start y
 //  28  u32     noise: misread probability in parts per million
 //  32  u64     noise seed, 40 u64 noise trial
 //  48  the free sub-cells of the cell area, floor_size(width, height).bit_bytes bytes, in the
 //      layout of Floor's free_bits (floor.hpp)
-// The image keeps its floor in one static array of kMcuFloorBytes; a map whose floor needs more
-// (floor_bytes) is refused on the host, with the limit in the message, and again on the chip.
+// The image keeps its floor in one static array of kMcuFloorBytes (online STC: and its memory of
+// the cells seen, FixedCellMemory, in the rest of it); a map whose floor (and memory) needs more
+// (mcu_bytes) is refused on the host, with the limit in the message, and again on the chip.
 #include <antkit/stc/floor.hpp>
+#include <antkit/stc/online.hpp>
 #include <cstddef>
 #include <cstdint>
 
@@ -29,21 +31,42 @@ inline constexpr std::size_t kMcuFloorBytes = 112 * 1024;
 // a floor this size would not fit the arena anyway).
 inline constexpr std::int32_t kMcuMaxSide = 1 << 14;
 
+enum class McuVariant : std::uint8_t { Ant = 1, AntEdge = 2, Online = 3 };
+
 struct McuRun {
-  Marker marker = Marker::WholeSubCell;
+  McuVariant variant = McuVariant::Ant;
+  Marker marker = Marker::WholeSubCell; // online: the floor's cells only hold their freedom
   std::int32_t width = 0, height = 0;
   SubCell start{};
   NoiseModel noise{};
 };
 
+// Online STC's memory on the chip: room for every tile of 16 x 16 cells the map can touch from any
+// start, (cells_x / 16 + 2) x (cells_y / 16 + 2) (FixedCellMemory).
+[[nodiscard]] constexpr std::size_t mcu_online_tiles(std::int32_t width,
+                                                     std::int32_t height) noexcept {
+  const FloorSize s = floor_size(width, height);
+  return (static_cast<std::size_t>(s.shape.cells_x) / 16 + 2) *
+         (static_cast<std::size_t>(s.shape.cells_y) / 16 + 2);
+}
+
+// The arena bytes a run needs: its floor, and for online STC its memory (8-byte aligned after the
+// floor).
+[[nodiscard]] constexpr std::size_t mcu_bytes(const McuRun& run) noexcept {
+  const std::size_t floor = floor_bytes(run.width, run.height, run.marker);
+  if (run.variant != McuVariant::Online) return floor;
+  return ((floor + 7) & ~std::size_t{7}) +
+         FixedCellMemory::bytes_for(mcu_online_tiles(run.width, run.height));
+}
+
 enum class McuInputError : std::uint8_t {
   None,
   Short,    // fewer bytes than the header
   Magic,    // not an antkit Cortex-M input
-  Marker,   // a marker code other than 1 or 2
+  Variant,  // a variant code other than 1, 2 or 3
   Size,     // width or height out of [2, kMcuMaxSide]
   Start,    // the start outside the cell area
-  TooLarge, // the floor needs more than kMcuFloorBytes
+  TooLarge, // the floor (and memory) need more than kMcuFloorBytes
 };
 
 [[nodiscard]] constexpr const char* describe(McuInputError e) noexcept {
@@ -54,14 +77,14 @@ enum class McuInputError : std::uint8_t {
     return "shorter than the 48-byte header";
   case McuInputError::Magic:
     return "not an antkit Cortex-M input (magic ANTKMCU1)";
-  case McuInputError::Marker:
-    return "marker is neither 1 (ant) nor 2 (ant-edge)";
+  case McuInputError::Variant:
+    return "variant is not 1 (ant), 2 (ant-edge) or 3 (online)";
   case McuInputError::Size:
     return "width or height outside [2, 16384]";
   case McuInputError::Start:
     return "start outside the map's cells";
   case McuInputError::TooLarge:
-    return "the floor needs more than the image's 114688 bytes";
+    return "the floor (and online STC's memory) need more than the image's 114688 bytes";
   }
   return "?";
 }
@@ -80,9 +103,10 @@ constexpr std::uint64_t le(const std::uint8_t* p, int bytes) noexcept {
   if (n < kMcuHeaderBytes) return McuInputError::Short;
   for (int i = 0; i < 8; ++i)
     if (p[i] != static_cast<std::uint8_t>(kMcuMagic[i])) return McuInputError::Magic;
-  const auto marker = static_cast<std::uint32_t>(detail::le(p + 8, 4));
-  if (marker != 1 && marker != 2) return McuInputError::Marker;
-  run.marker = marker == 2 ? Marker::Edge : Marker::WholeSubCell;
+  const auto variant = static_cast<std::uint32_t>(detail::le(p + 8, 4));
+  if (variant < 1 || variant > 3) return McuInputError::Variant;
+  run.variant = static_cast<McuVariant>(variant);
+  run.marker = variant == 2 ? Marker::Edge : Marker::WholeSubCell;
   run.width = static_cast<std::int32_t>(static_cast<std::uint32_t>(detail::le(p + 12, 4)));
   run.height = static_cast<std::int32_t>(static_cast<std::uint32_t>(detail::le(p + 16, 4)));
   if (run.width < 2 || run.height < 2 || run.width > kMcuMaxSide || run.height > kMcuMaxSide)
@@ -95,8 +119,7 @@ constexpr std::uint64_t le(const std::uint8_t* p, int bytes) noexcept {
   run.noise.ppm = static_cast<std::uint32_t>(detail::le(p + 28, 4));
   run.noise.seed = detail::le(p + 32, 8);
   run.noise.trial = detail::le(p + 40, 8);
-  if (floor_bytes(run.width, run.height, run.marker) > kMcuFloorBytes)
-    return McuInputError::TooLarge;
+  if (mcu_bytes(run) > kMcuFloorBytes) return McuInputError::TooLarge;
   return McuInputError::None;
 }
 
