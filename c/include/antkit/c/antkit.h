@@ -1,12 +1,14 @@
 /* antkit's C API for firmware (C99): the controllers a robot runs, and the trace hash.
  *
  * Each controller is a fixed-size struct, an init function and a step function that takes the
- * robot's readings and returns its command (online STC's memory: a buffer you give it). Nothing
- * here allocates, blocks, throws or keeps a pointer: the state is the struct you pass, so a
- * firmware can keep it in a static, copy it, or store it in backup RAM. The step functions are the
- * very C++ code `antkit stc` runs (the structs hold the C++ controllers' bytes), compiled
- * freestanding; scripts/run-on-mcu.sh runs them on an emulated Cortex-M4 and prints the same tour
- * hash as the host (issue 27). examples/epuck2_stc.c is a complete control loop for an e-puck2.
+ * robot's readings and returns its command. Nothing here allocates, blocks or throws. The ant and
+ * ant-edge state is the 2-byte struct you pass and nothing else, so a firmware can keep it in a
+ * static, copy it, or store it in backup RAM; online STC and the simulated floor also keep a
+ * pointer to the buffer you give them (their memory), which must stay where it is. The step
+ * functions are the very C++ code `antkit stc` runs (the structs hold the C++ objects' bytes),
+ * compiled freestanding; scripts/run-on-mcu.sh runs them on an emulated Cortex-M4 and prints the
+ * same tour hash as the host (issue 27). examples/epuck2/stc_loop.c is a complete control loop
+ * for an e-puck2.
  *
  * Conventions (algorithms/stc/include/antkit/stc/subcell.hpp):
  *   - Directions, counter-clockwise as drawn on a map with y downward: 0 east, 1 north (y - 1),
