@@ -9,11 +9,14 @@
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/random.hpp>
 #include <antkit/kernel/raster.hpp>
+#include <antkit/stc/world.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 bool consumer_property(); // property.cpp: rapidcheck over antkit::testing
+// c_api.c: ant-like STC on a 6 x 4 room through the C API alone.
+extern "C" std::uint64_t consumer_c_tour_hash(std::int64_t* covered);
 
 int main() {
   antkit::kernel::Grid<std::uint8_t> grid(4, 3, 0);
@@ -72,5 +75,14 @@ int main() {
               experiments_ok ? "ok" : "FAILED");
   const bool property_ok = consumer_property() && experiments_ok;
   std::printf("consumer: antkit::testing property: %s\n", property_ok ? "ok" : "FAILED");
-  return ok && property_ok ? 0 : 1;
+  // The C API (antkit::c) from C: the same tour, hash and coverage as the C++ run.
+  std::int64_t c_covered = 0;
+  const std::uint64_t c_hash = consumer_c_tour_hash(&c_covered);
+  const auto cpp =
+      antkit::stc::run_stc(antkit::kernel::OccupancyGrid(6, 4, antkit::kernel::Occupancy::Free),
+                           {0, 0}, antkit::stc::Variant::Ant);
+  const bool c_ok = c_hash == cpp.hash && c_covered == 24 && cpp.covered == 24;
+  std::printf("consumer: antkit::c from C, tour hash %s: %s\n",
+              antkit::kernel::hash_hex(c_hash).c_str(), c_ok ? "ok" : "FAILED");
+  return ok && property_ok && c_ok ? 0 : 1;
 }
