@@ -93,15 +93,35 @@ private:
   std::string buf_;
 };
 
+// What `antkit stc` and `antkit stc-mcu-input` read from the same options, refused the same way:
+// the variant, the marker noise, the map and the start.
+struct StcRequest {
+  Variant variant;
+  NoiseModel noise;
+  antkit::maps::GridMap map;
+  Cell start;
+};
+
+StcRequest read_stc_request(const std::string& map_file, const std::string& variant_text,
+                            const std::string& start, const std::string& noise,
+                            std::uint64_t seed) {
+  StcRequest r{antkit::reports::stc_variant(variant_text, "--variant"), {}, {}, {}};
+  if (!noise.empty()) r.noise = antkit::reports::stc_noise(r.variant, noise, seed, "--noise");
+  r.map = antkit::maps::load_map(map_file);
+  r.start = antkit::reports::choose_stc_start(
+      r.map, r.variant,
+      start.empty() ? std::nullopt : std::optional(algorithms::parse_cell("--start", start)),
+      map_file);
+  return r;
+}
+
 void run_stc_command(const StcOptions& o) {
-  const Variant variant = antkit::reports::stc_variant(o.variant, "--variant");
+  const StcRequest request = read_stc_request(o.map, o.variant, o.start, o.noise, o.seed);
+  const Variant variant = request.variant;
+  const auto& map = request.map;
+  const Cell start = request.start;
   RunOptions run;
-  if (!o.noise.empty()) run.noise = antkit::reports::stc_noise(variant, o.noise, o.seed, "--noise");
-  const auto map = antkit::maps::load_map(o.map);
-  const Cell start = antkit::reports::choose_stc_start(
-      map, variant,
-      o.start.empty() ? std::nullopt : std::optional(algorithms::parse_cell("--start", o.start)),
-      o.map);
+  run.noise = request.noise;
   // Every bad input is refused before the first byte of output: the path file's name is checked
   // and the file opened (write_file_atomic) before the run, and run_stc checks the start before
   // the first position, which writes the JSON's head.
@@ -259,17 +279,11 @@ struct McuInputOptions {
 // The Cortex-M image's input (stc/mcu_input.hpp) for scripts/run-on-mcu.sh: the same options, the
 // same start and the same refusals as `antkit stc`, and a map too large for the chip refused.
 void run_mcu_input_command(const McuInputOptions& o) {
-  const Variant variant = antkit::reports::stc_variant(o.variant, "--variant");
-  NoiseModel noise;
-  if (!o.noise.empty()) noise = antkit::reports::stc_noise(variant, o.noise, o.seed, "--noise");
-  const auto map = antkit::maps::load_map(o.map);
-  const Cell start = antkit::reports::choose_stc_start(
-      map, variant,
-      o.start.empty() ? std::nullopt : std::optional(algorithms::parse_cell("--start", o.start)),
-      o.map);
+  const StcRequest r = read_stc_request(o.map, o.variant, o.start, o.noise, o.seed);
+  const Cell start = r.start;
   std::vector<std::uint8_t> bytes;
   try {
-    bytes = mcu_input(map.cells, start, variant, noise);
+    bytes = mcu_input(r.map.cells, start, r.variant, r.noise);
   } catch (const InputError& e) {
     const std::string where = e.where() == "variant" ? "--variant"
                               : e.where() == "map"   ? o.map

@@ -292,13 +292,17 @@ Cell stc_start(const OccupancyGrid& g) {
 constexpr std::array<const char*, 3> kStcMaps{"den312d", "warehouse-10-20-10-2-1", "ht_chantry"};
 constexpr stc::NoiseModel kStcNoise{20000, 7, 0}; // the noisy scenarios' misreads
 
+// "stc/VARIANT[-noise0.02]/MAP", the name of an STC scenario (and of its Cortex-M input).
+std::string stc_scenario_name(stc::Variant variant, bool noisy, const char* map) {
+  return "stc/" + std::string(stc::variant_name(variant)) + (noisy ? "-noise0.02" : "") + "/" + map;
+}
+
 void add_stc(std::vector<Scenario>& out, MapShelf& shelf) {
   for (const char* map : kStcMaps)
     for (const auto variant : stc::kVariants)
       for (const bool noisy : {false, true}) {
         if (noisy && variant != stc::Variant::Ant && variant != stc::Variant::AntEdge) continue;
-        const std::string name = "stc/" + std::string(stc::variant_name(variant)) +
-                                 (noisy ? "-noise0.02" : "") + "/" + map;
+        const std::string name = stc_scenario_name(variant, noisy, map);
         out.push_back({name, [variant, noisy, map, &shelf](unsigned, Trace& trace) {
                          const auto& grid = shelf.get(map);
                          stc::RunOptions o;
@@ -430,8 +434,7 @@ void write_mcu_inputs(MapShelf& shelf, const std::string& dir) {
     for (const auto variant : {stc::Variant::Ant, stc::Variant::AntEdge, stc::Variant::Online})
       for (const bool noisy : {false, true}) {
         if (noisy && variant == stc::Variant::Online) continue; // online reads no marks
-        const std::string name = "stc/" + std::string(stc::variant_name(variant)) +
-                                 (noisy ? "-noise0.02" : "") + "/" + map;
+        const std::string name = stc_scenario_name(variant, noisy, map);
         const auto& grid = shelf.get(map);
         const auto bytes =
             stc::mcu_input(grid, stc_start(grid), variant, noisy ? kStcNoise : stc::NoiseModel{});

@@ -25,11 +25,14 @@ static_assert(sizeof(OnlineChip) <= sizeof(antkit_online_stc) &&
               alignof(OnlineChip) <= alignof(antkit_online_stc));
 static_assert(std::is_trivially_destructible_v<OnlineChip>);
 
-OnlineChip& online_of(antkit_online_stc* s) noexcept {
-  return *std::launder(reinterpret_cast<OnlineChip*>(s->opaque));
+// The C++ object a C struct's opaque bytes hold (placed there by its init function).
+template <class T, class C>
+T& object_in(C* c) noexcept {
+  return *std::launder(reinterpret_cast<T*>(c->opaque));
 }
-const OnlineChip& online_of(const antkit_online_stc* s) noexcept {
-  return *std::launder(reinterpret_cast<const OnlineChip*>(s->opaque));
+template <class T, class C>
+const T& object_in(const C* c) noexcept {
+  return *std::launder(reinterpret_cast<const T*>(c->opaque));
 }
 
 // What antkit_stc_floor holds: the floor, its storage and its size, until start.
@@ -43,13 +46,6 @@ struct FloorState {
 static_assert(sizeof(FloorState) <= sizeof(antkit_stc_floor) &&
               alignof(FloorState) <= alignof(antkit_stc_floor));
 static_assert(std::is_trivially_destructible_v<FloorState>);
-
-FloorState& state_of(antkit_stc_floor* f) noexcept {
-  return *std::launder(reinterpret_cast<FloorState*>(f->opaque));
-}
-const FloorState& state_of(const antkit_stc_floor* f) noexcept {
-  return *std::launder(reinterpret_cast<const FloorState*>(f->opaque));
-}
 
 bool valid_size(std::int32_t width, std::int32_t height) noexcept {
   return width >= 2 && height >= 2 && width <= 16384 && height <= 16384;
@@ -146,17 +142,17 @@ int antkit_online_stc_init(antkit_online_stc* state, void* buffer, size_t bytes,
 
 antkit_stc_command antkit_online_stc_step(antkit_online_stc* state,
                                           const antkit_cell_reading* reading) {
-  return to_c(online_of(state).step({reading->free_neighbours}));
+  return to_c(object_in<OnlineChip>(state).step({reading->free_neighbours}));
 }
 
 int antkit_online_stc_overflowed(const antkit_online_stc* state) {
-  return online_of(state).overflowed() ? 1 : 0;
+  return object_in<OnlineChip>(state).overflowed() ? 1 : 0;
 }
 size_t antkit_online_stc_tiles(const antkit_online_stc* state) {
-  return online_of(state).memory().tiles();
+  return object_in<OnlineChip>(state).memory().tiles();
 }
 size_t antkit_online_stc_capacity(const antkit_online_stc* state) {
-  return online_of(state).memory().capacity();
+  return object_in<OnlineChip>(state).memory().capacity();
 }
 
 size_t antkit_stc_floor_bytes(int32_t width, int32_t height, int marker) {
@@ -183,7 +179,7 @@ int antkit_stc_floor_init(antkit_stc_floor* floor, void* buffer, size_t size, in
 }
 
 void antkit_stc_floor_set_free(antkit_stc_floor* floor, int32_t x, int32_t y) {
-  FloorState& s = state_of(floor);
+  FloorState& s = object_in<FloorState>(floor);
   const auto fs = antkit::stc::floor_size(s.width, s.height);
   if (x < 0 || y < 0 || x >= 2 * fs.shape.cells_x || y >= 2 * fs.shape.cells_y) return;
   const std::size_t k =
@@ -194,7 +190,7 @@ void antkit_stc_floor_set_free(antkit_stc_floor* floor, int32_t x, int32_t y) {
 }
 
 int antkit_stc_floor_start(antkit_stc_floor* floor, int32_t x, int32_t y) {
-  FloorState& s = state_of(floor);
+  FloorState& s = object_in<FloorState>(floor);
   const antkit::stc::SubCell start{x, y};
   const auto shape = antkit::stc::floor_size(s.width, s.height).shape;
   if (x < 0 || y < 0 || !shape.in_bounds(antkit::stc::cell_of(start))) return -1;
@@ -205,12 +201,12 @@ int antkit_stc_floor_start(antkit_stc_floor* floor, int32_t x, int32_t y) {
 }
 
 void antkit_stc_floor_read_cells(antkit_stc_floor* floor, antkit_cell_reading* r) {
-  FloorState& s = state_of(floor);
+  FloorState& s = object_in<FloorState>(floor);
   r->free_neighbours = s.started ? s.floor.observe_cells().free_neighbours : 0;
 }
 
 void antkit_stc_floor_read_marks(antkit_stc_floor* floor, antkit_mark_reading* r) {
-  FloorState& s = state_of(floor);
+  FloorState& s = object_in<FloorState>(floor);
   *r = antkit_mark_reading{};
   if (!s.started || !s.storage.marks) return;
   const antkit::stc::MarkObservation o = s.floor.observe_marks();
@@ -220,7 +216,7 @@ void antkit_stc_floor_read_marks(antkit_stc_floor* floor, antkit_mark_reading* r
 }
 
 void antkit_stc_floor_read_edges(antkit_stc_floor* floor, antkit_edge_reading* r) {
-  FloorState& s = state_of(floor);
+  FloorState& s = object_in<FloorState>(floor);
   *r = antkit_edge_reading{};
   if (!s.started || !s.storage.edges) return;
   const antkit::stc::EdgeObservation o = s.floor.observe_edges();
@@ -230,22 +226,22 @@ void antkit_stc_floor_read_edges(antkit_stc_floor* floor, antkit_edge_reading* r
 }
 
 int antkit_stc_floor_apply(antkit_stc_floor* floor, antkit_stc_command c) {
-  FloorState& s = state_of(floor);
+  FloorState& s = object_in<FloorState>(floor);
   if (!s.started || c.move > ANTKIT_STOP) return 0;
   return s.floor.apply({static_cast<antkit::stc::Move>(c.move), c.mark != 0}) ? 1 : 0;
 }
 
 void antkit_stc_floor_position(const antkit_stc_floor* floor, int32_t* x, int32_t* y) {
-  const antkit::stc::SubCell p = state_of(floor).floor.position();
+  const antkit::stc::SubCell p = object_in<FloorState>(floor).floor.position();
   *x = p.x;
   *y = p.y;
 }
 
 int64_t antkit_stc_floor_covered(const antkit_stc_floor* floor) {
-  return state_of(floor).floor.covered();
+  return object_in<FloorState>(floor).floor.covered();
 }
 int64_t antkit_stc_floor_repeats(const antkit_stc_floor* floor) {
-  return state_of(floor).floor.repeats();
+  return object_in<FloorState>(floor).floor.repeats();
 }
 
 void antkit_trace_hash_init(antkit_trace_hash* hash, uint64_t seed) {
