@@ -4,8 +4,38 @@
 # not part of the vector). The golden file is what C++ tests read, so a change in the model that
 # moves a vector fails here until the golden file, and then the C++ test, follow.
 #   cmake -DCOQC=... -DSRC=file.v -DOUT_DIR=dir -DGOLDEN=file.out -P run_coqc.cmake
+#
+# A file may build on another of proofs/coq: `Require Import StcTour.` (a name with no prefix, one
+# per line). Such files are compiled first, dependencies before dependants, into a directory of
+# this test's own (ctest runs the proofs in parallel, and StcTour's own test writes its .vo
+# beside), which the file then sees under the empty logical prefix (-Q dir "").
+cmake_policy(SET CMP0057 NEW) # if(... IN_LIST ...)
 get_filename_component(name ${SRC} NAME_WE)
-execute_process(COMMAND ${COQC} -q -no-glob -o ${OUT_DIR}/${name}.vo ${SRC}
+get_filename_component(src_dir ${SRC} DIRECTORY)
+set(lib_dir ${OUT_DIR}/${name}.lib)
+file(REMOVE_RECURSE ${lib_dir})
+file(MAKE_DIRECTORY ${lib_dir})
+set_property(GLOBAL PROPERTY antkit_coq_compiled "")
+function(antkit_coq_compile_deps file)
+  file(STRINGS ${file} requires REGEX "^Require (Import|Export) [A-Za-z0-9_]+\\.")
+  foreach(line IN LISTS requires)
+    string(REGEX REPLACE "^Require (Import|Export) ([A-Za-z0-9_]+)\\..*" "\\2" dep "${line}")
+    get_property(compiled GLOBAL PROPERTY antkit_coq_compiled)
+    if(NOT EXISTS ${src_dir}/${dep}.v OR dep IN_LIST compiled)
+      continue()
+    endif()
+    antkit_coq_compile_deps(${src_dir}/${dep}.v)
+    execute_process(COMMAND ${COQC} -q -no-glob -Q ${lib_dir} "" -o ${lib_dir}/${dep}.vo
+                            ${src_dir}/${dep}.v
+                    OUTPUT_QUIET ERROR_VARIABLE dep_err RESULT_VARIABLE dep_rc)
+    if(NOT dep_rc EQUAL 0)
+      message(FATAL_ERROR "coqc failed on ${dep}.v, which ${file} requires:\n${dep_err}")
+    endif()
+    set_property(GLOBAL APPEND PROPERTY antkit_coq_compiled ${dep})
+  endforeach()
+endfunction()
+antkit_coq_compile_deps(${SRC})
+execute_process(COMMAND ${COQC} -q -no-glob -Q ${lib_dir} "" -o ${OUT_DIR}/${name}.vo ${SRC}
                 OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
 file(WRITE ${OUT_DIR}/${name}.out "${out}")
 if(NOT rc EQUAL 0)

@@ -1,0 +1,378 @@
+// The tie between the Coq proof of ant-like STC and the shipped code (issue 28).
+//
+//   proof_tie_ant_stc decide GOLDEN [--flip-table K | --flip-code K]
+//     GOLDEN is proofs/golden/AntDecide.out: the decision table coqc computes from AntDecide.v's
+//     `decide`, the function AntStcWorld.v proves covers every map. Requires the shipped
+//     stc::ant_decide to give the table's decision on its whole domain: every current quadrant,
+//     both values of `done`, and every 4-bit free mask, here mask and mask of each of the four
+//     neighbours (4 x 2 x 16^6 = 134 217 728 inputs, every observation Floor::observe_marks can
+//     produce). The table is indexed by the reduction AntDecide.v proves `decide` reads its input
+//     through (decide_reads_the_view, decide_view_ext; decide_done for `done`).
+//
+//   proof_tie_ant_stc world [--drop-mark K]
+//     The world step. The shipped world (stc::Floor through StcWorld, driven by drive_tour as
+//     run_stc drives it) against AntStcWorld.v's world step transcribed below (observe the five
+//     cells' marks; decide; on Go, mark the sub-cell left, move one sub-cell; on Stop, end), the
+//     model using the Coq table's decisions rather than the shipped ant_decide. On every cell map
+//     of up to 12 cells in a 4 x 4 box, from every start sub-cell, they must agree on every
+//     position, on every mark after every move, and on how the run ends. This is tested
+//     correspondence on that domain, not a proof: the world step is not instantiated in Coq.
+//
+// The teeth (ctest proof.teeth.*): --flip-table K changes the K-th table entry, --flip-code K
+// changes the shipped decision on the K-th input, --drop-mark K makes the shipped world forget the
+// mark of its K-th move. Each must make the check fail (exit 1, "MISMATCH ..."); the tests pass
+// only then.
+#include <antkit/kernel/grid.hpp>
+#include <antkit/stc/ant.hpp>
+#include <antkit/stc/floor.hpp>
+#include <antkit/stc/world.hpp>
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace antkit::stc;
+using antkit::kernel::Occupancy;
+using antkit::kernel::OccupancyGrid;
+
+// ---- the decision table -----------------------------------------------------------------------
+
+// The four strings coqc prints for `Compute table E/N/W/S` (one per current quadrant).
+std::optional<std::array<std::string, 4>> read_table(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return std::nullopt;
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  std::array<std::string, 4> out;
+  std::size_t pos = 0;
+  for (auto& s : out) {
+    const std::size_t open = text.find('"', pos);
+    if (open == std::string::npos) return std::nullopt;
+    const std::size_t close = text.find('"', open + 1);
+    if (close == std::string::npos) return std::nullopt;
+    s = text.substr(open + 1, close - open - 1);
+    if (s.size() != 16 * 16 * 16 * 2) return std::nullopt;
+    pos = close + 1;
+  }
+  return out;
+}
+
+// What an entry says ant_decide returns: '.' Stop (and done set), else Go m q: move m, mark, q.
+struct Expected {
+  bool stop = true;
+  int move = 0;
+  int q = 0;
+};
+
+Expected decode(char c) {
+  if (c == '.') return {};
+  const int v = c - 'a';
+  return {false, v / 4, v % 4};
+}
+
+char flipped(char c) {
+  // Any other valid entry: Stop becomes a walk east into quadrant 0, a move becomes Stop.
+  return c == '.' ? 'a' : '.';
+}
+
+// AntDecide.v's reduction: is_new d = free d && the neighbour's mask is 0; entry = the mark of the
+// neighbour across side cur on its sub-cell cur - 1.
+std::size_t table_index(int here, int free, const std::array<std::uint8_t, 4>& nb, int cur) {
+  int is_new = 0;
+  for (int d = 0; d < 4; ++d)
+    if (((free >> d) & 1) != 0 && nb[static_cast<std::size_t>(d)] == 0) is_new |= 1 << d;
+  const int entry = (nb[static_cast<std::size_t>(cur)] >> dir_add(cur, 3)) & 1;
+  return static_cast<std::size_t>(((here * 16 + free) * 16 + is_new) * 2 + entry);
+}
+
+int check_decide(const std::string& golden, long long flip_table, long long flip_code) {
+  auto table = read_table(golden);
+  if (!table) {
+    std::fprintf(stderr, "error: %s: expected four strings of 8192 entries (Compute table ...)\n",
+                 golden.c_str());
+    return 2;
+  }
+  if (flip_table >= 0) {
+    auto& s = (*table)[static_cast<std::size_t>(flip_table / 8192) % 4];
+    char& c = s[static_cast<std::size_t>(flip_table % 8192)];
+    c = flipped(c);
+    std::printf("teeth: table entry %lld flipped\n", flip_table);
+  }
+  long long inputs = 0, mismatches = 0;
+  for (int cur = 0; cur < 4; ++cur)
+    for (int done_in = 0; done_in < 2; ++done_in)
+      for (int free = 0; free < 16; ++free)
+        for (int here = 0; here < 16; ++here)
+          for (std::uint32_t nbs = 0; nbs < (1u << 16); ++nbs) {
+            const std::array<std::uint8_t, 4> nb{static_cast<std::uint8_t>(nbs & 15),
+                                                 static_cast<std::uint8_t>((nbs >> 4) & 15),
+                                                 static_cast<std::uint8_t>((nbs >> 8) & 15),
+                                                 static_cast<std::uint8_t>((nbs >> 12) & 15)};
+            int q = cur;
+            bool done = done_in != 0;
+            Command got = ant_decide(q, done, static_cast<std::uint8_t>(free),
+                                     static_cast<std::uint8_t>(here), nb);
+            if (inputs == flip_code) {
+              got = got.move == Move::Stop ? Command{Move::East, true} : Command{};
+              std::printf("teeth: the shipped decision on input %lld flipped\n", flip_code);
+            }
+            // decide_done: with done set, Stop. Otherwise the table's entry.
+            const Expected want =
+                done_in
+                    ? Expected{}
+                    : decode((
+                          *table)[static_cast<std::size_t>(cur)][table_index(here, free, nb, cur)]);
+            const bool ok =
+                want.stop ? (got == Command{} && done && q == cur)
+                          : (got == Command{move_towards(want.move), true} && !done && q == want.q);
+            if (!ok && ++mismatches <= 5)
+              std::printf(
+                  "MISMATCH decide: quadrant %d, done %d, free %d, here %d, neighbours "
+                  "%d %d %d %d: the proof's decide says %s, the shipped ant_decide "
+                  "returns move %d mark %d, quadrant %d, done %d\n",
+                  cur, done_in, free, here, nb[0], nb[1], nb[2], nb[3],
+                  want.stop
+                      ? "Stop"
+                      : ("Go " + std::to_string(want.move) + " " + std::to_string(want.q)).c_str(),
+                  static_cast<int>(got.move), got.mark ? 1 : 0, q, done ? 1 : 0);
+            ++inputs;
+          }
+  std::printf("decide: %lld inputs, %lld mismatches\n", inputs, mismatches);
+  return mismatches == 0 ? 0 : 1;
+}
+
+// ---- the world step ---------------------------------------------------------------------------
+
+// AntStcWorld.v's world, transcribed: free cells, marks per sub-cell, the robot's sub-cell and the
+// controller's quadrant. Its decisions come from the Coq table, not from the shipped code.
+class ModelWorld {
+public:
+  ModelWorld(int cells_x, int cells_y, std::uint32_t free_mask, SubCell start,
+             const std::array<std::string, 4>& table)
+      : cx_(cells_x), cy_(cells_y), free_(free_mask), pos_(start), q_(quadrant_of(start)),
+        table_(table), marks_(static_cast<std::size_t>(cells_x * cells_y), 0) {}
+
+  bool free_cell(Cell c) const {
+    return c.x >= 0 && c.y >= 0 && c.x < cx_ && c.y < cy_ && ((free_ >> (c.y * cx_ + c.x)) & 1);
+  }
+  // Bit q: sub-cell q of cell c is marked (0 outside the map).
+  std::uint8_t marks(Cell c) const {
+    if (c.x < 0 || c.y < 0 || c.x >= cx_ || c.y >= cy_) return 0;
+    return marks_[static_cast<std::size_t>(c.y * cx_ + c.x)];
+  }
+  SubCell position() const { return pos_; }
+
+  // One step: false when the controller says Stop.
+  bool step() {
+    const Cell c = cell_of(pos_);
+    int free = 0;
+    std::array<std::uint8_t, 4> nb{};
+    for (int d = 0; d < 4; ++d) {
+      const Cell n = antkit::stc::step(c, d);
+      if (!free_cell(n)) continue;
+      free |= 1 << d;
+      nb[static_cast<std::size_t>(d)] = marks(n);
+    }
+    const Expected x =
+        decode(table_[static_cast<std::size_t>(q_)][table_index(marks(c), free, nb, q_)]);
+    if (x.stop) return false;
+    marks_[static_cast<std::size_t>(c.y * cx_ + c.x)] =
+        static_cast<std::uint8_t>(marks(c) | (1u << quadrant_of(pos_)));
+    pos_ = antkit::stc::step(pos_, x.move);
+    q_ = x.q;
+    return true;
+  }
+  int believed_quadrant() const { return q_; }
+
+private:
+  int cx_, cy_;
+  std::uint32_t free_;
+  SubCell pos_;
+  int q_;
+  const std::array<std::string, 4>& table_;
+  std::vector<std::uint8_t> marks_;
+};
+
+// The shipped floor (the one StcWorld, the C API and the Cortex-M image run), over a buffer of
+// our own so that the teeth can reach into its marks. drive_tour calls apply() and position().
+class ShippedWorld {
+public:
+  ShippedWorld(int cells_x, int cells_y, std::uint32_t free_mask, SubCell start, Marker marker,
+               long long drop_mark)
+      : width_(2 * cells_x), height_(2 * cells_y), marker_(marker),
+        buffer_((floor_bytes(width_, height_, marker) + 7) / 8),
+        storage_(floor_storage(buffer_.data(), width_, height_, marker)),
+        stride_(static_cast<std::size_t>(cells_x) + 2), drop_mark_(drop_mark) {
+    const FloorSize size = floor_size(width_, height_);
+    for (std::size_t i = 0; i < size.bit_bytes; ++i) storage_.free_bits[i] = 0;
+    for (int cy = 0; cy < cells_y; ++cy)
+      for (int cx = 0; cx < cells_x; ++cx) {
+        if (((free_mask >> (cy * cells_x + cx)) & 1) == 0) continue;
+        for (int q = 0; q < 4; ++q) {
+          const SubCell s = subcell_of({cx, cy}, q);
+          const auto k = static_cast<std::size_t>(s.y * width_ + s.x);
+          storage_.free_bits[k >> 3] =
+              static_cast<std::uint8_t>(storage_.free_bits[k >> 3] | (1u << (k & 7)));
+        }
+      }
+    floor_.reset(width_, height_, storage_, start, NoiseModel{}, marker);
+  }
+
+  MarkObservation observe_marks() { return floor_.observe_marks(); }
+  EdgeObservation observe_edges() { return floor_.observe_edges(); }
+  bool apply(const Command& c) {
+    const SubCell left = floor_.position();
+    const bool moved = floor_.apply(c);
+    if (moved && moves_++ == drop_mark_) {
+      // The teeth: forget the mark just left (floor.hpp's layout: one entry per cell, a border of
+      // one cell; bit q for sub-cell q's mark, or, for edges, the edge lit behind the robot, which
+      // is one of the two boxes the edge rule reads for sub-cell q).
+      const Cell cell = cell_of(left);
+      const std::size_t i =
+          static_cast<std::size_t>(cell.y + 1) * stride_ + static_cast<std::size_t>(cell.x + 1);
+      const int q = quadrant_of(left);
+      if (storage_.marks)
+        storage_.marks[i] = static_cast<std::uint8_t>(storage_.marks[i] & ~(1u << q));
+      else
+        storage_.edges[i] =
+            static_cast<std::uint16_t>(storage_.edges[i] & ~((1u << q) | (1u << (4 + q))));
+      static bool told = false;
+      if (!told) std::printf("teeth: the shipped world drops the mark of move %lld\n", drop_mark_);
+      told = true;
+    }
+    return moved;
+  }
+  SubCell position() const { return floor_.position(); }
+  // The sub-cells of cell c that count as covered (bit q): their marks, or (edges) what the
+  // edge rule reads from the cell's lit edges.
+  std::uint8_t marks(Cell c) const {
+    if (marker_ == Marker::WholeSubCell) return floor_.cell_marks(c);
+    return covered_from_edges(floor_.cell_edges(c));
+  }
+
+private:
+  std::int32_t width_, height_;
+  Marker marker_;
+  std::vector<std::uint64_t> buffer_;
+  FloorStorage storage_;
+  Floor floor_;
+  std::size_t stride_;
+  long long drop_mark_;
+  long long moves_ = 0;
+};
+
+// One run of each world from one start; returns a description of the first difference.
+std::optional<std::string> compare_run(int cw, int ch, std::uint32_t mask, SubCell start,
+                                       const std::array<std::string, 4>& table, Marker marker,
+                                       long long drop_mark) {
+  ShippedWorld shipped(cw, ch, mask, start, marker, drop_mark);
+  ModelWorld model(cw, ch, mask, start, table);
+  antkit::kernel::TraceHash hash = tour_hash_begin(2 * cw, 2 * ch, start);
+  std::optional<std::string> diff;
+  long long move = 0;
+  const std::int64_t max_moves = 4LL * 4 * cw * ch + 4;
+  auto on_position = [&](SubCell s) {
+    ++move;
+    if (diff) return;
+    if (!model.step()) {
+      diff = "move " + std::to_string(move) + ": the model stops, the shipped robot moves";
+      return;
+    }
+    if (model.position() != s || model.believed_quadrant() != quadrant_of(s)) {
+      diff = "move " + std::to_string(move) + ": positions differ";
+      return;
+    }
+    for (int y = 0; y < ch; ++y)
+      for (int x = 0; x < cw; ++x)
+        if (model.marks({x, y}) != shipped.marks({x, y})) {
+          diff = "move " + std::to_string(move) + ": the marks of cell (" + std::to_string(x) +
+                 ", " + std::to_string(y) + ") differ";
+          return;
+        }
+  };
+  TourEnd end;
+  if (marker == Marker::WholeSubCell) {
+    AntStc controller(quadrant_of(start));
+    end = drive_tour(
+        controller, [&] { return shipped.observe_marks(); }, shipped, hash, max_moves, on_position);
+  } else {
+    AntEdgeStc controller(quadrant_of(start));
+    end = drive_tour(
+        controller, [&] { return shipped.observe_edges(); }, shipped, hash, max_moves, on_position);
+  }
+  if (diff) return diff;
+  if (end.refused) return "the shipped floor refused a move";
+  if (!end.closed) return "the shipped robot did not stop";
+  if (model.step()) return "the shipped robot stops, the model moves on";
+  return std::nullopt;
+}
+
+int check_world(const std::string& golden, Marker marker, long long drop_mark) {
+  const auto table = read_table(golden);
+  if (!table) {
+    std::fprintf(stderr, "error: %s: expected four strings of 8192 entries\n", golden.c_str());
+    return 2;
+  }
+  long long runs = 0, mismatches = 0;
+  for (int cw = 1; cw <= 4; ++cw)
+    for (int ch = 1; ch <= 4; ++ch) {
+      if (cw * ch > 12) continue;
+      for (std::uint32_t mask = 1; mask < (1u << (cw * ch)); ++mask)
+        for (int i = 0; i < cw * ch; ++i) {
+          if (((mask >> i) & 1) == 0) continue;
+          for (int q = 0; q < 4; ++q) {
+            const SubCell start = subcell_of({i % cw, i / cw}, q);
+            const auto diff = compare_run(cw, ch, mask, start, *table, marker, drop_mark);
+            ++runs;
+            if (diff && ++mismatches <= 5)
+              std::printf("MISMATCH world: %d x %d cells, free mask %u, start (%d, %d): %s\n", cw,
+                          ch, mask, start.x, start.y, diff->c_str());
+          }
+        }
+    }
+  std::printf("world (%s): %lld runs, %lld mismatches\n",
+              marker == Marker::Edge ? "ant-edge" : "ant", runs, mismatches);
+  return mismatches == 0 ? 0 : 1;
+}
+
+int usage() {
+  std::fprintf(stderr, "usage: proof_tie_ant_stc decide GOLDEN [--flip-table K | --flip-code K]\n"
+                       "       proof_tie_ant_stc world|world-edge GOLDEN [--drop-mark K]\n");
+  return 2;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) return usage();
+  const std::string mode = argv[1], golden = argv[2];
+  long long flip_table = -1, flip_code = -1, drop_mark = -1;
+  for (int i = 3; i + 1 < argc; i += 2) {
+    const std::string opt = argv[i];
+    char* end = nullptr;
+    const long long v = std::strtoll(argv[i + 1], &end, 10);
+    if (*end != '\0' || v < 0) return usage();
+    if (opt == "--flip-table")
+      flip_table = v;
+    else if (opt == "--flip-code")
+      flip_code = v;
+    else if (opt == "--drop-mark")
+      drop_mark = v;
+    else
+      return usage();
+  }
+  if (argc % 2 == 0) return usage();
+  if (mode == "decide") return check_decide(golden, flip_table, flip_code);
+  if (mode == "world") return check_world(golden, Marker::WholeSubCell, drop_mark);
+  if (mode == "world-edge") return check_world(golden, Marker::Edge, drop_mark);
+  return usage();
+}
