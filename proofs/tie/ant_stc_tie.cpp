@@ -9,14 +9,18 @@
 //     produce). The table is indexed by the reduction AntDecide.v proves `decide` reads its input
 //     through (decide_reads_the_view, decide_view_ext; decide_done for `done`).
 //
-//   proof_tie_ant_stc world [--drop-mark K]
-//     The world step. The shipped world (stc::Floor through StcWorld, driven by drive_tour as
-//     run_stc drives it) against AntStcWorld.v's world step transcribed below (observe the five
-//     cells' marks; decide; on Go, mark the sub-cell left, move one sub-cell; on Stop, end), the
-//     model using the Coq table's decisions rather than the shipped ant_decide. On every cell map
-//     of up to 12 cells in a 4 x 4 box, from every start sub-cell, they must agree on every
-//     position, on every mark after every move, and on how the run ends. This is tested
-//     correspondence on that domain, not a proof: the world step is not instantiated in Coq.
+//   proof_tie_ant_stc world|world-edge GOLDEN [--drop-mark K]
+//     The world step. The shipped world (stc::Floor, the floor StcWorld, the C API and the
+//     Cortex-M image step, over a buffer of this program's, driven by drive_tour as run_stc drives
+//     it, with AntStc or AntEdgeStc) against AntStcWorld.v's world `run`, transcribed below
+//     (observe the five cells' marks; decide; Stop ends the run; a move into a cell that is not
+//     free is refused; otherwise mark the sub-cell left and move one sub-cell), the model using
+//     the Coq table's decisions rather than the shipped ant_decide. On every cell map of up to 12
+//     cells in a box of up to 4 x 4 cells, from every start sub-cell, they must agree on every
+//     position, on the marks of every cell after every move (for world-edge: what the edge rule
+//     reads from the lit edges) and on how the run ends. AntStcWorld.v proves what its world does
+//     on every map; that the shipped Floor steps as that world does is this tested
+//     correspondence on that domain, not a proof.
 //
 // The teeth (ctest proof.teeth.*): --flip-table K changes the K-th table entry, --flip-code K
 // changes the shipped decision on the K-th input, --drop-mark K makes the shipped world forget the
@@ -152,8 +156,10 @@ int check_decide(const std::string& golden, long long flip_table, long long flip
 
 // ---- the world step ---------------------------------------------------------------------------
 
-// AntStcWorld.v's world, transcribed: free cells, marks per sub-cell, the robot's sub-cell and the
-// controller's quadrant. Its decisions come from the Coq table, not from the shipped code.
+// AntStcWorld.v's world (`run`), transcribed: free cells, marks per sub-cell, the robot's sub-cell
+// and the controller's quadrant. Its decisions come from the Coq table, not from the shipped code.
+enum class Outcome { Moved, Stopped, Refused };
+
 class ModelWorld {
 public:
   ModelWorld(int cells_x, int cells_y, std::uint32_t free_mask, SubCell start,
@@ -171,8 +177,9 @@ public:
   }
   SubCell position() const { return pos_; }
 
-  // One step: false when the controller says Stop.
-  bool step() {
+  // One step of `run`: Stop ends the run; a move into a cell that is not free is refused (before
+  // anything is marked); otherwise the sub-cell left is marked and the robot moves.
+  Outcome step() {
     const Cell c = cell_of(pos_);
     int free = 0;
     std::array<std::uint8_t, 4> nb{};
@@ -184,12 +191,14 @@ public:
     }
     const Expected x =
         decode(table_[static_cast<std::size_t>(q_)][table_index(marks(c), free, nb, q_)]);
-    if (x.stop) return false;
+    if (x.stop) return Outcome::Stopped;
+    const SubCell target = antkit::stc::step(pos_, x.move);
+    if (!free_cell(cell_of(target))) return Outcome::Refused;
     marks_[static_cast<std::size_t>(c.y * cx_ + c.x)] =
         static_cast<std::uint8_t>(marks(c) | (1u << quadrant_of(pos_)));
-    pos_ = antkit::stc::step(pos_, x.move);
+    pos_ = target;
     q_ = x.q;
-    return true;
+    return Outcome::Moved;
   }
   int believed_quadrant() const { return q_; }
 
@@ -283,8 +292,9 @@ std::optional<std::string> compare_run(int cw, int ch, std::uint32_t mask, SubCe
   auto on_position = [&](SubCell s) {
     ++move;
     if (diff) return;
-    if (!model.step()) {
-      diff = "move " + std::to_string(move) + ": the model stops, the shipped robot moves";
+    if (model.step() != Outcome::Moved) {
+      diff =
+          "move " + std::to_string(move) + ": the model stops or refuses, the shipped robot moves";
       return;
     }
     if (model.position() != s || model.believed_quadrant() != quadrant_of(s)) {
@@ -310,9 +320,13 @@ std::optional<std::string> compare_run(int cw, int ch, std::uint32_t mask, SubCe
         controller, [&] { return shipped.observe_edges(); }, shipped, hash, max_moves, on_position);
   }
   if (diff) return diff;
-  if (end.refused) return "the shipped floor refused a move";
-  if (!end.closed) return "the shipped robot did not stop";
-  if (model.step()) return "the shipped robot stops, the model moves on";
+  if (!end.closed && !end.refused) return "the shipped robot did not stop";
+  const Outcome last = model.step();
+  if (end.closed && last != Outcome::Stopped) return "the shipped robot stops, the model does not";
+  if (end.refused && last != Outcome::Refused)
+    return "the shipped floor refuses a move, the model does not";
+  // Both refusing would be agreement on the world step, and a failure of the theorem.
+  if (end.refused) return "both worlds refuse a move";
   return std::nullopt;
 }
 
