@@ -1,8 +1,20 @@
+#include <algorithm>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/uniform/frontier_coverage.hpp>
+#include <array>
+#include <bit>
+#include <cstdlib>
 #include <span>
 
 namespace antkit::uniform {
+namespace {
+
+// Floor of a / b for b > 0.
+std::int64_t floor_div(std::int64_t a, std::int64_t b) {
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+} // namespace
 
 using kernel::Cell;
 using kernel::kNeighbours8;
@@ -11,7 +23,15 @@ FrontierCoverage::FrontierCoverage(std::uint64_t seed, std::uint64_t trial,
                                    const CoverageWorld& world, frontier::Weights weights)
     : weights_(weights), map_(world.map().width(), world.map().height()),
       stamp_(world.map().width(), world.map().height(), 0),
-      parent_(world.map().width(), world.map().height(), 0) {
+      parent_(world.map().width(), world.map().height(), 0),
+      unseen_(world.map().width(), world.map().height(), 0),
+      unseen_hist_(world.footprint().rays().size() + 1, 0),
+      unseen_cells_(world.footprint().rays().size() + 1),
+      unseen_slot_(world.map().width(), world.map().height(), 0),
+      expanded_hist_(world.footprint().rays().size() + 1, 0),
+      scan_cursor_(world.footprint().rays().size() + 1, 0),
+      claimed_(world.map().width(), world.map().height(), 0),
+      viewable_(world.map().width(), world.map().height(), 0) {
   if (world.footprint().range() < 1)
     throw kernel::InputError("--sensor", "the frontier algorithm needs a sensor distance of at "
                                          "least 1 cell (with 0 no frontier cell sees a new one)");
@@ -26,6 +46,27 @@ FrontierCoverage::FrontierCoverage(std::uint64_t seed, std::uint64_t trial,
                        std::nullopt});
   queue_.reserve(world.map().size());
   partners_.reserve(world.robot_count());
+  for (std::size_t k = 0; k < viewable_.size(); ++k)
+    viewable_.cells()[k] = world.is_viewable(viewable_.cell_at(k)) ? 1 : 0;
+  const std::ptrdiff_t width = world.map().width();
+  for (const auto& ray : world.footprint().rays())
+    ray_step_.push_back(static_cast<std::ptrdiff_t>(ray.offset.y) * width + ray.offset.x);
+}
+
+template <class F>
+void FrontierCoverage::for_each_footprint_cell(const CoverageWorld& world, Cell centre,
+                                               F&& f) const {
+  const auto& map = world.map();
+  const std::int32_t r = world.footprint().range();
+  const std::ptrdiff_t at = static_cast<std::ptrdiff_t>(centre.y) * map.width() + centre.x;
+  if (centre.x >= r && centre.y >= r && centre.x < map.width() - r && centre.y < map.height() - r) {
+    for (const std::ptrdiff_t d : ray_step_) f(static_cast<std::uint32_t>(at + d));
+    return;
+  }
+  for (const auto& ray : world.footprint().rays()) {
+    const Cell u = centre + ray.offset;
+    if (map.in_bounds(u)) f(static_cast<std::uint32_t>(map.index(u)));
+  }
 }
 
 void FrontierCoverage::refresh(const CoverageWorld& world) {
@@ -41,9 +82,72 @@ void FrontierCoverage::refresh(const CoverageWorld& world) {
       const Cell u = at + ray.offset;
       if (!map.in_bounds(u) || !world.is_viewed(u) || map_.at(u) != frontier::Knowledge::Unexplored)
         continue;
-      map_.set(u, world.is_free(u) ? frontier::Knowledge::Free : frontier::Knowledge::Occupied);
+      // u leaves the unexplored cells: one fewer unseen cell for every Free cell that has u in
+      // its footprint, i.e. (the footprint is symmetric) every Free cell of u's footprint. Read
+      // before u itself is set, so u is not yet one of them.
+      if (viewable_[u]) {
+        const frontier::Knowledge* known = map_.knowledge().cells().data();
+        for_each_footprint_cell(world, u, [&](std::uint32_t c) {
+          if (known[c] == frontier::Knowledge::Free) move_unseen(c, unseen_.cells()[c] - 1);
+        });
+      }
+      const bool free = world.is_free(u);
+      map_.set(u, free ? frontier::Knowledge::Free : frontier::Knowledge::Occupied);
+      if (free) track(world, static_cast<std::uint32_t>(map.index(u)), u);
     }
   }
+}
+
+void FrontierCoverage::track(const CoverageWorld& world, std::uint32_t index, Cell c) {
+  std::uint32_t n = 0;
+  const frontier::Knowledge* known = map_.knowledge().cells().data();
+  const std::uint8_t* viewable = viewable_.cells().data();
+  for_each_footprint_cell(world, c, [&](std::uint32_t u) {
+    n +=
+        static_cast<std::uint32_t>(viewable[u] != 0 && known[u] == frontier::Knowledge::Unexplored);
+  });
+  unseen_.cells()[index] = n;
+  ++unseen_hist_[n];
+  unseen_slot_.cells()[index] = static_cast<std::uint32_t>(unseen_cells_[n].size());
+  unseen_cells_[n].push_back(index);
+  if (n > unseen_top_) unseen_top_ = n;
+}
+
+void FrontierCoverage::move_unseen(std::uint32_t index, std::uint32_t n) {
+  std::uint32_t& count = unseen_.cells()[index];
+  std::uint32_t& slot = unseen_slot_.cells()[index];
+  auto& list = unseen_cells_[count];
+  const std::uint32_t last = list.back();
+  list[slot] = last;
+  unseen_slot_.cells()[last] = slot;
+  list.pop_back();
+  --unseen_hist_[count];
+  count = n;
+  ++unseen_hist_[n];
+  slot = static_cast<std::uint32_t>(unseen_cells_[n].size());
+  unseen_cells_[n].push_back(index);
+}
+
+std::int32_t FrontierCoverage::stamped_information(const CoverageWorld& world, Cell candidate,
+                                                   bool claims, std::uint32_t unseen,
+                                                   std::int64_t need) const {
+  // `possible` bounds the final count: the candidate's unseen cells not yet found wanting. A cell
+  // I counts is viewable and not viewed, so unexplored here: one of the unseen ones.
+  std::int32_t count = 0;
+  auto possible = static_cast<std::int64_t>(unseen);
+  for (const auto& ray : world.footprint().rays()) {
+    if (possible < need) return count; // cannot reach `need`: the caller only compares
+    const Cell u = candidate + ray.offset;
+    if (!world.map().in_bounds(u) || !world.is_viewable(u) ||
+        map_.at(u) != frontier::Knowledge::Unexplored)
+      continue; // not one of the unseen cells, so not counted either
+    if (!world.is_viewed(u) && !(claims && claimed_[u] == claim_generation_) &&
+        world.in_view(candidate, u))
+      ++count;
+    else
+      --possible;
+  }
+  return count;
 }
 
 std::int32_t FrontierCoverage::information(const CoverageWorld& world, std::size_t robot,
@@ -79,36 +183,128 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
   const std::int64_t w1 = weights_.information, w2 = weights_.distance, w3 = weights_.nearness;
   // The bound that lets the search stop early (see the header); only valid for these signs.
   const bool can_stop = w2 > 0 && w1 >= 0 && w3 >= 0;
-  const auto max_info = static_cast<std::int64_t>(world.footprint().rays().size()) - 1;
+  // The largest I any candidate can have: the largest unseen count of a Free cell (the counts
+  // only fall, so the top is lowered lazily).
+  while (unseen_top_ > 0 && unseen_hist_[unseen_top_] == 0) --unseen_top_;
+  const auto max_info = static_cast<std::int64_t>(unseen_top_);
+  std::fill_n(expanded_hist_.begin(), unseen_top_ + 1, 0u);
+  std::fill_n(scan_cursor_.begin(), unseen_top_ + 1, 0u);
+
+  // The claims of the other robots, stamped once: the cells within range of a robot's cell or
+  // of its target (what information() tests robot by robot).
+  if (claims) {
+    if (++claim_generation_ == 0) {
+      claimed_.fill(0);
+      claim_generation_ = 1;
+    }
+    auto stamp = [&](Cell centre) {
+      for (const auto& ray : world.footprint().rays()) {
+        const Cell u = centre + ray.offset;
+        if (world.map().in_bounds(u)) claimed_[u] = claim_generation_;
+      }
+    };
+    for (std::size_t j = 0; j < robots_.size(); ++j) {
+      if (j == i) continue;
+      stamp(world.robot(j).cell);
+      if (robots_[j].target) stamp(*robots_[j].target);
+    }
+  }
 
   if (++generation_ == 0) { // wrapped: clear the stamps once every 2^32 searches
     stamp_.fill(0);
     generation_ = 1;
   }
   const Cell from = world.robot(i).cell;
+  // The search walks cell indices (the neighbour at bearing b is index + step[b]); a cell is
+  // turned back into coordinates only when it is a frontier cell to evaluate.
+  const auto width = static_cast<std::ptrdiff_t>(world.map().width());
+  const std::array<std::ptrdiff_t, 8> step{1,  1 - width, -width, -1 - width,
+                                           -1, width - 1, width,  width + 1};
+  const std::uint8_t* exits = world.exits().cells().data();
+  const std::uint8_t* viewed = world.viewed().cells().data();
+  const std::uint32_t* unseen = unseen_.cells().data();
+  std::uint32_t* stamp = stamp_.cells().data();
+  std::uint8_t* parent = parent_.cells().data();
+  const std::uint32_t generation = generation_;
+
   queue_.clear();
-  queue_.push_back(from);
-  stamp_[from] = generation_;
+  queue_.push_back(static_cast<std::uint32_t>(stamp_.index(from)));
+  stamp[queue_.front()] = generation;
+  // The other robots' cells are never entered (CoverageWorld::occupant): stamped as if reached.
+  for (const Cell p : partners_) stamp_[p] = generation;
   bool found = false;
   Cell best{};
   std::int64_t best_g = 0;
   std::size_t head = 0;
+  // The largest unseen count among the Free cells of the level about to be expanded.
+  // (Candidates are frontier cells at depth >= 1; the robot's own cell is none.)
+  std::uint32_t level_unseen = 0;
   for (std::int32_t depth = 0; head < queue_.size(); ++depth) {
     if (found && can_stop && w1 * max_info - w2 * depth < best_g) break;
+    // The cells not yet expanded are this level's, at depth `depth`, and cells not yet reached,
+    // at depth >= depth + 1 and at least their Chebyshev distance from the robot (a move changes
+    // each coordinate by at most 1). One of them can beat best_g only with
+    // w1 * unseen - w2 * depth > best_g (so unseen >= k): if none can, stop.
+    if (found && can_stop && w1 > 0) {
+      const std::int64_t k = std::max<std::int64_t>(1, floor_div(best_g + w2 * depth, w1) + 1);
+      // First by count: if every Free cell with unseen >= k has been expanded (or is another
+      // robot's, never entered), none is left.
+      std::int64_t left = 0;
+      for (std::int64_t v = k; v <= max_info; ++v)
+        left += static_cast<std::int64_t>(unseen_hist_[static_cast<std::size_t>(v)]) -
+                static_cast<std::int64_t>(expanded_hist_[static_cast<std::size_t>(v)]);
+      for (const Cell p : partners_)
+        if (unseen_[p] >= k) --left;
+      if (left <= 0) break;
+      // A cell that is no threat now is none later in this search (reached cells stay reached,
+      // depth and best_g only grow): each list is scanned once per search, from its cursor.
+      bool threat = w1 * static_cast<std::int64_t>(level_unseen) - w2 * depth > best_g;
+      for (std::int64_t v = max_info; !threat && v >= k; --v) {
+        const auto& list = unseen_cells_[static_cast<std::size_t>(v)];
+        std::uint32_t& cursor = scan_cursor_[static_cast<std::size_t>(v)];
+        for (; cursor < list.size(); ++cursor) {
+          const std::uint32_t at = list[cursor];
+          // Reached, another robot's cell, or not a frontier cell (the frontier does not change
+          // during a search): no candidate.
+          if (stamp[at] == generation || !map_.is_frontier_at(at)) continue;
+          const Cell c = stamp_.cell_at(at);
+          const std::int64_t cheb = std::max(std::abs(c.x - from.x), std::abs(c.y - from.y));
+          if (w1 * v - w2 * std::max<std::int64_t>(depth + 1, cheb) > best_g) {
+            threat = true;
+            break;
+          }
+        }
+      }
+      if (!threat) break;
+    }
+    std::uint32_t next_unseen = 0;
     const std::size_t level_end = queue_.size();
     for (; head < level_end; ++head) {
-      const Cell c = queue_[head];
+      const std::uint32_t at = queue_[head];
       ++expanded_;
-      if (depth >= 1 && map_.is_frontier(c)) {
+      // Only a Free cell has an unseen count (0 elsewhere), and one with none has I = 0.
+      const auto bound = static_cast<std::int64_t>(unseen[at]);
+      ++expanded_hist_[unseen[at]];
+      if (depth >= 1 && bound != 0 && map_.is_frontier_at(at)) {
+        const Cell c = stamp_.cell_at(at);
         bool taken = false;
         for (std::size_t j = 0; j < robots_.size(); ++j)
           if (j != i && robots_[j].target == c) taken = true;
-        // A cell that cannot beat the best even with the largest I is not worth evaluating.
-        const bool hopeless = found && can_stop && w1 * max_info - w2 * depth <= best_g;
-        const std::int32_t info = taken || hopeless ? 0 : information(world, i, c, claims);
+        // A cell that cannot beat the best even with every unseen cell of its footprint in view
+        // is not worth evaluating.
+        const bool hopeless = found && can_stop && w1 * bound - w2 * depth <= best_g;
+        std::int32_t info = 0;
+        std::int64_t near = 0;
+        if (!taken && !hopeless) {
+          near = frontier::FrontierPlanner::nearness(c, partners);
+          // The I that would beat the best: g > best_g <=> I > (best_g + w2 D - w3 lambda) / w1.
+          // Below it the exact I does not matter, so the count may stop early.
+          const std::int64_t need =
+              found && w1 > 0 ? floor_div(best_g + w2 * depth - w3 * near, w1) + 1 : 1;
+          info = stamped_information(world, c, claims, unseen[at], need);
+        }
         if (info > 0) {
-          const std::int64_t g =
-              w1 * info - w2 * depth + w3 * frontier::FrontierPlanner::nearness(c, partners);
+          const std::int64_t g = w1 * info - w2 * depth + w3 * near;
           if (!found || g > best_g) {
             found = true;
             best = c;
@@ -116,15 +312,18 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
           }
         }
       }
-      for (std::uint8_t b = 0; b < 8; ++b) {
-        if (!world.passable_step(c, b)) continue;
-        const Cell n = c + kNeighbours8[b];
-        if (stamp_[n] == generation_ || !world.is_viewed(n) || world.occupant(n) != 0) continue;
-        stamp_[n] = generation_;
-        parent_[n] = b;
+      // passable_step's bits in bearing order, as the loop over b = 0..7 took them.
+      for (unsigned bits = exits[at]; bits != 0; bits &= bits - 1) {
+        const auto b = static_cast<std::uint8_t>(std::countr_zero(bits));
+        const auto n = static_cast<std::uint32_t>(static_cast<std::ptrdiff_t>(at) + step[b]);
+        if (stamp[n] == generation || viewed[n] == 0) continue;
+        stamp[n] = generation;
+        parent[n] = b;
         queue_.push_back(n);
+        if (unseen[n] > next_unseen && map_.is_frontier_at(n)) next_unseen = unseen[n];
       }
     }
+    level_unseen = next_unseen;
   }
   if (!found) return false;
   for (Cell c = best; c != from;) {

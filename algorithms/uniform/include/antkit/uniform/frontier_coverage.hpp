@@ -34,6 +34,15 @@
 //   * Ties in g go to the cell the search meets first (nearer first, then the kernel's neighbour
 //     order E, NE, N, NW, W, SW, S, SE). The search stops once no farther cell can win: I is at
 //     most the footprint size minus one, so a cell at distance D has g <= w1 * (rays - 1) - w2 * D.
+//   * Speed, with the same decisions: every viewed free cell c (a Free cell of the frontier map,
+//     so every possible candidate) keeps unseen(c), the viewable cells of its footprint the map
+//     still holds unexplored, kept up to date as cells are viewed, and a histogram of those
+//     counts. I(c) <= unseen(c), because a cell the world has viewed is never unexplored here. So
+//     a candidate whose w1 * unseen(c) - w2 * D cannot beat the best g is not evaluated, and the
+//     search stops once w1 * max(unseen) - w2 * D cannot: the bounds above with the footprint
+//     size replaced by counts that fall as the map is explored. The claims are stamped on a grid
+//     once per search rather than tested robot by robot for every cell. Nothing the search
+//     chooses changes (the golden hashes hold it).
 //   * The target is dropped and a new one searched when its I (claims ignored) falls to 0, when
 //     the path is used up, or when the next cell holds a robot. A robot that finds no target
 //     around the other robots waits; after kPatience such ticks it steps to a random enterable
@@ -87,6 +96,18 @@ private:
   };
   void refresh(const CoverageWorld& world);
   bool plan(std::size_t i, const CoverageWorld& world, bool claims);
+  // Starts keeping unseen(c) for a cell that has just become Free in map_.
+  void track(const CoverageWorld& world, std::uint32_t index, kernel::Cell c);
+  // Moves a tracked cell (by index) to unseen count n.
+  void move_unseen(std::uint32_t index, std::uint32_t n);
+  // Calls f(index) for every cell of the footprint around `centre` that is on the map.
+  template <class F>
+  void for_each_footprint_cell(const CoverageWorld& world, kernel::Cell centre, F&& f) const;
+  // I of a candidate with the claims stamped in claimed_ (generation claim_generation_), given
+  // its unseen count; once I cannot reach `need` any more, some smaller count.
+  [[nodiscard]] std::int32_t stamped_information(const CoverageWorld& world, kernel::Cell candidate,
+                                                 bool claims, std::uint32_t unseen,
+                                                 std::int64_t need) const;
 
   frontier::Weights weights_;
   frontier::FrontierMap map_;
@@ -94,7 +115,18 @@ private:
   kernel::Grid<std::uint32_t> stamp_;
   kernel::Grid<std::uint8_t> parent_; // bearing of the move that reached the cell
   std::uint32_t generation_ = 0;
-  std::vector<kernel::Cell> queue_;
+  kernel::Grid<std::uint32_t> unseen_;     // unseen(c), for the Free cells of map_
+  std::vector<std::uint32_t> unseen_hist_; // how many Free cells have each unseen count
+  std::vector<std::vector<std::uint32_t>> unseen_cells_; // those cells (indices), per count
+  kernel::Grid<std::uint32_t> unseen_slot_;              // a cell's place in its list
+  std::vector<std::uint32_t> expanded_hist_; // unseen counts of the cells one search expanded
+  std::vector<std::uint32_t> scan_cursor_;   // per count: cells of its list already ruled out
+  std::uint32_t unseen_top_ = 0;             // >= the largest unseen count of a Free cell
+  kernel::Grid<std::uint32_t> claimed_; // == claim_generation_: within a claimed centre's range
+  std::uint32_t claim_generation_ = 0;
+  kernel::Grid<std::uint8_t> viewable_;  // CoverageWorld::is_viewable, read once
+  std::vector<std::ptrdiff_t> ray_step_; // each ray's offset as a step of the cell index
+  std::vector<std::uint32_t> queue_;     // cell indices
   std::vector<kernel::Cell> partners_;
   std::uint64_t plans_ = 0;
   std::uint64_t expanded_ = 0;

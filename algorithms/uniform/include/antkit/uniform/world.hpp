@@ -124,6 +124,9 @@ public:
   [[nodiscard]] bool passable_step(kernel::Cell from, std::uint8_t bearing) const noexcept {
     return ((static_cast<unsigned>(exits_[from]) >> (bearing & 7u)) & 1u) != 0;
   }
+  // The grids behind occupant() and passable_step(), for searches that walk cell indices.
+  [[nodiscard]] const kernel::Grid<std::uint16_t>& occupants() const noexcept { return occupant_; }
+  [[nodiscard]] const kernel::Grid<std::uint8_t>& exits() const noexcept { return exits_; }
   // passable_step and the target holds no robot.
   [[nodiscard]] bool can_step(kernel::Cell from, std::uint8_t bearing) const noexcept {
     return passable_step(from, bearing) && occupant(from + kernel::kNeighbours8[bearing & 7u]) == 0;
