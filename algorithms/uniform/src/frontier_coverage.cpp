@@ -25,11 +25,12 @@ FrontierCoverage::FrontierCoverage(std::uint64_t seed, std::uint64_t trial,
       stamp_(world.map().width(), world.map().height(), 0),
       parent_(world.map().width(), world.map().height(), 0),
       unseen_(world.map().width(), world.map().height(), 0),
-      unseen_hist_(world.footprint().rays().size() + 1, 0),
-      unseen_cells_(world.footprint().rays().size() + 1),
-      unseen_slot_(world.map().width(), world.map().height(), 0),
-      expanded_hist_(world.footprint().rays().size() + 1, 0),
+      bound_(world.map().width(), world.map().height(), 0),
+      exact_(world.map().width(), world.map().height(), 0),
+      bound_cells_(world.footprint().rays().size() + 1),
+      bound_slot_(world.map().width(), world.map().height(), 0),
       scan_cursor_(world.footprint().rays().size() + 1, 0),
+      scan_search_(world.footprint().rays().size() + 1, 0),
       claimed_(world.map().width(), world.map().height(), 0),
       viewable_(world.map().width(), world.map().height(), 0) {
   if (world.footprint().range() < 1)
@@ -84,11 +85,17 @@ void FrontierCoverage::refresh(const CoverageWorld& world) {
         continue;
       // u leaves the unexplored cells: one fewer unseen cell for every Free cell that has u in
       // its footprint, i.e. (the footprint is symmetric) every Free cell of u's footprint. Read
-      // before u itself is set, so u is not yet one of them.
+      // before u itself is set, so u is not yet one of them. Their bounds stay bounds (I only
+      // falls as cells are viewed) but may no longer be exact; none stays above unseen.
       if (viewable_[u]) {
         const frontier::Knowledge* known = map_.knowledge().cells().data();
+        std::uint32_t* unseen = unseen_.cells().data();
+        std::uint8_t* exact = exact_.cells().data();
+        const std::uint32_t* bound = bound_.cells().data();
         for_each_footprint_cell(world, u, [&](std::uint32_t c) {
-          if (known[c] == frontier::Knowledge::Free) move_unseen(c, unseen_.cells()[c] - 1);
+          if (known[c] != frontier::Knowledge::Free) return;
+          exact[c] = 0;
+          if (bound[c] > --unseen[c]) set_bound(c, unseen[c]);
         });
       }
       const bool free = world.is_free(u);
@@ -107,25 +114,56 @@ void FrontierCoverage::track(const CoverageWorld& world, std::uint32_t index, Ce
         static_cast<std::uint32_t>(viewable[u] != 0 && known[u] == frontier::Knowledge::Unexplored);
   });
   unseen_.cells()[index] = n;
-  ++unseen_hist_[n];
-  unseen_slot_.cells()[index] = static_cast<std::uint32_t>(unseen_cells_[n].size());
-  unseen_cells_[n].push_back(index);
-  if (n > unseen_top_) unseen_top_ = n;
+  bound_.cells()[index] = n;
+  exact_.cells()[index] = 0;
+  bound_slot_.cells()[index] = static_cast<std::uint32_t>(bound_cells_[n].size());
+  bound_cells_[n].push_back(index);
+  if (n > bound_top_) bound_top_ = n;
 }
 
-void FrontierCoverage::move_unseen(std::uint32_t index, std::uint32_t n) {
-  std::uint32_t& count = unseen_.cells()[index];
-  std::uint32_t& slot = unseen_slot_.cells()[index];
-  auto& list = unseen_cells_[count];
-  const std::uint32_t last = list.back();
-  list[slot] = last;
-  unseen_slot_.cells()[last] = slot;
+void FrontierCoverage::set_bound(std::uint32_t index, std::uint32_t n) {
+  std::uint32_t& value = bound_.cells()[index];
+  std::uint32_t& slot = bound_slot_.cells()[index];
+  auto& list = bound_cells_[value];
+  // Out of its list, keeping the list's first `cursor` cells the ones this search has ruled out
+  // (none outside a search, or in a list it has not scanned): a cell before the cursor is
+  // replaced by the last ruled-out one, whose place the last cell takes.
+  std::uint32_t none = 0;
+  std::uint32_t& cursor = searching_ && scan_search_[value] == search_ ? scan_cursor_[value] : none;
+  const auto move_to = [&](std::uint32_t from, std::uint32_t to) {
+    list[to] = list[from];
+    bound_slot_.cells()[list[to]] = to;
+  };
+  const std::uint32_t s = slot;
+  if (s < cursor) {
+    --cursor;
+    move_to(cursor, s);
+    move_to(static_cast<std::uint32_t>(list.size() - 1), cursor);
+  } else {
+    move_to(static_cast<std::uint32_t>(list.size() - 1), s);
+  }
   list.pop_back();
-  --unseen_hist_[count];
-  count = n;
-  ++unseen_hist_[n];
-  slot = static_cast<std::uint32_t>(unseen_cells_[n].size());
-  unseen_cells_[n].push_back(index);
+  value = n;
+  slot = static_cast<std::uint32_t>(bound_cells_[n].size());
+  bound_cells_[n].push_back(index);
+}
+
+std::int32_t FrontierCoverage::measure(const CoverageWorld& world, std::uint32_t index, Cell c,
+                                       bool claims, std::int32_t& claimed_out) {
+  std::int32_t all = 0, unclaimed = 0;
+  for (const auto& ray : world.footprint().rays()) {
+    const Cell u = c + ray.offset;
+    if (!world.map().in_bounds(u) || world.is_viewed(u) || !world.is_viewable(u) ||
+        !world.in_view(c, u))
+      continue;
+    ++all;
+    if (!(claims && claimed_[u] == claim_generation_)) ++unclaimed;
+  }
+  claimed_out = unclaimed;
+  exact_.cells()[index] = 1;
+  if (static_cast<std::uint32_t>(all) != bound_.cells()[index])
+    set_bound(index, static_cast<std::uint32_t>(all));
+  return all;
 }
 
 std::int32_t FrontierCoverage::stamped_information(const CoverageWorld& world, Cell candidate,
@@ -185,10 +223,10 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
   const bool can_stop = w2 > 0 && w1 >= 0 && w3 >= 0;
   // The largest I any candidate can have: the largest unseen count of a Free cell (the counts
   // only fall, so the top is lowered lazily).
-  while (unseen_top_ > 0 && unseen_hist_[unseen_top_] == 0) --unseen_top_;
-  const auto max_info = static_cast<std::int64_t>(unseen_top_);
-  std::fill_n(expanded_hist_.begin(), unseen_top_ + 1, 0u);
-  std::fill_n(scan_cursor_.begin(), unseen_top_ + 1, 0u);
+  while (bound_top_ > 0 && bound_cells_[bound_top_].empty()) --bound_top_;
+  const auto max_info = static_cast<std::int64_t>(bound_top_);
+  ++search_; // every list's cursor starts at 0 when the search first scans it
+  searching_ = true;
 
   // The claims of the other robots, stamped once: the cells within range of a robot's cell or
   // of its target (what information() tests robot by robot).
@@ -222,7 +260,6 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
                                            -1, width - 1, width,  width + 1};
   const std::uint8_t* exits = world.exits().cells().data();
   const std::uint8_t* viewed = world.viewed().cells().data();
-  const std::uint32_t* unseen = unseen_.cells().data();
   std::uint32_t* stamp = stamp_.cells().data();
   std::uint8_t* parent = parent_.cells().data();
   const std::uint32_t generation = generation_;
@@ -238,7 +275,7 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
   std::size_t head = 0;
   // The largest unseen count among the Free cells of the level about to be expanded.
   // (Candidates are frontier cells at depth >= 1; the robot's own cell is none.)
-  std::uint32_t level_unseen = 0;
+  std::uint32_t level_bound = 0;
   for (std::int32_t depth = 0; head < queue_.size(); ++depth) {
     if (found && can_stop && w1 * max_info - w2 * depth < best_g) break;
     // The cells not yet expanded are this level's, at depth `depth`, and cells not yet reached,
@@ -247,44 +284,46 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
     // w1 * unseen - w2 * depth > best_g (so unseen >= k): if none can, stop.
     if (found && can_stop && w1 > 0) {
       const std::int64_t k = std::max<std::int64_t>(1, floor_div(best_g + w2 * depth, w1) + 1);
-      // First by count: if every Free cell with unseen >= k has been expanded (or is another
-      // robot's, never entered), none is left.
-      std::int64_t left = 0;
-      for (std::int64_t v = k; v <= max_info; ++v)
-        left += static_cast<std::int64_t>(unseen_hist_[static_cast<std::size_t>(v)]) -
-                static_cast<std::int64_t>(expanded_hist_[static_cast<std::size_t>(v)]);
-      for (const Cell p : partners_)
-        if (unseen_[p] >= k) --left;
-      if (left <= 0) break;
       // A cell that is no threat now is none later in this search (reached cells stay reached,
       // depth and best_g only grow): each list is scanned once per search, from its cursor.
-      bool threat = w1 * static_cast<std::int64_t>(level_unseen) - w2 * depth > best_g;
+      // A cell whose bound makes it a threat but is not exact is measured (its bound falls to
+      // its I without claims) and looked at again.
+      bool threat = w1 * static_cast<std::int64_t>(level_bound) - w2 * depth > best_g;
       for (std::int64_t v = max_info; !threat && v >= k; --v) {
-        const auto& list = unseen_cells_[static_cast<std::size_t>(v)];
+        const auto& list = bound_cells_[static_cast<std::size_t>(v)];
+        if (scan_search_[static_cast<std::size_t>(v)] != search_) {
+          scan_search_[static_cast<std::size_t>(v)] = search_;
+          scan_cursor_[static_cast<std::size_t>(v)] = 0;
+        }
         std::uint32_t& cursor = scan_cursor_[static_cast<std::size_t>(v)];
-        for (; cursor < list.size(); ++cursor) {
+        while (cursor < list.size()) {
           const std::uint32_t at = list[cursor];
           // Reached, another robot's cell, or not a frontier cell (the frontier does not change
           // during a search): no candidate.
-          if (stamp[at] == generation || !map_.is_frontier_at(at)) continue;
           const Cell c = stamp_.cell_at(at);
           const std::int64_t cheb = std::max(std::abs(c.x - from.x), std::abs(c.y - from.y));
-          if (w1 * v - w2 * std::max<std::int64_t>(depth + 1, cheb) > best_g) {
+          if (stamp[at] == generation || !map_.is_frontier_at(at) ||
+              w1 * v - w2 * std::max<std::int64_t>(depth + 1, cheb) <= best_g) {
+            ++cursor;
+            continue;
+          }
+          if (exact_.cells()[at] != 0) {
             threat = true;
             break;
           }
+          std::int32_t unused = 0;
+          measure(world, at, c, false, unused); // moves `at`; list[cursor] is another cell now
         }
       }
       if (!threat) break;
     }
-    std::uint32_t next_unseen = 0;
+    std::uint32_t next_bound = 0;
     const std::size_t level_end = queue_.size();
     for (; head < level_end; ++head) {
       const std::uint32_t at = queue_[head];
       ++expanded_;
-      // Only a Free cell has an unseen count (0 elsewhere), and one with none has I = 0.
-      const auto bound = static_cast<std::int64_t>(unseen[at]);
-      ++expanded_hist_[unseen[at]];
+      // Only a Free cell has a bound (0 elsewhere), and one with 0 has I = 0.
+      const auto bound = static_cast<std::int64_t>(bound_.cells()[at]);
       if (depth >= 1 && bound != 0 && map_.is_frontier_at(at)) {
         const Cell c = stamp_.cell_at(at);
         bool taken = false;
@@ -297,11 +336,17 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
         std::int64_t near = 0;
         if (!taken && !hopeless) {
           near = frontier::FrontierPlanner::nearness(c, partners);
-          // The I that would beat the best: g > best_g <=> I > (best_g + w2 D - w3 lambda) / w1.
-          // Below it the exact I does not matter, so the count may stop early.
-          const std::int64_t need =
-              found && w1 > 0 ? floor_div(best_g + w2 * depth - w3 * near, w1) + 1 : 1;
-          info = stamped_information(world, c, claims, unseen[at], need);
+          if (exact_.cells()[at] == 0) {
+            measure(world, at, c, claims, info); // I with the claims, and the bound made exact
+          } else if (!claims) {
+            info = static_cast<std::int32_t>(bound); // exact: I without claims
+          } else {
+            // The I that would beat the best: g > best_g <=> I > (best_g + w2 D - w3 lambda) /
+            // w1. Below it the exact I does not matter, so the count may stop early.
+            const std::int64_t need =
+                found && w1 > 0 ? floor_div(best_g + w2 * depth - w3 * near, w1) + 1 : 1;
+            info = stamped_information(world, c, claims, unseen_.cells()[at], need);
+          }
         }
         if (info > 0) {
           const std::int64_t g = w1 * info - w2 * depth + w3 * near;
@@ -320,11 +365,13 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
         stamp[n] = generation;
         parent[n] = b;
         queue_.push_back(n);
-        if (unseen[n] > next_unseen && map_.is_frontier_at(n)) next_unseen = unseen[n];
+        if (bound_.cells()[n] > next_bound && map_.is_frontier_at(n))
+          next_bound = bound_.cells()[n];
       }
     }
-    level_unseen = next_unseen;
+    level_bound = next_bound;
   }
+  searching_ = false;
   if (!found) return false;
   for (Cell c = best; c != from;) {
     const std::uint8_t b = parent_[c];

@@ -98,8 +98,12 @@ private:
   bool plan(std::size_t i, const CoverageWorld& world, bool claims);
   // Starts keeping unseen(c) for a cell that has just become Free in map_.
   void track(const CoverageWorld& world, std::uint32_t index, kernel::Cell c);
-  // Moves a tracked cell (by index) to unseen count n.
-  void move_unseen(std::uint32_t index, std::uint32_t n);
+  // Moves a tracked cell (by index) to bound n.
+  void set_bound(std::uint32_t index, std::uint32_t n);
+  // I of a tracked cell without claims (returned, and made its exact bound) and with them when
+  // `claims` (in claimed).
+  std::int32_t measure(const CoverageWorld& world, std::uint32_t index, kernel::Cell c, bool claims,
+                       std::int32_t& claimed);
   // Calls f(index) for every cell of the footprint around `centre` that is on the map.
   template <class F>
   void for_each_footprint_cell(const CoverageWorld& world, kernel::Cell centre, F&& f) const;
@@ -115,14 +119,17 @@ private:
   kernel::Grid<std::uint32_t> stamp_;
   kernel::Grid<std::uint8_t> parent_; // bearing of the move that reached the cell
   std::uint32_t generation_ = 0;
-  kernel::Grid<std::uint32_t> unseen_;     // unseen(c), for the Free cells of map_
-  std::vector<std::uint32_t> unseen_hist_; // how many Free cells have each unseen count
-  std::vector<std::vector<std::uint32_t>> unseen_cells_; // those cells (indices), per count
-  kernel::Grid<std::uint32_t> unseen_slot_;              // a cell's place in its list
-  std::vector<std::uint32_t> expanded_hist_; // unseen counts of the cells one search expanded
-  std::vector<std::uint32_t> scan_cursor_;   // per count: cells of its list already ruled out
-  std::uint32_t unseen_top_ = 0;             // >= the largest unseen count of a Free cell
-  kernel::Grid<std::uint32_t> claimed_; // == claim_generation_: within a claimed centre's range
+  kernel::Grid<std::uint32_t> unseen_; // unseen(c), for the Free cells of map_
+  kernel::Grid<std::uint32_t> bound_;  // >= I of the Free cell without claims; 0 elsewhere
+  kernel::Grid<std::uint8_t> exact_;   // 1: bound_ is that I now (measured, nothing viewed since)
+  std::vector<std::vector<std::uint32_t>> bound_cells_; // the Free cells (indices), per bound
+  kernel::Grid<std::uint32_t> bound_slot_;              // a cell's place in its list
+  std::vector<std::uint32_t> scan_cursor_; // per bound: cells of its list a search ruled out
+  std::vector<std::uint64_t> scan_search_; // the search that set each cursor
+  std::uint64_t search_ = 0;               // searches so far
+  bool searching_ = false;                 // inside plan(): cursors are live
+  std::uint32_t bound_top_ = 0;            // >= the largest bound of a Free cell
+  kernel::Grid<std::uint32_t> claimed_;    // == claim_generation_: within a claimed centre's range
   std::uint32_t claim_generation_ = 0;
   kernel::Grid<std::uint8_t> viewable_;  // CoverageWorld::is_viewable, read once
   std::vector<std::ptrdiff_t> ray_step_; // each ray's offset as a step of the cell index
