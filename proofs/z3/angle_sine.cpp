@@ -5,7 +5,9 @@
 // The instantiations proved are the ones the kernel ships and tests use (sin<FixedT> instantiates
 // sin_raw<Rep, wide_t<Rep>, F, std::uint32_t>):
 //   Fx   = Fixed<int32, 16>   sin_raw<I32, I64, 16, U32>   (every caller in the code base)
-//   F64  = Fixed<int64, 32>   sin_raw<I64, I128, 32, U32>   (only with --f64: not under ctest)
+//   F64  = Fixed<int64, 32>   sin_raw<I64, I128, 32, U32>   (tests; --f64-sine, --f64-cosine)
+// ctest runs the Fx proof as proof.z3.angle_sine (no argument) and the F64 ones as
+// proof.z3.angle_sine.f64.sine and .f64.cosine (one Session each); `--f64` runs all three.
 // For each, over every angle a (a U32 unknown; there is no domain to assume):
 //   sine.<fmt>.no_undefined_behaviour  every signed operation, shift, narrowing and both table
 //                                      reads (index in [0, 1026)) of the template are defined;
@@ -35,6 +37,17 @@
 // about the formula's W-bit terms, which is sound because formula_is_exact proved they do not
 // wrap (this step, "a W-bit term that never wraps equals its integer", is the one link on paper).
 //
+// F64 proves the same claims, with the obligation lists split in two
+// (no_undefined_behaviour_around): first every obligation that does not mention the product (hi -
+// lo) * w -- among them the product's own, no signed overflow -- then, with one more lemma over the
+// reals,
+//   product.in_range                   |d| <= 2^32 and 0 <= w <= 2^20 imply |d w| <= 2^52,
+// stated as a fact on the product's 128-bit term (sound because the first phase proved it does not
+// wrap), the rest (the interpolant's sum and what follows it). Proved in one list, the sum's
+// obligation asked the SAT solver to bound a 128-bit multiplier's output: 3 s in one run, past
+// 10 minutes in another (which is why F64 used to be a manual run); split, each F64 part takes
+// about 15 s of CPU.
+//
 // Together with tests/kernel/test_angle_sine_table.cpp, which checks exhaustively that every entry
 // is sin(i h) correctly rounded to 2^-30 and that the exact interpolant lo*2^20 + (hi-lo)*w (in
 // units of 2^-50) is within h^2/8 + 2^-31 of sin on the quarter wave, this gives the documented
@@ -46,11 +59,14 @@
 // Teeth (each must be refuted, i.e. Z3 must find a counterexample, or the test fails):
 //   the formula with floor instead of round half up; |result| < 2^F (2^F is reached at a quarter
 //   turn); the table monotone through its last entry; a read at i + 2 in range for every i <= 1024;
-//   the interpolation lemma with a weight up to 2^20 + 1.
+//   the interpolation lemma with a weight up to 2^20 + 1; (F64) the product lemma with a weight up
+//   to 2^20 + 1.
 #include "prove.hpp"
 
 #include <antkit/kernel/angle.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 using namespace antkit::proofs;
 namespace kn = antkit::kernel;
@@ -115,12 +131,61 @@ void exact_range_fact(Session& s, const SineSpec<W>& spec) {
   s.fact(z3::implies(premises.expr(), (W(0) <= spec.exact && spec.exact <= top).expr()));
 }
 
+// The product lemma (proved over the reals in the F64 runs, product.in_range) as a fact on one
+// interpolant's product term (hi - lo) w, the one multiplication of two unknowns in sin_raw and in
+// the formula. Added only once the product's own obligation (no signed overflow) is proved, for
+// every angle: then the product's W-bit value is the integer product the lemma speaks of.
+void product_fact(Session& s, const z3::expr& product) {
+  z3::context& c = s.ctx();
+  const unsigned n = product.get_sort().bv_size();
+  const z3::expr d = product.arg(0), w = product.arg(1);
+  const auto pow2 = [&](int k) { return z3::shl(c.bv_val(1, n), c.bv_val(k, n)).simplify(); };
+  s.fact(z3::implies(z3::sle(-pow2(32), d) && z3::sle(d, pow2(32)) && z3::sle(c.bv_val(0, n), w) &&
+                         z3::sle(w, pow2(20)),
+                     z3::sle(-pow2(52), product) && z3::sle(product, pow2(52))));
+}
+
+// The pending obligations in two phases (Q31.32): those that do not mention the product (hi - lo) w
+// first -- among them the product's own, no signed overflow -- then, with product_fact, those that
+// do (the interpolant's sum and what follows it). Without the fact the SAT solver must bound a
+// 128-bit multiplier's output to prove the sum does not overflow: seconds in one run, past 10
+// minutes in another.
+bool no_undefined_behaviour_around(Session& s, Prover& p, const std::string& name,
+                                   const z3::expr& term) {
+  const std::optional<z3::expr> product = first_product(term);
+  if (!product) {
+    std::cout << "FAILED   " << name << ": no product (hi - lo) w in the interpolant\n";
+    std::exit(1);
+  }
+  const std::vector<Session::Obligation> all = s.obligations();
+  s.clear_obligations();
+  std::vector<Session::Obligation> later;
+  for (const auto& ob : all) {
+    if (mentions_term(ob.holds, *product))
+      later.push_back(ob);
+    else
+      s.oblige(ob.what, ob.holds);
+  }
+  if (!p.no_undefined_behaviour(name + " (not involving (hi - lo) w)")) return false;
+  product_fact(s, *product);
+  for (const auto& ob : later) s.oblige(ob.what, ob.holds);
+  return p.no_undefined_behaviour(name + " (involving (hi - lo) w, with |(hi - lo) w| <= 2^52)");
+}
+
+// two_phase: the Q31.32 route (no_undefined_behaviour_around); Fx proves each list in one go.
 template <class I, class W, int F>
-void prove_format(Session& s, Prover& p, const std::string& fmt, const U32& a) {
+void prove_format(Session& s, Prover& p, const std::string& fmt, const U32& a,
+                  bool two_phase = false) {
   const I r = kn::sin_raw<I, W, F, U32>(a);
-  p.no_undefined_behaviour("sine." + fmt + ".no_undefined_behaviour");
+  if (two_phase)
+    no_undefined_behaviour_around(s, p, "sine." + fmt + ".no_undefined_behaviour", r.expr());
+  else
+    p.no_undefined_behaviour("sine." + fmt + ".no_undefined_behaviour");
   const SineSpec<W> spec = sine_formula<W>(a, F, true);
-  p.no_undefined_behaviour("sine." + fmt + ".formula_is_exact (its W-bit operations never wrap)");
+  if (two_phase)
+    no_undefined_behaviour_around(s, p, "sine." + fmt + ".formula_is_exact", spec.exact.expr());
+  else
+    p.no_undefined_behaviour("sine." + fmt + ".formula_is_exact (its W-bit operations never wrap)");
   // The table lemmas (proved in main before any format) at the code's index: the same Z3 term as
   // the code's, since the specification computes it with the same operations.
   table_facts(s, spec.index);
@@ -136,12 +201,19 @@ void prove_format(Session& s, Prover& p, const std::string& fmt, const U32& a) {
 
 // The cosine, in its own Session (so its claims do not carry the sine's facts).
 template <class I, class W, int F>
-void prove_cosine(Session& s, Prover& p, const std::string& fmt, const U32& a) {
+void prove_cosine(Session& s, Prover& p, const std::string& fmt, const U32& a,
+                  bool two_phase = false) {
   const I c = kn::cos_raw<I, W, F, U32>(a);
-  p.no_undefined_behaviour("cosine." + fmt + ".no_undefined_behaviour");
+  if (two_phase)
+    no_undefined_behaviour_around(s, p, "cosine." + fmt + ".no_undefined_behaviour", c.expr());
+  else
+    p.no_undefined_behaviour("cosine." + fmt + ".no_undefined_behaviour");
   const U32 shifted = a + U32(1u << 30);
   const SineSpec<W> cspec = sine_formula<W>(shifted, F, true);
-  p.no_undefined_behaviour("cosine." + fmt + ".formula_is_exact");
+  if (two_phase)
+    no_undefined_behaviour_around(s, p, "cosine." + fmt + ".formula_is_exact", cspec.exact.expr());
+  else
+    p.no_undefined_behaviour("cosine." + fmt + ".formula_is_exact");
   table_facts(s, cspec.index);
   p.claim("cosine." + fmt + ".is_shifted_sine", W(c) == cspec.value);
 }
@@ -169,7 +241,28 @@ void prove_table_lemmas(Prover& p) {
   p.reset_domain();
 }
 
+// |d| <= 2^32 and 0 <= w <= 2^20 imply |d w| <= 2^52 (over the reals, hence the integers): the
+// bound product_fact states on the Q31.32 interpolants' products.
+void prove_product_lemma(Session& s, Prover& p) {
+  z3::context& c = s.ctx();
+  const z3::expr d = c.real_const("d"), w = c.real_const("w");
+  const z3::expr d_max = c.real_val(static_cast<std::int64_t>(1) << 32);
+  const z3::expr w_max = c.real_val(1 << 20);
+  const z3::expr p_max = c.real_val(static_cast<std::int64_t>(1) << 52);
+  const z3::expr in_range = -p_max <= d * w && d * w <= p_max;
+  p.claim_over_reals("product.in_range",
+                     z3::implies(-d_max <= d && d <= d_max && 0 <= w && w <= w_max, in_range));
+  p.refute_over_reals("product.teeth: weight up to 2^20 + 1",
+                      z3::implies(-d_max <= d && d <= d_max && 0 <= w && w <= w_max + 1, in_range));
+}
+
 int main(int argc, char** argv) {
+  const std::string part = argc > 1 ? argv[1] : "";
+  if (part != "" && part != "--f64" && part != "--f64-sine" && part != "--f64-cosine") {
+    std::cerr << "usage: proof_z3_angle_sine [--f64 | --f64-sine | --f64-cosine]\n";
+    return 2;
+  }
+  const bool fx = part == "" || part == "--f64";
   int failed = 0;
   // Each part runs in its own Session: a claim is checked with every fact of its Session, and the
   // facts of one format only slow the others down (measured: 54 s CPU in one Session).
@@ -206,13 +299,29 @@ int main(int argc, char** argv) {
     prove(s, p, U32::var("a"));
     failed |= p.result();
   };
-  run([](Session& s, Prover& p, const U32& a) { prove_format<I32, I64, 16>(s, p, "Fx", a); });
-  run([](Session& s, Prover& p, const U32& a) { prove_cosine<I32, I64, 16>(s, p, "Fx", a); });
-  // F64 (used by tests, by no caller) only on request: its 128-bit checks took from 1 to several
-  // minutes of CPU under load (all proved in a manual run), past the ~60 s budget of a ctest.
-  if (argc > 1 && std::string(argv[1]) == "--f64") {
-    run([](Session& s, Prover& p, const U32& a) { prove_format<I64, I128, 32>(s, p, "F64", a); });
-    run([](Session& s, Prover& p, const U32& a) { prove_cosine<I64, I128, 32>(s, p, "F64", a); });
+  if (fx) {
+    run([](Session& s, Prover& p, const U32& a) { prove_format<I32, I64, 16>(s, p, "Fx", a); });
+    run([](Session& s, Prover& p, const U32& a) { prove_cosine<I32, I64, 16>(s, p, "Fx", a); });
   }
+  // F64 (used by tests, by no caller), one part per run: ctest runs `--f64-sine` and `--f64-cosine`
+  // as the tests proof.z3.angle_sine.f64.sine and .f64.cosine (proofs/CMakeLists.txt); `--f64` runs
+  // the Fx proof and both. Each proves the product lemma it relies on first.
+  const auto run_f64 = [&run, &failed](auto prove) {
+    {
+      Session s;
+      Prover p(s);
+      prove_product_lemma(s, p);
+      failed |= p.result();
+    }
+    run(prove);
+  };
+  const auto f64_sine = [](Session& s, Prover& p, const U32& a) {
+    prove_format<I64, I128, 32>(s, p, "F64", a, true);
+  };
+  const auto f64_cosine = [](Session& s, Prover& p, const U32& a) {
+    prove_cosine<I64, I128, 32>(s, p, "F64", a, true);
+  };
+  if (part == "--f64" || part == "--f64-sine") run_f64(f64_sine);
+  if (part == "--f64" || part == "--f64-cosine") run_f64(f64_cosine);
   return failed;
 }

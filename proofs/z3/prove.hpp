@@ -20,6 +20,8 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <unordered_set>
+#include <vector>
 
 namespace antkit::proofs {
 
@@ -32,6 +34,23 @@ inline std::optional<z3::expr> first_product(const z3::expr& e) {
   for (unsigned i = 0; i < e.num_args(); ++i)
     if (auto p = first_product(e.arg(i))) return p;
   return std::nullopt;
+}
+
+// Whether the term `sub` occurs in e (the same Z3 term, by id): the proofs that prove a term's
+// obligations in two phases (those that need a fact about the term, and the others) sort them so.
+inline bool mentions_term(const z3::expr& e, const z3::expr& sub) {
+  const unsigned target = Z3_get_ast_id(e.ctx(), sub);
+  std::vector<z3::expr> todo{e};
+  std::unordered_set<unsigned> seen;
+  while (!todo.empty()) {
+    const z3::expr t = todo.back();
+    todo.pop_back();
+    const unsigned id = Z3_get_ast_id(t.ctx(), t);
+    if (id == target) return true;
+    if (!t.is_app() || !seen.insert(id).second) continue;
+    for (unsigned i = 0; i < t.num_args(); ++i) todo.push_back(t.arg(i));
+  }
+  return false;
 }
 
 // Runs `body` once per path through the branches it takes on symbolic values (Session::decide),
