@@ -221,8 +221,8 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
   const std::int64_t w1 = weights_.information, w2 = weights_.distance, w3 = weights_.nearness;
   // The bound that lets the search stop early (see the header); only valid for these signs.
   const bool can_stop = w2 > 0 && w1 >= 0 && w3 >= 0;
-  // The largest I any candidate can have: the largest unseen count of a Free cell (the counts
-  // only fall, so the top is lowered lazily).
+  // The largest I any candidate can have: the largest bound of a Free cell (bounds only fall, so
+  // the top is lowered lazily).
   while (bound_top_ > 0 && bound_cells_[bound_top_].empty()) --bound_top_;
   const auto max_info = static_cast<std::int64_t>(bound_top_);
   ++search_; // every list's cursor starts at 0 when the search first scans it
@@ -273,15 +273,15 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
   Cell best{};
   std::int64_t best_g = 0;
   std::size_t head = 0;
-  // The largest unseen count among the Free cells of the level about to be expanded.
-  // (Candidates are frontier cells at depth >= 1; the robot's own cell is none.)
+  // The largest bound among the frontier cells of the level about to be expanded (candidates
+  // are frontier cells at depth >= 1; the robot's own cell is none).
   std::uint32_t level_bound = 0;
   for (std::int32_t depth = 0; head < queue_.size(); ++depth) {
     if (found && can_stop && w1 * max_info - w2 * depth < best_g) break;
     // The cells not yet expanded are this level's, at depth `depth`, and cells not yet reached,
     // at depth >= depth + 1 and at least their Chebyshev distance from the robot (a move changes
     // each coordinate by at most 1). One of them can beat best_g only with
-    // w1 * unseen - w2 * depth > best_g (so unseen >= k): if none can, stop.
+    // w1 * bound - w2 * depth > best_g (so bound >= k): if none can, stop.
     if (found && can_stop && w1 > 0) {
       const std::int64_t k = std::max<std::int64_t>(1, floor_div(best_g + w2 * depth, w1) + 1);
       // A cell that is no threat now is none later in this search (reached cells stay reached,
@@ -329,8 +329,7 @@ bool FrontierCoverage::plan(std::size_t i, const CoverageWorld& world, bool clai
         bool taken = false;
         for (std::size_t j = 0; j < robots_.size(); ++j)
           if (j != i && robots_[j].target == c) taken = true;
-        // A cell that cannot beat the best even with every unseen cell of its footprint in view
-        // is not worth evaluating.
+        // A cell that cannot beat the best even with I at its bound is not worth evaluating.
         const bool hopeless = found && can_stop && w1 * bound - w2 * depth <= best_g;
         std::int32_t info = 0;
         std::int64_t near = 0;

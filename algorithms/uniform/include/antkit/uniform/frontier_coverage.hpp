@@ -34,15 +34,20 @@
 //   * Ties in g go to the cell the search meets first (nearer first, then the kernel's neighbour
 //     order E, NE, N, NW, W, SW, S, SE). The search stops once no farther cell can win: I is at
 //     most the footprint size minus one, so a cell at distance D has g <= w1 * (rays - 1) - w2 * D.
-//   * Speed, with the same decisions: every viewed free cell c (a Free cell of the frontier map,
-//     so every possible candidate) keeps unseen(c), the viewable cells of its footprint the map
-//     still holds unexplored, kept up to date as cells are viewed, and a histogram of those
-//     counts. I(c) <= unseen(c), because a cell the world has viewed is never unexplored here. So
-//     a candidate whose w1 * unseen(c) - w2 * D cannot beat the best g is not evaluated, and the
-//     search stops once w1 * max(unseen) - w2 * D cannot: the bounds above with the footprint
-//     size replaced by counts that fall as the map is explored. The claims are stamped on a grid
-//     once per search rather than tested robot by robot for every cell. Nothing the search
-//     chooses changes (the golden hashes hold it).
+//   * Speed, with the same decisions (issue 31). Every viewed free cell c (a Free cell of the
+//     frontier map, so every possible candidate) keeps a bound on its I without claims: at first
+//     unseen(c), the viewable cells of its footprint still unexplored here (a cell the world has
+//     viewed is never unexplored here, so I(c) <= unseen(c)); then, whenever a search measures c,
+//     its I exactly; a cell of its footprint being viewed marks the bound stale but keeps it a
+//     bound (I only falls) and lowers it to unseen(c) when that is smaller. The Free cells are
+//     kept in lists per bound. A candidate whose w1 * bound - w2 * D cannot beat the best g is not
+//     evaluated; a candidate's count stops once it cannot reach the I that would beat the best;
+//     and the search stops at the first depth where no cell left can win: none of this level's
+//     frontier cells by its bound, and no frontier cell not yet reached by its bound and the
+//     lower bound max(depth + 1, Chebyshev distance) on its D (a stale bound that stands in the
+//     way is measured first). The claims are stamped on a grid once per search. Nothing the
+//     search chooses changes: tests/uniform/test_frontier_speed.cpp steps this controller beside
+//     the previous one, command for command, and the golden hashes hold.
 //   * The target is dropped and a new one searched when its I (claims ignored) falls to 0, when
 //     the path is used up, or when the next cell holds a robot. A robot that finds no target
 //     around the other robots waits; after kPatience such ticks it steps to a random enterable
