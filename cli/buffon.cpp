@@ -92,6 +92,10 @@ double fx_to_double(std::int64_t raw) {
   return static_cast<double>(raw) / 65536.0;
 }
 
+nlohmann::json optional_json(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json();
+}
+
 // Trial 0's trails in the arena, drawn with Cairo (title, legend, caption).
 void draw_trails(const BuffonCommand& c, const geometry::Arena& arena,
                  const buffon::TrialResult& t) {
@@ -216,37 +220,27 @@ void run(const BuffonCommand& c) {
                        {cf.lower, cf.upper ? nlohmann::json(*cf.upper) : nlohmann::json()}},
                       {"blocked", t.blocked},
                       {"hash", antkit::kernel::hash_hex(t.hash)}});
+    buffon::PrecisionEstimate estimate;
     if (online) {
       stopped += t.reached_precision ? 1 : 0;
       trials.back()["reached_precision"] = t.reached_precision;
-      // The rule's own interval (stopping.hpp): V = both shares, floored at N; the rule's z^2.
-      const double n = static_cast<double>(t.crossings_exact);
-      const double v = std::max(t.variance_visit1 + t.variance_visit2, n);
-      const double z2 = static_cast<double>(buffon::PrecisionMonitor::kZSquaredMilli) / 1000.0;
-      const double half = std::sqrt(z2 * v);
-      trials.back()["precision_ci"] = {
-          cf.area && n > 0 ? nlohmann::json(*cf.area * n / (n + half)) : nlohmann::json(),
-          cf.area && n > half ? nlohmann::json(*cf.area * n / (n - half)) : nlohmann::json()};
+      // The rule's own interval and the erosion-corrected estimate (estimate.hpp).
+      estimate = buffon::precision_estimate({cf.area, t.crossings_exact, t.variance_visit1,
+                                             t.variance_visit2, t.wall_encounters, l1 + l2});
+      trials.back()["precision_ci"] = {optional_json(estimate.ci.lower),
+                                       optional_json(estimate.ci.upper)};
       trials.back()["variance_visit1"] = t.variance_visit1;
       trials.back()["variance_visit2"] = t.variance_visit2;
       trials.back()["wall_encounters"] = t.wall_encounters;
-      // The erosion-corrected estimate and interval (estimate.hpp), from the rule's interval.
-      const double factor = buffon::erosion_factor(t.wall_encounters, l1 + l2);
-      const auto& ci = trials.back()["precision_ci"];
-      trials.back()["area_corrected"] =
-          cf.area ? nlohmann::json(*cf.area * factor) : nlohmann::json();
-      trials.back()["area_corrected_ci"] = {
-          ci[0].is_null() ? nlohmann::json() : nlohmann::json(ci[0].get<double>() * factor),
-          ci[1].is_null() ? nlohmann::json() : nlohmann::json(ci[1].get<double>() * factor)};
-      if (cf.area) corrected.push_back(*cf.area * factor);
+      trials.back()["area_corrected"] = optional_json(estimate.area_corrected);
+      trials.back()["area_corrected_ci"] = {optional_json(estimate.corrected_ci.lower),
+                                            optional_json(estimate.corrected_ci.upper)};
+      if (estimate.area_corrected) corrected.push_back(*estimate.area_corrected);
     }
     if (online1 || markers) {
       auto& j = trials.back();
       // The precision reached: the rule's interval's upper side over the estimate, minus 1.
-      const auto& ci = j["precision_ci"];
-      j["precision_reached"] = cf.area && !ci[1].is_null()
-                                   ? nlohmann::json(ci[1].get<double>() / *cf.area - 1)
-                                   : nlohmann::json();
+      j["precision_reached"] = optional_json(estimate.precision_reached);
       if (!t.reached_precision) ++short_budget;
       j["steps1"] = t.steps1;
       j["steps2"] = t.steps2;

@@ -4,8 +4,6 @@
 // emit().
 #include <CLI/CLI.hpp>
 #include <antkit/experiments/run.hpp>
-#include <antkit/maps/map_io.hpp>
-#include <antkit/stc/world.hpp>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <stdexcept>

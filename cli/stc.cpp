@@ -31,6 +31,7 @@
 #include <antkit/maps/map_io.hpp>
 #include <antkit/reports/reports.hpp>
 #include <antkit/stc/path_format.hpp>
+#include <antkit/stc/start.hpp>
 #include <antkit/stc/world.hpp>
 #include <charconv>
 #include <cstdint>
@@ -108,10 +109,10 @@ StcRequest read_stc_request(const std::string& map_file, const std::string& vari
   StcRequest r{antkit::reports::stc_variant(variant_text, "--variant"), {}, {}, {}};
   if (!noise.empty()) r.noise = antkit::reports::stc_noise(r.variant, noise, seed, "--noise");
   r.map = antkit::maps::load_map(map_file);
-  r.start = antkit::reports::choose_stc_start(
-      r.map, r.variant,
-      start.empty() ? std::nullopt : std::optional(algorithms::parse_cell("--start", start)),
-      map_file);
+  r.start = choose_start(r.map.cells, r.variant,
+                         start.empty() ? std::nullopt
+                                       : std::optional(algorithms::parse_cell("--start", start)),
+                         r.map.start, map_file);
   return r;
 }
 
@@ -237,10 +238,10 @@ void run_noise_command(const NoiseOptions& o) {
     from = comma + 1;
   }
   const auto map = antkit::maps::load_map(o.map);
-  const Cell start = antkit::reports::choose_stc_start(
-      map, variant,
+  const Cell start = choose_start(
+      map.cells, variant,
       o.start.empty() ? std::nullopt : std::optional(algorithms::parse_cell("--start", o.start)),
-      o.map);
+      map.start, o.map);
   std::vector<std::uint32_t> ppm;
   for (const auto& level : levels) ppm.push_back(level.second);
   std::int64_t reachable = 0;

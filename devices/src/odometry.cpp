@@ -186,24 +186,19 @@ LoggedTrail trail_from_log(const std::string& path) {
 }
 
 BuffonEstimate estimate_area(const BuffonCounts& c) {
-  // cli/buffon.cpp's per-trial report under --precision, term by term (two visits: pair_share 1).
+  // The per-trial report of `antkit buffon --precision` (buffon::precision_estimate), from the
+  // logs' counts (two visits: pair_share 1).
   const double l1 = static_cast<double>(c.length1_raw) / 65536.0;
   const double l2 = static_cast<double>(c.length2_raw) / 65536.0;
   const auto cf = buffon::closed_form_area(l1, l2, c.crossings);
+  const auto e = buffon::precision_estimate(
+      {cf.area, c.crossings, c.variance_visit1, c.variance_visit2, c.wall_encounters, l1 + l2});
   BuffonEstimate out;
   out.area_raw = cf.area;
-  const double n = static_cast<double>(c.crossings);
-  const double v = std::max(c.variance_visit1 + c.variance_visit2, n);
-  const double z2 = static_cast<double>(buffon::PrecisionMonitor::kZSquaredMilli) / 1000.0;
-  const double half = std::sqrt(z2 * v);
-  if (cf.area && n > 0) out.raw_ci.lower = *cf.area * n / (n + half);
-  if (cf.area && n > half) out.raw_ci.upper = *cf.area * n / (n - half);
-  out.erosion_factor = buffon::erosion_factor(c.wall_encounters, l1 + l2);
-  const auto scale = [f = out.erosion_factor](const std::optional<double>& a) {
-    return a ? std::optional<double>(*a * f) : std::nullopt;
-  };
-  out.area_corrected = scale(cf.area);
-  out.corrected_ci = {scale(out.raw_ci.lower), scale(out.raw_ci.upper)};
+  out.raw_ci = {e.ci.lower, e.ci.upper};
+  out.erosion_factor = e.erosion_factor;
+  out.area_corrected = e.area_corrected;
+  out.corrected_ci = {e.corrected_ci.lower, e.corrected_ci.upper};
   return out;
 }
 

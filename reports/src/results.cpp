@@ -4,6 +4,7 @@
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/reports/reports.hpp>
+#include <antkit/stc/start.hpp>
 
 namespace antkit::reports {
 
@@ -25,13 +26,7 @@ stc::NoiseModel stc_noise(stc::Variant variant, const std::string& probability, 
 
 kernel::Cell choose_stc_start(const maps::GridMap& map, stc::Variant variant,
                               std::optional<kernel::Cell> given, const std::string& map_name) {
-  if (given) return *given;
-  if (map.start) return *map.start;
-  if (const auto start = stc::default_start(map.cells, variant)) return *start;
-  throw kernel::InputError(map_name, stc::is_exact(variant)
-                                         ? "the map has no free cell (2 x 2 free sub-cells) to "
-                                           "start in"
-                                         : "the map has no free sub-cell to start in");
+  return stc::choose_start(map.cells, variant, given, map.start, map_name);
 }
 
 nlohmann::json stc_json(const stc::RunResult& r, std::int32_t width, std::int32_t height,

@@ -67,6 +67,32 @@ inline double erosion_factor(std::uint64_t wall_encounters, double length_total)
              : 1.0;
 }
 
+// The precision rule's interval and the erosion correction of one measurement, from its counts:
+// what `antkit buffon --precision` reports per trial ("precision_ci", "area_corrected",
+// "area_corrected_ci", "precision_reached"). The interval is stopping.hpp's: A_hat N / (N +/- z
+// sqrt V), V = max(V1 + V2, N) the two-way batch-means variance floored at N, z^2 =
+// PrecisionMonitor::kZSquaredMilli / 1000; here in double, for reporting (the rule's decision is
+// the exact integer test in stopping.cpp). Without an estimate (N = 0) every field but the
+// erosion factor is absent; the upper side (and the precision reached) also when N <= z sqrt V.
+struct PrecisionCounts {
+  std::optional<double> area;                      // A_hat (closed_form_area); absent when N = 0
+  std::uint64_t crossings = 0;                     // N, the exact crossings A_hat came from
+  double variance_visit1 = 0, variance_visit2 = 0; // PrecisionMonitor::spread() (0: no check)
+  std::uint64_t wall_encounters = 0;               // WallEncounters over both trails
+  double length_total = 0;                         // L1 + L2, the erosion factor's trail length
+};
+struct PrecisionInterval {
+  std::optional<double> lower, upper;
+};
+struct PrecisionEstimate {
+  PrecisionInterval ci;                    // the rule's 95 % interval of A_hat
+  double erosion_factor = 1;               // erosion_factor(wall_encounters, length_total)
+  std::optional<double> area_corrected;    // A_hat * erosion_factor: the arena's area
+  PrecisionInterval corrected_ci;          // ci * erosion_factor
+  std::optional<double> precision_reached; // ci.upper / A_hat - 1: the relative precision reached
+};
+[[nodiscard]] PrecisionEstimate precision_estimate(const PrecisionCounts& counts);
+
 // Quantile q of `v` by linear interpolation between order statistics (type 7, the default of R
 // and numpy); `v` need not be sorted. Empty input gives 0.
 inline double quantile(std::vector<double> v, double q) {
