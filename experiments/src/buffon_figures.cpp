@@ -103,7 +103,7 @@ BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const Runner& r
   if (!runner.root()) return out;
   kernel::TraceHash digest;
   for (std::size_t k = 0; k < arenas.size(); ++k) {
-    std::vector<double> nbc, cf, blocked, length1;
+    std::vector<double> nbc, cf, blocked, length1, bc_values;
     for (std::uint64_t t = 0; t < trials; ++t) {
       Payload p = payloads[k * trials + t];
       const auto bc = p.get();
@@ -114,6 +114,7 @@ BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const Runner& r
       digest.add_u64(p.get());
       nbc.push_back(l2 > 0 ? static_cast<double>(bc) / l2 : 0.0);
       length1.push_back(l1);
+      bc_values.push_back(static_cast<double>(bc));
       if (auto a = buffon::closed_form_area(l1, l2, crossings).area) cf.push_back(*a);
     }
     out.rows.push_back({arenas[k], shapes[k].area(), buffon::quantile(nbc, 0.5),
@@ -123,6 +124,9 @@ BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const Runner& r
     row.length1_median = buffon::quantile(length1, 0.5);
     row.efficiency =
         row.length1_median > 0 ? row.nbc_median * M_PI * row.area / (2 * row.length1_median) : 0.0;
+    row.nbc_trials = std::move(nbc);
+    row.length1_trials = std::move(length1);
+    row.bc_trials = std::move(bc_values);
   }
   out.hash = digest.finish();
   return out;
@@ -323,6 +327,7 @@ Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner) {
     }
   }
   out.hash = digest.finish();
+  out.arenas = std::move(arenas);
   return out;
 }
 

@@ -46,6 +46,8 @@ std::vector<TablesRow> run_tables(const TablesConfig& c,
         row.movements[a] += static_cast<double>(movements);
         row.moves[a] += static_cast<double>(moves);
         row.complete[a] += viewed == viewable;
+        row.coverage_runs[a].push_back(cov);
+        row.movements_runs[a].push_back(static_cast<double>(movements));
         digest.add_u64(hash);
       }
     }

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/experiments/buffon_figures.hpp>
+#include <antkit/experiments/claims.hpp>
 #include <antkit/experiments/drawing.hpp>
 #include <antkit/experiments/explore_tables.hpp>
 #include <antkit/experiments/format.hpp>
@@ -28,25 +29,6 @@ using kernel::InputError;
 namespace {
 
 const std::vector<std::string> kFamilies = {"buffon", "los", "stc", "uniform"};
-
-std::string pct(double v, int decimals = 1) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f %%", decimals, 100 * v);
-  return buf;
-}
-
-// Holds when `good` of `all` pass, partly when at least `partly_from` of them do.
-Verdict count_verdict(std::size_t good, std::size_t all, double partly_fraction = 0.5) {
-  if (all > 0 && good == all) return Verdict::Holds;
-  if (all > 0 && static_cast<double>(good) >= partly_fraction * static_cast<double>(all) &&
-      good > 0)
-    return Verdict::Partly;
-  return Verdict::DoesNotHold;
-}
-
-double rel(double a, double b) {
-  return b != 0 ? std::abs(a - b) / std::abs(b) : 0.0;
-}
 
 // The output directory, its subdirectories, and the files written (relative paths).
 class Writer {
@@ -95,367 +77,25 @@ std::string embed(const std::string& md) {
   return out.str();
 }
 
+nlohmann::json parts_json(const std::vector<ClaimPart>& parts) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : parts)
+    out.push_back({{"label", p.label},
+                   {"value", p.value},
+                   {"interval", {p.ci.lo, p.ci.hi}},
+                   {"level", p.level},
+                   {"method", p.method},
+                   {"rule", p.rule},
+                   {"verdict", verdict_text(p.verdict)}});
+  return out;
+}
+
 std::string image(const std::string& stem, const std::string& alt) {
   return "![" + alt + "](" + stem + ".png)\n\n(" + stem + ".svg, " + stem + ".png)\n\n";
 }
 
 // ---------------------------------------------------------------------------------------------
 // Paper 000.
-
-struct BuffonResults {
-  std::map<int, BuffonFigure> figures;
-  Figure14 fig14;
-};
-
-const BuffonFigureRow* find_row(const BuffonFigure& f, const std::string& series, double x) {
-  for (const auto& r : f.rows)
-    if (r.arena.series == series && r.arena.x == x) return &r;
-  return nullptr;
-}
-
-void buffon_claims(const BuffonResults& b, std::vector<Claim>& claims) {
-  const auto& f5 = b.figures.at(5);
-  {
-    Claim c{"000-1",
-            "000",
-            "Figure 5, section 6.1",
-            "nBC of square and circular arenas of equal area agree for all but the two smallest "
-            "sizes.",
-            "agree: medians differ by at most 5 %; holds when every size from d = 30 agrees",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0, all = 0;
-    double worst = 0, worst_d = 0;
-    for (double d = 30; d <= 100; d += 10) {
-      const auto *ci = find_row(f5, "circle", d), *sq = find_row(f5, "square", d);
-      if (!ci || !sq) continue;
-      const double r = rel(sq->nbc_median, ci->nbc_median);
-      ++all;
-      good += r <= 0.05;
-      if (r > worst) worst = r, worst_d = d;
-    }
-    const auto small = [&](double d) {
-      const auto *ci = find_row(f5, "circle", d), *sq = find_row(f5, "square", d);
-      return ci && sq ? pct(rel(sq->nbc_median, ci->nbc_median)) : std::string("-");
-    };
-    c.verdict = count_verdict(good, all, 0.75);
-    c.measured = std::to_string(good) + " of " + std::to_string(all) +
-                 " sizes agree; largest difference from d = 30: " + pct(worst) +
-                 " (d = " + fixed(worst_d, 0) + "); d = 10: " + small(10) +
-                 ", d = 20: " + small(20);
-    if (c.verdict != Verdict::Holds)
-      c.why = "the square's median departs from the circle's by more than 5 % at d = " +
-              fixed(worst_d, 0) + ".";
-    claims.push_back(c);
-  }
-  {
-    Claim c{"000-3",
-            "000",
-            "Figure 5, section 6.1",
-            "nBC is robust: half of the measurements lie in a narrow band around the median over "
-            "a wide range of sizes.",
-            "narrow: interquartile range at most 25 % of the median, every circle and square from "
-            "d = 30",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0, all = 0;
-    double widest = 0;
-    for (const auto& r : f5.rows) {
-      if (r.arena.x < 30 || r.nbc_median <= 0) continue;
-      const double w = (r.nbc_q3 - r.nbc_q1) / r.nbc_median;
-      ++all;
-      good += w <= 0.25;
-      widest = std::max(widest, w);
-    }
-    c.verdict = count_verdict(good, all, 0.75);
-    c.measured = std::to_string(good) + " of " + std::to_string(all) +
-                 " arenas; widest IQR / median: " + pct(widest);
-    if (c.verdict != Verdict::Holds)
-      c.why = "some arenas' interquartile range exceeds a quarter of their median at this trial "
-              "count.";
-    claims.push_back(c);
-  }
-  {
-    Claim c{"000-4",
-            "000",
-            "Figure 5, section 6.1",
-            "In the two smallest arenas nBC is lower than expected, because the trails blend.",
-            "Buffon efficiency nBC pi A / (2 L1) (1 for an ideal needle count) below 0.9 at d = 10 "
-            "and 20 and below every larger circle's",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    double larger_min = 1e300;
-    std::string per_size;
-    for (const auto& r : f5.rows)
-      if (r.arena.series == "circle") {
-        if (r.arena.x >= 30) larger_min = std::min(larger_min, r.efficiency);
-        if (r.arena.x <= 30 || r.arena.x == 100)
-          per_size += (per_size.empty() ? "" : ", ") +
-                      ("d = " + fixed(r.arena.x, 0) + ": " + fixed(r.efficiency, 2));
-      }
-    std::size_t good = 0;
-    for (double d : {10.0, 20.0})
-      if (const auto* r = find_row(f5, "circle", d))
-        good += r->efficiency < 0.9 && r->efficiency < larger_min;
-    c.verdict = count_verdict(good, 2);
-    c.measured = "efficiency " + per_size;
-    if (c.verdict != Verdict::Holds)
-      c.why = "only " + std::to_string(good) +
-              " of the two smallest circles has an efficiency below 0.9 and below the larger "
-              "circles'.";
-    claims.push_back(c);
-  }
-  const auto& f6 = b.figures.at(6);
-  {
-    Claim c{"000-5",
-            "000",
-            "Figure 6, section 6.2.1",
-            "The median nBC of ellipses of the standard area stays about the circle's as "
-            "compactness changes.",
-            "about: within 10 % of the circle's median, all three ellipses",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    const double circle = f6.rows.at(0).nbc_median;
-    std::size_t good = 0;
-    std::string list;
-    for (std::size_t i = 1; i < f6.rows.size(); ++i) {
-      const double r = rel(f6.rows[i].nbc_median, circle);
-      good += r <= 0.10;
-      list += (list.empty() ? "" : ", ") + pct(r);
-    }
-    c.verdict = count_verdict(good, f6.rows.size() - 1);
-    c.measured = "differences from the circle (e = 0.968, 0.994, 0.998): " + list;
-    if (c.verdict != Verdict::Holds)
-      c.why = "the least compact ellipses' medians move by more than 10 %.";
-    claims.push_back(c);
-  }
-  {
-    Claim c{"000-6",
-            "000",
-            "Figure 6, section 6.2.1",
-            "As the arena becomes less compact the spread of nBC grows and the median rises.",
-            "both: the IQR grows with compactness at every step, and the most eccentric ellipse's "
-            "median is above the circle's",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    bool growing = true;
-    std::string iqrs;
-    for (std::size_t i = 0; i < f6.rows.size(); ++i) {
-      const double w = f6.rows[i].nbc_q3 - f6.rows[i].nbc_q1;
-      if (i > 0) growing = growing && w >= f6.rows[i - 1].nbc_q3 - f6.rows[i - 1].nbc_q1;
-      iqrs += (iqrs.empty() ? "" : ", ") + fixed(w, 3);
-    }
-    const bool rises = f6.rows.back().nbc_median > f6.rows.front().nbc_median;
-    c.verdict = growing && rises   ? Verdict::Holds
-                : growing || rises ? Verdict::Partly
-                                   : Verdict::DoesNotHold;
-    c.measured = "IQR (circle to e = 0.998): " + iqrs + "; median " +
-                 fixed(f6.rows.front().nbc_median, 4) + " to " +
-                 fixed(f6.rows.back().nbc_median, 4);
-    if (c.verdict != Verdict::Holds)
-      c.why = std::string(growing ? "" : "the IQR does not grow at every step") +
-              (growing || rises ? "" : "; ") + (rises ? "" : "the median does not rise") + ".";
-    claims.push_back(c);
-  }
-  const auto& f7 = b.figures.at(7);
-  {
-    Claim c{
-        "000-7",
-        "000",
-        "Figure 7, section 6.2.2",
-        "A partial barrier (I-shaped or plus-shaped) has no significant effect on the measurement.",
-        "no significant effect: every barrier of 10-70 % of the diameter within 10 % of the "
-        "standard arena's median",
-        Verdict::DoesNotHold,
-        "",
-        ""};
-    const double standard = f7.rows.at(0).nbc_median;
-    std::size_t good = 0, all = 0;
-    double worst = 0;
-    std::string worst_at;
-    for (const auto& r : f7.rows) {
-      if (r.arena.series == "none" || r.arena.x > 70) continue;
-      const double d = rel(r.nbc_median, standard);
-      ++all;
-      good += d <= 0.10;
-      if (d > worst) worst = d, worst_at = r.arena.series + " " + fixed(r.arena.x, 0) + " %";
-    }
-    c.verdict = count_verdict(good, all, 0.75);
-    c.measured = std::to_string(good) + " of " + std::to_string(all) +
-                 " barriers; largest change " + pct(worst) + " (" + worst_at + ")";
-    if (c.verdict != Verdict::Holds) {
-      std::string off;
-      for (const auto& r : f7.rows)
-        if (r.arena.series != "none" && r.arena.x <= 70 && rel(r.nbc_median, standard) > 0.10)
-          off += (off.empty() ? "" : ", ") + r.arena.series + " " + fixed(r.arena.x, 0) + " %";
-      c.why = "the median moves by more than 10 % with " + off + ".";
-    }
-    claims.push_back(c);
-  }
-  {
-    Claim c{"000-8",
-            "000",
-            "Figure 7, section 6.2.2",
-            "With the longest barrier the robot stays stuck in lobes and the variance grows.",
-            "the IQR at 80 % is the largest of its barrier's series, for both barrier shapes",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0;
-    std::string list;
-    for (const char* series : {"barrier-i", "barrier-plus"}) {
-      double longest = 0, others = 0;
-      for (const auto& r : f7.rows) {
-        if (r.arena.series != series) continue;
-        const double w = r.nbc_q3 - r.nbc_q1;
-        if (r.arena.x == 80)
-          longest = w;
-        else
-          others = std::max(others, w);
-      }
-      good += longest > others;
-      list += (list.empty() ? "" : "; ") + std::string(series) + ": IQR at 80 % " +
-              fixed(longest, 3) + ", largest shorter " + fixed(others, 3);
-    }
-    c.verdict = count_verdict(good, 2);
-    c.measured = list;
-    if (c.verdict != Verdict::Holds)
-      c.why = "a shorter barrier's spread is as large as the longest's.";
-    claims.push_back(c);
-  }
-  const auto& f8 = b.figures.at(8);
-  {
-    Claim c{"000-9",
-            "000",
-            "Figure 8, section 6.2.2",
-            "nBC is almost invariant to the arena's shape: standard, ring, plus-shaped hole and "
-            "obstacles of the same area agree.",
-            "almost invariant: every shape within 10 % of the standard arena's median",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    const double standard = f8.rows.at(0).nbc_median;
-    std::size_t good = 0;
-    std::string list;
-    for (std::size_t i = 1; i < f8.rows.size(); ++i) {
-      const double d = (f8.rows[i].nbc_median - standard) / standard;
-      good += std::abs(d) <= 0.10;
-      list +=
-          (list.empty() ? "" : ", ") + f8.rows[i].arena.series + " " + (d >= 0 ? "+" : "") + pct(d);
-    }
-    c.verdict = count_verdict(good, f8.rows.size() - 1);
-    c.measured = "against the standard arena: " + list;
-    if (c.verdict != Verdict::Holds) {
-      std::string off;
-      for (std::size_t i = 1; i < f8.rows.size(); ++i)
-        if (rel(f8.rows[i].nbc_median, standard) > 0.10)
-          off += (off.empty() ? "" : ", ") + f8.rows[i].arena.series;
-      c.why = "the median nBC of " + off +
-              " differs from the standard arena's by more than 10 %: equal areas do not give "
-              "equal nBC there (a candidate cause, not separated here: the hole or obstacles keep "
-              "both walks in narrower corridors, where their trails meet more often).";
-    }
-    claims.push_back(c);
-  }
-  const auto& f9 = b.figures.at(9);
-  {
-    Claim c{
-        "000-10",
-        "000",
-        "Figure 9, section 6.3",
-        "A thicker trail extends blending (too low nBC) to larger arenas.",
-        "blending size: the largest circle whose efficiency is below 0.9; it never shrinks as w "
-        "grows and is larger at w = 0.4 than at w = 0.05",
-        Verdict::DoesNotHold,
-        "",
-        ""};
-    std::vector<std::pair<std::string, double>> sizes;
-    for (const auto& r : f9.rows) {
-      if (sizes.empty() || sizes.back().first != r.arena.series)
-        sizes.emplace_back(r.arena.series, 0);
-      if (r.efficiency < 0.9) sizes.back().second = std::max(sizes.back().second, r.arena.x);
-    }
-    bool growing = true;
-    std::string list;
-    for (std::size_t i = 0; i < sizes.size(); ++i) {
-      if (i > 0) growing = growing && sizes[i].second >= sizes[i - 1].second;
-      list += (list.empty() ? "" : ", ") + sizes[i].first + ": d <= " + fixed(sizes[i].second, 0);
-    }
-    const bool larger = !sizes.empty() && sizes.back().second > sizes.front().second;
-    c.verdict = growing && larger ? Verdict::Holds
-                : larger          ? Verdict::Partly
-                                  : Verdict::DoesNotHold;
-    c.measured = "blending sizes " + list;
-    if (c.verdict != Verdict::Holds)
-      c.why = "the blending size does not grow steadily with the trail width here.";
-    claims.push_back(c);
-  }
-  const auto& f14 = b.fig14;
-  if (!f14.rows.empty()) {
-    const double last = f14.rows.back().total_length;
-    {
-      Claim c{"000-11",
-              "000",
-              "Figure 14, section 8.1",
-              "Random Search needs a longer trail for a larger arena to give a reliable estimate.",
-              "at the longest trail, RS estimate / area falls as the diameter grows",
-              Verdict::DoesNotHold,
-              "",
-              ""};
-      std::vector<std::pair<double, double>> at_last;
-      for (const auto& r : f14.rows)
-        if (r.total_length == last) at_last.emplace_back(r.diameter, r.rs_median / r.area);
-      bool falling = true;
-      std::string list;
-      for (std::size_t i = 0; i < at_last.size(); ++i) {
-        if (i > 0) falling = falling && at_last[i].second < at_last[i - 1].second;
-        list += (list.empty() ? "" : ", ") +
-                ("d = " + fixed(at_last[i].first, 0) + ": " + fixed(at_last[i].second, 2));
-      }
-      c.verdict = falling ? Verdict::Holds : Verdict::DoesNotHold;
-      c.measured = "RS / area at total length " + fixed(last, 0) + ": " + list;
-      if (!falling) c.why = "the RS estimate does not fall steadily with the diameter.";
-      claims.push_back(c);
-    }
-    {
-      Claim c{"000-12",
-              "000",
-              "Figure 14, section 8.1",
-              "Calibrated Buffon estimates are reliable even for short trails and depend little "
-              "on the arena's size.",
-              "reliable: every test circle's median estimate within 15 % of its area from the "
-              "third checkpoint (total length 1008) on",
-              Verdict::DoesNotHold,
-              "",
-              ""};
-      std::size_t good = 0, all = 0;
-      double worst = 0;
-      std::string worst_at;
-      for (const auto& r : f14.rows) {
-        if (r.total_length < 1000) continue;
-        const double e = rel(r.buffon_median, r.area);
-        ++all;
-        good += e <= 0.15;
-        if (e > worst)
-          worst = e,
-          worst_at = "d = " + fixed(r.diameter, 0) + ", length " + fixed(r.total_length, 0);
-      }
-      c.verdict = count_verdict(good, all, 0.75);
-      c.measured = std::to_string(good) + " of " + std::to_string(all) +
-                   " (circle, checkpoint) medians within 15 %; worst " + pct(worst) + " (" +
-                   worst_at + ")";
-      if (c.verdict != Verdict::Holds)
-        c.why = "some medians are off by more than 15 % at " + worst_at +
-                "; with few trials the calibration fit itself is noisy.";
-      claims.push_back(c);
-    }
-  }
-}
 
 std::string buffon_rows_table(const BuffonFigure& f) {
   std::ostringstream s;
@@ -507,437 +147,11 @@ void buffon_figure4(Writer& w, std::uint64_t seed) {
   w.added("buffon/figure4.png");
 }
 
-// ---------------------------------------------------------------------------------------------
-// Paper 001.
-
-void los_claims(const ExploreTables& t, std::vector<Claim>& claims) {
-  const auto& env = kExploreEnvironments;
-  {
-    Claim c{"001-1",
-            "001",
-            "Table 2, section III",
-            "Moving the obstacles (same number) does not change the exploration time much.",
-            "not much: sample deviation at most 20 % of the mean in every column (the paper's "
-            "are 6-14 %)",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0;
-    double worst = 0;
-    for (std::size_t e = 1; e < env.size(); ++e) {
-      const auto& v = t.runs[e][0].steps;
-      const double cv = sample_deviation(v) / mean_of(v);
-      good += cv <= 0.2;
-      worst = std::max(worst, cv);
-    }
-    c.verdict = count_verdict(good, env.size() - 1, 0.6);
-    c.measured = std::to_string(good) + " of " + std::to_string(env.size() - 1) +
-                 " columns; largest deviation / mean " + pct(worst);
-    if (c.verdict != Verdict::Holds)
-      c.why = "in some columns the steps vary more with the layout than in the paper.";
-    claims.push_back(c);
-  }
-  {
-    Claim c{"001-2",
-            "001",
-            "Tables 2-3",
-            "Fast wall-follow's steps grow with the number of scattered obstacles (0, 1, 2, 5, "
-            "10).",
-            "the mean steps rise at every step of 0, 1, 2, 5, 10 obstacles",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0;
-    std::string list = fixed(mean_of(t.runs[0][0].steps), 1);
-    for (std::size_t e = 1; e <= 4; ++e) {
-      good += mean_of(t.runs[e][0].steps) > mean_of(t.runs[e - 1][0].steps);
-      list += ", " + fixed(mean_of(t.runs[e][0].steps), 1);
-    }
-    c.verdict = count_verdict(good, 4, 0.75);
-    c.measured = "mean steps " + list + " (paper: 47, 82.5, 98.1, 121.5, 146.1)";
-    if (c.verdict != Verdict::Holds) c.why = "the mean does not rise at every step.";
-    claims.push_back(c);
-  }
-  const auto eme_claim = [&](const char* id, std::size_t baseline, const std::string& against) {
-    Claim c{id,
-            "001",
-            "Table 3, Figure 5",
-            "Fast wall-follow uses less motor energy (E.M.E) than " + against +
-                " in every environment.",
-            "the mean E.M.E of fast wall-follow below the baseline's, all 7 environments",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0;
-    std::string lost;
-    for (std::size_t e = 0; e < env.size(); ++e) {
-      const bool better = mean_of(t.runs[e][0].eme) < mean_of(t.runs[e][baseline].eme);
-      good += better;
-      if (!better)
-        lost += (lost.empty() ? "" : "; ") + std::string(env[e].name) + " " +
-                fixed(mean_of(t.runs[e][0].eme), 1) + " vs " +
-                fixed(mean_of(t.runs[e][baseline].eme), 1);
-    }
-    c.verdict = count_verdict(good, env.size());
-    c.measured =
-        std::to_string(good) + " of 7 environments" + (lost.empty() ? "" : "; not in: " + lost);
-    if (c.verdict != Verdict::Holds)
-      c.why = "against " + against +
-              ", fast wall-follow's E.M.E is higher where it is not better: tracing every wall "
-              "costs steps that a frontier search with these settings does not spend.";
-    claims.push_back(c);
-  };
-  eme_claim("001-3", 1,
-            "Sheng et al. (our frontier baseline without sweeping, the original method)");
-  eme_claim("001-3b", 2, "our frontier baseline with line-of-sight sweeping (the strong baseline)");
-  {
-    Claim c{"001-4",
-            "001",
-            "Table 3, Figure 6",
-            "Fast wall-follow needs fewer steps than Sheng et al. with no or few (fewer than ten) "
-            "obstacles.",
-            "mean steps below the frontier baseline without sweeping, environments with 0, 1, 2 "
-            "and 5 obstacles",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0;
-    std::string list;
-    for (std::size_t e = 0; e <= 3; ++e) {
-      good += mean_of(t.runs[e][0].steps) < mean_of(t.runs[e][1].steps);
-      list += (list.empty() ? "" : ", ") + fixed(mean_of(t.runs[e][0].steps), 1) + " vs " +
-              fixed(mean_of(t.runs[e][1].steps), 1);
-    }
-    c.verdict = count_verdict(good, 4);
-    c.measured = std::to_string(good) + " of 4 (" + list + ")";
-    if (c.verdict != Verdict::Holds)
-      c.why = "our frontier baseline, unlike the paper's Sheng et al. (about 155 steps whatever "
-              "the obstacles), is faster than wall-following in some of these rooms.";
-    claims.push_back(c);
-  }
-}
-
-// ---------------------------------------------------------------------------------------------
-// Paper 002.
-
-void stc_claims(const StcTours& s, std::vector<Claim>& claims) {
-  std::map<std::string, std::pair<std::size_t, std::size_t>> by_variant; // passed, all
-  std::string failures;
-  for (const auto& r : s.tours) {
-    auto& [ok, all] = by_variant[r.variant];
-    ++all;
-    ok += r.audit_ok;
-    if (!r.audit_ok && failures.size() < 300)
-      failures += (failures.empty() ? "" : "; ") + r.map + " " + r.variant + ": " + r.audit;
-  }
-  const auto list = [&](std::initializer_list<const char*> names, std::size_t& good,
-                        std::size_t& all) {
-    std::string text;
-    for (const char* n : names) {
-      const auto& [ok, count] = by_variant[n];
-      good += ok;
-      all += count;
-      text += (text.empty() ? "" : ", ") + std::string(n) + " " + std::to_string(ok) + "/" +
-              std::to_string(count);
-    }
-    return text;
-  };
-  {
-    Claim c{"002-1",
-            "002",
-            "Task description, the ant-like STC algorithm",
-            "Ant-like STC passes exactly once over every sub-cell and returns to the cell where it "
-            "started.",
-            "every tour of ant and ant-edge (and of offline and online STC) passes antkit check "
-            "stc: each reachable sub-cell entered exactly once, 4-adjacent free moves, back to "
-            "the start cell",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0, all = 0;
-    const std::string text = list({"ant", "ant-edge", "offline", "online"}, good, all);
-    c.verdict = count_verdict(good, all, 1.0);
-    c.measured = text + " tours pass on " + std::to_string(s.maps.size()) + " maps";
-    if (c.verdict != Verdict::Holds) c.why = failures;
-    claims.push_back(c);
-  }
-  {
-    Claim c{"002-full",
-            "002",
-            "(Full-STC, beside the paper)",
-            "Full-STC covers every reachable free sub-cell, repeats allowed.",
-            "every Full-STC tour passes antkit check stc --coverage",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0, all = 0;
-    const std::string text = list({"full"}, good, all);
-    c.verdict = count_verdict(good, all, 1.0);
-    c.measured = text + " tours pass";
-    if (c.verdict != Verdict::Holds) c.why = failures;
-    claims.push_back(c);
-  }
-}
-
-// ---------------------------------------------------------------------------------------------
-// Paper 004.
-
-void uniform_claims(const std::vector<ut::TablesRow>& rows, const std::vector<ut::TablesRow>& disk,
-                    std::uint32_t runs, std::vector<Claim>& claims) {
-  {
-    Claim c{"004-2",
-            "004",
-            "Tables 1-4, results",
-            "A* reaches 100 % coverage in every row.",
-            "every run of A* views every viewable free cell, all 16 rows",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0;
-    for (const auto& r : rows) good += r.complete[2] == runs;
-    c.verdict = count_verdict(good, rows.size(), 1.0);
-    c.measured = std::to_string(good) + " of " + std::to_string(rows.size()) + " rows complete";
-    if (c.verdict != Verdict::Holds) c.why = "some A* runs stopped short of full coverage.";
-    claims.push_back(c);
-  }
-  const auto at = [&](const std::vector<ut::TablesRow>& rs, int density, int robots) {
-    for (const auto& r : rs)
-      if (r.paper->density_percent == density && r.paper->robots == robots) return &r;
-    return static_cast<const ut::TablesRow*>(nullptr);
-  };
-  {
-    Claim c{"004-3",
-            "004",
-            "Tables 1-4, results",
-            "PM's coverage falls as the obstacle density rises.",
-            "for each robot count, PM's mean coverage at 0 % >= 10 % >= 20 % >= 30 %",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0;
-    std::string list;
-    for (int robots = 1; robots <= 4; ++robots) {
-      bool falling = true;
-      for (const auto& [a, b] : {std::pair{0, 10}, std::pair{10, 20}, std::pair{20, 30}})
-        falling = falling && at(rows, a, robots)->coverage[1] >= at(rows, b, robots)->coverage[1];
-      good += falling;
-      list += (list.empty() ? "" : "; ") + std::to_string(robots) +
-              " robot(s): " + fixed(at(rows, 0, robots)->coverage[1], 1) + " to " +
-              fixed(at(rows, 30, robots)->coverage[1], 1) + " %";
-    }
-    c.verdict = count_verdict(good, 4);
-    c.measured = list;
-    if (c.verdict != Verdict::Holds) c.why = "the fall is not monotone for every robot count.";
-    claims.push_back(c);
-  }
-  {
-    Claim c{"004-3b",
-            "004",
-            "Tables 1-4, results",
-            "PM's movements stay small and steady (fewer than A*'s) with obstacles.",
-            "PM's mean movements below A*'s in all 12 rows with obstacles",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0, all = 0;
-    for (const auto& r : rows)
-      if (r.paper->density_percent > 0) ++all, good += r.movements[1] < r.movements[2];
-    c.verdict = count_verdict(good, all);
-    c.measured = std::to_string(good) + " of " + std::to_string(all) + " rows";
-    if (c.verdict != Verdict::Holds) c.why = "in some rows PM moves more than A*.";
-    claims.push_back(c);
-  }
-  {
-    Claim c{"004-4",
-            "004",
-            "Tables 1-3, results",
-            "More robots raise PM's coverage, so PM should approach A* with enough robots.",
-            "PM's mean coverage with 4 robots above 1 robot's, every density with obstacles",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0;
-    std::string list;
-    for (const int d : {10, 20, 30}) {
-      good += at(rows, d, 4)->coverage[1] > at(rows, d, 1)->coverage[1];
-      list += (list.empty() ? "" : "; ") + std::to_string(d) +
-              " %: " + fixed(at(rows, d, 1)->coverage[1], 1) + " to " +
-              fixed(at(rows, d, 4)->coverage[1], 1);
-    }
-    c.verdict = count_verdict(good, 3);
-    c.measured = list + " % (1 to 4 robots)";
-    if (c.verdict == Verdict::Holds && at(rows, 30, 4)->coverage[1] < 50)
-      c.why = "it rises, but far from A*'s 100 %.";
-    claims.push_back(c);
-  }
-  {
-    Claim c{"004-5",
-            "004",
-            "Table 4",
-            "Without obstacles PM reaches full coverage with fewer movements than A* (3 and 4 "
-            "robots).",
-            "0 % density, 3 and 4 robots: every PM run complete and PM's mean movements below "
-            "A*'s",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0;
-    std::string list;
-    for (const int robots : {3, 4}) {
-      const auto* r = at(rows, 0, robots);
-      good += r->complete[1] == runs && r->movements[1] < r->movements[2];
-      list += (list.empty() ? "" : "; ") + std::to_string(robots) + " robots: PM " +
-              fixed(r->coverage[1], 1) + " % in " + fixed(r->movements[1], 1) + " vs A* " +
-              fixed(r->movements[2], 1);
-    }
-    c.verdict = count_verdict(good, 2);
-    c.measured = list;
-    if (c.verdict != Verdict::Holds)
-      c.why = "our PM does not complete every run of an empty room: it ceases when no unviewed "
-              "cell is within its sensor range, and can leave far corners unviewed.";
-    claims.push_back(c);
-  }
-  {
-    Claim c{"004-6",
-            "004",
-            "Tables 1-4, results",
-            "RW, the baseline, covers least.",
-            "RW's mean coverage below PM's and A*'s, all 16 rows",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0;
-    for (const auto& r : rows)
-      good += r.coverage[0] < r.coverage[1] && r.coverage[0] < r.coverage[2];
-    c.verdict = count_verdict(good, rows.size());
-    c.measured = std::to_string(good) + " of " + std::to_string(rows.size()) + " rows";
-    if (c.verdict != Verdict::Holds) {
-      std::string off;
-      for (const auto& r : rows)
-        if (!(r.coverage[0] < r.coverage[1] && r.coverage[0] < r.coverage[2]))
-          off += (off.empty() ? "" : ", ") + std::to_string(r.paper->density_percent) + " % / " +
-                 std::to_string(r.paper->robots);
-      c.why = "RW views at least as much as our PM in the rows (density / robots) " + off +
-              ": our PM ceases early there, while RW runs as many ticks as A*.";
-    }
-    claims.push_back(c);
-  }
-  {
-    Claim c{"004-pm",
-            "004",
-            "Tables 1-3",
-            "PM covers 35-83 % of the free cells with obstacles (the paper's numbers).",
-            "our PM's mean coverage within 10 points of the paper's in every row with obstacles",
-            Verdict::DoesNotHold,
-            "",
-            ""};
-    std::size_t good = 0, all = 0, disk_good = 0;
-    double lo = 1e300, hi = 0, dlo = 1e300, dhi = 0;
-    for (const auto& r : rows) {
-      if (r.paper->density_percent == 0) continue;
-      ++all;
-      good += std::abs(r.coverage[1] - r.paper->coverage[1]) <= 10;
-      lo = std::min(lo, r.coverage[1]), hi = std::max(hi, r.coverage[1]);
-      if (const auto* d = at(disk, r.paper->density_percent, r.paper->robots)) {
-        disk_good += std::abs(d->coverage[1] - r.paper->coverage[1]) <= 10;
-        dlo = std::min(dlo, d->coverage[1]), dhi = std::max(dhi, d->coverage[1]);
-      }
-    }
-    c.verdict = count_verdict(good, all);
-    c.measured = "ours " + fixed(lo, 1) + "-" + fixed(hi, 1) + " % (" + std::to_string(good) +
-                 " of " + std::to_string(all) + " rows within 10 points)";
-    if (!disk.empty())
-      c.measured += "; with a disk sensor that sees through walls " + fixed(dlo, 1) + "-" +
-                    fixed(dhi, 1) + " % (" + std::to_string(disk_good) + " of " +
-                    std::to_string(all) + ")";
-    if (c.verdict != Verdict::Holds) {
-      c.why = "our PM stops when no unviewed cell is in sensor range, early among obstacles.";
-      if (!disk.empty())
-        c.why += disk_good * 2 > all
-                     ? " A sensor without line of sight closes most of the gap: the paper's "
-                       "sensor probably sees through obstacles."
-                     : " A sensor without line of sight (a disk) does not close the gap, so a "
-                       "sensor that sees through obstacles does not explain the paper's numbers; "
-                       "the paper's PM must keep going where ours ceases (its text does not say "
-                       "how).";
-    }
-    claims.push_back(c);
-  }
-}
-
-// The papers' own words for each claim (from the texts in ../shared/papers).
-const std::map<std::string, std::string>& quotes() {
-  static const std::map<std::string, std::string> q = {
-      {"000-1", "nBC values for square and circular arenas are approximately the same for all "
-                "sizes except the two smallest arenas."},
-      {"000-3", "50% of the measurements lie within a narrow band of the median for a wide range "
-                "of arena sizes. The plot clearly indicates that nBC provides a robust measure "
-                "for area."},
-      {"000-4", "nBC values of the two smallest arenas (with area 348 and 1392 unit^2) obtained "
-                "are lower than expected. This is due to the blending of trails"},
-      {"000-5", "nBC values remain approximately the same despite the change in the compactness "
-                "of the arena."},
-      {"000-6", "As the arena becomes less compact, the variance in the nBC values obtained using "
-                "two-pass strategy increase (indicated by the growth in the error bars) also "
-                "affecting the median value."},
-      {"000-7", "the partial barrier inside an arena has no significant affect on its size "
-                "measurement."},
-      {"000-8", "causing the robot to remain stuck in some of the lobes. As a result of this, the "
-                "variance [...] corresponding to the the largest barrier length is increased."},
-      {"000-9", "The plots clearly show that nBC remains almost invariant with respect to arena "
-                "shape."},
-      {"000-10", "as the thickness of the pheromone increases, blending (which can be seen by "
-                 "smaller-than-expected nBC values for small areas) affects larger areas."},
-      {"000-11", "one needs to increase the trail length with the size of the area being measured "
-                 "for a reliable estimate."},
-      {"000-12", "Buffon's needle method provides reliable area estimates for even short trail "
-                 "lengths, showing little dependency to the size of the arena."},
-      {"001-1", "It is clear from Table 2 that changing the positions of the obstacles does not "
-                "dramatically affect the exploration time."},
-      {"001-2", "the exploration time varies not only with the number of obstacles but also with "
-                "the distribution of the obstacles themselves. (Table 3: 47, 82.5, 98.1, 121.5, "
-                "146.1 steps.)"},
-      {"001-3", "Our proposed wall-follow algorithm is better than the exploration algorithm in "
-                "[4] in terms of robot motor energy consumption (see Fig.5)."},
-      {"001-3b", "Our proposed wall-follow algorithm is better than the exploration algorithm in "
-                 "[4] in terms of robot motor energy consumption (see Fig.5)."},
-      {"001-4", "The proposed exploration algorithm consumes less exploration time than in "
-                "environments with no obstacles or with few obstacles (less than ten) as shown in "
-                "Fig.6."},
-      {"002-1", "The Robot's task is to cover the floor, passing exactly once over each sub-cell "
-                "and to return to the same cell where it started."},
-      {"004-2", "It is obvious that A* produces superior coverage in all four control studies. "
-                "(Tables 1-4: 100.0 % in every row.)"},
-      {"004-3", "The performance of the PM algorithm degrades with increasing obstacle density"},
-      {"004-3b", "though the movements taken to achieve coverage remains relatively smaller and "
-                 "consistent."},
-      {"004-4", "It is evident that PM should be able to achieve similar coverage as A* if more "
-                "robots are deployed in the environment."},
-      {"004-5", "It is also possible for PM to achieve this uniform coverage with fewer movements "
-                "than A*. (Table 4: 566.0 vs 749.0 with 3 robots, 421.0 vs 553.0 with 4.)"},
-      {"004-6", "As expected, the worst performance is by RW, the baseline."},
-      {"004-pm", "(Tables 1-3: PM covers 34.96 to 82.82 % with 10-30 % obstacles.)"},
-  };
-  return q;
-}
-
 } // namespace
 
 Trials trials_of(Scale scale) {
   if (scale == Scale::Full) return {};
   return {20, 3, 6, 10};
-}
-
-const char* verdict_text(Verdict v) {
-  switch (v) {
-  case Verdict::Holds:
-    return "holds";
-  case Verdict::Partly:
-    return "partly";
-  case Verdict::DoesNotHold:
-    return "does not hold";
-  }
-  return "?";
 }
 
 void validate(const ReproduceOptions& options) {
@@ -1031,7 +245,6 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
   // Decide and write (rank 0).
   std::ostringstream body;
   if (wants("buffon")) {
-    buffon_claims(buffon, report.claims);
     buffon_figure4(w, o.seed);
     body << "## Paper 000: Buffon's-needle area measurement\n\n"
          << trials.buffon << " trials per arena (the paper: 100), 50 000 steps per visit, trail "
@@ -1078,7 +291,6 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
                                       std::to_string(o.seed) + " --out DIR (prints this hash)"});
   }
   if (wants("los")) {
-    los_claims(los, report.claims);
     w.text("los/table2.csv", table2_csv(los));
     w.text("los/table2.md", table2_markdown(los));
     w.text("los/table3.csv", table3_csv(los));
@@ -1105,7 +317,6 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
                                       " --out DIR --format json (prints this hash)"});
   }
   if (wants("stc")) {
-    stc_claims(stc, report.claims);
     w.text("stc/tours.csv", stc_tours_csv(stc));
     w.text("stc/noise.csv", stc_noise_csv(stc));
     if (!stc.noise.empty()) w.figure("stc/noise", stc_noise_plot(stc));
@@ -1163,7 +374,6 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
         {"paper 002, tours and marker noise", stc.hash, reproduce_command(o, {"stc"})});
   }
   if (wants("uniform")) {
-    uniform_claims(uniform_rows, disk_rows, uc.runs, report.claims);
     w.text("uniform/uniform_tables.csv", ut::tables_csv(uniform_rows, uc));
     w.text("uniform/uniform_tables.md", ut::tables_markdown(uniform_rows, uc));
     w.text("uniform/disk/uniform_tables.csv", ut::tables_csv(disk_rows, disk_config));
@@ -1196,13 +406,27 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
                                       " --sensor-model disk --out DIR (prints this hash)"});
   }
 
-  for (auto& c : report.claims)
-    if (const auto it = quotes().find(c.id); it != quotes().end()) c.quote = it->second;
+  // Decide every claim of the papers that ran (claims_000.cpp ...), in the papers' order.
+  ClaimInputs inputs;
+  if (wants("buffon")) inputs.buffon = &buffon;
+  if (wants("los")) inputs.los = &los;
+  if (wants("stc")) inputs.stc = &stc;
+  if (wants("uniform")) {
+    inputs.uniform = &uniform_rows;
+    inputs.uniform_disk = &disk_rows;
+    inputs.uniform_runs = uc.runs;
+  }
+  for (const auto* table : {&claims_000(), &claims_001(), &claims_002(), &claims_004()})
+    for (const auto& spec : *table)
+      if (wants(spec.family)) report.claims.push_back(evaluate(spec, inputs, o.seed));
 
   // The report.
-  std::size_t holds = 0, partly = 0, not_held = 0;
+  std::size_t holds = 0, partly = 0, not_held = 0, open = 0;
   for (const auto& c : report.claims)
-    (c.verdict == Verdict::Holds ? holds : c.verdict == Verdict::Partly ? partly : not_held)++;
+    (c.verdict == Verdict::Holds         ? holds
+     : c.verdict == Verdict::Partly      ? partly
+     : c.verdict == Verdict::DoesNotHold ? not_held
+                                         : open)++;
   md << "# The papers, reproduced by antkit\n\n"
      << "`" << reproduce_command(o, o.only) << "` (" << scale << " scale";
   if (o.scale == Scale::Quick)
@@ -1218,17 +442,47 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
         "scripts/determinism.sh checks; the reductions (medians, means, Figure 14's fit) are "
         "floating point on the machine that writes the report.\n\n"
      << "## Claims\n\n"
-     << holds << " hold, " << partly << " partly, " << not_held
-     << " do not hold. Each claim's rule, the figure that decides it and, where it does not "
-        "hold, what the runs show:\n\n"
+     << report.claims.size() << " claims: " << holds << " hold, " << partly << " partly, "
+     << not_held << " do not hold, " << open << " inconclusive at this trial count.\n\n"
+     << "How to read a verdict. Each claim is one or more parts (an arena, a row, an "
+        "environment...); each part is a figure with an interval and a rule that compares it with "
+        "a threshold. The intervals are percentile bootstraps over the trials ("
+     << kBootstrapResamples
+     << " resamples, drawn from the kernel's keyed streams by seed, claim and part, so the "
+        "report stays byte-identical), Clopper-Pearson intervals for a proportion of runs, or "
+        "none for an exact figure (an invariant checked on every run). A claim's intervals hold "
+        "together at 95 %: with m parts, each is at 1 - 0.05 / m (Bonferroni). A part holds when "
+        "its interval is on the rule's side of the threshold, does not hold when it is on the "
+        "other side, and is undecided when the interval contains the threshold. A claim holds "
+        "when every part holds, does not hold when no part holds and every part is decided, is "
+        "*partly* when at least one part holds and at least one does not (the one convention "
+        "for every claim), and is *inconclusive at this trial count* otherwise: more trials "
+        "would decide it"
+     << (o.scale == Scale::Quick ? " (`--full` runs the papers' counts)" : "")
+     << ". The measured column gives each part's figure [its interval] for claims of up to "
+        "four parts, a count for longer ones; every part is listed under \"Claims in detail\" "
+        "below.\n\n"
      << claims_markdown(report.claims) << "\nRules, and the papers' own words:\n\n";
   for (const auto& c : report.claims)
     md << "- " << c.id << ": " << c.rule << "."
        << (c.quote.empty() ? std::string(" (A claim of ours beside the paper.)")
                            : " The paper: \"" + c.quote + "\"")
-       << '\n';
-  md << '\n'
-     << body.str() << "## Trace hashes\n\n"
+       << " Reads " << c.experiment << ".\n";
+  md << "\n## Claims in detail\n\n"
+     << "Each part: its figure, the interval (method, level) and the rule.\n\n";
+  for (const auto& c : report.claims) {
+    md << "### " << c.id << ": " << verdict_text(c.verdict) << "\n\n"
+       << "| part | figure [interval] | interval | rule | verdict |\n|---|---|---|---|---|\n";
+    for (const auto& p : c.parts) {
+      char level[32];
+      std::snprintf(level, sizeof level, "%.2f %%", 100 * p.level);
+      md << "| " << p.label << " | " << p.figure << " | " << p.method
+         << (p.method == std::string("exact") ? std::string() : std::string(", ") + level) << " | "
+         << p.rule << " | " << verdict_text(p.verdict) << " |\n";
+    }
+    md << '\n';
+  }
+  md << body.str() << "## Trace hashes\n\n"
      << "Each experiment's trace hash (every trial's, in trial order) and a command that "
         "reproduces it. This whole report: `"
      << reproduce_command(o, o.only) << "`.\n\n| experiment | hash | command |\n|---|---|---|\n";
@@ -1253,14 +507,20 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
                       {"verdict", verdict_text(c.verdict)},
                       {"measured", c.measured},
                       {"why", c.why},
-                      {"quote", c.quote}});
+                      {"quote", c.quote},
+                      {"experiment", c.experiment},
+                      {"parts", parts_json(c.parts)}});
   j["claims"] = std::move(claims);
   nlohmann::json hashes = nlohmann::json::array();
   for (const auto& e : report.experiments)
     hashes.push_back(
         {{"experiment", e.name}, {"hash", kernel::hash_hex(e.hash)}, {"command", e.command}});
   j["experiments"] = std::move(hashes);
-  j["summary"] = {{"holds", holds}, {"partly", partly}, {"does_not_hold", not_held}};
+  j["summary"] = {
+      {"holds", holds}, {"partly", partly}, {"does_not_hold", not_held}, {"inconclusive", open}};
+  j["intervals"] = {{"bootstrap_resamples", kBootstrapResamples},
+                    {"family_level", 0.95},
+                    {"per_part_level", "1 - 0.05 / m for a claim of m parts with intervals"}};
   w.text("claims.json", j.dump(2) + "\n");
   w.text("README.md", md.str());
   report.files = w.files();

@@ -26,7 +26,7 @@ TEST_CASE("antkit reproduce prints the claims table and writes the report") {
   const auto json = run_antkit("reproduce --only los --format json --out " + dir.string());
   REQUIRE(json.status == 0);
   const auto j = nlohmann::json::parse(json.out);
-  CHECK(j["claims"].size() == 5);
+  CHECK(j["claims"].size() == 8);
   CHECK(j["ranks"] == 1);
   for (const auto& f : j["files"]) CHECK(fs::exists(f.get<std::string>()));
   std::ifstream readme(dir / "README.md");

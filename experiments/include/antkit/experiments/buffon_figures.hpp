@@ -19,6 +19,7 @@
 // units of each visit (total 336 k, k = 1..10); circle d uses experiment 5400 + d. The fit uses the
 // calibration arenas' median nBC at the same checkpoint; each trial of a test arena then gives one
 // estimate.
+#include <antkit/experiments/calibration.hpp>
 #include <antkit/experiments/format.hpp>
 #include <antkit/experiments/plot.hpp>
 #include <antkit/experiments/run.hpp>
@@ -52,6 +53,9 @@ struct BuffonFigureRow {
   // Not in the CSV: the median length of visit 1, and Buffon's efficiency nBC pi area / (2 L1)
   // at the medians (1 for an ideal needle count; below 1 where trails blend).
   double length1_median = 0, efficiency = 0;
+  // Not in the CSV: every trial's nBC, visit-1 length and Buffon count, in trial order (the
+  // claims' bootstrap intervals resample them).
+  std::vector<double> nbc_trials{}, length1_trials{}, bc_trials{};
 };
 
 struct BuffonFigure {
@@ -78,6 +82,9 @@ struct Figure14 {
   BuffonFigureParams params;
   std::vector<Figure14Row> rows; // by checkpoint, then test diameter
   std::uint64_t hash = 0;        // a digest of every trial's checkpoint counts
+  // Not in the CSV: every circle's per-trial nBC and RS estimates at each checkpoint (calibration
+  // and test circles, by diameter), from which the claims' bootstrap refits the calibration.
+  std::vector<buffon::Figure14Arena> arenas{};
 };
 
 [[nodiscard]] Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner);

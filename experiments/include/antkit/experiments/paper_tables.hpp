@@ -99,6 +99,9 @@ struct TablesRow {
   double moves[kTableColumns] = {};           // mean total moves
   std::uint32_t complete[kTableColumns] = {}; // runs that reached 100 %
   std::uint64_t hash = 0;                     // a digest of every run's trace hash, in run order
+  // Not in the files: every run's coverage % and movements, in run order (the claims' bootstrap
+  // resamples them; run k of every algorithm shares map and starts, so they are paired).
+  std::vector<double> coverage_runs[kTableColumns] = {}, movements_runs[kTableColumns] = {};
 };
 
 namespace detail {
