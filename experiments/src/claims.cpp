@@ -50,24 +50,29 @@ std::string Part::figure() const {
   return format(value) + " [" + format(ci.lo) + ", " + format(ci.hi) + "]";
 }
 
-Part exact_part(std::string label, double value, Rule rule, Unit unit, int decimals) {
+namespace {
+
+// The fields every kind of part sets.
+Part part_of(std::string label, Rule rule, IntervalMethod method, Unit unit, int decimals) {
   Part p;
   p.label = std::move(label);
   p.rule = rule;
-  p.method = IntervalMethod::Exact;
+  p.method = method;
   p.unit = unit;
   p.decimals = decimals;
+  return p;
+}
+
+} // namespace
+
+Part exact_part(std::string label, double value, Rule rule, Unit unit, int decimals) {
+  Part p = part_of(std::move(label), rule, IntervalMethod::Exact, unit, decimals);
   p.exact = value;
   return p;
 }
 
 Part count_part(std::string label, std::uint64_t successes, std::uint64_t trials, Rule rule) {
-  Part p;
-  p.label = std::move(label);
-  p.rule = rule;
-  p.method = IntervalMethod::ClopperPearson;
-  p.unit = Unit::Percent;
-  p.decimals = 1;
+  Part p = part_of(std::move(label), rule, IntervalMethod::ClopperPearson, Unit::Percent, 1);
   p.successes = successes;
   p.trials = trials;
   return p;
@@ -75,12 +80,7 @@ Part count_part(std::string label, std::uint64_t successes, std::uint64_t trials
 
 Part bootstrap_part(std::string label, Samples samples, std::size_t block, Statistic statistic,
                     Rule rule, Unit unit, int decimals) {
-  Part p;
-  p.label = std::move(label);
-  p.rule = rule;
-  p.method = IntervalMethod::Bootstrap;
-  p.unit = unit;
-  p.decimals = decimals;
+  Part p = part_of(std::move(label), rule, IntervalMethod::Bootstrap, unit, decimals);
   p.samples = std::move(samples);
   p.block = block;
   p.statistic = std::move(statistic);
