@@ -6,7 +6,9 @@
 #include <antkit/kernel/input_error.hpp>
 #include <exception>
 #include <iostream>
+#include <map>
 #include <string>
+#include <string_view>
 
 namespace antkit::cli {
 std::map<std::string, Registrar>& registry() {
@@ -28,6 +30,19 @@ void refuse_empty_values(CLI::App& app) {
   for (CLI::Option* option : app.get_options())
     if (option->get_items_expected_max() > 0) option->check(non_empty);
   for (CLI::App* sub : app.get_subcommands({})) refuse_empty_values(*sub);
+}
+
+// The library names its inputs in its own words (InputError::where(): "trail width", "stopping
+// rule"); the command line shows each as the option that carries it. Every other where() (a file
+// position, a spec, an option the command itself named) is shown as it is.
+std::string shown(const antkit::kernel::InputError& e) {
+  static const std::map<std::string_view, std::string_view> flags = {
+      {"precision", "--precision"},     {"stopping rule", "--rule"},    {"trail width", "--width"},
+      {"step budget", "--max-steps"},   {"steps per visit", "--steps"}, {"trials", "--trials"},
+      {"sensor distance", "--sensor"},  {"map size", "--size"},         {"robots", "--robots"},
+      {"obstacle density", "--density"}};
+  const auto it = flags.find(e.where());
+  return it == flags.end() ? std::string(e.what()) : std::string(it->second) + ": " + e.message();
 }
 
 } // namespace
@@ -66,7 +81,7 @@ int main(int argc, char** argv) {
     std::cerr << "antkit: error: " << e.what() << "\n(run `antkit --help` for usage)\n";
     return 2;
   } catch (const antkit::kernel::InputError& e) {
-    std::cerr << "antkit: error: " << e.what() << '\n';
+    std::cerr << "antkit: error: " << shown(e) << '\n';
     return 2;
   } catch (const antkit::cli::CheckFailed& e) {
     std::cerr << "antkit: check failed: " << e.what() << '\n';

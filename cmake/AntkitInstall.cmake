@@ -8,7 +8,7 @@ install(TARGETS antkit_kernel antkit_geometry antkit_algorithms antkit_c antkit_
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS antkit RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-foreach(dir IN ITEMS geometry/include algorithms/include c/include devices/include
+foreach(dir IN ITEMS kernel/include geometry/include algorithms/include c/include devices/include
                     testing/include experiments/include)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()

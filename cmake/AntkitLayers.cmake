@@ -16,13 +16,12 @@
 # 002's marker-floor experiment runs the robot's pilot and camera from devices/stc_floor). Tools
 # (tests/, bench/, fuzz/, determinism/, proofs/, mcu/, examples/) may use any layer.
 #
-# Held two ways: antkit_check_layer_links() below refuses, at configure time, a layer target's
-# link line against this table; and the ctest layers.includes (cmake/check_layers.cmake) reads every
+# Held three ways: antkit_check_layer_links() below refuses, at configure time, a layer target's
+# link line against this table; the ctest layers.includes (cmake/check_layers.cmake) reads every
 # #include <antkit/...> of every layer's sources and fails on an arrow against it (its tooth,
-# layers.includes.teeth, plants two). Not yet by the compiler: the kernel's headers sit under
-# geometry's include root (geometry/include/antkit/kernel/), which every layer reaches through the
-# kernel, so a target can include a header of a layer it does not link; a kernel folder with a
-# root of its own is issue 31's next step (it recompiles everything).
+# layers.includes.teeth, plants two); and the compiler: every layer has include roots of its own
+# (the kernel's is kernel/include, holding antkit/kernel/ alone), so a layer's target cannot find
+# the header of a layer it does not link (the fences layers.fence.*, tests/layers/CMakeLists.txt).
 set(ANTKIT_LAYERS kernel geometry algorithms c mpi devices testing experiments reports python cli)
 set(ANTKIT_LAYER_USES_kernel "")
 set(ANTKIT_LAYER_USES_geometry kernel)
@@ -36,9 +35,7 @@ set(ANTKIT_LAYER_USES_reports kernel geometry algorithms devices testing)
 set(ANTKIT_LAYER_USES_python kernel geometry algorithms devices testing reports)
 set(ANTKIT_LAYER_USES_cli kernel geometry algorithms mpi devices testing experiments reports)
 # The source folders of each layer (a file belongs to the layer of the longest folder that holds it).
-set(ANTKIT_LAYER_DIRS_kernel geometry/include/antkit/kernel)
-set(ANTKIT_LAYER_DIRS_geometry geometry)
-foreach(layer IN ITEMS algorithms c mpi devices testing experiments reports python cli)
+foreach(layer IN ITEMS kernel geometry algorithms c mpi devices testing experiments reports python cli)
   set(ANTKIT_LAYER_DIRS_${layer} ${layer})
 endforeach()
 # The header folders (antkit/<name>/) each layer owns.

@@ -3,7 +3,8 @@
 #   cmake -DROOT=<source tree> -P cmake/check_layers.cmake
 # Prints each arrow against the table as "FILE: #include <antkit/X/...>: layer A may not use layer
 # B (A may use: ...)" and exits 1 when there is one; "layers: N includes in M files, all in order"
-# otherwise. A layer's sources are its top-level folder (python/: the compiled module).
+# otherwise. A layer's sources are its top-level folder (python/: the compiled module). Also
+# refuses a kernel line naming float or double.
 cmake_minimum_required(VERSION 3.25)
 if(NOT ROOT)
   message(FATAL_ERROR "give -DROOT=<source tree>")
@@ -20,13 +21,9 @@ endforeach()
 set(bad 0)
 set(count 0)
 set(files 0)
-# Each file once, in the layer of the longest folder holding it: the layers with nested folders
-# (the kernel's under geometry's) first.
+# Each file once, in the layer of its top-level folder.
 set(done "")
-set(order ${ANTKIT_LAYERS})
-list(REMOVE_ITEM order kernel)
-list(PREPEND order kernel)
-foreach(layer IN LISTS order)
+foreach(layer IN LISTS ANTKIT_LAYERS)
   set(sources "")
   foreach(dir IN LISTS ANTKIT_LAYER_DIRS_${layer})
     file(GLOB_RECURSE found ${ROOT}/${dir}/*.hpp ${ROOT}/${dir}/*.cpp ${ROOT}/${dir}/*.h
@@ -62,7 +59,24 @@ foreach(layer IN LISTS order)
     endforeach()
   endforeach()
 endforeach()
-if(bad GREATER 0)
-  message(FATAL_ERROR "layers: ${bad} include(s) against the layer order, of ${count} in ${files} files")
+
+# The kernel is integers and fixed point only (DESIGN.md, determinism rule 1): the words float and
+# double appear nowhere in it, comments included; conversions for reporting live above it.
+set(words 0)
+file(GLOB_RECURSE kernel_files ${ROOT}/kernel/*.hpp ${ROOT}/kernel/*.cpp)
+foreach(f IN LISTS kernel_files)
+  file(STRINGS ${f} lines REGEX "(^|[^A-Za-z_])(float|double)([^A-Za-z_]|$)")
+  file(RELATIVE_PATH rel ${ROOT} ${f})
+  foreach(line IN LISTS lines)
+    string(STRIP "${line}" line)
+    message("${rel}: \"${line}\": the kernel names floating point")
+    math(EXPR words "${words} + 1")
+  endforeach()
+endforeach()
+
+if(bad GREATER 0 OR words GREATER 0)
+  message(FATAL_ERROR "layers: ${bad} include(s) against the layer order, of ${count} in ${files} "
+                      "files; ${words} kernel line(s) naming floating point")
 endif()
-message("layers: ${count} includes in ${files} files, all in order")
+message("layers: ${count} includes in ${files} files, all in order; the kernel names no floating "
+        "point")

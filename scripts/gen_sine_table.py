@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the tables of geometry/include/antkit/kernel/angle.hpp (the region between the
+"""Writes the tables of kernel/include/antkit/kernel/angle.hpp (the region between the
 BEGIN GENERATED / END GENERATED markers).
 
   kSineQ30[k]  = sin(k * (pi/2) / 1024) * 2^30,          k = 0 .. 1025, rounded to nearest
@@ -43,7 +43,7 @@ def table(name, ctype, values):
 def main():
     path = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else
                         pathlib.Path(__file__).resolve().parent.parent /
-                        "geometry/include/antkit/kernel/angle.hpp")
+                        "kernel/include/antkit/kernel/angle.hpp")
     pi = mpmath.pi
     sine = [nearest(mpmath.sin(k * (pi / 2) / N) * 2**30) for k in range(N + 2)]
     atan = [nearest(mpmath.atan(mpmath.mpf(k) / N) * 2**32 / (2 * pi)) for k in range(N + 2)]

@@ -1,4 +1,4 @@
-(* The supercover walk of geometry/include/antkit/kernel/raster.hpp (SupercoverWalk and
+(* The supercover walk of kernel/include/antkit/kernel/raster.hpp (SupercoverWalk and
    detail::for_each_supercover_cell_until), modelled over the integers Z, for all endpoints.
 
    Model. In local coordinates the segment runs from (0, 0) to (dx, dy), dx, dy >= 0 (RasterFrame

@@ -1,4 +1,4 @@
-// Compiled with nothing but the kernel's include root (tests/layers/CMakeLists.txt): every kernel
+// layers.fence.kernel_alone: compiled with nothing but the kernel's include root: every kernel
 // header stands on the standard library alone.
 #include <antkit/kernel/angle.hpp>
 #include <antkit/kernel/fixed.hpp>

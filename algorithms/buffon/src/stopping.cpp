@@ -1,5 +1,6 @@
 // Online stopping rule (issue 8, item 5): see stopping.hpp for the derivation.
 #include <algorithm>
+#include <antkit/algorithms/wide_to_double.hpp>
 #include <antkit/buffon/stopping.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/kernel/int_ops.hpp>
@@ -45,7 +46,7 @@ bool leq(const U256& x, const U256& y) {
 
 void check_precision(std::uint32_t p) {
   if (p < 1 || p >= kD)
-    throw kernel::InputError("--precision", "the relative precision must be in (0, 1)");
+    throw kernel::InputError("precision", "the relative precision must be in (0, 1)");
 }
 
 // 10 sum x_i^2 - (sum x_i)^2 = K (K - 1) s^2: never negative (Cauchy-Schwarz). Each x < 2^54, so
@@ -96,7 +97,7 @@ bool PrecisionMonitor::end_step() {
   const std::size_t m = blocks / kK;
   std::uint64_t columns[kK];
   for (std::size_t j = 0; j < kK; ++j) columns[j] = prefix_[(j + 1) * m] - prefix_[j * m];
-  const auto to_double = [](u128 v) { return static_cast<double>(v); };
+  using algorithms::to_double;
   spread_ = {n_, n_ ? to_double(spread_of(rows_, n_)) / 9.0 : 0.0,
              n_ ? to_double(spread_of(columns, n_)) / 9.0 : 0.0};
   reached_ = precision_met(rows_, columns, p_);
@@ -139,7 +140,7 @@ bool FirstVisitMonitor::end_step() {
   std::uint64_t runs[kK] = {};
   for (std::size_t g = 0; g < kK; ++g)
     for (std::size_t b = g * m; b < (g + 1) * m; ++b) runs[g] += blocks_[b];
-  variance_ = s_ ? static_cast<double>(spread_of(runs, 2 * s_)) / 9.0 : 0.0;
+  variance_ = s_ ? algorithms::to_double(spread_of(runs, 2 * s_)) / 9.0 : 0.0;
   reached_ = first_visit_met(runs, p_);
   return reached_;
 }
@@ -147,9 +148,9 @@ bool FirstVisitMonitor::end_step() {
 std::uint32_t parse_precision(std::string_view text) {
   const std::string shown(text);
   auto bad = [&shown]() {
-    return kernel::InputError("--precision", "the precision must be a decimal in (0, 1) with at "
-                                             "most six digits after the point, got '" +
-                                                 shown + "'");
+    return kernel::InputError("precision", "the precision must be a decimal in (0, 1) with at "
+                                           "most six digits after the point, got '" +
+                                               shown + "'");
   };
   std::size_t i = 0;
   std::uint64_t whole = 0;
@@ -184,8 +185,8 @@ PrecisionRule parse_rule(std::string_view text) {
   std::string shown(text.substr(0, 64));
   for (char& ch : shown)
     if (static_cast<unsigned char>(ch) < 0x20 || static_cast<unsigned char>(ch) >= 0x7f) ch = '?';
-  throw kernel::InputError("--rule", "expected 'markers', 'online' or 'fixed', got '" + shown +
-                                         (text.size() > 64 ? "...'" : "'"));
+  throw kernel::InputError("stopping rule", "expected 'markers', 'online' or 'fixed', got '" +
+                                                shown + (text.size() > 64 ? "...'" : "'"));
 }
 
 std::string_view rule_name(PrecisionRule rule) noexcept {

@@ -155,7 +155,7 @@ void antkit_stc_floor_position(const antkit_stc_floor* floor, int32_t* x, int32_
 int64_t antkit_stc_floor_covered(const antkit_stc_floor* floor);
 int64_t antkit_stc_floor_repeats(const antkit_stc_floor* floor);
 
-/* ---- the trace hash (geometry/include/antkit/kernel/hash.hpp) ------------------------------- */
+/* ---- the trace hash (kernel/include/antkit/kernel/hash.hpp) ------------------------------- */
 
 /* A 64-bit hash over a canonical little-endian byte stream; the same value on every CPU. */
 typedef struct antkit_trace_hash {

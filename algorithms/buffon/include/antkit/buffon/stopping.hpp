@@ -51,7 +51,7 @@ public:
   static constexpr std::int64_t kBlockSteps = 1000;
   static constexpr std::uint64_t kZSquaredMilli = 5118; // >= 1000 t(0.975; 9)^2 = 5117.36
 
-  // Throws InputError("--precision") unless p is in [1, 999999]; visit1_segments >= 1.
+  // Throws InputError("precision") unless p is in [1, 999999]; visit1_segments >= 1.
   PrecisionMonitor(std::uint32_t precision_millionths, std::uint64_t visit1_segments);
 
   // One proper crossing of visit 1's segment `segment` (0-based) by the current step of visit 2.
@@ -126,7 +126,7 @@ public:
   static constexpr int kBatches = PrecisionMonitor::kBatches;
   static constexpr std::int64_t kBlockSteps = PrecisionMonitor::kBlockSteps;
 
-  // Throws InputError("--precision") unless p is in [1, 999999].
+  // Throws InputError("precision") unless p is in [1, 999999].
   explicit FirstVisitMonitor(std::uint32_t precision_millionths);
 
   // One self-crossing of visit 1: the current step's segment with the earlier segment `earlier`
@@ -162,7 +162,7 @@ bool precision_met(std::span<const std::uint64_t, PrecisionMonitor::kBatches> ro
 
 // Reads a precision P given as a plain decimal in (0, 1) with at most six digits after the point
 // ("0.05", ".1", "0.000125") into millionths, exactly (no binary floating point on the way).
-// Throws InputError("--precision") for anything else (empty, signs, exponents, 0, >= 1, more than
+// Throws InputError("precision") for anything else (empty, signs, exponents, 0, >= 1, more than
 // six decimals).
 std::uint32_t parse_precision(std::string_view text);
 
@@ -170,7 +170,7 @@ std::uint32_t parse_precision(std::string_view text);
 // markers in one walk (two_markers.hpp; the default, the least trail), an online first visit
 // then visit 2 (FirstVisitMonitor), or a fixed first visit then visit 2 (issue 8).
 enum class PrecisionRule { markers, online, fixed };
-// "markers", "online" or "fixed", exactly; anything else throws InputError("--rule").
+// "markers", "online" or "fixed", exactly; anything else throws InputError("stopping rule").
 PrecisionRule parse_rule(std::string_view text);
 // The name parse_rule reads.
 std::string_view rule_name(PrecisionRule rule) noexcept;

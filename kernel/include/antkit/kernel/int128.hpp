@@ -54,23 +54,6 @@ public:
     else
       return static_cast<T>(lo_);
   }
-  template <class T>
-  requires std::is_floating_point_v<T>
-  constexpr explicit operator T() const noexcept {
-    // Correctly rounded, as the built-in conversion: the value cut to its top 64 bits with every
-    // bit cut off folded into the lowest one (sticky), which lies at least 11 bits below where a
-    // double (or float) rounds, then scaled by a power of two (exact).
-    if (negative()) return -static_cast<T>(Int<false>(-*this));
-    if (hi_ == 0) return static_cast<T>(lo_);
-    int s = 64;
-    while ((hi_ >> (s - 1)) == 0) --s; // hi_'s significant bits: the shift that fits 64 bits
-    const std::uint64_t m = s == 64 ? hi_ : (hi_ << (64 - s)) | (lo_ >> s);
-    const bool sticky = s == 64 ? lo_ != 0 : (lo_ << (64 - s)) != 0;
-    T scale = 1;
-    for (int i = 0; i < s; ++i) scale *= 2;
-    return static_cast<T>(m | (sticky ? 1 : 0)) * scale;
-  }
-
   friend constexpr Int operator+(Int a, Int b) noexcept {
     const std::uint64_t lo = a.lo_ + b.lo_;
     return from_words(a.hi_ + b.hi_ + (lo < a.lo_ ? 1 : 0), lo);

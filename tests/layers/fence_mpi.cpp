@@ -1,0 +1,5 @@
+// layers.fence.mpi (tests/layers/CMakeLists.txt): compiled with exactly the include roots of
+// the mpi layer's target. The headers of the layers it uses are found; the last include,
+// of a layer it may not use, must not be.
+#include <antkit/mpi/session.hpp>
+#include <antkit/kernel/hash.hpp>

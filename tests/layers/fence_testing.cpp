@@ -1,0 +1,7 @@
+// layers.fence.testing (tests/layers/CMakeLists.txt): compiled with exactly the include roots of
+// the testing layer's target. The headers of the layers it uses are found; the last include,
+// of a layer it may not use, must not be.
+#include <antkit/maps/map_io.hpp>
+#include <antkit/stc/world.hpp>
+#include <antkit/testing/stc.hpp>
+#include <antkit/devices/log.hpp>
