@@ -23,7 +23,7 @@ struct ByteRaster {
         cols((std::int64_t{hi.x.raw()} - x0) / cell_raw + 1),
         rows((std::int64_t{hi.y.raw()} - y0) / cell_raw + 1) {
     if (cols * rows > (std::int64_t{1} << 32))
-      throw kernel::InputError("--width", "raster too large for this arena and width");
+      throw kernel::InputError("trail width", "raster too large for this arena and width");
     v.assign(static_cast<std::size_t>(cols * rows), init);
   }
   // Calls f(cell value) for every cell whose centre is within `radius` of c.
@@ -158,7 +158,7 @@ RsCost rs_cost_to_precision(const World& world, const TrialParams& params, std::
                             double area, std::uint32_t precision_millionths,
                             std::int64_t max_steps) {
   if (precision_millionths < 1 || precision_millionths >= kPrecisionDenominator)
-    throw kernel::InputError("--precision", "the relative precision must be in (0, 1)");
+    throw kernel::InputError("precision", "the relative precision must be in (0, 1)");
   const std::int64_t cell = Fx::from_ratio(1, 10).raw();
   const double cell_area =
       static_cast<double>(cell) * static_cast<double>(cell) / 65536.0 / 65536.0;

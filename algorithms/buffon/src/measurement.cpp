@@ -39,7 +39,7 @@ PheromoneRaster::PheromoneRaster(FxPoint lower, FxPoint upper, Fx width,
                                  std::vector<std::uint64_t> storage)
     : bits_(std::move(storage)) {
   if (width < Fx::from_ratio(1, 100) || width > Fx::from_int(10))
-    throw kernel::InputError("--width", "the trail width must be in [0.01, 10] units");
+    throw kernel::InputError("trail width", "the trail width must be in [0.01, 10] units");
   cell_ = std::max<std::int64_t>(1, width.raw() / 4);
   half_width_ = width.raw() / 2;
   x0_ = lower.x.raw();
@@ -48,8 +48,8 @@ PheromoneRaster::PheromoneRaster(FxPoint lower, FxPoint upper, Fx width,
   rows_ = (std::int64_t{upper.y.raw()} - y0_) / cell_ + 1;
   // The bands round the columns up to a multiple of 64: the limit is on the words allocated.
   if ((cols_ + 63) / 64 * rows_ > (std::int64_t{1} << 27))
-    throw kernel::InputError("--width", "the pheromone raster would exceed 2^27 words (1 GiB); "
-                                        "use a wider trail or a smaller arena");
+    throw kernel::InputError("trail width", "the pheromone raster would exceed 2^27 words (1 GiB); "
+                                            "use a wider trail or a smaller arena");
   r2_ = half_width_ * half_width_;
   reciprocal_ = (std::uint64_t{1} << 32) / static_cast<std::uint64_t>(cell_);
   fast_ = 2 * half_width_ < 5 * cell_; // holds for every width in range (cell >= 163 raw)
@@ -90,12 +90,12 @@ std::uint64_t PheromoneRaster::marked() const {
 
 void detail::check_total_steps(std::int64_t steps) {
   if (steps < 2 || steps > 100000000)
-    throw kernel::InputError("--max-steps", "the budget for both visits must be in [2, 100000000]");
+    throw kernel::InputError("step budget", "the budget for both visits must be in [2, 100000000]");
 }
 
 void detail::check_visit_steps(std::int64_t steps) {
   if (steps < 0 || steps > 100000000)
-    throw kernel::InputError("--steps", "the steps per visit must be in [0, 100000000]");
+    throw kernel::InputError("steps per visit", "the steps per visit must be in [0, 100000000]");
 }
 
 namespace {
@@ -123,9 +123,9 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
   PheromoneRaster raster(world.lower(), world.upper(), params.width, std::move(scratch.raster));
   const bool online1 = params.online_first_visit;
   if (online1 && params.precision_millionths == 0)
-    throw kernel::InputError("--rule", "an online first visit needs --precision");
+    throw kernel::InputError("stopping rule", "an online first visit needs a precision to stop on");
   if (params.total_steps != 0 && !online1)
-    throw kernel::InputError("--max-steps", "a budget for both visits needs an online first visit");
+    throw kernel::InputError("step budget", "a budget for both visits needs an online first visit");
   if (params.total_steps != 0) detail::check_total_steps(params.total_steps);
   WallEncounters encounters; // with precision_millionths only (bookkeeping for the estimate)
   const bool count_walls = params.precision_millionths != 0;

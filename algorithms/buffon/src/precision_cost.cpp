@@ -69,12 +69,12 @@ CostTable precision_cost(std::span<const CostArena> arenas, const CostParams& c,
                          const std::function<void(std::size_t, std::size_t)>& progress) {
   if (arenas.empty()) throw kernel::InputError("arenas", "no arena to measure");
   if (c.precisions.empty() || c.methods.empty())
-    throw kernel::InputError("--precision", "no precision or no method to measure");
+    throw kernel::InputError("precision", "no precision or no method to measure");
   for (const std::uint32_t p : c.precisions)
     if (p < 1 || p >= kPrecisionDenominator)
-      throw kernel::InputError("--precision", "the relative precision must be in (0, 1)");
+      throw kernel::InputError("precision", "the relative precision must be in (0, 1)");
   if (c.trials < 1 || c.trials > 100000)
-    throw kernel::InputError("--trials", "the number of trials must be in [1, 100000]");
+    throw kernel::InputError("trials", "the number of trials must be in [1, 100000]");
   detail::check_total_steps(c.budget);
   CostTable out;
   const std::size_t total = arenas.size() * c.precisions.size() * c.methods.size();

@@ -10,7 +10,7 @@ namespace antkit::buffon {
 TrialResult run_two_marker_trial(const World& world, const TrialParams& params,
                                  std::uint64_t trial) {
   if (params.precision_millionths == 0)
-    throw kernel::InputError("--precision", "two markers need a precision to stop on");
+    throw kernel::InputError("precision", "two markers need a precision to stop on");
   constexpr int kK = PrecisionMonitor::kBatches;
   TrialParams walk = params;
   walk.steps = params.total_steps != 0 ? params.total_steps : 2 * params.steps;

@@ -34,8 +34,9 @@ FrontierCoverage::FrontierCoverage(std::uint64_t seed, std::uint64_t trial,
       claimed_(world.map().width(), world.map().height(), 0),
       viewable_(world.map().width(), world.map().height(), 0) {
   if (world.footprint().range() < 1)
-    throw kernel::InputError("--sensor", "the frontier algorithm needs a sensor distance of at "
-                                         "least 1 cell (with 0 no frontier cell sees a new one)");
+    throw kernel::InputError("sensor distance",
+                             "the frontier algorithm needs a sensor distance of at "
+                             "least 1 cell (with 0 no frontier cell sees a new one)");
   robots_.reserve(world.robot_count());
   for (std::size_t i = 0; i < world.robot_count(); ++i)
     robots_.push_back({std::nullopt,

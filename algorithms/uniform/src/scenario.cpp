@@ -22,7 +22,7 @@ std::uint64_t obstacle_count(std::int32_t width, std::int32_t height,
 OccupancyGrid random_obstacles(std::int32_t width, std::int32_t height, std::uint32_t density_ppm,
                                std::uint64_t seed, std::uint64_t trial) {
   if (density_ppm > kPpm)
-    throw kernel::InputError("--density", "the obstacle density must lie in [0, 1]");
+    throw kernel::InputError("obstacle density", "the obstacle density must lie in [0, 1]");
   OccupancyGrid grid(width, height, Occupancy::Free);
   const std::size_t n = grid.size();
   const auto blocked = static_cast<std::size_t>(obstacle_count(width, height, density_ppm));
@@ -32,7 +32,7 @@ OccupancyGrid random_obstacles(std::int32_t width, std::int32_t height, std::uin
   // sample without replacement. Indices fit 32 bits because the grid side is below 2^20... and the
   // product below 2^32 is checked here, since below() takes a 32-bit bound.
   if (n > 0xFFFFFFFFu)
-    throw kernel::InputError("--size", "the grid must have fewer than 2^32 cells");
+    throw kernel::InputError("map size", "the grid must have fewer than 2^32 cells");
   std::vector<std::uint32_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
   for (std::size_t i = 0; i < blocked; ++i) {
@@ -84,9 +84,9 @@ std::vector<Pose> place_robots(const OccupancyGrid& map, std::size_t robots,
     if (label == 0) throw kernel::InputError("start", "the map has no free cell to start on");
   }
   if (robots > comps.size[label])
-    throw kernel::InputError("--robots", "asked for " + std::to_string(robots) +
-                                             " robots but their free region has only " +
-                                             std::to_string(comps.size[label]) + " cells");
+    throw kernel::InputError("robots", "asked for " + std::to_string(robots) +
+                                           " robots but their free region has only " +
+                                           std::to_string(comps.size[label]) + " cells");
   std::vector<std::uint32_t> cells;
   cells.reserve(comps.size[label]);
   for (std::size_t i = 0; i < map.size(); ++i)
@@ -114,9 +114,10 @@ std::vector<Pose> place_robots(const OccupancyGrid& map, std::size_t robots,
 
 std::uint32_t parse_density_ppm(std::string_view text) {
   const auto bad = [&]() -> kernel::InputError {
-    return kernel::InputError("--density", "expected a fraction in [0, 1] such as 0.2 (at most six "
-                                           "decimals) or a percentage such as 20%, not '" +
-                                               std::string(text) + "'");
+    return kernel::InputError("obstacle density",
+                              "expected a fraction in [0, 1] such as 0.2 (at most six "
+                              "decimals) or a percentage such as 20%, not '" +
+                                  std::string(text) + "'");
   };
   const bool percent = !text.empty() && text.back() == '%';
   if (percent) text.remove_suffix(1);
@@ -150,9 +151,9 @@ std::uint32_t parse_density_ppm(std::string_view text) {
 
 std::pair<std::int32_t, std::int32_t> parse_size(std::string_view text, std::int32_t max_side) {
   const auto bad = [&]() -> kernel::InputError {
-    return kernel::InputError("--size", "expected WxH with W and H integers in [1, " +
-                                            std::to_string(max_side) + "], such as 100x100, not '" +
-                                            std::string(text) + "'");
+    return kernel::InputError(
+        "map size", "expected WxH with W and H integers in [1, " + std::to_string(max_side) +
+                        "], such as 100x100, not '" + std::string(text) + "'");
   };
   const auto x = text.find_first_of("xX");
   if (x == std::string_view::npos) throw bad();

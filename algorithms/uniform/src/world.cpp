@@ -13,9 +13,9 @@ using kernel::Occupancy;
 
 SensorFootprint::SensorFootprint(std::int32_t range) : range_(range) {
   if (range < 0 || range > kMaxSensorRange)
-    throw kernel::InputError("--sensor", "the sensor distance must be an integer in [0, " +
-                                             std::to_string(kMaxSensorRange) + "] cells, not " +
-                                             std::to_string(range));
+    throw kernel::InputError("sensor distance", "the sensor distance must be an integer in [0, " +
+                                                    std::to_string(kMaxSensorRange) +
+                                                    "] cells, not " + std::to_string(range));
   std::vector<Cell> offsets;
   for (std::int32_t dy = -range; dy <= range; ++dy)
     for (std::int32_t dx = -range; dx <= range; ++dx)
@@ -44,7 +44,7 @@ CoverageWorld::CoverageWorld(kernel::OccupancyGrid map, std::vector<Pose> robots
       viewed_(map_.width(), map_.height(), 0), occupant_(map_.width(), map_.height(), 0),
       exits_(map_.width(), map_.height(), 0), components_(free_components(map_)) {
   if (map_.size() > 0xFFFFFFFFu)
-    throw kernel::InputError("--size", "the map must have fewer than 2^32 cells");
+    throw kernel::InputError("map size", "the map must have fewer than 2^32 cells");
   for (std::size_t k = 0; k < map_.size(); ++k) {
     const Cell c = map_.cell_at(k);
     std::uint8_t bits = 0;
@@ -57,7 +57,7 @@ CoverageWorld::CoverageWorld(kernel::OccupancyGrid map, std::vector<Pose> robots
     exits_.cells()[k] = bits;
   }
   if (robots_.size() >= 0xFFFFu)
-    throw kernel::InputError("--robots", "at most 65534 robots are supported");
+    throw kernel::InputError("robots", "at most 65534 robots are supported");
   viewable_label_.assign(components_.size.size(), 0);
   for (std::size_t i = 0; i < robots_.size(); ++i) {
     const Cell c = robots_[i].cell;

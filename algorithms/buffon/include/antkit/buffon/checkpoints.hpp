@@ -49,7 +49,7 @@ Footprint rs_footprint(std::span<const FxPoint> trail);
 // until its estimate cells * cell^2 is within a relative P of `area`, i.e. at least (1 - P) area
 // (RS only ever under-estimates: it marks what the body has covered), or for `max_steps` steps.
 // RS has no stopping rule of its own, so this is an oracle stop, the most favourable reading of
-// RS: the trail length at which its estimate first meets P. Throws InputError("--precision") for
+// RS: the trail length at which its estimate first meets P. Throws InputError("precision") for
 // P outside (0, 1).
 struct RsCost {
   std::int64_t length_raw = 0; // the walk's length when it stopped

@@ -49,8 +49,8 @@ inline constexpr std::uint64_t kExperiment = 4;
 
 class PheromoneRaster {
 public:
-  // Throws InputError("--width") when w is not in [0.01, 10] units. `storage` is memory to reuse
-  // for the bits (its contents are discarded): trials in a row reuse one buffer instead of
+  // Throws InputError("trail width") when w is not in [0.01, 10] units. `storage` is memory to
+  // reuse for the bits (its contents are discarded): trials in a row reuse one buffer instead of
   // faulting fresh pages in (a 100-unit circle's raster is 2 MiB).
   PheromoneRaster(FxPoint lower, FxPoint upper, Fx width, std::vector<std::uint64_t> storage = {});
   // Hands the bits' memory back for reuse (the raster is empty afterwards).
@@ -291,9 +291,9 @@ std::uint64_t isqrt64(std::uint64_t n) noexcept;
 // ---------------------------------------------------------------------------------------------
 
 namespace detail {
-// Throws InputError("--steps") unless 0 <= steps <= 100000000.
+// Throws InputError("steps per visit") unless 0 <= steps <= 100000000.
 void check_visit_steps(std::int64_t steps);
-// Throws InputError("--max-steps") unless 2 <= steps <= 100000000 (a budget of both visits).
+// Throws InputError("step budget") unless 2 <= steps <= 100000000 (a budget of both visits).
 void check_total_steps(std::int64_t steps);
 
 // The exact floor square root of a step's squared length n2, started from the commanded forward
