@@ -151,7 +151,7 @@ void buffon_figure4(Writer& w, std::uint64_t seed) {
 
 Trials trials_of(Scale scale) {
   if (scale == Scale::Full) return {};
-  return {20, 3, 6, 10};
+  return {20, 3, 6, 10, 4};
 }
 
 void validate(const ReproduceOptions& options) {
@@ -230,6 +230,22 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
   stc_params.noise_trials = trials.stc_noise_trials;
   stc_params.seed = o.seed;
   if (wants("stc")) stc = run_stc_tours(stc_params, runner);
+  // Paper 002's robot on its floor (the rendered floor, camera and pilot of devices/stc_floor,
+  // experiments/stc_floor.hpp), for the two claims on its hardware: a weakening battery's turn
+  // drift (2 000 ppm a minute, the first level of results/stc_floor's curve) with the paper's
+  // rotation calibration and without, on the same keyed boards; and the largest open board that
+  // closes when the marks fade as the paper's camera saw them (a 30 s half-life: lost after about
+  // 70 s, "the first minute or so"), boards of 2 x 2 to 4 x 4 cells.
+  FloorParams floor_params;
+  floor_params.trials = trials.stc_floor_boards;
+  floor_params.seed = o.seed;
+  floor_params.noise = {};
+  floor_params.fade_s = {};
+  floor_params.drift = {2000};
+  floor_params.board_fade_s = {30};
+  floor_params.max_board = 4;
+  FloorCurves floor;
+  if (wants("stc")) floor = run_floor_curves(floor_params, runner);
   ut::TablesConfig uc;
   uc.runs = static_cast<std::uint32_t>(trials.uniform_runs);
   uc.seed = o.seed;
@@ -370,8 +386,21 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
              << " | " << fixed(p.repeats_per_subcell, 4) << " | " << fixed(p.complete, 2) << " |\n";
       body << '\n';
     }
+    w.text("stc/floor_curves.csv", floor_curves_csv(floor));
+    w.text("stc/floor_boards.csv", floor_boards_csv(floor));
+    body << "### The robot on its floor\n\n"
+         << "Paper 002's robot driving ant-edge STC through its rendered camera "
+            "(experiments/stc_floor.hpp; the whole study is `antkit stc-floor-experiment`, "
+            "results/stc_floor/): "
+         << trials.stc_floor_boards
+         << " keyed boards of 8 x 8 cells with 10 % of their sub-cells blocked, at a turn drift "
+            "of 2 000 ppm a minute with the paper's rotation calibration and without "
+            "(stc/floor_curves.csv); open boards of 2 x 2 to 4 x 4 cells with marks of a 30 s "
+            "half-life (stc/floor_boards.csv).\n\n";
     report.experiments.push_back(
         {"paper 002, tours and marker noise", stc.hash, reproduce_command(o, {"stc"})});
+    report.experiments.push_back(
+        {"paper 002, the robot on its floor", floor.hash, reproduce_command(o, {"stc"})});
   }
   if (wants("uniform")) {
     w.text("uniform/uniform_tables.csv", ut::tables_csv(uniform_rows, uc));
@@ -410,7 +439,10 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
   ClaimInputs inputs;
   if (wants("buffon")) inputs.buffon = &buffon;
   if (wants("los")) inputs.los = &los;
-  if (wants("stc")) inputs.stc = &stc;
+  if (wants("stc")) {
+    inputs.stc = &stc;
+    inputs.floor = &floor;
+  }
   if (wants("uniform")) {
     inputs.uniform = &uniform_rows;
     inputs.uniform_disk = &disk_rows;
@@ -432,8 +464,9 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
   if (o.scale == Scale::Quick)
     md << ": " << trials.buffon << " trials per arena for paper 000 (the paper: 100), "
        << trials.uniform_runs << " runs per row for paper 004 (the paper: 10), "
-       << trials.stc_random_maps << " random maps and " << trials.stc_noise_trials
-       << " noisy trials per level for paper 002; paper 001 in full. `--full` runs the papers' "
+       << trials.stc_random_maps << " random maps, " << trials.stc_noise_trials
+       << " noisy trials per level and " << trials.stc_floor_boards
+       << " floor boards per condition for paper 002; paper 001 in full. `--full` runs the papers' "
           "counts";
   else
     md << ": the papers' trial counts";
@@ -496,7 +529,8 @@ ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
   j["trials"] = {{"buffon_per_arena", trials.buffon},
                  {"uniform_runs_per_row", trials.uniform_runs},
                  {"stc_random_maps", trials.stc_random_maps},
-                 {"stc_noise_trials", trials.stc_noise_trials}};
+                 {"stc_noise_trials", trials.stc_noise_trials},
+                 {"stc_floor_boards", trials.stc_floor_boards}};
   nlohmann::json claims = nlohmann::json::array();
   for (const auto& c : report.claims)
     claims.push_back({{"id", c.id},

@@ -106,6 +106,8 @@ FloorCurves run_floor_curves(const FloorParams& p, const Runner& runner) {
       pt.repeats_per_subcell += reachable > 0 ? repeats / reachable : 0;
       pt.exact += exact ? 1 : 0;
       pt.max_offset += offset;
+      pt.exact_runs.push_back(exact ? 1 : 0);
+      pt.coverage_runs.push_back(reachable > 0 ? covered / reachable : 0);
     }
     const double n = static_cast<double>(trials);
     pt.coverage /= n;
@@ -149,20 +151,28 @@ FloorCurves run_floor_curves(const FloorParams& p, const Runner& runner) {
   return c;
 }
 
-void write_floor_curves(const FloorCurves& c, const std::filesystem::path& dir) {
+std::string floor_curves_csv(const FloorCurves& c) {
   std::ostringstream csv;
   csv << "factor,level,coverage,repeats_per_subcell,exact,max_offset_subcells\n";
   for (const auto& p : c.points)
     csv << p.factor << ',' << p.level << ',' << fixed(p.coverage, 4) << ','
         << fixed(p.repeats_per_subcell, 4) << ',' << fixed(p.exact, 3) << ','
         << fixed(p.max_offset, 3) << '\n';
-  geometry::write_file_atomic(dir / "floor_curves.csv", csv.str());
+  return csv.str();
+}
+
+std::string floor_boards_csv(const FloorCurves& c) {
   std::ostringstream boards;
   boards << "fade_half_life_s,largest_exact_board_cells,tour_minutes,capped\n";
   for (const auto& b : c.boards)
     boards << b.fade_s << ',' << b.largest << ',' << fixed(b.tour_minutes, 1) << ','
            << (b.capped ? "yes" : "no") << '\n';
-  geometry::write_file_atomic(dir / "floor_boards.csv", boards.str());
+  return boards.str();
+}
+
+void write_floor_curves(const FloorCurves& c, const std::filesystem::path& dir) {
+  geometry::write_file_atomic(dir / "floor_curves.csv", floor_curves_csv(c));
+  geometry::write_file_atomic(dir / "floor_boards.csv", floor_boards_csv(c));
 
   struct Panel {
     const char* file;

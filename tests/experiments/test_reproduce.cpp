@@ -54,15 +54,21 @@ TEST_CASE("reproduce writes the report, the tables and the figures, and decides 
   std::set<std::string> ids;
   for (const auto& c : report.claims) ids.insert(c.id);
   CHECK(ids == std::set<std::string>{"001-1", "001-2", "001-3", "001-3b", "001-4", "001-5", "001-6",
-                                     "001-7", "002-1", "002-box", "002-full"});
-  for (const char* f : {"README.md", "claims.json", "los/table2.csv", "los/table3.md",
-                        "los/figures5-6.png", "los/figures5-6.svg", "stc/tours.csv",
-                        "stc/noise.csv", "stc/noise.png", "stc/tour.png", "stc/tour.svg"}) {
+                                     "001-7", "002-1", "002-box", "002-fading", "002-full",
+                                     "002-rotation"});
+  for (const char* f :
+       {"README.md", "claims.json", "los/table2.csv", "los/table3.md", "los/figures5-6.png",
+        "los/figures5-6.svg", "stc/tours.csv", "stc/noise.csv", "stc/noise.png", "stc/tour.png",
+        "stc/tour.svg", "stc/floor_curves.csv"}) {
     INFO(f);
     REQUIRE(fs::exists(dir / f));
     CHECK(fs::file_size(dir / f) > 100);
   }
   CHECK(slurp(dir / "stc/tour.png").substr(1, 3) == "PNG");
+  // The fading claim's one row: the 30 s half-life, the largest exact board, its tour's minutes.
+  const std::string boards = slurp(dir / "stc/floor_boards.csv");
+  CHECK(boards.rfind("fade_half_life_s,largest_exact_board_cells,tour_minutes,capped\n30,", 0) ==
+        0);
   CHECK(report.files.size() == tree(dir).size());
 
   // Ant-like STC's tours are exact on every map: the claim holds (an invariant, not a statistic).

@@ -22,6 +22,7 @@
 #include <antkit/experiments/explore_tables.hpp>
 #include <antkit/experiments/paper_tables.hpp>
 #include <antkit/experiments/reproduce.hpp>
+#include <antkit/experiments/stc_floor.hpp>
 #include <antkit/experiments/stc_tours.hpp>
 #include <antkit/experiments/verdict.hpp>
 #include <cstdint>
@@ -42,6 +43,7 @@ struct ClaimInputs {
   const BuffonResults* buffon = nullptr;
   const ExploreTables* los = nullptr;
   const StcTours* stc = nullptr;
+  const FloorCurves* floor = nullptr; // paper 002's robot on its floor (with stc)
   const std::vector<uniform::experiments::TablesRow>* uniform = nullptr;
   const std::vector<uniform::experiments::TablesRow>* uniform_disk = nullptr;
   std::uint32_t uniform_runs = 0;

@@ -62,6 +62,7 @@ struct Trials {
   int uniform_runs = 10; // per table row
   int stc_random_maps = 20;
   int stc_noise_trials = 20;
+  int stc_floor_boards = 20; // keyed boards of the marker-floor robot, per condition
 };
 [[nodiscard]] Trials trials_of(Scale scale);
 

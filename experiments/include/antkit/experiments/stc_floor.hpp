@@ -40,6 +40,8 @@ struct FloorPoint {
   std::int64_t level = 0;
   double coverage = 0, repeats_per_subcell = 0, exact = 0; // means over the trials
   double max_offset = 0; // mean of each run's largest distance from a sub-cell's centre
+  // Per trial, in trial order (the claims' intervals): 1 or 0, and the fraction covered.
+  std::vector<double> exact_runs, coverage_runs;
 };
 
 struct FloorBoard {
@@ -58,6 +60,11 @@ struct FloorCurves {
 };
 
 [[nodiscard]] FloorCurves run_floor_curves(const FloorParams& params, const Runner& runner);
+
+// The two tables: floor_curves.csv (a row per factor and level) and floor_boards.csv (a row per
+// fading half-life).
+[[nodiscard]] std::string floor_curves_csv(const FloorCurves& c);
+[[nodiscard]] std::string floor_boards_csv(const FloorCurves& c);
 
 // floor_curves.csv, floor_boards.csv, floor_{noise,fade,drift}.{svg,png} in `dir` (which exists).
 void write_floor_curves(const FloorCurves& c, const std::filesystem::path& dir);
