@@ -12,6 +12,7 @@ map=data/maps/movingai/den312d.map
 ant=$(scripts/run-on-mcu.sh --icount stc --map $map --variant ant)
 edge=$(scripts/run-on-mcu.sh --icount stc --map $map --variant ant-edge)
 online=$(scripts/run-on-mcu.sh --icount stc --map $map --variant online)
+buffon=$(scripts/run-on-mcu.sh --icount buffon --arena square:area=25 --steps 3000 --seed 1)
 image=build/mcu/antkit_mcu.elf
 symbols=$(arm-none-eabi-nm -S -C "$image")
 stack=$(cat $(find build/mcu -name '*.su'))
@@ -44,3 +45,16 @@ echo "| floor (RAM, per map; den312d) | 2 bits per sub-cell + 1 B per cell ($(jq
 echo "| instructions per move, den312d (QEMU -icount; controller, floor and hash) | $(jq .instructions_per_move <<<"$ant") | $(jq .instructions_per_move <<<"$edge") | $(jq .instructions_per_move <<<"$online") |"
 echo
 echo "Whole image: $text B flash (text), $data B data, $bss B bss (of which the floor arena $(jq .floor_limit <<<"$ant") B)."
+echo
+# Buffon (one trial of square:area=25, 3000 steps per visit). The step path by name: the visit loops
+# (the detector, the raster's lay and at, the crossing count inlined), visit_step, the behaviour,
+# the world's sensing and collisions, the trace hash, the sine table, and the 64/128-bit helpers
+# a 32-bit core needs for them.
+behaviour=$(size_of 'ExplorationBehaviour::step|BufferedStream::refill')
+world=$(size_of 'visit<antkit::buffon::run_fixed_trial|buffon::visit_step|WorldCore::sense_walls|WorldCore::clear_walls|closer_than|TraceHash::add_u64|kernel::uniform<long, 16>|RasterCore::lay|RasterCore::at_exact|orientation_in<|soft::Int<true>::divmod|div_round_half_up<|__udivmoddi4')
+table=$(size_of 'kSineQ30')
+echo "| Buffon | flash | stack | RAM |"
+echo "|---|---|---|---|"
+echo "| behaviour + detector step (\`ExplorationBehaviour::step\`, its stream's refill; the detector inlined) | $behaviour B | $(stack_of 'ExplorationBehaviour::step') + $(stack_of 'BufferedStream::refill') B | 136 B behaviour + 8 B detector (C structs: 160 B, 8 B) |"
+echo "| the world's step (visit loops, \`visit_step\`, sensing, collisions, raster, crossing count, hash, 64/128-bit helpers) | $world B + $table B sine table | $(stack_of 'sense_walls') B (sense_walls) | $(jq .arena_bytes <<<"$buffon") B of the arena for square:area=25, 3000 steps |"
+echo "| instructions per step (QEMU -icount; both visits of square:area=25, 3000 steps) | $(jq .instructions_per_move <<<"$buffon") | | |"

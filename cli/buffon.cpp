@@ -158,14 +158,9 @@ void run(const BuffonCommand& c) {
                                      "both visits");
   if (c.max_steps < 0 || c.max_steps == 1 || c.max_steps > 100000000)
     throw InputError("--max-steps", "the budget for both visits must be in [2, 100000000]");
-  if (!(c.width >= 0.01 && c.width <= 10))
-    throw InputError("--width", "the trail width must be in [0.01, 10] units");
-  if (!(c.noise >= 0 && c.noise <= 1))
-    throw InputError("--noise", "the sensor noise must be in [0, 1]");
+  antkit::cli::check_buffon_body(c.width, c.noise);
 
-  geometry::Arena arena = antkit::reports::is_wkt_path(c.arena)
-                              ? geometry::read_wkt_file(c.arena)
-                              : geometry::build_arena_spec(c.arena, "--arena").arena;
+  geometry::Arena arena = antkit::cli::read_buffon_arena(c.arena);
   buffon::BodyParams body;
   body.noise = geometry::fixed_from_double<antkit::kernel::Fx>(c.noise, "--noise");
   const buffon::World world(arena.walls_fx(), body);

@@ -1,7 +1,10 @@
 #pragma once
 // The run-size options shared by `antkit buffon` and `antkit buffon-experiment`: one range check,
 // one message each, so the two commands reject the same values the same way (exit 2).
+#include <antkit/geometry/arena_spec.hpp>
+#include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/reports/reports.hpp>
 #include <cstdint>
 #include <string>
 
@@ -15,6 +18,21 @@ inline void check_buffon_run_size(std::int64_t trials, std::int64_t steps, std::
     throw InputError("--steps", "the steps per visit must be in [1, 10000000]");
   if (threads < 1 || threads > 256)
     throw InputError("--threads", "the number of threads must be in [1, 256]");
+}
+
+// The trail width and the IR noise of `antkit buffon` and `antkit buffon-mcu-input`.
+inline void check_buffon_body(double width, double noise) {
+  using antkit::kernel::InputError;
+  if (!(width >= 0.01 && width <= 10))
+    throw InputError("--width", "the trail width must be in [0.01, 10] units");
+  if (!(noise >= 0 && noise <= 1))
+    throw InputError("--noise", "the sensor noise must be in [0, 1]");
+}
+
+// --arena: a WKT file or a named spec, read as `antkit buffon` reads it.
+inline geometry::Arena read_buffon_arena(const std::string& spec) {
+  return reports::is_wkt_path(spec) ? geometry::read_wkt_file(spec)
+                                    : geometry::build_arena_spec(spec, "--arena").arena;
 }
 
 } // namespace antkit::cli

@@ -7,7 +7,19 @@
 #                         [--seed S]
 #
 # prints one JSON object whose hash, covered, repeats and returned_to_start equal those of
-# `antkit stc --format json` with the same arguments. The host prepares the input (`antkit
+# `antkit stc --format json` with the same arguments.
+#
+#   scripts/run-on-mcu.sh buffon --arena SPEC|FILE.wkt --steps N [--seed S] [--width W] [--noise X]
+#
+# prints one JSON object whose trials[0] has the hash, bc, crossings_exact and blocked of
+# `antkit buffon --trials 1 --format json`'s trial with the same arguments. The host prepares the
+# input (`antkit buffon-mcu-input`: the arena built with CGAL and sent as its Q15.16 walls, the
+# options checked as `antkit buffon` checks them); the exploration behaviour, the world's steps,
+# the pheromone raster, the detector, the exact crossing count and the hash run on the chip. A
+# trial whose walls, buckets, raster, visit 1's trail and crossing index exceed the image's
+# 112 KiB arena is refused (exit 2) with the sizes and the limit in the message: the paper's
+# circles (256 walls, about 130 KiB of wall buckets) do not fit; squares and polygons of a few
+# dozen walls do, with a few thousand steps per visit. The host prepares the input (`antkit
 # stc-mcu-input`: the map read, the start chosen and checked, the map's free sub-cells as bits);
 # the controller, the floor's steps and the hash run on the emulated chip. Bad input is refused by
 # the host as `antkit stc` refuses it, exit 2 with a located message; a map whose floor exceeds the
@@ -30,6 +42,8 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 usage() {
   echo "usage: scripts/run-on-mcu.sh [--icount] stc --map F --variant ant|ant-edge|online [--start X,Y]" \
     "[--noise P] [--seed S]" >&2
+  echo "       scripts/run-on-mcu.sh [--icount] buffon --arena SPEC --steps N [--seed S] [--width W]" \
+    "[--noise X]" >&2
   exit 2
 }
 
@@ -45,14 +59,9 @@ done
 command=$1
 shift
 case "$command" in
-stc) ;;
-buffon)
-  echo "run-on-mcu.sh: buffon: not on the chip yet (issue 27 is open: the Buffon behaviour and" \
-    "detector still use the host's containers)" >&2
-  exit 2
-  ;;
+stc | buffon) ;;
 *)
-  echo "run-on-mcu.sh: unknown command '$command' (stc)" >&2
+  echo "run-on-mcu.sh: unknown command '$command' (stc, buffon)" >&2
   exit 2
   ;;
 esac
@@ -92,7 +101,7 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # Bad input: antkit's located message on stderr and its exit status 2, nothing on stdout.
-"$antkit" stc-mcu-input "$@" --out "$work/input.bin" >/dev/null
+"$antkit" "$command-mcu-input" "$@" --out "$work/input.bin" >/dev/null
 
 qemu=(qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none
   -semihosting-config "enable=on,target=native,arg=antkit_mcu,arg=$work/input.bin"
@@ -110,7 +119,8 @@ elif [ $status -ne 0 ]; then
 fi
 if [ $icount -eq 1 ]; then
   ticks=$(jq -r .ticks "$work/out")
-  moves=$(($(jq -r .positions "$work/out") - 1))
+  # A tour's moves (stc: its positions less the start) or both visits' steps (buffon: "moves").
+  moves=$(jq -r 'if .moves then .moves else .positions - 1 end' "$work/out")
   instructions=$((ticks * 125 / 21))
   jq -c --argjson i "$instructions" --argjson m "$moves" \
     '. + {instructions: $i, instructions_per_move: (if $m > 0 then ($i / $m | floor) else 0 end)}' \

@@ -2,6 +2,8 @@
 // compiles with -fno-exceptions -fno-rtti for bare metal (mcu/) as for the host, and allocates
 // nothing. Each C state struct holds the bytes of the C++ object it stands for (trivially copyable,
 // sizes asserted below), so a step is the C++ step, not a second implementation.
+#include <antkit/buffon/detector.hpp>
+#include <antkit/buffon/exploration.hpp>
 #include <antkit/c/antkit.h>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/stc/ant.hpp>
@@ -50,6 +52,15 @@ static_assert(std::is_trivially_destructible_v<FloorState>);
 bool valid_size(std::int32_t width, std::int32_t height) noexcept {
   return width >= 2 && height >= 2 && width <= 16384 && height <= 16384;
 }
+
+using antkit::buffon::CrossingDetector;
+using antkit::buffon::ExplorationBehaviour;
+static_assert(sizeof(ExplorationBehaviour) <= sizeof(antkit_buffon_behaviour) &&
+              alignof(ExplorationBehaviour) <= alignof(antkit_buffon_behaviour) &&
+              std::is_trivially_copyable_v<ExplorationBehaviour>);
+static_assert(sizeof(CrossingDetector) <= sizeof(antkit_buffon_detector) &&
+              alignof(CrossingDetector) <= alignof(antkit_buffon_detector) &&
+              std::is_trivially_copyable_v<CrossingDetector>);
 
 static_assert(sizeof(AntStc) <= sizeof(antkit_ant_stc) && std::is_trivially_copyable_v<AntStc>);
 static_assert(sizeof(AntEdgeStc) <= sizeof(antkit_ant_edge_stc) &&
@@ -271,6 +282,28 @@ void antkit_stc_tour_hash_begin(antkit_trace_hash* hash, int32_t width, int32_t 
 }
 void antkit_stc_tour_hash_add(antkit_trace_hash* hash, int32_t x, int32_t y) {
   with_hash(hash, [&](TraceHash& t) { antkit::stc::tour_hash_add(t, {x, y}); });
+}
+
+void antkit_buffon_behaviour_init(antkit_buffon_behaviour* state, uint64_t seed,
+                                  uint64_t experiment, uint64_t trial, uint64_t robot) {
+  ::new (static_cast<void*>(state->opaque))
+      ExplorationBehaviour(antkit::kernel::Stream(seed, experiment, trial, robot, 0));
+}
+
+antkit_wheel_command antkit_buffon_behaviour_step(antkit_buffon_behaviour* state,
+                                                  const antkit_ir_reading* reading) {
+  antkit::buffon::Observation obs;
+  for (std::size_t i = 0; i < 6; ++i) obs.ir[i] = antkit::kernel::Fx::from_raw(reading->ir[i]);
+  const antkit::buffon::Command c = object_in<ExplorationBehaviour>(state).step(obs);
+  return {c.left.raw(), c.right.raw()};
+}
+
+void antkit_buffon_detector_init(antkit_buffon_detector* state) {
+  ::new (static_cast<void*>(state->opaque)) CrossingDetector();
+}
+
+int antkit_buffon_detector_update(antkit_buffon_detector* state, int pheromone) {
+  return object_in<CrossingDetector>(state).update(pheromone != 0) ? 1 : 0;
 }
 
 } // extern "C"

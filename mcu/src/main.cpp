@@ -1,15 +1,19 @@
-// The Cortex-M image (issue 27): one run of ant-like STC (`ant` or `ant-edge`) on the robot's own
-// processor. It reads its input (stc/mcu_input.hpp: the map's free sub-cells, the start, the marker
-// and the noise) from the host file named on its semihosting command line, runs the controller
-// through the C API (antkit/c/antkit.h) over the floor of floor.hpp — the host's StcWorld steps
-// the same floor — and prints one JSON object: the tour's trace hash and counts, as `antkit stc
+// The Cortex-M image (issue 27): one run of ant-like STC (`ant`, `ant-edge` or `online`) or one
+// Buffon trial (buffon_run.cpp, when the input is a Buffon one) on the robot's own processor. It
+// reads its input (stc/mcu_input.hpp: the map's free sub-cells, the start, the marker and the
+// noise) from the host file named on its semihosting command line, runs the controller through the
+// C API (antkit/c/antkit.h) over the floor of floor.hpp — the host's StcWorld steps the same floor
+// — and prints one JSON object: the tour's trace hash and counts, as `antkit stc
 // --format json` gives them, and the floor's bytes against the image's arena.
 //
 // Exit status (through semihosting): 0 the tour ran (whatever it found), 2 bad input (the message
 // on the host's standard output, "error: ..."), 3 a processor fault (startup.cpp).
+#include "buffon_run.hpp"
 #include "semihost.hpp"
+#include "text.hpp"
 #include "ticks.hpp"
 
+#include <antkit/buffon/mcu_input.hpp>
 #include <antkit/c/antkit.h>
 #include <antkit/stc/floor.hpp>
 #include <antkit/stc/mcu_input.hpp>
@@ -20,53 +24,12 @@ namespace {
 
 using namespace antkit::stc;
 namespace mcu = antkit::mcu;
+using mcu::refuse;
+using mcu::Text;
 
 // The floor's storage: the only large object of the image (mcu_input.hpp).
 alignas(8) std::uint8_t g_arena[kMcuFloorBytes];
 std::uint8_t g_header[kMcuHeaderBytes];
-
-// A fixed buffer for the output, written out in one call.
-class Text {
-public:
-  Text& operator<<(const char* s) noexcept {
-    while (*s != 0 && n_ < sizeof buf_) buf_[n_++] = *s++;
-    return *this;
-  }
-  Text& operator<<(std::int64_t v) noexcept {
-    char digits[24];
-    int k = 0;
-    std::uint64_t u = v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
-    do {
-      digits[k++] = static_cast<char>('0' + u % 10);
-      u /= 10;
-    } while (u != 0);
-    if (v < 0) digits[k++] = '-';
-    while (k > 0 && n_ < sizeof buf_) buf_[n_++] = digits[--k];
-    return *this;
-  }
-  Text& hex(std::uint64_t h) noexcept {
-    for (int i = 15; i >= 0 && n_ < sizeof buf_; --i)
-      buf_[n_++] = "0123456789abcdef"[(h >> (4 * i)) & 0xF];
-    return *this;
-  }
-  void flush() noexcept {
-    const std::int32_t out = mcu::open_stdout();
-    mcu::write(out, buf_, n_);
-    mcu::close(out);
-    n_ = 0;
-  }
-
-private:
-  char buf_[512];
-  std::size_t n_ = 0;
-};
-
-int refuse(const char* what, const char* why) {
-  Text t;
-  t << "error: " << what << ": " << why << "\n";
-  t.flush();
-  return 2;
-}
 
 // The C API's controllers behind the interface drive_tour expects.
 struct OnlineController {
@@ -126,6 +89,10 @@ int main() {
   const std::int32_t size = mcu::file_length(file);
   McuRun run;
   const std::size_t got = mcu::read(file, g_header, sizeof g_header);
+  // A Buffon trial (buffon/mcu_input.hpp) in the same arena.
+  static_assert(antkit::buffon::kMcuArenaBytes == kMcuFloorBytes);
+  if (got >= 8 && __builtin_memcmp(g_header, antkit::buffon::kMcuBuffonMagic, 8) == 0)
+    return mcu::run_buffon(path, file, size, g_header, got, g_arena, sizeof g_arena);
   if (const McuInputError e = read_mcu_header(g_header, got, run); e != McuInputError::None)
     return refuse(path, describe(e));
   const FloorSize fs = floor_size(run.width, run.height);

@@ -2,6 +2,8 @@
 // the same hashes, and a whole tour driven through the C functions over the floor giving run_stc's
 // hash and counts on random maps (noisy too).
 #include <algorithm>
+#include <antkit/buffon/detector.hpp>
+#include <antkit/buffon/exploration.hpp>
 #include <antkit/c/antkit.h>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/stc/ant.hpp>
@@ -297,4 +299,38 @@ TEST_CASE("C API: online STC on a map wider than its memory stops with overflowe
   antkit_online_stc online;
   std::uint64_t too_small[4];
   CHECK(antkit_online_stc_init(&online, too_small, sizeof too_small, 0) == -1);
+}
+
+TEST_CASE("C API: the Buffon behaviour and detector are the C++ ones, step for step",
+          "[c][property]") {
+  rc::prop("random readings and pheromone bits", [] {
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    const auto trial = *rc::gen::inRange<std::uint64_t>(0, 100);
+    const auto robot = *rc::gen::inRange<std::uint64_t>(1, 3);
+    antkit::buffon::ExplorationBehaviour cpp(antkit::kernel::Stream(seed, 4, trial, robot, 0));
+    antkit_buffon_behaviour c;
+    antkit_buffon_behaviour_init(&c, seed, 4, trial, robot);
+    antkit::buffon::CrossingDetector cpp_detector;
+    antkit_buffon_detector c_detector;
+    antkit_buffon_detector_init(&c_detector);
+    const auto steps = *rc::gen::inRange(1, 60);
+    for (int i = 0; i < steps; ++i) {
+      antkit::buffon::Observation obs;
+      antkit_ir_reading reading;
+      for (std::size_t k = 0; k < 6; ++k) {
+        // Mostly far from walls (0), sometimes a wall in range.
+        const std::int32_t v = *rc::gen::weightedOneOf<std::int32_t>(
+            {{3, rc::gen::just(0)}, {2, rc::gen::inRange(0, 65537)}});
+        obs.ir[k] = antkit::kernel::Fx::from_raw(v);
+        reading.ir[k] = v;
+      }
+      const antkit::buffon::Command want = cpp.step(obs);
+      const antkit_wheel_command got = antkit_buffon_behaviour_step(&c, &reading);
+      RC_ASSERT(got.left == want.left.raw());
+      RC_ASSERT(got.right == want.right.raw());
+      const bool bit = *rc::gen::arbitrary<bool>();
+      RC_ASSERT(antkit_buffon_detector_update(&c_detector, bit ? 1 : 0) ==
+                (cpp_detector.update(bit) ? 1 : 0));
+    }
+  });
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # check_bad_input.sh MAPS: bad input to scripts/run-on-mcu.sh is refused with exit 2 and a located
-# message, on the host (the options, as antkit stc refuses them) and on the chip (an input file it
-# cannot read: QEMU run directly on a corrupt file).
+# message, on the host (the options, as antkit stc and antkit buffon refuse them) and on the chip
+# (an input file it cannot read: QEMU run directly on a corrupt file).
 set -uo pipefail
 [ -z "${ANTKIT_MCU_MISSING:-}" ] || { echo "skipped: no arm-none-eabi-g++ or qemu-system-arm"; exit 77; }
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -31,6 +31,11 @@ expect bad-variant "error: --variant" "$run" stc --map "$den" --variant sideways
 expect host-only-variant "error: --variant: .*host only" "$run" stc --map "$den" --variant offline
 expect bad-noise "error: --noise" "$run" stc --map "$den" --variant ant --noise 2
 expect unknown-command "unknown command" "$run" sweep --map "$den"
+expect buffon-bad-arena "error: --arena" "$run" buffon --arena circle:d=-3 --steps 100
+expect buffon-missing-wkt "error: .*nope\.wkt" "$run" buffon --arena nope.wkt --steps 100
+expect buffon-bad-steps "error: --steps: the steps per visit must be in" "$run" buffon --arena square:area=25 --steps 0
+expect buffon-bad-width "error: --width" "$run" buffon --arena square:area=25 --steps 100 --width 0
+expect buffon-bad-noise "error: --noise" "$run" buffon --arena square:area=25 --steps 100 --noise 3
 
 # The chip's own refusals: a file that is not an input, and one cut short.
 work=$(mktemp -d)
@@ -42,7 +47,11 @@ chip() { # chip FILE: the image on FILE, its exit status and output
 printf 'this is not an antkit input, but it is long enough to hold a header\n' >"$work/text"
 "$ANTKIT_EXE" stc-mcu-input --map "$den" --variant ant --out "$work/good" >/dev/null
 head -c 100 "$work/good" >"$work/short"
-for f in text short; do
+# A Buffon input cut inside its walls, and one whose header asks for 0 steps.
+"$ANTKIT_EXE" buffon-mcu-input --arena square:area=25 --steps 100 --out "$work/buffon" >/dev/null
+head -c 60 "$work/buffon" >"$work/buffon-short"
+{ head -c 16 "$work/buffon"; printf '\0\0\0\0\0\0\0\0'; tail -c +25 "$work/buffon"; } >"$work/buffon-steps"
+for f in text short buffon-short buffon-steps; do
   out=$(chip "$work/$f")
   status=$?
   if [ $status -eq 2 ] && [[ "$out" == "error: $work/$f: "* ]]; then

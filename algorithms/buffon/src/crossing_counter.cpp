@@ -9,79 +9,24 @@ namespace {
 using kernel::Fx;
 using kernel::FxPoint;
 
-// The bucket holding raw coordinate v: floor(v / 2^15) (arithmetic shift of a negative value
-// rounds toward minus infinity, as C++20 defines it).
-constexpr std::int64_t bucket_of(std::int32_t v, int shift) noexcept {
-  return std::int64_t{v} >> shift;
-}
 } // namespace
 
-CrossingCounter::CrossingCounter(std::span<const FxPoint> finished) : points_(finished) {
-  if (points_.size() < 2) return;
-  if (points_.size() - 1 > std::numeric_limits<std::uint32_t>::max() - 1)
+CrossingCounter::CrossingCounter(std::span<const FxPoint> finished) {
+  CrossingLayout layout;
+  if (!CrossingCounterCore::plan(finished, layout))
     throw kernel::InputError("trail", "a trail of more than 2^32 - 2 segments");
-  std::int64_t x0 = std::numeric_limits<std::int64_t>::max(), y0 = x0;
-  std::int64_t x1 = std::numeric_limits<std::int64_t>::min(), y1 = x1;
-  for (const FxPoint& p : points_) {
-    x0 = std::min(x0, bucket_of(p.x.raw(), kBucketShift));
-    y0 = std::min(y0, bucket_of(p.y.raw(), kBucketShift));
-    x1 = std::max(x1, bucket_of(p.x.raw(), kBucketShift));
-    y1 = std::max(y1, bucket_of(p.y.raw(), kBucketShift));
+  if (finished.size() >= 2) {
+    start_.resize(static_cast<std::size_t>(layout.buckets) + 1);
+    ids_.resize(static_cast<std::size_t>(layout.ids));
+    stamp_.resize(static_cast<std::size_t>(layout.segments));
   }
-  bx0_ = x0, by0_ = y0, cols_ = x1 - x0 + 1, rows_ = y1 - y0 + 1;
-  const std::size_t segments = points_.size() - 1;
-  // Two passes over the segments' bucket boxes: count, then fill (compressed rows).
-  start_.assign(static_cast<std::size_t>(cols_ * rows_) + 1, 0);
-  auto for_each_bucket = [this](std::size_t i, auto&& f) {
-    const FxPoint a = points_[i], b = points_[i + 1];
-    const std::int64_t i0 = bucket_of(std::min(a.x.raw(), b.x.raw()), kBucketShift) - bx0_;
-    const std::int64_t i1 = bucket_of(std::max(a.x.raw(), b.x.raw()), kBucketShift) - bx0_;
-    const std::int64_t j0 = bucket_of(std::min(a.y.raw(), b.y.raw()), kBucketShift) - by0_;
-    const std::int64_t j1 = bucket_of(std::max(a.y.raw(), b.y.raw()), kBucketShift) - by0_;
-    for (std::int64_t j = j0; j <= j1; ++j)
-      for (std::int64_t k = i0; k <= i1; ++k) f(static_cast<std::size_t>(j * cols_ + k));
-  };
-  for (std::size_t i = 0; i < segments; ++i)
-    for_each_bucket(i, [&](std::size_t b) { ++start_[b + 1]; });
-  for (std::size_t b = 1; b < start_.size(); ++b) start_[b] += start_[b - 1];
-  ids_.resize(start_.back());
-  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-  for (std::size_t i = 0; i < segments; ++i)
-    for_each_bucket(i, [&](std::size_t b) { ids_[fill[b]++] = static_cast<std::uint32_t>(i); });
-  stamp_.assign(segments, 0);
+  core_.build(finished, layout, start_, ids_, stamp_);
 }
 
 std::uint64_t CrossingCounter::add(FxPoint a, FxPoint b, std::vector<std::uint32_t>* crossed) {
-  if (ids_.empty()) return 0;
-  const std::int64_t i0 =
-      std::max<std::int64_t>(bucket_of(std::min(a.x.raw(), b.x.raw()), kBucketShift) - bx0_, 0);
-  const std::int64_t i1 = std::min<std::int64_t>(
-      bucket_of(std::max(a.x.raw(), b.x.raw()), kBucketShift) - bx0_, cols_ - 1);
-  const std::int64_t j0 =
-      std::max<std::int64_t>(bucket_of(std::min(a.y.raw(), b.y.raw()), kBucketShift) - by0_, 0);
-  const std::int64_t j1 = std::min<std::int64_t>(
-      bucket_of(std::max(a.y.raw(), b.y.raw()), kBucketShift) - by0_, rows_ - 1);
-  if (i0 > i1 || j0 > j1) return 0; // wholly outside the finished trail's buckets
-  const kernel::FxSegment s{a, b};
-  if (++query_ == 0) { // the stamps wrapped: forget them all (once per 2^32 queries)
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    query_ = 1;
-  }
-  std::uint64_t n = 0;
-  for (std::int64_t j = j0; j <= j1; ++j)
-    for (std::int64_t k = i0; k <= i1; ++k) {
-      const auto bucket = static_cast<std::size_t>(j * cols_ + k);
-      for (std::uint32_t e = start_[bucket]; e < start_[bucket + 1]; ++e) {
-        const std::uint32_t id = ids_[e];
-        if (stamp_[id] == query_) continue;
-        stamp_[id] = query_;
-        const kernel::FxSegment t{points_[id], points_[id + 1]};
-        if (!kernel::properly_cross(s, t)) continue;
-        ++n;
-        if (crossed) crossed->push_back(id);
-      }
-    }
-  return n;
+  return core_.add(a, b, [crossed](std::uint32_t id) {
+    if (crossed) crossed->push_back(id);
+  });
 }
 
 } // namespace antkit::buffon

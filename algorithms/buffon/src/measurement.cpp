@@ -12,13 +12,6 @@
 
 namespace antkit::buffon {
 
-namespace {
-std::int64_t floor_div(std::int64_t a, std::int64_t b) {
-  const std::int64_t q = a / b;
-  return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
-}
-} // namespace
-
 std::uint64_t isqrt64(std::uint64_t n) noexcept {
   std::uint64_t r = 0;
   std::uint64_t bit = std::uint64_t{1} << 62;
@@ -37,55 +30,11 @@ std::uint64_t isqrt64(std::uint64_t n) noexcept {
 
 PheromoneRaster::PheromoneRaster(FxPoint lower, FxPoint upper, Fx width,
                                  std::vector<std::uint64_t> storage)
-    : bits_(std::move(storage)) {
-  if (width < Fx::from_ratio(1, 100) || width > Fx::from_int(10))
-    throw kernel::InputError("trail width", "the trail width must be in [0.01, 10] units");
-  cell_ = std::max<std::int64_t>(1, width.raw() / 4);
-  half_width_ = width.raw() / 2;
-  x0_ = lower.x.raw();
-  y0_ = lower.y.raw();
-  cols_ = (std::int64_t{upper.x.raw()} - x0_) / cell_ + 1;
-  rows_ = (std::int64_t{upper.y.raw()} - y0_) / cell_ + 1;
-  // The bands round the columns up to a multiple of 64: the limit is on the words allocated.
-  if ((cols_ + 63) / 64 * rows_ > (std::int64_t{1} << 27))
-    throw kernel::InputError("trail width", "the pheromone raster would exceed 2^27 words (1 GiB); "
-                                            "use a wider trail or a smaller arena");
-  r2_ = half_width_ * half_width_;
-  reciprocal_ = (std::uint64_t{1} << 32) / static_cast<std::uint64_t>(cell_);
-  fast_ = 2 * half_width_ < 5 * cell_; // holds for every width in range (cell >= 163 raw)
-  // w up to about 0.56 units (every width of the paper's figures).
-  narrow_ = 25 * cell_ * cell_ < (std::int64_t{1} << 31) && 4 * r2_ < (std::int64_t{1} << 31);
-  bits_.assign(static_cast<std::size_t>((cols_ + 63) / 64 * rows_), 0);
-}
-
-void PheromoneRaster::lay_exact(FxPoint c) noexcept {
-  const std::int64_t cx = c.x.raw() - x0_, cy = c.y.raw() - y0_;
-  const std::int64_t i0 = std::max<std::int64_t>(0, floor_div(cx - half_width_, cell_));
-  const std::int64_t i1 = std::min<std::int64_t>(cols_ - 1, floor_div(cx + half_width_, cell_));
-  const std::int64_t j0 = std::max<std::int64_t>(0, floor_div(cy - half_width_, cell_));
-  const std::int64_t j1 = std::min<std::int64_t>(rows_ - 1, floor_div(cy + half_width_, cell_));
-  for (std::int64_t j = j0; j <= j1; ++j) {
-    // Cell centres in doubled raw units avoid halves: centre = (2 j + 1) cell / 2.
-    const std::int64_t dy2 = (2 * j + 1) * cell_ - 2 * cy;
-    for (std::int64_t i = i0; i <= i1; ++i) {
-      const std::int64_t dx2 = (2 * i + 1) * cell_ - 2 * cx;
-      if (dx2 * dx2 + dy2 * dy2 > 4 * r2_) continue;
-      bits_[word_index(i, j)] |= std::uint64_t{1} << (i & 63);
-    }
-  }
-}
-
-bool PheromoneRaster::at_exact(FxPoint c) const noexcept {
-  const std::int64_t i = floor_div(c.x.raw() - x0_, cell_);
-  const std::int64_t j = floor_div(c.y.raw() - y0_, cell_);
-  if (i < 0 || j < 0 || i >= cols_ || j >= rows_) return false;
-  return bit(i, j);
-}
-
-std::uint64_t PheromoneRaster::marked() const {
-  std::uint64_t n = 0;
-  for (std::uint64_t w : bits_) n += static_cast<std::uint64_t>(__builtin_popcountll(w));
-  return n;
+    : storage_(std::move(storage)) {
+  if (const RasterError e = init(lower, upper, width); e != RasterError::None)
+    throw kernel::InputError("trail width", describe(e));
+  storage_.assign(static_cast<std::size_t>(words()), 0);
+  bind(storage_);
 }
 
 void detail::check_total_steps(std::int64_t steps) {

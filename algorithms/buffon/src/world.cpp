@@ -1,10 +1,9 @@
-// The simulated Khepera and its walls (world.hpp).
+// The simulated Khepera and its walls (world.hpp): WorldCore, freestanding (the Cortex-M image
+// compiles this file too: no allocation, no exception). The host's World is world_host.cpp.
 #include <algorithm>
 #include <antkit/buffon/world.hpp>
 #include <antkit/kernel/fixed_random.hpp>
-#include <antkit/kernel/input_error.hpp>
 #include <array>
-#include <stdexcept>
 
 namespace antkit::buffon {
 
@@ -32,7 +31,7 @@ std::int64_t floor_div(std::int64_t a, std::int64_t b) {
 
 // Squared distance from p to the closed segment s, compared exactly with rho^2: true when the
 // distance is below rho.
-bool closer_than(FxPoint p, const World::BucketWall& s, std::int64_t rho) {
+bool closer_than(FxPoint p, const BucketWall& s, std::int64_t rho) {
   const i128 ax = s.ax, ay = s.ay, bx = s.bx, by = s.by;
   const i128 px = p.x.raw(), py = p.y.raw();
   const i128 abx = bx - ax, aby = by - ay, apx = px - ax, apy = py - ay;
@@ -60,7 +59,7 @@ bool closer_than(FxPoint p, const World::BucketWall& s, std::int64_t rho) {
 // floor(2^16 t) / 2^16, and a later wall replaces it only when its exact t is smaller, so the
 // final value is floor(2^16 t_min) whatever the order (or 1 when no wall is hit with t < 1). That
 // is why the queries may skip walls that cannot be hit.
-inline void ray_hit(const World::BucketWall& w, std::int64_t sx, std::int64_t sy, std::int64_t dx,
+inline void ray_hit(const BucketWall& w, std::int64_t sx, std::int64_t sy, std::int64_t dx,
                     std::int64_t dy, std::int64_t& best_num, std::int64_t& best_den) {
   const std::int64_t ex = std::int64_t{w.bx} - w.ax, ey = std::int64_t{w.by} - w.ay;
   const std::int64_t qx = std::int64_t{w.ax} - sx, qy = std::int64_t{w.ay} - sy;
@@ -79,52 +78,124 @@ inline void ray_hit(const World::BucketWall& w, std::int64_t sx, std::int64_t sy
 
 } // namespace
 
-World::World(std::vector<FxSegment> walls, BodyParams body)
-    : walls_(std::move(walls)), body_(body) {
-  if (walls_.empty()) throw kernel::InputError("arena", "an arena needs at least one wall");
-  if (walls_.size() >= (std::size_t{1} << 31)) throw kernel::InputError("arena", "too many walls");
-  if (body_.speed <= Fx{} || body_.speed > Fx::from_ratio(1, 4))
-    throw kernel::InputError("speed", "the speed per step must be in (0, 0.25] units");
-  if (body_.noise < Fx{} || body_.noise > Fx::one())
-    throw kernel::InputError("noise", "the sensor noise must be in [0, 1]");
-  std::int64_t x0 = walls_[0].a.x.raw(), y0 = walls_[0].a.y.raw(), x1 = x0, y1 = y0;
-  for (const auto& w : walls_)
+const char* describe(WorldError e) noexcept {
+  switch (e) {
+  case WorldError::None:
+    return "ok";
+  case WorldError::NoWalls:
+    return "an arena needs at least one wall";
+  case WorldError::TooManyWalls:
+    return "too many walls";
+  case WorldError::Speed:
+    return "the speed per step must be in (0, 0.25] units";
+  case WorldError::Noise:
+    return "the sensor noise must be in [0, 1]";
+  case WorldError::Coordinates:
+    return "wall coordinates must lie within +/-16000 units";
+  case WorldError::TooLarge:
+    return "the arena must fit in 4096 x 4096 units";
+  case WorldError::NoStartWall:
+    return "no wall below the arena's centre to start at";
+  case WorldError::StartBlocked:
+    return "the start position (0.83 above the central bottom wall) is not clear of the walls: "
+           "the arena is too small or not closed there";
+  }
+  return "unknown world error";
+}
+
+const char* error_where(WorldError e) noexcept {
+  return e == WorldError::Speed ? "speed" : e == WorldError::Noise ? "noise" : "arena";
+}
+
+namespace {
+// The grid of buckets over the walls' box grown by kMargin (plan and build agree on it).
+struct Grid {
+  std::int64_t x0, y0, x1, y1; // the walls' box, raw
+  std::int64_t gx0, gy0, w, h; // the bucket grid: origin (in buckets) and size
+};
+
+WorldError grid_of(std::span<const FxSegment> walls, BodyParams body, Grid& g) noexcept {
+  if (walls.empty()) return WorldError::NoWalls;
+  if (walls.size() >= (std::size_t{1} << 31)) return WorldError::TooManyWalls;
+  if (body.speed <= Fx{} || body.speed > Fx::from_ratio(1, 4)) return WorldError::Speed;
+  if (body.noise < Fx{} || body.noise > Fx::one()) return WorldError::Noise;
+  std::int64_t x0 = walls[0].a.x.raw(), y0 = walls[0].a.y.raw(), x1 = x0, y1 = y0;
+  for (const auto& w : walls)
     for (FxPoint q : {w.a, w.b}) {
       if (q.x.raw() < -kMaxCoordinate || q.x.raw() > kMaxCoordinate ||
           q.y.raw() < -kMaxCoordinate || q.y.raw() > kMaxCoordinate)
-        throw kernel::InputError("arena", "wall coordinates must lie within +/-16000 units");
+        return WorldError::Coordinates;
       x0 = std::min<std::int64_t>(x0, q.x.raw());
       y0 = std::min<std::int64_t>(y0, q.y.raw());
       x1 = std::max<std::int64_t>(x1, q.x.raw());
       y1 = std::max<std::int64_t>(y1, q.y.raw());
     }
-  lo_ = {Fx::from_raw(static_cast<std::int32_t>(x0)), Fx::from_raw(static_cast<std::int32_t>(y0))};
-  hi_ = {Fx::from_raw(static_cast<std::int32_t>(x1)), Fx::from_raw(static_cast<std::int32_t>(y1))};
-  if ((x1 - x0) / kBucket > 4096 || (y1 - y0) / kBucket > 4096)
-    throw kernel::InputError("arena", "the arena must fit in 4096 x 4096 units");
+  if ((x1 - x0) / kBucket > 4096 || (y1 - y0) / kBucket > 4096) return WorldError::TooLarge;
+  g.x0 = x0, g.y0 = y0, g.x1 = x1, g.y1 = y1;
+  g.gx0 = floor_div(x0 - kMargin, kBucket);
+  g.gy0 = floor_div(y0 - kMargin, kBucket);
+  g.w = floor_div(x1 + kMargin, kBucket) - g.gx0 + 1;
+  g.h = floor_div(y1 + kMargin, kBucket) - g.gy0 + 1;
+  return WorldError::None;
+}
 
-  grid_x0_ = floor_div(x0 - kMargin, kBucket);
-  grid_y0_ = floor_div(y0 - kMargin, kBucket);
-  grid_w_ = floor_div(x1 + kMargin, kBucket) - grid_x0_ + 1;
-  grid_h_ = floor_div(y1 + kMargin, kBucket) - grid_y0_ + 1;
-  const auto buckets = static_cast<std::size_t>(grid_w_ * grid_h_);
-  // Register each wall in the buckets that meet its bounding box grown by kMargin (a superset of
-  // the buckets within kMargin of it, which is all the queries need), counting first then filling.
+// The buckets (columns bx0..bx1, rows by0..by1, absolute) that meet the bounding box of s grown by
+// kMargin: a superset of the buckets within kMargin of it, which is all the queries need.
+struct BucketBox {
+  std::int64_t bx0, bx1, by0, by1;
+};
+BucketBox buckets_of(const FxSegment& s) noexcept {
+  return {floor_div(std::min(s.a.x.raw(), s.b.x.raw()) - kMargin, kBucket),
+          floor_div(std::max(s.a.x.raw(), s.b.x.raw()) + kMargin, kBucket),
+          floor_div(std::min(s.a.y.raw(), s.b.y.raw()) - kMargin, kBucket),
+          floor_div(std::max(s.a.y.raw(), s.b.y.raw()) + kMargin, kBucket)};
+}
+} // namespace
+
+WorldError WorldCore::plan(std::span<const FxSegment> walls, BodyParams body,
+                           WorldLayout& layout) noexcept {
+  Grid g{};
+  if (const WorldError e = grid_of(walls, body, g); e != WorldError::None) return e;
+  layout.buckets = static_cast<std::uint64_t>(g.w * g.h);
+  layout.lower = {Fx::from_raw(static_cast<std::int32_t>(g.x0)),
+                  Fx::from_raw(static_cast<std::int32_t>(g.y0))};
+  layout.upper = {Fx::from_raw(static_cast<std::int32_t>(g.x1)),
+                  Fx::from_raw(static_cast<std::int32_t>(g.y1))};
+  layout.members = 0;
+  for (const auto& w : walls) {
+    const BucketBox b = buckets_of(w);
+    layout.members += static_cast<std::uint64_t>((b.bx1 - b.bx0 + 1) * (b.by1 - b.by0 + 1));
+  }
+  return WorldError::None;
+}
+
+void WorldCore::build(std::span<const FxSegment> walls, BodyParams body, const WorldLayout& layout,
+                      std::span<std::uint32_t> start, std::span<BucketWall> members) noexcept {
+  Grid g{};
+  (void)grid_of(walls, body, g); // None: plan() said so
+  walls_ = walls;
+  body_ = body;
+  lo_ = {Fx::from_raw(static_cast<std::int32_t>(g.x0)),
+         Fx::from_raw(static_cast<std::int32_t>(g.y0))};
+  hi_ = {Fx::from_raw(static_cast<std::int32_t>(g.x1)),
+         Fx::from_raw(static_cast<std::int32_t>(g.y1))};
+  grid_x0_ = g.gx0, grid_y0_ = g.gy0, grid_w_ = g.w, grid_h_ = g.h;
+  const auto buckets = static_cast<std::size_t>(layout.buckets);
   auto for_buckets = [&](const FxSegment& s, auto&& f) {
-    const std::int64_t bx0 = floor_div(std::min(s.a.x.raw(), s.b.x.raw()) - kMargin, kBucket);
-    const std::int64_t bx1 = floor_div(std::max(s.a.x.raw(), s.b.x.raw()) + kMargin, kBucket);
-    const std::int64_t by0 = floor_div(std::min(s.a.y.raw(), s.b.y.raw()) - kMargin, kBucket);
-    const std::int64_t by1 = floor_div(std::max(s.a.y.raw(), s.b.y.raw()) + kMargin, kBucket);
-    for (std::int64_t by = by0; by <= by1; ++by)
-      for (std::int64_t bx = bx0; bx <= bx1; ++bx)
+    const BucketBox b = buckets_of(s);
+    for (std::int64_t by = b.by0; by <= b.by1; ++by)
+      for (std::int64_t bx = b.bx0; bx <= b.bx1; ++bx)
         f(static_cast<std::size_t>((by - grid_y0_) * grid_w_ + (bx - grid_x0_)));
   };
-  start_.assign(buckets + 1, 0);
-  for (const auto& w : walls_) for_buckets(w, [&](std::size_t k) { ++start_[k + 1]; });
-  for (std::size_t k = 0; k < buckets; ++k) start_[k + 1] += start_[k];
-  members_.resize(start_[buckets]);
-  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-  for (const auto& w : walls_) {
+  // Counting first, then filling without a second array: start[k] counts bucket k's walls, its
+  // prefix sum is the end of bucket k, and the walls taken last to first are placed below it, so
+  // that start[k] ends at the bucket's beginning and each bucket lists its walls in their order.
+  for (std::size_t k = 0; k <= buckets; ++k) start[k] = 0;
+  for (const auto& w : walls) for_buckets(w, [&](std::size_t k) { ++start[k]; });
+  for (std::size_t k = 1; k < buckets; ++k) start[k] += start[k - 1];
+  start[buckets] = buckets > 0 ? start[buckets - 1] : 0;
+  for (std::size_t i = walls.size(); i-- > 0;) {
+    const FxSegment& w = walls[i];
     const BucketWall entry{w.a.x.raw(),
                            w.a.y.raw(),
                            w.b.x.raw(),
@@ -133,14 +204,16 @@ World::World(std::vector<FxSegment> walls, BodyParams body)
                            std::min(w.a.y.raw(), w.b.y.raw()),
                            std::max(w.a.x.raw(), w.b.x.raw()),
                            std::max(w.a.y.raw(), w.b.y.raw())};
-    for_buckets(w, [&](std::size_t k) { members_[fill[k]++] = entry; });
+    for_buckets(w, [&](std::size_t k) { members[--start[k]] = entry; });
   }
+  start_ = start;
+  members_ = members;
 }
 
 // nearby() (world.hpp) shifts by 16 for the bucket.
 static_assert(kBucket == std::int64_t{1} << 16);
 
-Observation World::sense_walls(const Pose& pose, kernel::Stream* noise) const {
+Observation WorldCore::sense_walls(const Pose& pose, kernel::Stream* noise) const {
   Observation obs;
   const FxPoint c = pose.position;
   const std::int64_t cx = c.x.raw(), cy = c.y.raw();
@@ -221,9 +294,7 @@ Observation World::sense_walls(const Pose& pose, kernel::Stream* noise) const {
   return obs;
 }
 
-Fx World::ray_reading(const Pose& pose, Angle offset, Fx range) const {
-  if (range <= Fx{} || range > kSensorRange)
-    throw std::invalid_argument("ray_reading: the range must be in (0, 0.75] units");
+Fx WorldCore::ray_reading_in_range(const Pose& pose, Angle offset, Fx range) const noexcept {
   const Angle a = pose.heading + offset;
   const Fx cs = kernel::cos(a), sn = kernel::sin(a);
   const std::int64_t sx = std::int64_t{pose.position.x.raw()} + (kBodyRadius * cs).raw();
@@ -231,12 +302,12 @@ Fx World::ray_reading(const Pose& pose, Angle offset, Fx range) const {
   const std::int64_t dx = (range * cs).raw(), dy = (range * sn).raw();
   std::int64_t best_num = 1, best_den = 1;
   // The bucket of the centre holds every wall within kMargin >= body radius + kSensorRange of it
-  // (constructor), so every wall the ray can meet.
+  // (build), so every wall the ray can meet.
   for (const auto& w : nearby(pose.position)) ray_hit(w, sx, sy, dx, dy, best_num, best_den);
   return Fx::one() - Fx::from_raw(static_cast<std::int32_t>(best_num * 65536 / best_den));
 }
 
-bool World::clear_walls(FxPoint p, std::span<const BucketWall> bucket) const {
+bool WorldCore::clear_walls(FxPoint p, std::span<const BucketWall> bucket) const {
   const std::int64_t px = p.x.raw(), py = p.y.raw(), rho = kBodyRadius.raw();
   for (const auto& w : bucket) {
     // A wall whose bounding box keeps rho away in x or y is at least rho away.
@@ -246,7 +317,7 @@ bool World::clear_walls(FxPoint p, std::span<const BucketWall> bucket) const {
   return true;
 }
 
-Pose World::start_pose(kernel::Stream& stream) const {
+WorldError WorldCore::place_start(kernel::Stream& stream, Pose& pose) const noexcept {
   const std::int64_t cx = (std::int64_t{lo_.x.raw()} + hi_.x.raw()) / 2;
   bool found = false;
   std::int64_t best = 0;
@@ -257,15 +328,13 @@ Pose World::start_pose(kernel::Stream& stream) const {
     if (ax != bx) y = ay + (by - ay) * (cx - ax) / (bx - ax);
     if (!found || y < best) best = y, found = true;
   }
-  if (!found) throw kernel::InputError("arena", "no wall below the arena's centre to start at");
+  if (!found) return WorldError::NoStartWall;
   const FxPoint p{Fx::from_raw(static_cast<std::int32_t>(cx)),
                   Fx::from_raw(static_cast<std::int32_t>(best + kStartClearance.raw()))};
-  if (!clear(p))
-    throw kernel::InputError("arena", "the start position (0.83 above the central bottom wall) "
-                                      "is not clear of the walls: the arena is too small or "
-                                      "not closed there");
+  if (!clear(p)) return WorldError::StartBlocked;
   const Fx deg = kernel::uniform(stream, Fx::from_int(-15), Fx::from_int(15));
-  return Pose{p, Angle::quarter_turn() + Angle::from_degrees(deg)};
+  pose = Pose{p, Angle::quarter_turn() + Angle::from_degrees(deg)};
+  return WorldError::None;
 }
 
 } // namespace antkit::buffon

@@ -155,7 +155,47 @@ void antkit_stc_floor_position(const antkit_stc_floor* floor, int32_t* x, int32_
 int64_t antkit_stc_floor_covered(const antkit_stc_floor* floor);
 int64_t antkit_stc_floor_repeats(const antkit_stc_floor* floor);
 
-/* ---- the trace hash (kernel/include/antkit/kernel/hash.hpp) ------------------------------- */
+/* ---- Buffon's needle: the exploration behaviour and the pheromone detector (paper 000) ------ */
+
+/* The exploration behaviour of paper 000's Section 4.2 (algorithms/buffon/exploration.hpp: the
+ * equations and the choices where the paper is silent), the very C++ step `antkit buffon` runs.
+ * Numbers are Q15.16 fixed point: 65536 is 1.0. Its random terms come from its own keyed stream,
+ * named by (seed, experiment, trial, robot) with purpose 0; `antkit buffon`'s visit v of trial t
+ * is (seed, 4, t, v). 160 bytes of state, copied freely (nothing points into it). */
+typedef struct antkit_buffon_behaviour {
+  uint64_t opaque[20];
+} antkit_buffon_behaviour;
+
+/* The six front IR readings I_0 (left, +90 degrees) .. I_5 (right, -90 degrees), each in [0, 65536]
+ * (1 - distance / range for the nearest wall within the sensor's range, 0 when none). */
+typedef struct antkit_ir_reading {
+  int32_t ir[6];
+} antkit_ir_reading;
+
+/* Wheel speeds m_l, m_r, Q15.16 in about [-1.25, 1.25] (the paper's units; your body scales them to
+ * its own: `antkit buffon`'s Khepera moves 0.1683 robot diameters per step at speed 1). */
+typedef struct antkit_wheel_command {
+  int32_t left;
+  int32_t right;
+} antkit_wheel_command;
+
+void antkit_buffon_behaviour_init(antkit_buffon_behaviour* state, uint64_t seed,
+                                  uint64_t experiment, uint64_t trial, uint64_t robot);
+antkit_wheel_command antkit_buffon_behaviour_step(antkit_buffon_behaviour* state,
+                                                  const antkit_ir_reading* reading);
+
+/* Visit 2's pheromone detector (algorithms/buffon/detector.hpp): a leaky integrator of the
+ * pheromone bit under the robot's centre with a hysteresis threshold. Each low-to-high transition
+ * is one Buffon count. */
+typedef struct antkit_buffon_detector {
+  uint64_t opaque[1];
+} antkit_buffon_detector;
+
+void antkit_buffon_detector_init(antkit_buffon_detector* state);
+/* Feeds one reading of the pheromone (non-zero: on the trail); 1 when it counts a crossing. */
+int antkit_buffon_detector_update(antkit_buffon_detector* state, int pheromone);
+
+/* ---- the trace hash (kernel/include/antkit/kernel/hash.hpp) --------------------------------- */
 
 /* A 64-bit hash over a canonical little-endian byte stream; the same value on every CPU. */
 typedef struct antkit_trace_hash {

@@ -48,7 +48,11 @@ inline std::uint64_t uniform_offset_u64(Stream& stream, std::uint64_t span) noex
 // would hide a sign error in the caller).
 template <class Rep, int F>
 Fixed<Rep, F> uniform(Stream& stream, Fixed<Rep, F> a, Fixed<Rep, F> b) {
+#if defined(__cpp_exceptions)
   if (b < a) throw std::invalid_argument("uniform(a, b) needs a <= b");
+#else // freestanding (-fno-exceptions, mcu/): the same programming error stops the program
+  if (b < a) __builtin_trap();
+#endif
   using URep = typename ops::int_info<Rep>::unsigned_type;
   // b - a as an unsigned count of ulps: exact modulo 2^N, and < 2^N because a <= b.
   const URep span = ops::wrap_sub(ops::as_unsigned(b.raw()), ops::as_unsigned(a.raw()));

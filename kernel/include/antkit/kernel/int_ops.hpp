@@ -136,13 +136,13 @@ struct wide_of<std::uint64_t> {
 };
 template <class T>
 using wide_t = typename wide_of<T>::type;
-
+#if defined(__cpp_exceptions) // freestanding (mcu/, -fno-exceptions): a checked build traps
 [[noreturn]] inline void range_failure(const char* what) {
   throw ArithmeticRangeError(what);
 }
-
-// A precondition of an operation's documented domain: checked in ANTKIT_CHECKED_ARITHMETIC builds,
-// free otherwise (the operation then still returns a defined, documented value).
+#else // clang-format off
+[[noreturn]] inline void range_failure(const char*) { __builtin_trap(); }
+#endif // clang-format on
 constexpr void require([[maybe_unused]] bool holds, [[maybe_unused]] const char* what) {
   if constexpr (kCheckedArithmetic) {
     if (!holds) range_failure(what);

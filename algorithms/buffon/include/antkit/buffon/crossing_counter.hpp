@@ -11,6 +11,7 @@
 // grid cannot cross any of the finished trail's. Deterministic: the count is a property of the two
 // polylines only.
 #include <algorithm>
+#include <antkit/buffon/crossing_counter_core.hpp>
 #include <antkit/kernel/segment.hpp>
 #include <cstdint>
 #include <span>
@@ -22,8 +23,14 @@ class CrossingCounter {
 public:
   // Indexes the segments of `finished` (a polyline of n points has n - 1 segments; any Fx
   // coordinates), which must outlive the counter (it is read, not copied). Throws InputError for
-  // more than 2^32 - 2 segments.
+  // more than 2^32 - 2 segments. The counting is CrossingCounterCore's, over vectors owned here.
   explicit CrossingCounter(std::span<const kernel::FxPoint> finished);
+  // The core points into the vectors: moving keeps their buffers, a copy would not.
+  CrossingCounter(const CrossingCounter&) = delete;
+  CrossingCounter& operator=(const CrossingCounter&) = delete;
+  CrossingCounter(CrossingCounter&&) noexcept = default;
+  CrossingCounter& operator=(CrossingCounter&&) noexcept = default;
+  ~CrossingCounter() = default;
   // The number of segments of the finished trail that segment (a, b) crosses properly. With
   // `crossed`, the index of each such segment (i joins points i and i + 1) is appended to it, in
   // the order of the bucket scan (deterministic, not sorted).
@@ -31,13 +38,8 @@ public:
                     std::vector<std::uint32_t>* crossed = nullptr);
 
 private:
-  static constexpr int kBucketShift = 15;
-  std::span<const kernel::FxPoint> points_;
-  std::int64_t bx0_ = 0, by0_ = 0, cols_ = 0, rows_ = 0; // bucket grid origin (in buckets), size
-  std::vector<std::uint32_t> start_; // CSR: bucket b's ids in [start_[b], start_[b+1])
-  std::vector<std::uint32_t> ids_;   // segment i joins points_[i], points_[i + 1]
-  std::vector<std::uint32_t> stamp_; // last query that tested segment i
-  std::uint32_t query_ = 0;
+  std::vector<std::uint32_t> start_, ids_, stamp_;
+  CrossingCounterCore core_;
 };
 
 // A growing set of segments that answers which of them a new segment crosses properly: the online

@@ -26,15 +26,14 @@
 //  * Trace hash: per step (visit, x, y, heading, r, w_l, w_r, thresholded detector) as aligned
 //    64-bit words, then BC, the blocked-step counts and the exact crossing count.
 #include <antkit/buffon/detector.hpp>
+#include <antkit/buffon/pheromone_raster.hpp>
+#include <antkit/buffon/visit.hpp>
 #include <antkit/buffon/world.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/random.hpp>
 #include <climits>
 #include <cmath>
 #include <cstdint>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 #include <functional>
 #include <type_traits>
 #include <utility>
@@ -44,137 +43,50 @@ namespace antkit::buffon {
 
 inline constexpr Fx kDefaultWidth = Fx::from_raw(6554); // 0.1
 inline constexpr std::int64_t kDefaultSteps = 50000;
-// The experiment number of this family's streams (issue 4).
-inline constexpr std::uint64_t kExperiment = 4;
 
-class PheromoneRaster {
+// The host's raster: RasterCore (pheromone_raster.hpp) over bits it owns in a vector (a copy
+// points its core at its own copy of them).
+class PheromoneRaster : public RasterCore {
 public:
-  // Throws InputError("trail width") when w is not in [0.01, 10] units. `storage` is memory to
-  // reuse for the bits (its contents are discarded): trials in a row reuse one buffer instead of
-  // faulting fresh pages in (a 100-unit circle's raster is 2 MiB).
+  // Throws InputError("trail width") when w is not in [0.01, 10] units or the raster would exceed
+  // 2^27 words (RasterError). `storage` is memory to reuse for the bits (its contents are
+  // discarded): trials in a row reuse one buffer instead of faulting fresh pages in (a 100-unit
+  // circle's raster is 2 MiB).
   PheromoneRaster(FxPoint lower, FxPoint upper, Fx width, std::vector<std::uint64_t> storage = {});
+  PheromoneRaster(const PheromoneRaster& other) : RasterCore(other), storage_(other.storage_) {
+    bind(storage_);
+  }
+  PheromoneRaster& operator=(const PheromoneRaster& other) {
+    if (this != &other) {
+      RasterCore::operator=(other);
+      storage_ = other.storage_;
+      bind(storage_);
+    }
+    return *this;
+  }
+  PheromoneRaster(PheromoneRaster&& other) noexcept
+      : RasterCore(other), storage_(std::move(other.storage_)) {
+    bind(storage_);
+    other.bind({});
+  }
+  PheromoneRaster& operator=(PheromoneRaster&& other) noexcept {
+    if (this != &other) {
+      RasterCore::operator=(other);
+      storage_ = std::move(other.storage_);
+      bind(storage_);
+      other.bind({});
+    }
+    return *this;
+  }
+  ~PheromoneRaster() = default;
   // Hands the bits' memory back for reuse (the raster is empty afterwards).
-  std::vector<std::uint64_t> release_storage() noexcept { return std::move(bits_); }
-  // Marks every cell whose centre is within w / 2 of `centre` (exact integer test).
-  void lay(FxPoint centre) noexcept {
-    Cell c;
-    if (!locate(centre, c) || c.i < 2 || c.j < 2 || c.i + 2 >= cols_ || c.j + 2 >= rows_) {
-      lay_exact(
-          centre); // near the raster's edge (never in a closed arena) or w out of the fast range
-      return;
-    }
-    // The disk lies in the 5 x 5 cells around the centre's cell (the constructor checks
-    // 2 (w / 2) < 5 cell, so a cell three away has its centre beyond w / 2 in that axis). Cell
-    // centres in doubled raw units avoid halves: the centre of cell i + d is at
-    // 2 (i cell) + (2 d + 1) cell, so its doubled offset from the robot is (2 d + 1) cell - 2 o.
-    std::int64_t sq[5], room[5];
-    for (int d = 0; d < 5; ++d) {
-      const std::int64_t dx2 = (2 * (d - 2) + 1) * cell_ - 2 * c.ox;
-      const std::int64_t dy2 = (2 * (d - 2) + 1) * cell_ - 2 * c.oy;
-      sq[d] = dx2 * dx2;
-      room[d] = 4 * r2_ - dy2 * dy2; // a column is in row d's chord when sq <= room[d]
-    }
-    std::uint64_t masks[5];
-#if defined(__SSE2__)
-    if (narrow_) {
-      // Every sq and room fits in 32 bits (the constructor checks (5 cell)^2 and 4 r^2 < 2^31):
-      // four columns per comparison, the same integers compared exactly.
-      const __m128i sq_lo =
-          _mm_setr_epi32(static_cast<std::int32_t>(sq[0]), static_cast<std::int32_t>(sq[1]),
-                         static_cast<std::int32_t>(sq[2]), static_cast<std::int32_t>(sq[3]));
-      const __m128i sq_hi =
-          _mm_setr_epi32(static_cast<std::int32_t>(sq[4]), INT32_MAX, INT32_MAX, INT32_MAX);
-      for (int e = 0; e < 5; ++e) {
-        const __m128i r = _mm_set1_epi32(static_cast<std::int32_t>(room[e]));
-        // Columns with sq > room are out; the rest (sq <= room) are in.
-        const int out_lo = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpgt_epi32(sq_lo, r)));
-        const int out_hi = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpgt_epi32(sq_hi, r)));
-        masks[e] = ~static_cast<std::uint64_t>(out_lo | (out_hi << 4)) & 0x1Fu;
-      }
-    } else
-#endif
-    {
-      for (int e = 0; e < 5; ++e) {
-        std::uint64_t mask = 0;
-        for (int d = 0; d < 5; ++d) mask |= std::uint64_t{sq[d] <= room[e]} << d;
-        masks[e] = mask;
-      }
-    }
-    // Rows j - 2 .. j + 2, columns i - 2 .. i + 2: bits `shift` .. `shift` + 4 of five adjacent
-    // words of one column band, which may straddle into the same rows of the next band.
-    const auto first = static_cast<std::uint64_t>(c.i - 2);
-    const unsigned shift = first & 63;
-    std::uint64_t* const words = bits_.data() + word_index(c.i - 2, c.j - 2);
-    for (int e = 0; e < 5; ++e) words[e] |= masks[e] << shift;
-    // Only 4 of 64 shifts spill into the next band (which then exists: the columns up to i + 2
-    // are in the raster): a well-predicted branch beats five stores.
-    if (shift > 59) {
-      std::uint64_t* const next = words + rows_;
-      for (int e = 0; e < 5; ++e) next[e] |= masks[e] >> (64 - shift);
-    }
+  std::vector<std::uint64_t> release_storage() noexcept {
+    bind({});
+    return std::move(storage_);
   }
-  [[nodiscard]] bool at(FxPoint centre) const noexcept {
-    Cell c;
-    if (!locate(centre, c)) return at_exact(centre);
-    if (c.i >= cols_ || c.j >= rows_) return false;
-    return bit(c.i, c.j);
-  }
-  [[nodiscard]] Fx cell() const noexcept {
-    return Fx::from_raw(static_cast<std::int32_t>(cell_));
-  }
-  [[nodiscard]] std::int64_t columns() const noexcept {
-    return cols_;
-  }
-  [[nodiscard]] std::int64_t rows() const noexcept {
-    return rows_;
-  }
-  [[nodiscard]] std::uint64_t marked() const;
-  // Same geometry and the same marked cells.
-  friend bool operator==(const PheromoneRaster&, const PheromoneRaster&) = default;
-
-  // The reference forms of lay() and at(): the plain loop over the disk's bounding cells with one
-  // exact test each, and floor divisions. The fast paths fall back to them near the raster's edge
-  // and the tests hold the fast paths against them.
-  void lay_exact(FxPoint centre) noexcept;
-  [[nodiscard]] bool at_exact(FxPoint centre) const noexcept;
 
 private:
-  struct Cell {
-    std::int64_t i, j;   // the cell holding the point
-    std::int64_t ox, oy; // the point's offset inside it, in [0, cell)
-  };
-  // Cell and offset of p when p is at or right of and above the raster's lower corner and less
-  // than 2^32 raw from it; false otherwise (then the exact forms decide). Division by the cell
-  // side by multiplication with floor(2^32 / cell): for n < 2^32 the product's high half is
-  // floor(n / cell) or one less, and one comparison corrects it (exact; no division per step).
-  bool locate(FxPoint p, Cell& out) const noexcept {
-    const std::int64_t cx = std::int64_t{p.x.raw()} - x0_, cy = std::int64_t{p.y.raw()} - y0_;
-    if (!fast_ || cx < 0 || cy < 0 || cx >= (std::int64_t{1} << 32) ||
-        cy >= (std::int64_t{1} << 32))
-      return false;
-    auto divide = [this](std::int64_t n, std::int64_t& q, std::int64_t& rest) {
-      q = static_cast<std::int64_t>((static_cast<std::uint64_t>(n) * reciprocal_) >> 32);
-      rest = n - q * cell_;
-      if (rest >= cell_) ++q, rest -= cell_;
-    };
-    divide(cx, out.i, out.ox);
-    divide(cy, out.j, out.oy);
-    return true;
-  }
-  // The word holding cell (i, j) (0 <= i < cols_, 0 <= j < rows_): column band i div 64, row j.
-  [[nodiscard]] std::size_t word_index(std::int64_t i, std::int64_t j) const noexcept {
-    return static_cast<std::size_t>((i >> 6) * rows_ + j);
-  }
-  [[nodiscard]] bool bit(std::int64_t i, std::int64_t j) const noexcept {
-    return ((bits_[word_index(i, j)] >> (i & 63)) & 1u) != 0;
-  }
-  bool narrow_; // (5 cell_)^2 and 4 r2_ below 2^31: lay() compares in 32-bit lanes
-
-  std::int64_t x0_, y0_, cell_, half_width_, cols_, rows_;
-  std::int64_t r2_;                 // half_width_ squared
-  std::uint64_t reciprocal_;        // floor(2^32 / cell_)
-  bool fast_;                       // 2 half_width_ < 5 cell_: the 5 x 5 fast path of lay() applies
-  std::vector<std::uint64_t> bits_; // column bands of 64 cells, each `rows_` words (see above)
+  std::vector<std::uint64_t> storage_;
 };
 
 // Wall encounters (issue 17, the bias correction of estimate.hpp): the number of times the robot
@@ -227,7 +139,7 @@ struct TrialParams {
   // With online_first_visit, when non-zero: the budget of both visits together. Visit 1 is capped
   // at half of it (the rule aims at equal visits, so a visit 1 that needs more leaves visit 2 too
   // little) and visit 2 at what visit 1 left; `steps` and visit2_steps are then not used. At most
-  // 100 000 000 (InputError "--max-steps" otherwise).
+  // 100 000 000 (InputError "step budget" otherwise).
   std::int64_t total_steps = 0;
 };
 
@@ -296,27 +208,6 @@ void check_visit_steps(std::int64_t steps);
 // Throws InputError("step budget") unless 2 <= steps <= 100000000 (a budget of both visits).
 void check_total_steps(std::int64_t steps);
 
-// The exact floor square root of a step's squared length n2, started from the commanded forward
-// distance (the step's length is within a few raw units of it) and corrected by +/- 1 per
-// iteration (isqrt64 was 15 % of a step's time).
-//
-// The root is almost always within two of f = |forward| (the step is forward times a rounded unit
-// vector, each coordinate rounded by half a raw unit), so it is first counted without branches
-// over the bracket [f - 2, f + 2): root = f - 2 + the number of k in {f - 1, f, f + 1} with
-// k^2 <= n2, which is exact whenever (f - 2)^2 <= n2 < (f + 2)^2 (checked; the loop takes the
-// rest). The data-dependent loop branches were mispredicted on a good share of the steps.
-inline std::uint64_t step_length_raw(std::uint64_t n2, Fx forward) noexcept {
-  if (n2 == 0) return 0;
-  auto root = static_cast<std::uint64_t>(kernel::abs(forward).raw());
-  if (root >= 2 && (root - 2) * (root - 2) <= n2 && n2 < (root + 2) * (root + 2)) {
-    return root - 2 + std::uint64_t{(root - 1) * (root - 1) <= n2} +
-           std::uint64_t{root * root <= n2} + std::uint64_t{(root + 1) * (root + 1) <= n2};
-  }
-  while (root * root > n2) --root;
-  while ((root + 1) * (root + 1) <= n2) ++root;
-  return root;
-}
-
 // floor(sqrt(n)) exactly, for n < 2^52: the binary64 root is within one of it (n and the
 // correctly rounded root are exact there), and the two loops make it exact; the double is only
 // the first guess, so the result is the same integer on every platform.
@@ -327,21 +218,15 @@ inline std::uint64_t exact_floor_sqrt(std::uint64_t n) noexcept {
   return r;
 }
 
-inline std::uint64_t hash_word(std::int32_t lo, std::int32_t hi) noexcept {
-  return static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) |
-         (static_cast<std::uint64_t>(static_cast<std::uint32_t>(hi)) << 32);
-}
 } // namespace detail
 
 template <class OnStep>
 VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t trial, int visit,
                    kernel::TraceHash& hash, OnStep&& on_step, std::vector<FxPoint> storage) {
   detail::check_visit_steps(params.steps);
-  const auto v = static_cast<std::uint64_t>(visit);
-  kernel::Stream start_stream(params.seed, params.experiment, trial, v, 1);
-  kernel::Stream noise(params.seed, params.experiment, trial, v, 2);
-  ExplorationBehaviour behaviour(kernel::Stream(params.seed, params.experiment, trial, v, 0));
-  Pose pose = world.start_pose(start_stream);
+  VisitStreams streams(params.seed, params.experiment, trial, visit);
+  ExplorationBehaviour behaviour(streams.behaviour);
+  Pose pose = world.start_pose(streams.start);
   VisitLog log;
   log.trail = std::move(storage);
   log.trail.clear();
@@ -359,21 +244,11 @@ VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t 
   };
   bool more = call(std::as_const(pose), Observation{});
   for (std::int64_t s = 0; more && s < params.steps; ++s) {
-    const Observation obs = world.sense(pose, &noise);
-    const Command cmd = behaviour.step(obs);
-    const FxPoint before = pose.position;
-    if (!world.move(pose, cmd)) ++log.blocked;
-    const std::int64_t dx = std::int64_t{pose.position.x.raw()} - before.x.raw();
-    const std::int64_t dy = std::int64_t{pose.position.y.raw()} - before.y.raw();
-    const Fx forward = world.body().speed * (cmd.left + cmd.right) * Fx::from_ratio(1, 2);
-    log.length_raw += static_cast<std::int64_t>(
-        detail::step_length_raw(static_cast<std::uint64_t>(dx * dx + dy * dy), forward));
+    const Observation obs =
+        visit_step(world, behaviour, pose, streams.noise, log.length_raw, log.blocked);
     log.trail.push_back(pose.position);
     more = call(std::as_const(pose), obs);
-    hash.add_u64(detail::hash_word(pose.position.x.raw(), pose.position.y.raw()));
-    hash.add_u64(
-        detail::hash_word(static_cast<std::int32_t>(pose.heading.raw()), behaviour.r().raw()));
-    hash.add_u64(detail::hash_word(behaviour.w_left().raw(), behaviour.w_right().raw()));
+    hash_visit_step(hash, pose, behaviour);
   }
   return log;
 }

@@ -37,7 +37,7 @@ inline constexpr std::int64_t kSwitchSteps = 1000;
 inline constexpr std::int64_t kNearPieces = 3;
 
 // One two-marker trial. Uses params.precision_millionths (required: throws InputError
-// "--precision" when 0), params.total_steps (the walk's cap; 0: 2 params.steps), seed, experiment,
+// "precision" when 0), params.total_steps (the walk's cap; 0: 2 params.steps), seed, experiment,
 // keep_trails. The result's visit fields describe the trails: length1_raw, steps1, trail1 are A's
 // (pieces 0, 2, 4, ...), length2_raw, steps2, trail2 B's (each piece's points from its first, the
 // pieces one after another, so a jump separates two pieces of one marker),

@@ -52,7 +52,8 @@
 //     the path is used up, or when the next cell holds a robot. A robot that finds no target
 //     around the other robots waits; after kPatience such ticks it steps to a random enterable
 //     neighbour (its own keyed stream, StreamPurpose::Unstick), as A* does in a standoff.
-//   * A sensor distance of 0 is refused (kernel::InputError, where "--sensor"): a robot that sees
+//   * A sensor distance of 0 is refused (kernel::InputError, where "sensor distance"): a robot that
+//   sees
 //     only its own cell has no frontier cell from which a new one is seen.
 //   * A step along the path turns the robot to face it for free: its moves are its steps.
 #include <antkit/frontier/frontier_map.hpp>
@@ -73,7 +74,7 @@ public:
   using Command = uniform::Command;
   static constexpr std::uint32_t kPatience = 3;
 
-  // Throws kernel::InputError (where "--sensor") when the world's sensor distance is 0.
+  // Throws kernel::InputError (where "sensor distance") when the world's sensor distance is 0.
   FrontierCoverage(std::uint64_t seed, std::uint64_t trial, const CoverageWorld& world,
                    frontier::Weights weights = {});
   Command step(const Observation& obs);

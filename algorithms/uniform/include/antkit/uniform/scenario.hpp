@@ -51,7 +51,7 @@ struct Pose {
                                            std::uint32_t density_ppm) noexcept;
 
 // A width x height grid with exactly obstacle_count(...) Blocked cells, the rest Free.
-// Throws kernel::InputError (where "--density") if density_ppm > kPpm.
+// Throws kernel::InputError (where "obstacle density") if density_ppm > kPpm.
 [[nodiscard]] kernel::OccupancyGrid random_obstacles(std::int32_t width, std::int32_t height,
                                                      std::uint32_t density_ppm, std::uint64_t seed,
                                                      std::uint64_t trial);
@@ -65,7 +65,7 @@ struct FreeComponents {
 };
 [[nodiscard]] FreeComponents free_components(const kernel::OccupancyGrid& map);
 
-// `robots` start poses as described above. Throws kernel::InputError (where "--robots") when the
+// `robots` start poses as described above. Throws kernel::InputError (where "robots") when the
 // component holds fewer free cells than robots, and (where "start") when `start` is off the map or
 // not Free, or when the map has no free cell.
 [[nodiscard]] std::vector<Pose> place_robots(const kernel::OccupancyGrid& map, std::size_t robots,
@@ -74,11 +74,12 @@ struct FreeComponents {
 
 // Parses an obstacle density, exactly: a decimal fraction in [0, 1] with at most six decimals
 // ("0.2", "0", "1", ".25") or a percentage in [0, 100] with at most four decimals ("20%",
-// "12.5%"); returns parts per million. Throws kernel::InputError (where "--density") otherwise.
+// "12.5%"); returns parts per million. Throws kernel::InputError (where "obstacle density")
+// otherwise.
 [[nodiscard]] std::uint32_t parse_density_ppm(std::string_view text);
 
 // Parses "WxH" (or "WXH"): two decimal integers in [1, max_side]; throws kernel::InputError
-// (where "--size") otherwise.
+// (where "map size") otherwise.
 [[nodiscard]] std::pair<std::int32_t, std::int32_t> parse_size(std::string_view text,
                                                                std::int32_t max_side);
 

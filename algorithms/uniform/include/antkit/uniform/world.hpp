@@ -49,7 +49,7 @@ public:
     std::uint32_t count = 0;
   };
 
-  // Throws kernel::InputError (where "--sensor") unless 0 <= range <= kMaxSensorRange.
+  // Throws kernel::InputError (where "sensor distance") unless 0 <= range <= kMaxSensorRange.
   explicit SensorFootprint(std::int32_t range);
 
   [[nodiscard]] std::int32_t range() const noexcept { return range_; }

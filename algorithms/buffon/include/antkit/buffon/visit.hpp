@@ -1,0 +1,78 @@
+#pragma once
+// One step of a Buffon visit (measurement.hpp, run_visit): sense, decide, move, measure, hash.
+// Freestanding (issue 27): the host's run_visit and the Cortex-M image (mcu/src/buffon_run.cpp)
+// call these same inline functions, so that the chip's trace hash is the host's by construction.
+#include <antkit/buffon/exploration.hpp>
+#include <antkit/buffon/world.hpp>
+#include <antkit/kernel/hash.hpp>
+#include <antkit/kernel/random.hpp>
+#include <cstdint>
+
+namespace antkit::buffon {
+
+// The experiment number of this family's streams (issue 4).
+inline constexpr std::uint64_t kExperiment = 4;
+
+// Visit v (1, 2) of trial t draws its behaviour from Stream(seed, experiment, t, v, 0), its start
+// heading from purpose 1 and its IR noise from purpose 2 (measurement.hpp).
+struct VisitStreams {
+  kernel::Stream behaviour, start, noise;
+  VisitStreams(std::uint64_t seed, std::uint64_t experiment, std::uint64_t trial,
+               int visit) noexcept
+      : behaviour(seed, experiment, trial, static_cast<std::uint64_t>(visit), 0),
+        start(seed, experiment, trial, static_cast<std::uint64_t>(visit), 1),
+        noise(seed, experiment, trial, static_cast<std::uint64_t>(visit), 2) {}
+};
+
+namespace detail {
+// The exact floor square root of a step's squared length n2, started from the commanded forward
+// distance (the step's length is within a few raw units of it) and corrected by +/- 1 per
+// comparison: root = f - 2 + the number of k in {f - 1, f, f + 1} with
+// k^2 <= n2, which is exact whenever (f - 2)^2 <= n2 < (f + 2)^2 (checked; the loop takes the
+// rest). The data-dependent loop branches were mispredicted on a good share of the steps.
+inline std::uint64_t step_length_raw(std::uint64_t n2, Fx forward) noexcept {
+  if (n2 == 0) return 0;
+  auto root = static_cast<std::uint64_t>(kernel::abs(forward).raw());
+  if (root >= 2 && (root - 2) * (root - 2) <= n2 && n2 < (root + 2) * (root + 2)) {
+    return root - 2 + std::uint64_t{(root - 1) * (root - 1) <= n2} +
+           std::uint64_t{root * root <= n2} + std::uint64_t{(root + 1) * (root + 1) <= n2};
+  }
+  while (root * root > n2) --root;
+  while ((root + 1) * (root + 1) <= n2) ++root;
+  return root;
+}
+
+inline std::uint64_t hash_word(std::int32_t lo, std::int32_t hi) noexcept {
+  return static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) |
+         (static_cast<std::uint64_t>(static_cast<std::uint32_t>(hi)) << 32);
+}
+} // namespace detail
+
+// One step: the readings at `pose` (with the body's noise from `noise`), the behaviour's command,
+// the move (a blocked translation counts in `blocked`) and the step's exact length added to
+// `length_raw`. Returns the readings the behaviour acted on.
+inline Observation visit_step(const WorldCore& world, ExplorationBehaviour& behaviour, Pose& pose,
+                              kernel::Stream& noise, std::int64_t& length_raw,
+                              std::uint64_t& blocked) {
+  const Observation obs = world.sense(pose, &noise);
+  const Command cmd = behaviour.step(obs);
+  const FxPoint before = pose.position;
+  if (!world.move(pose, cmd)) ++blocked;
+  const std::int64_t dx = std::int64_t{pose.position.x.raw()} - before.x.raw();
+  const std::int64_t dy = std::int64_t{pose.position.y.raw()} - before.y.raw();
+  const Fx forward = world.body().speed * (cmd.left + cmd.right) * Fx::from_ratio(1, 2);
+  length_raw += static_cast<std::int64_t>(
+      detail::step_length_raw(static_cast<std::uint64_t>(dx * dx + dy * dy), forward));
+  return obs;
+}
+
+// The step's share of the trace hash: (x, y), (heading, r), (w_l, w_r) as 64-bit words.
+inline void hash_visit_step(kernel::TraceHash& hash, const Pose& pose,
+                            const ExplorationBehaviour& behaviour) {
+  hash.add_u64(detail::hash_word(pose.position.x.raw(), pose.position.y.raw()));
+  hash.add_u64(
+      detail::hash_word(static_cast<std::int32_t>(pose.heading.raw()), behaviour.r().raw()));
+  hash.add_u64(detail::hash_word(behaviour.w_left().raw(), behaviour.w_right().raw()));
+}
+
+} // namespace antkit::buffon

@@ -1,0 +1,68 @@
+// One Buffon trial on the robot's own processor (issue 27): trial 0 of `antkit buffon --trials 1`,
+// from the same sources as the host. The host sends the arena as its Q15.16 walls
+// (buffon/mcu_input.hpp); the chip reads them into its arena and runs run_fixed_trial
+// (buffon/fixed_trial.hpp: the world's buckets, the behaviour, the pheromone raster, the detector,
+// the exact crossing count and run_trial's trace hash) in the rest of it.
+#include "buffon_run.hpp"
+
+#include "semihost.hpp"
+#include "text.hpp"
+#include "ticks.hpp"
+
+#include <antkit/buffon/fixed_trial.hpp>
+#include <antkit/buffon/mcu_input.hpp>
+
+namespace antkit::mcu {
+
+using namespace antkit::buffon;
+
+int run_buffon(const char* path, std::int32_t file, std::int32_t size, const std::uint8_t* head,
+               std::size_t got, std::uint8_t* arena, std::size_t bytes) {
+  McuBuffonRun run;
+  if (const McuBuffonError e = read_mcu_buffon_header(head, got, run); e != McuBuffonError::None)
+    return refuse(path, describe(e));
+  if (size < 0 || static_cast<std::uint64_t>(size) !=
+                      kMcuBuffonHeaderBytes + std::uint64_t{run.walls} * kMcuWallBytes)
+    return refuse(path, "its length is not the header and its walls");
+  // The walls, as FxSegment, at the arena's start: the bytes already read, then the file's, in
+  // pieces of 64 walls.
+  auto* walls = reinterpret_cast<FxSegment*>(arena);
+  {
+    std::uint8_t piece[64 * kMcuWallBytes];
+    std::size_t have = got - kMcuBuffonHeaderBytes;
+    for (std::size_t k = 0; k < have; ++k) piece[k] = head[kMcuBuffonHeaderBytes + k];
+    std::size_t done = 0;
+    while (done < run.walls) {
+      const std::size_t want =
+          (run.walls - done < 64 ? run.walls - done : 64) * kMcuWallBytes - have;
+      if (mcu::read(file, piece + have, want) != want) return refuse(path, "ends inside the walls");
+      const std::size_t n = (have + want) / kMcuWallBytes;
+      for (std::size_t i = 0; i < n; ++i) walls[done + i] = read_mcu_wall(piece, i);
+      done += n;
+      have = 0;
+    }
+  }
+  const std::size_t from = static_cast<std::size_t>(mcu_walls_bytes(run.walls));
+  mcu::ticks_start();
+  FixedTrialResult r;
+  if (const char* why = run_fixed_trial({walls, run.walls}, run.body, run.width, run.seed, 0,
+                                        run.steps, {arena + from, bytes - from}, r))
+    return refuse(path, why);
+  const std::uint64_t ticks = mcu::ticks_now();
+  Text t;
+  t << "{\"steps\": " << run.steps << ", \"seed\": ";
+  t.u64(run.seed) << ", \"trials\": [{\"trial\": 0, \"bc\": ";
+  t.u64(r.bc) << ", \"length1_raw\": " << r.length1_raw << ", \"length2_raw\": " << r.length2_raw
+              << ", \"crossings_exact\": ";
+  t.u64(r.crossings_exact) << ", \"blocked\": ";
+  t.u64(r.blocked) << ", \"hash\": \"";
+  t.hex(r.hash) << "\"}], \"walls\": " << std::int64_t{run.walls}
+                << ", \"arena_bytes\": " << static_cast<std::int64_t>(from + r.bytes)
+                << ", \"arena_limit\": " << static_cast<std::int64_t>(bytes)
+                << ", \"moves\": " << 2 * run.steps
+                << ", \"ticks\": " << static_cast<std::int64_t>(ticks) << "}\n";
+  t.flush();
+  return 0;
+}
+
+} // namespace antkit::mcu
