@@ -182,11 +182,32 @@ void legend_entry(cairo_t* cr, double lx, double ly, const PlotSeries& s) {
     cairo_line_to(cr, lx + 30, ly);
     cairo_stroke(cr);
     cairo_set_dash(cr, nullptr, 0, 0);
-    cairo_arc(cr, lx + 18, ly, 3.5, 0, 2 * M_PI);
-    cairo_fill(cr);
+    if (!s.no_marker) {
+      cairo_arc(cr, lx + 18, ly, 3.5, 0, 2 * M_PI);
+      cairo_fill(cr);
+    }
   }
   cairo_set_source_rgb(cr, 0, 0, 0);
   text(cr, lx + 36, ly, s.name, kFont, 0, 0.5);
+}
+
+// The reference lines of a panel: its own, and the figure's when it shares the figure's y axis.
+std::vector<PlotMark> marks_of(const Figure& f, const PlotPanel& panel) {
+  std::vector<PlotMark> marks = panel.marks;
+  if (!panel.y_axis) marks.insert(marks.end(), f.marks.begin(), f.marks.end());
+  return marks;
+}
+
+// A panel's legend: its entries (or its series), then its reference lines labelled in the legend.
+std::vector<PlotSeries> legend_of(const Figure& f, const PlotPanel& panel) {
+  std::vector<PlotSeries> entries = panel.legend.empty() ? panel.series : panel.legend;
+  for (const auto& m : marks_of(f, panel))
+    if (m.in_legend && !m.label.empty()) {
+      PlotSeries line{m.label, m.colour, true, false, {}};
+      line.no_marker = true;
+      entries.push_back(std::move(line));
+    }
+  return entries;
 }
 
 std::size_t caption_line_count(const std::string& caption) {
@@ -219,7 +240,7 @@ Layout layout(const Figure& f) {
   std::size_t panel_legend = 0;
   if (f.legend.empty())
     for (const auto& p : f.panels)
-      panel_legend = std::max(panel_legend, legend_rows(p.legend.empty() ? p.series : p.legend));
+      panel_legend = std::max(panel_legend, legend_rows(legend_of(f, p)));
   l.below =
       kBelowPlot + (panel_legend > 0 ? 8 + kLegendRow * static_cast<double>(panel_legend) : 0);
   double y = l.plot_top(l.rows - 1) + kPlot + l.below;
@@ -319,7 +340,7 @@ void draw(cairo_t* cr, const Figure& f, const Layout& l) {
       text(cr, x0 - 6, py(v), label, kFont, 1, 0.5);
     }
     // Reference lines, dashed: the figure's unlabelled ones (e.g. the true value), then the
-    // labelled ones, their label above the line's right end.
+    // labelled ones (their labels are drawn over the series, below).
     const double dash[] = {3, 3};
     for (const double v : f.y_marks)
       if (!panel.y_axis) {
@@ -327,8 +348,7 @@ void draw(cairo_t* cr, const Figure& f, const Layout& l) {
         grid_line(x0, py(v), x1, py(v), 0.25);
         cairo_set_dash(cr, nullptr, 0, 0);
       }
-    std::vector<PlotMark> marks = panel.marks;
-    if (!panel.y_axis) marks.insert(marks.end(), f.marks.begin(), f.marks.end());
+    const std::vector<PlotMark> marks = marks_of(f, panel);
     for (const auto& m : marks) {
       const Rgb c = rgb(m.colour);
       const double dash_long[] = {7, 4};
@@ -339,20 +359,6 @@ void draw(cairo_t* cr, const Figure& f, const Layout& l) {
       cairo_line_to(cr, x1, py(m.y));
       cairo_stroke(cr);
       cairo_set_dash(cr, nullptr, 0, 0);
-      if (!m.label.empty()) {
-        // On a white ground, so that a bar or a line behind it does not cross it out.
-        cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                               CAIRO_FONT_WEIGHT_NORMAL);
-        cairo_set_font_size(cr, 11);
-        cairo_text_extents_t e;
-        cairo_text_extents(cr, m.label.c_str(), &e);
-        const double tx = m.label_left ? x0 + 5 : x1 - 5 - e.width;
-        cairo_set_source_rgb(cr, 1, 1, 1);
-        cairo_rectangle(cr, tx - 2, py(m.y) - 17, e.width + 4, 14);
-        cairo_fill(cr);
-        cairo_set_source_rgb(cr, c.r, c.g, c.b);
-        text(cr, tx, py(m.y) - 5, m.label, 11, 0, 1);
-      }
     }
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_set_line_width(cr, 1.2);
@@ -424,13 +430,29 @@ void draw(cairo_t* cr, const Figure& f, const Layout& l) {
         }
     }
     cairo_restore(cr);
+    // The reference lines' labels over the series, on a white ground, so that a bar or a line
+    // behind one does not cross it out.
+    for (const auto& m : marks) {
+      if (m.label.empty() || m.in_legend) continue;
+      cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+      cairo_set_font_size(cr, 11);
+      cairo_text_extents_t e;
+      cairo_text_extents(cr, m.label.c_str(), &e);
+      const double tx = m.label_left ? x0 + 5 : x1 - 5 - e.width;
+      cairo_set_source_rgb(cr, 1, 1, 1);
+      cairo_rectangle(cr, tx - 2, py(m.y) - 17, e.width + 4, 14);
+      cairo_fill(cr);
+      const Rgb c = rgb(m.colour);
+      cairo_set_source_rgb(cr, c.r, c.g, c.b);
+      text(cr, tx, py(m.y) - 5, m.label, 11, 0, 1);
+    }
     if (!panel.note.empty()) {
       cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
       text(cr, x0 + 8, y0 + 12, panel.note, 11, 0, 0.5);
     }
     if (!f.legend.empty()) continue;
     // The panel's legend below its x label, in two columns, so that it never hides a point.
-    const auto& entries = panel.legend.empty() ? panel.series : panel.legend;
+    const auto entries = legend_of(f, panel);
     const std::size_t per_column = std::max<std::size_t>(1, legend_rows(entries));
     for (std::size_t i = 0; i < entries.size(); ++i) {
       const double lx = x0 - 40 + (i < per_column ? 0.0 : (x1 - x0 + 40) / 2);

@@ -25,6 +25,7 @@ struct PlotSeries {
   bool dashed = false;
   bool hollow = false; // open markers (and no line)
   std::vector<PlotPoint> points;
+  bool no_marker{}; // a legend entry that is a line only (a reference line's)
 };
 
 enum class Axis { Linear, Log };
@@ -35,6 +36,7 @@ struct PlotMark {
   std::string label{};
   std::string colour = "#404040";
   bool label_left{}; // the label above the left end (else the right end)
+  bool in_legend{};  // the label in the legend, beside a dashed line, instead of on the plot
 };
 
 struct PlotPanel {
