@@ -446,6 +446,7 @@ Figure figure14_plot(const Figure14& f) {
     buffon_panel.series.push_back(std::move(b));
     rs_panel.series.push_back(std::move(r));
   }
+  fig.legend = buffon_panel.series; // the same circles in both panels: one legend
   fig.panels = {std::move(buffon_panel), std::move(rs_panel)};
   return fig;
 }
