@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -157,6 +158,37 @@ ticks(const Scale& sc, const std::vector<std::string>& categories, std::vector<d
   return major;
 }
 
+// Which labels of an x axis to draw: the decades' (a log axis' labels that start with "1") and
+// every other that does not overlap one already placed, so that a short log axis labelled at
+// 1, 2 and 5 never runs its wide numbers together.
+template <class Px>
+std::vector<bool> shown_x_labels(cairo_t* cr,
+                                 const std::vector<std::pair<double, std::string>>& major,
+                                 const Px& px, double size) {
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+  std::vector<std::pair<double, double>> spans; // left, right of each label
+  for (const auto& [v, label] : major) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, label.c_str(), &e);
+    spans.emplace_back(px(v) - e.width / 2, px(v) + e.width / 2);
+  }
+  std::vector<bool> shown(major.size(), false);
+  const auto fits = [&](std::size_t i) {
+    for (std::size_t j = 0; j < major.size(); ++j)
+      if (shown[j] && spans[i].first < spans[j].second + 8 && spans[j].first < spans[i].second + 8)
+        return false;
+    return true;
+  };
+  for (const bool decades : {true, false})
+    for (std::size_t i = 0; i < major.size(); ++i) {
+      const bool decade = !major[i].second.empty() && major[i].second[0] == '1' &&
+                          major[i].second.find_first_not_of("10 .") == std::string::npos;
+      if (decade == decades && !shown[i] && fits(i)) shown[i] = true;
+    }
+  return shown;
+}
+
 // A legend's entries in two columns, unless a name would run into the second (about 26
 // characters fit): the rows of the first column.
 std::size_t legend_rows(const std::vector<PlotSeries>& entries) {
@@ -248,6 +280,7 @@ Layout layout(const Figure& f) {
     l.legend_columns =
         std::clamp<std::size_t>(static_cast<std::size_t>(l.width / 250), 1, f.legend.size());
     const std::size_t rows = (f.legend.size() + l.legend_columns - 1) / l.legend_columns;
+    l.legend_columns = (f.legend.size() + rows - 1) / rows; // the columns the rows need
     l.legend_top = y + 8 + kLegendRow / 2;
     y += 8 + kLegendRow * static_cast<double>(rows);
   }
@@ -301,7 +334,20 @@ void draw(cairo_t* cr, const Figure& f, const Layout& l) {
   const Scale shared_y = y_scale(f, nullptr);
   cairo_set_source_rgb(cr, 0, 0, 0);
   text(cr, l.width / 2, 22, f.title, 17, 0.5, 0.5, true);
-  detail::caption_lines(cr, f.caption, l.width / 2, l.caption_bottom, kFont);
+  // The caption at 12 px, smaller if its longest line would not fit the picture's width.
+  double caption_size = kFont;
+  {
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, kFont);
+    std::istringstream lines(f.caption);
+    for (std::string line; std::getline(lines, line);) {
+      cairo_text_extents_t e;
+      cairo_text_extents(cr, line.c_str(), &e);
+      if (e.width > l.width - 16)
+        caption_size = std::min(caption_size, kFont * (l.width - 16) / e.width);
+    }
+  }
+  detail::caption_lines(cr, f.caption, l.width / 2, l.caption_bottom, caption_size);
   std::vector<double> x_minor;
   const auto x_major = ticks(xr, f.x_categories, x_minor);
   for (std::size_t k = 0; k < f.panels.size(); ++k) {
@@ -328,9 +374,13 @@ void draw(cairo_t* cr, const Figure& f, const Layout& l) {
     // Category labels may be long: a smaller font, and every label on its own half-line when
     // there are many.
     const bool tight = !f.x_categories.empty() && f.x_categories.size() > 4;
+    // On a log axis the 2 and 5 labels give way to the decades' where they would overlap.
+    const auto x_shown =
+        xr.log ? shown_x_labels(cr, x_major, px, kFont) : std::vector<bool>(x_major.size(), true);
     for (std::size_t i = 0; i < x_major.size(); ++i) {
       const auto& [v, label] = x_major[i];
       grid_line(px(v), y0, px(v), y1, 0.80);
+      if (!x_shown[i]) continue;
       cairo_set_source_rgb(cr, 0, 0, 0);
       text(cr, px(v), y1 + 7 + (tight && i % 2 == 1 ? 13 : 0), label, tight ? 10.5 : kFont, 0.5, 0);
     }
