@@ -125,15 +125,16 @@ Figure buffon_cost_plot(const BuffonCost& c) {
         if (!s.points.empty()) panel.series.push_back(std::move(s));
       }
     }
-    // Colour is the method, style the arena family.
-    panel.legend = {{"Buffon, two markers", "#1f5fbf", false, false, {}},
-                    {"Buffon, online first visit", "#2a9d3a", false, false, {}},
-                    {"RS coverage", "#c8321e", false, false, {}},
-                    {"circles (solid)", "#555555", false, false, {}},
-                    {"squares (dashed)", "#555555", true, false, {}},
-                    {"Figure 3 shapes, 7854 (open)", "#555555", false, true, {}}};
     figure.panels.push_back(std::move(panel));
   }
+  // One legend for the panels: colour is the method, style the arena family (filled column by
+  // column, two rows: the methods on the first, the families on the second).
+  figure.legend = {{"Buffon, two markers", "#1f5fbf", false, false, {}},
+                   {"circles (solid)", "#555555", false, false, {}},
+                   {"Buffon, online first visit", "#2a9d3a", false, false, {}},
+                   {"squares (dashed)", "#555555", true, false, {}},
+                   {"RS coverage", "#c8321e", false, false, {}},
+                   {"Figure 3 shapes, 7854 (open)", "#555555", false, true, {}}};
   return figure;
 }
 

@@ -9,7 +9,9 @@
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace antkit::experiments {
@@ -144,6 +146,55 @@ std::string buffon_figure_csv(const BuffonFigure& f) {
   return csv.str();
 }
 
+namespace {
+
+// Buffon's efficiency of each trial, nBC pi A / (2 L1): 1 for an ideal needle count, below where
+// the trails blend; the figure's point is the efficiency at the medians (as claims 000-4 and 000-10
+// read it), its bar the interquartile range of the trials'.
+PlotPoint efficiency_point(const BuffonFigureRow& r) {
+  std::vector<double> e;
+  for (std::size_t t = 0; t < r.nbc_trials.size() && t < r.length1_trials.size(); ++t)
+    if (r.length1_trials[t] > 0)
+      e.push_back(r.nbc_trials[t] * M_PI * r.area / (2 * r.length1_trials[t]));
+  PlotPoint p{r.arena.x, r.efficiency, std::nullopt, std::nullopt};
+  if (!e.empty()) p.lo = buffon::quantile(e, 0.25), p.hi = buffon::quantile(e, 0.75);
+  return p;
+}
+
+// Figures 5 and 9: sizes that span a decade, so nBC (which falls as 1 / area) on log axes, and
+// beside it the efficiency, linear, with the 0.9 threshold at which claims 000-4 and 000-10 call a
+// circle blended.
+void nbc_and_efficiency(Figure& fig, PlotPanel& nbc, const BuffonFigure& f) {
+  fig.x_axis = Axis::Log;
+  fig.y_axis = Axis::Log;
+  nbc.title = "nBC (log axes)";
+  PlotPanel eff;
+  eff.title = "Buffon efficiency nBC π A / (2 L1)";
+  eff.y_axis = Axis::Linear;
+  eff.y_label = "efficiency (1: no blending)";
+  eff.y_from_zero = true;
+  eff.marks.push_back({0.9, "0.9 (000-4, 000-10)", "#b00000", true});
+  for (const auto& s : nbc.series) {
+    PlotSeries e = s;
+    e.points.clear();
+    for (const auto& r : f.rows)
+      if (r.arena.series == s.name) e.points.push_back(efficiency_point(r));
+    eff.series.push_back(std::move(e));
+  }
+  // Buffon's ideal count for the first series (the circles), 2 L1 / (pi A) at the median L1: where
+  // nBC falls below it the trails blend.
+  PlotSeries ideal{"no blending: 2 L1 / (π A)", "#606060", true, false, {}};
+  for (const auto& r : f.rows)
+    if (r.arena.series == nbc.series.front().name && r.area > 0)
+      ideal.points.push_back(
+          {r.arena.x, 2 * r.length1_median / (M_PI * r.area), std::nullopt, std::nullopt});
+  nbc.series.push_back(std::move(ideal));
+  fig.legend = nbc.series; // one legend for both panels
+  fig.panels = {nbc, std::move(eff)};
+}
+
+} // namespace
+
 Figure buffon_figure_plot(const BuffonFigure& f) {
   Figure fig;
   PlotPanel panel;
@@ -158,46 +209,78 @@ Figure buffon_figure_plot(const BuffonFigure& f) {
     for (const auto& r : f.rows)
       if (r.arena.series == names[s])
         series.points.push_back({r.arena.x, r.nbc_median, r.nbc_q1, r.nbc_q3});
-    // A single point (Figure 7's arena without a barrier) is a reference: drawn as a line across.
-    if (series.points.size() == 1 && f.params.figure == 7) {
-      fig.y_marks.push_back(series.points[0].y);
-      series.name += " (dashed line)";
-      series.hollow = true;
-    }
     panel.series.push_back(std::move(series));
   }
   const std::string trials = std::to_string(f.params.trials) + " trials per arena, " +
                              std::to_string(f.params.steps) + " steps per visit";
   fig.y_label = "nBC (Buffon crossings per unit of visit 2)";
+  fig.caption = "Median nBC with interquartile bars; " + trials + ", seed " +
+                std::to_string(f.params.seed) + ".";
+  // The standard circle's median nBC, the paper's baseline in Figures 6, 7 and 8.
+  std::optional<double> baseline;
+  for (const auto& r : f.rows)
+    if (r.arena.spec == "standard") baseline = r.nbc_median;
+  const auto baseline_mark = [&](const std::string& label) {
+    return PlotMark{*baseline, label, "#404040", false, true};
+  };
   switch (f.params.figure) {
   case 5:
     fig.title = "Paper 000, Figure 5: nBC of circles and squares";
-    fig.x_label = "diameter of the circle (square: same area), robot diameters";
-    break;
-  case 6:
-    fig.title = "Paper 000, Figure 6: nBC against compactness";
-    fig.x_label = "compactness r1 / r2 (1: the standard circle; ellipses of the same area)";
-    break;
-  case 7:
-    fig.title = "Paper 000, Figure 7: barriers in the standard arena";
-    fig.x_label = "barrier length, % of the diameter";
-    break;
-  case 8:
-    fig.title = "Paper 000, Figure 8: holes and obstacles";
-    fig.x_label = "arena";
-    for (const auto& r : f.rows) fig.x_categories.push_back(r.arena.series);
-    for (auto& s : panel.series) s.hollow = false;
-    break;
+    fig.x_label = "diameter d, robot diameters (squares: same area)";
+    nbc_and_efficiency(fig, panel, f);
+    fig.caption = "Medians with interquartile bars; " + trials + ", seed " +
+                  std::to_string(f.params.seed) +
+                  ".\nLeft: nBC falls as 1 / area, so log axes keep every size apart; the dashed "
+                  "line is the count without blending.\nRight: nBC over that count; below 0.9 (red "
+                  "line) the trails blend. The paper gives Figure 5 as a plot, no numbers.";
+    return fig;
   case 9:
     fig.title = "Paper 000, Figure 9: trail width";
     fig.x_label = "diameter of the circle, robot diameters";
+    nbc_and_efficiency(fig, panel, f);
+    fig.panels[0].series.pop_back(); // one ideal line per width would crowd the panel
+    fig.legend.pop_back();
+    fig.caption = "Medians with interquartile bars; " + trials + ", seed " +
+                  std::to_string(f.params.seed) +
+                  ".\nLeft: nBC on log axes. Right: efficiency; below 0.9 (red line) the trails "
+                  "blend,\nup to a larger circle for a wider trail (claim 000-10). The paper gives "
+                  "Figure 9 as a plot, no numbers.";
+    return fig;
+  case 6:
+    fig.title = "Paper 000, Figure 6: nBC against compactness";
+    fig.x_label = "compactness r1 / r2 (1: the standard circle; ellipses of the same area)";
+    for (auto& series : panel.series)
+      if (series.name == "ellipse")
+        for (std::size_t i = 0; i < series.points.size(); ++i) {
+          // The eccentricity back from the compactness: e = sqrt(1 - (r2 / r1)^2).
+          const double c = series.points[i].x;
+          char label[32];
+          std::snprintf(label, sizeof label, "e = %.3f", std::sqrt(1 - 1 / (c * c)));
+          series.points[i].label = label;
+        }
+    if (baseline) panel.marks.push_back(baseline_mark("baseline: standard circle"));
+    fig.caption += "\nThe dashed line is the paper's baseline, the standard circle's median nBC.";
     break;
-  default:
-    break;
+  case 7: {
+    fig.title = "Paper 000, Figure 7: barriers in the standard arena";
+    fig.x_label = "barrier length, % of the diameter";
+    // Figures 7a and 7b: one panel per barrier shape, the arena without a barrier as the dashed
+    // baseline in both.
+    PlotPanel i_panel{"Figure 7a: I-shaped barrier", "", {}, {}};
+    PlotPanel plus_panel{"Figure 7b: plus-shaped barrier", "", {}, {}};
+    for (auto& series : panel.series) {
+      if (series.name == "barrier-i") i_panel.series.push_back(series);
+      if (series.name == "barrier-plus") plus_panel.series.push_back(series);
+    }
+    if (baseline) fig.marks.push_back(baseline_mark("baseline: no barrier"));
+    fig.caption += "\nThe dashed line is the paper's baseline, the standard circle's median nBC.";
+    fig.panels = {std::move(i_panel), std::move(plus_panel)};
+    return fig;
   }
-  fig.caption = "Median nBC with interquartile bars; " + trials + ", seed " +
-                std::to_string(f.params.seed) + ".";
-  if (f.params.figure == 8) {
+  case 8: {
+    fig.title = "Paper 000, Figure 8: holes and obstacles";
+    fig.x_label = "arena";
+    for (const auto& r : f.rows) fig.x_categories.push_back(r.arena.series);
     // Categories share one series so that each arena is one point.
     PlotSeries one;
     one.name = "median nBC";
@@ -207,22 +290,12 @@ Figure buffon_figure_plot(const BuffonFigure& f) {
           {static_cast<double>(i), f.rows[i].nbc_median, f.rows[i].nbc_q1, f.rows[i].nbc_q3});
     one.hollow = true;
     panel.series.assign(1, std::move(one));
+    if (baseline) panel.marks.push_back(baseline_mark("baseline: standard circle"));
+    fig.caption += "\nThe dashed line is the standard circle's median nBC, as in Figures 6 and 7.";
+    break;
   }
-  if (f.params.figure == 7) {
-    // Figures 7a and 7b: one panel per barrier shape, the arena without a barrier as the dashed
-    // reference line in both.
-    PlotPanel i_panel{"Figure 7a: I-shaped barrier", "", {}, {}};
-    PlotPanel plus_panel{"Figure 7b: plus-shaped barrier", "", {}, {}};
-    for (auto& series : panel.series) {
-      if (series.name == "barrier-i") i_panel.series.push_back(series);
-      if (series.name == "barrier-plus") plus_panel.series.push_back(series);
-    }
-    for (auto* p : {&i_panel, &plus_panel}) {
-      PlotSeries none{"no barrier (dashed line)", "#606060", true, false, {}};
-      p->legend = {p->series.front(), none};
-    }
-    fig.panels = {std::move(i_panel), std::move(plus_panel)};
-    return fig;
+  default:
+    break;
   }
   fig.panels.push_back(std::move(panel));
   return fig;
@@ -233,19 +306,22 @@ Figure buffon_figure5b_plot(const BuffonFigure& f) {
   fig.title = "Paper 000, Figure 5b: squares against circles of the same area";
   fig.x_label = "median nBC of the circle";
   fig.y_label = "median nBC of the square";
-  fig.caption = "One point per diameter (10 to 100), interquartile bars of the square; the dashed "
-                "line is y = x (equal nBC).\n" +
+  fig.x_axis = Axis::Log;
+  fig.y_axis = Axis::Log;
+  fig.caption = "One point per diameter d, interquartile bars of the square; the dashed line is "
+                "y = x (equal nBC).\nLog axes: nBC falls as 1 / area, so the larger arenas are "
+                "spread out instead of crowding one corner.\n" +
                 std::to_string(f.params.trials) + " trials per arena, seed " +
                 std::to_string(f.params.seed) + ".";
   PlotPanel panel;
-  PlotSeries points{"diameter 10 to 100", kColours[0], false, true, {}};
+  PlotSeries points{"one diameter, d = 10 to 100", kColours[0], false, true, {}};
   double lo = 1e300, hi = 0;
   for (const auto& circle : f.rows) {
     if (circle.arena.series != "circle") continue;
     for (const auto& square : f.rows)
       if (square.arena.series == "square" && square.arena.x == circle.arena.x) {
-        points.points.push_back(
-            {circle.nbc_median, square.nbc_median, square.nbc_q1, square.nbc_q3});
+        points.points.push_back({circle.nbc_median, square.nbc_median, square.nbc_q1, square.nbc_q3,
+                                 "d=" + number(circle.arena.x)});
         lo = std::min({lo, circle.nbc_median, square.nbc_median});
         hi = std::max({hi, circle.nbc_median, square.nbc_median});
       }
@@ -370,6 +446,7 @@ Figure figure14_plot(const Figure14& f) {
     buffon_panel.series.push_back(std::move(b));
     rs_panel.series.push_back(std::move(r));
   }
+  fig.legend = buffon_panel.series; // the same circles in both panels: one legend
   fig.panels = {std::move(buffon_panel), std::move(rs_panel)};
   return fig;
 }

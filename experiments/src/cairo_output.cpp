@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cairo-svg.h>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fontconfig/fontconfig.h>
@@ -86,13 +87,16 @@ void text(cairo_t* cr, double x, double y, const std::string& s, double size, do
   cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
                          bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, size);
-  cairo_text_extents_t e;
+  cairo_text_extents_t e, cap;
   cairo_text_extents(cr, s.c_str(), &e);
-  cairo_move_to(cr, x - align_x * e.width - e.x_bearing, y - align_y * e.height - e.y_bearing);
+  // Vertically the box is the capitals' height, whatever the letters: texts side by side (a
+  // legend's names, with and without descenders) share one baseline.
+  cairo_text_extents(cr, "H", &cap);
+  cairo_move_to(cr, x - align_x * e.width - e.x_bearing, y + (1 - align_y) * cap.height);
   cairo_show_text(cr, s.c_str());
 }
 
-void caption_lines(cairo_t* cr, const std::string& caption, double cx, double bottom) {
+void caption_lines(cairo_t* cr, const std::string& caption, double cx, double bottom, double size) {
   std::vector<std::string> lines{""};
   for (const char ch : caption) {
     if (ch == '\n')
@@ -102,7 +106,8 @@ void caption_lines(cairo_t* cr, const std::string& caption, double cx, double bo
   }
   cairo_set_source_rgb(cr, 0, 0, 0);
   for (std::size_t i = 0; i < lines.size(); ++i)
-    text(cr, cx, bottom - 15 * static_cast<double>(lines.size() - 1 - i), lines[i], 11, 0.5, 0.5);
+    text(cr, cx, bottom - std::round(size * 1.36) * static_cast<double>(lines.size() - 1 - i),
+         lines[i], size, 0.5, 0.5);
 }
 
 Rgb rgb(const std::string& hex) {

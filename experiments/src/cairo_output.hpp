@@ -24,7 +24,8 @@ void text(cairo_t* cr, double x, double y, const std::string& s, double size, do
           double align_y, bool bold = false);
 
 // A caption, one line per '\n', centred on cx, its last line at height `bottom`.
-void caption_lines(cairo_t* cr, const std::string& caption, double cx, double bottom);
+void caption_lines(cairo_t* cr, const std::string& caption, double cx, double bottom,
+                   double size = 11);
 
 struct Rgb {
   double r, g, b;

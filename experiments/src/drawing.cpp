@@ -28,6 +28,15 @@ detail::Rgb along(double t) {
           stops[i][2] + f * (stops[i + 1][2] - stops[i][2])};
 }
 
+// The spanning tree's light grey: no hue of the tour's violet-to-yellow scale, lighter than the
+// blocked cells, darker than the free ones.
+constexpr detail::Rgb kTree{0.72, 0.72, 0.72};
+
+// The lines of a caption (one per '\n', plus one), for the room under a picture's legend.
+std::size_t line_count(const std::string& caption) {
+  return 1 + static_cast<std::size_t>(std::count(caption.begin(), caption.end(), '\n'));
+}
+
 // A white page with its title centred at height y.
 void page(cairo_t* cr, double width, double y, const std::string& title) {
   cairo_set_source_rgb(cr, 1, 1, 1);
@@ -55,7 +64,9 @@ void save_tour_figure(const kernel::OccupancyGrid& map, std::span<const kernel::
   const double w = map.width(), h = map.height();
   const double side = std::max(w, h);
   const double scale = std::clamp(760.0 / side, 1.0, 24.0);
-  const double top = 44, left = 20, legend = 150;
+  const std::size_t caption_rows = line_count(caption);
+  // Two legend rows, then the caption right under them: no empty band.
+  const double top = 44, left = 20, legend = 76 + 15 * static_cast<double>(caption_rows);
   const double width = std::max(w * scale + 2 * left, 640.0), height = top + h * scale + legend;
   const double ox = (width - w * scale) / 2;
   detail::render(
@@ -88,7 +99,7 @@ void save_tour_figure(const kernel::OccupancyGrid& map, std::span<const kernel::
         cairo_stroke(cr);
         // The spanning tree.
         std::set<std::pair<kernel::Cell, kernel::Cell>> edges;
-        cairo_set_source_rgba(cr, 0.11, 0.55, 0.20, 0.9);
+        cairo_set_source_rgb(cr, kTree.r, kTree.g, kTree.b);
         cairo_set_line_width(cr, std::max(1.0, 0.35 * scale));
         cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
         for (std::size_t i = 1; i < path.size(); ++i) {
@@ -132,7 +143,7 @@ void save_tour_figure(const kernel::OccupancyGrid& map, std::span<const kernel::
         }
         cairo_set_source_rgb(cr, 0, 0, 0);
         text(cr, lx + 126, ly, "tour, from start to end", 11, 0, 0.5);
-        legend_line(cr, lx + 290, ly, {0.11, 0.55, 0.20}, 4, "spanning tree (cell centres)");
+        legend_line(cr, lx + 290, ly, kTree, 4, "spanning tree (cell centres)");
         cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
         cairo_arc(cr, lx + 13, ly + 24, 5, 0, 2 * M_PI);
         cairo_fill(cr);
@@ -151,7 +162,10 @@ void save_tour_figure(const kernel::OccupancyGrid& map, std::span<const kernel::
 void save_trails_figure(const std::string& title, const std::string& caption,
                         const std::vector<TrailPanel>& panels, const std::filesystem::path& svg,
                         const std::filesystem::path& png) {
-  const double pw = 360, top = 50, inner = 320, bottom = 110;
+  const std::size_t caption_rows = line_count(caption);
+  // One legend row, then the caption right under it: no empty band.
+  const double pw = 360, top = 50, inner = 320,
+               bottom = 58 + 15 * static_cast<double>(caption_rows);
   const double width =
       std::max(pw * static_cast<double>(std::max<std::size_t>(1, panels.size())), 640.0);
   const double left = (width - pw * static_cast<double>(panels.size())) / 2;
@@ -217,8 +231,8 @@ GridLegend exploration_legend() {
               {"#fdd835", "S+LOS: both"},
               {"#1e88e5", "NLOS: maybe occupied"},
               {"#fb8c00", "O: occupied"}};
-  l.trails = {{"#d81b60", "robot A (wall follower), trail and position"},
-              {"#000000", "robot B, trail and position"}};
+  l.trails = {{"#00e5ff", "robot A (wall follower), trail and position", "#000000"},
+              {"#000000", "robot B, trail and position", "#ffffff"}};
   return l;
 }
 
@@ -227,9 +241,14 @@ void save_grid_figure(const std::string& title, const std::string& caption,
                       const std::filesystem::path& svg, const std::filesystem::path& png) {
   const double pw = panels.size() == 1 ? 520 : 250, inner = panels.size() == 1 ? 480 : 220;
   const double top = 50;
+  bool any_robot = false;
+  for (const auto& p : panels) any_robot = any_robot || !p.robots.empty();
   const std::size_t legend_rows =
-      (legend.states.size() + 2) / 3 + (legend.trails.size() + 1) / 2 + 1;
-  const double bottom = 60 + 18 * static_cast<double>(legend_rows);
+      (legend.states.size() + 2) / 3 + (legend.trails.size() + 1) / 2 + (any_robot ? 1 : 0);
+  const std::size_t caption_rows = line_count(caption);
+  // The legend, then the caption right under it: no empty band.
+  const double bottom =
+      34 + 18 * static_cast<double>(legend_rows) + 15 * static_cast<double>(caption_rows);
   const double width = std::max(pw * static_cast<double>(panels.size()), 760.0);
   const double height = top + inner + bottom;
   const double left = (width - pw * static_cast<double>(panels.size())) / 2;
@@ -271,15 +290,23 @@ void save_grid_figure(const std::string& title, const std::string& caption,
             if (pts.empty()) continue;
             const auto c =
                 detail::rgb(t < legend.trails.size() ? legend.trails[t].colour : "#000000");
-            cairo_set_source_rgb(cr, c.r, c.g, c.b);
-            cairo_set_line_width(cr, std::max(1.5, sc / 4));
-            for (std::size_t i = 0; i < pts.size(); ++i)
-              (i == 0 ? cairo_move_to : cairo_line_to)(cr, ox + pts[i].first * sc,
-                                                       oy + pts[i].second * sc);
-            cairo_stroke(cr);
-            cairo_arc(cr, ox + pts.back().first * sc, oy + pts.back().second * sc,
-                      std::max(2.5, sc / 2.5), 0, 2 * M_PI);
-            cairo_fill(cr);
+            const std::string casing = t < legend.trails.size() ? legend.trails[t].casing : "";
+            // The casing first, wider, then the trail on it; the same for the last position.
+            for (const bool edge : {true, false}) {
+              if (edge && casing.empty()) continue;
+              const auto col = edge ? detail::rgb(casing) : c;
+              const double extra = edge ? 2.5 : 0;
+              cairo_set_source_rgb(cr, col.r, col.g, col.b);
+              cairo_set_line_width(cr, std::max(1.5, sc / 4) + extra);
+              cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+              for (std::size_t i = 0; i < pts.size(); ++i)
+                (i == 0 ? cairo_move_to : cairo_line_to)(cr, ox + pts[i].first * sc,
+                                                         oy + pts[i].second * sc);
+              cairo_stroke(cr);
+              cairo_arc(cr, ox + pts.back().first * sc, oy + pts.back().second * sc,
+                        std::max(2.5, sc / 2.5) + extra / 2, 0, 2 * M_PI);
+              cairo_fill(cr);
+            }
           }
           const auto rc = detail::rgb(legend.robot.colour);
           cairo_set_source_rgb(cr, rc.r, rc.g, rc.b);
@@ -304,13 +331,14 @@ void save_grid_figure(const std::string& title, const std::string& caption,
           text(cr, lx + 20, y, legend.states[i].name, 11, 0, 0.5);
         }
         ly += 18 * static_cast<double>((legend.states.size() + 2) / 3) + 4;
-        for (std::size_t i = 0; i < legend.trails.size(); ++i)
-          legend_line(cr, width / 2 - 360 + 420 * static_cast<double>(i % 2),
-                      ly + 18 * static_cast<double>(i / 2), detail::rgb(legend.trails[i].colour), 3,
-                      legend.trails[i].name);
+        for (std::size_t i = 0; i < legend.trails.size(); ++i) {
+          const double tx = width / 2 - 360 + 420 * static_cast<double>(i % 2);
+          const double ty = ly + 18 * static_cast<double>(i / 2);
+          if (!legend.trails[i].casing.empty())
+            legend_line(cr, tx, ty, detail::rgb(legend.trails[i].casing), 5.5, "");
+          legend_line(cr, tx, ty, detail::rgb(legend.trails[i].colour), 3, legend.trails[i].name);
+        }
         ly += 18 * static_cast<double>((legend.trails.size() + 1) / 2);
-        bool any_robot = false;
-        for (const auto& p : panels) any_robot = any_robot || !p.robots.empty();
         if (any_robot) {
           const auto rc = detail::rgb(legend.robot.colour);
           cairo_set_source_rgb(cr, rc.r, rc.g, rc.b);

@@ -212,6 +212,7 @@ Figure explore_plot(const ExploreTables& t) {
                     paper("Sheng et al. (paper)", "#d81e1e", false, eme)};
     fig.panels.push_back(std::move(panel));
   }
+  fig.legend = fig.panels.front().series; // the same five series in both panels: one legend
   return fig;
 }
 

@@ -147,16 +147,24 @@ antkit::experiments::Figure tables_plot(const std::vector<TablesRow>& rows, cons
   using antkit::experiments::PlotSeries;
   antkit::experiments::Figure fig;
   fig.title = "Paper 004: coverage against movements, RW, PM and A*";
-  fig.x_label = "movements (ticks)";
+  fig.x_label = "movements (ticks, log axis)";
+  // Movements span 100 to 5 000: on a log axis PM's short runs are not crowded into one corner.
+  fig.x_axis = antkit::experiments::Axis::Log;
   fig.y_label = "coverage, % of viewable free cells";
   fig.y_from_zero = true;
-  fig.caption = "Filled: ours, mean of " + std::to_string(c.runs) + " runs per point (" +
+  fig.caption = "Filled, joined: ours, mean of " + std::to_string(c.runs) + " runs per point (" +
                 std::to_string(c.width) + " x " + std::to_string(c.height) + " cells, sensor " +
                 std::to_string(c.sensor) +
-                "); open: the paper's Tables 1-4. One point per robot "
-                "count (1-4; fewer movements with more robots).";
+                "); open: the paper's Tables 1-4.\nThe number beside a point is its robot count "
+                "(1-4; more robots, fewer movements each).";
+  // Four panels in two rows, one legend for all of them.
+  fig.columns = 2;
   const char* colours[] = {"#d81e1e", "#1b9e3a", "#1e5bd8"};
   const char* names[] = {"RW", "PM", "A*"};
+  for (std::size_t a = 0; a < 3; ++a) {
+    fig.legend.push_back({std::string(names[a]) + " (ours)", colours[a], false, false, {}});
+    fig.legend.push_back({std::string(names[a]) + " (paper)", colours[a], false, true, {}});
+  }
   for (const int density : {30, 20, 10, 0}) {
     PlotPanel panel;
     panel.title = std::to_string(density) + " % obstacles";
@@ -165,9 +173,10 @@ antkit::experiments::Figure tables_plot(const std::vector<TablesRow>& rows, cons
       PlotSeries paper{std::string(names[a]) + " (paper)", colours[a], false, true, {}};
       for (const auto& r : rows) {
         if (r.paper->density_percent != density) continue;
-        ours.points.push_back({r.movements[a], r.coverage[a], std::nullopt, std::nullopt});
+        const std::string robots = std::to_string(r.paper->robots);
+        ours.points.push_back({r.movements[a], r.coverage[a], std::nullopt, std::nullopt, robots});
         paper.points.push_back(
-            {r.paper->movements[a], r.paper->coverage[a], std::nullopt, std::nullopt});
+            {r.paper->movements[a], r.paper->coverage[a], std::nullopt, std::nullopt, robots});
       }
       panel.series.push_back(std::move(ours));
       panel.series.push_back(std::move(paper));

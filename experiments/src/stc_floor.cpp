@@ -215,11 +215,11 @@ void write_floor_curves(const FloorCurves& c, const std::filesystem::path& dir) 
     if (pn.factor == std::string("drift")) panel.series.push_back(unc);
     fig.panels.push_back(panel);
     fig.caption = "Ant-edge STC through the rendered camera of paper 002's robot; means of " +
-                  std::to_string(c.params.trials) + " keyed boards of " +
+                  std::to_string(c.params.trials) + " keyed boards\nof " +
                   std::to_string(c.params.cells) + " x " + std::to_string(c.params.cells) +
-                  " cells\n(10 % of sub-cells blocked) per level. Exact: the tour closed with "
-                  "every reachable sub-cell entered once.\nCoverage and repeats count the body's "
-                  "own sub-cells; a run is cut off after 4 moves per reachable sub-cell.";
+                  " cells (10 % of sub-cells blocked) per level. Exact: the tour closed with "
+                  "every\nreachable sub-cell entered once. Coverage and repeats count the body's "
+                  "own sub-cells;\na run is cut off after 4 moves per reachable sub-cell.";
     save_figure(fig, dir / (std::string(pn.file) + ".svg"), dir / (std::string(pn.file) + ".png"));
   }
 }

@@ -248,6 +248,7 @@ Figure stc_noise_plot(const StcTours& t) {
     }
     fig.panels.push_back(std::move(panel));
   }
+  fig.legend = fig.panels.front().series; // the same two variants in every panel: one legend
   return fig;
 }
 

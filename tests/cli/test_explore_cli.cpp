@@ -77,7 +77,7 @@ TEST_CASE("explore: --svg and --png write a picture", "[cli]") {
   std::ifstream in(path);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK(text.find("<svg") != std::string::npos);
-  CHECK(text.find("rgb(84.705882%,10.588235%,37.647059%)") != std::string::npos); // A, #d81b60
+  CHECK(text.find("rgb(0%,89.803922%,100%)") != std::string::npos);               // A, #00e5ff
   CHECK(text.find("rgb(55.294118%,33.333333%,14.117647%)") != std::string::npos); // S, #8d5524
   CHECK(std::filesystem::file_size(png) > 1000);
   std::filesystem::remove(path);

@@ -14,9 +14,10 @@ namespace antkit::experiments {
 using XY = std::pair<double, double>;
 
 // A tour on a grid map (sub-cell coordinates, x right, y down): blocked cells dark, the spanning
-// tree (an edge between two cells' centres where the tour first crosses between them) in green,
-// the tour coloured along its length from blue (start) to yellow (end) so that its order can be
-// followed, and the start as a red dot. Throws kernel::InputError for a file that cannot be
+// tree (an edge between two cells' centres where the tour first crosses between them) in light
+// grey, outside the tour's colour scale, the tour coloured along its length from violet (start)
+// through blue and green to yellow (end) so that its order can be followed, and the start as a red
+// dot. Throws kernel::InputError for a file that cannot be
 // written.
 void save_tour_figure(const kernel::OccupancyGrid& map, std::span<const kernel::Cell> path,
                       const std::string& title, const std::string& caption,
@@ -47,6 +48,7 @@ struct GridPanel {
 struct GridLegendEntry {
   std::string colour; // "#rrggbb"
   std::string name;
+  std::string casing{}; // a trail's edge, drawn wider beneath it, so it stands out on any cell
 };
 
 struct GridLegend {
@@ -61,7 +63,8 @@ void save_grid_figure(const std::string& title, const std::string& caption,
 
 // Paper 001's palette (Table 1): states are los::CellState codes (0 F fresh, 1 S scanned free,
 // 2 LOS free by line of sight, 3 S+LOS, 4 NLOS potentially occupied, 5 O occupied); trail 0 is
-// robot A (the wall follower), trail 1 robot B.
+// robot A (the wall follower; pink in the paper, here cyan edged in black, which no cell colour
+// hides, for colour-blind readers too), trail 1 robot B (black, edged in white, as in the paper).
 [[nodiscard]] GridLegend exploration_legend();
 
 } // namespace antkit::experiments
