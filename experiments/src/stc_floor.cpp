@@ -89,6 +89,23 @@ FloorCurves run_floor_curves(const FloorParams& p, const Runner& runner) {
         out.put(r.hash);
         return out;
       });
+  // Board sizes: each unit one (fade, n); n from 2 to max_board, decided in order afterwards.
+  const auto sizes = static_cast<std::uint64_t>(std::max(0, p.max_board - 1));
+  const auto boards =
+      run_units(runner, "stc floor boards", p.board_fade_s.size() * sizes, [&](std::uint64_t unit) {
+        sf::FloorOptions f;
+        f.seed = p.seed;
+        f.fade_half_life_ms = 1000 * p.board_fade_s[unit / sizes];
+        const auto n = static_cast<std::int32_t>(2 + unit % sizes);
+        const auto r = run_one(board(n, 0, p.seed, 0), f, true);
+        Payload out;
+        out.put(r.exact ? 1 : 0);
+        out.put_i(r.clock_ms);
+        out.put(r.hash);
+        return out;
+      });
+  // Both runs above are collective under MPI; only rank 0 holds the results.
+  if (!runner.root()) return c;
   kernel::TraceHash h;
   for (std::size_t li = 0; li < levels.size(); ++li) {
     FloorPoint pt;
@@ -117,21 +134,6 @@ FloorCurves run_floor_curves(const FloorParams& p, const Runner& runner) {
     if (pt.factor == "drift" && pt.exact < 1 && c.off_grid_drift < 0) c.off_grid_drift = pt.level;
     c.points.push_back(pt);
   }
-  // Board sizes: each unit one (fade, n); n from 2 to max_board, decided in order afterwards.
-  const auto sizes = static_cast<std::uint64_t>(std::max(0, p.max_board - 1));
-  const auto boards =
-      run_units(runner, "stc floor boards", p.board_fade_s.size() * sizes, [&](std::uint64_t unit) {
-        sf::FloorOptions f;
-        f.seed = p.seed;
-        f.fade_half_life_ms = 1000 * p.board_fade_s[unit / sizes];
-        const auto n = static_cast<std::int32_t>(2 + unit % sizes);
-        const auto r = run_one(board(n, 0, p.seed, 0), f, true);
-        Payload out;
-        out.put(r.exact ? 1 : 0);
-        out.put_i(r.clock_ms);
-        out.put(r.hash);
-        return out;
-      });
   for (std::size_t fi = 0; fi < p.board_fade_s.size(); ++fi) {
     FloorBoard b;
     b.fade_s = p.board_fade_s[fi];

@@ -49,6 +49,15 @@ TEST_CASE("antkit reproduce runs paper 002 on random maps when the shared maps a
   text << readme.rdbuf();
   CHECK(text.str().find("no shared maps found; 6 keyed random maps") != std::string::npos);
   const auto j = nlohmann::json::parse(r.out);
-  for (const auto& c : j["claims"]) CHECK(c["verdict"] == "holds");
+  // The tours' invariants and the fading limit (no sampling noise) hold; the rotation claim's 4
+  // quick boards may leave it inconclusive, never refuted.
+  for (const auto& c : j["claims"]) {
+    INFO(c["id"]);
+    if (c["id"] == "002-rotation")
+      CHECK(c["verdict"] != "does not hold");
+    else
+      CHECK(c["verdict"] == "holds");
+  }
+  CHECK(j["claims"].size() == 5);
   fs::remove_all(dir);
 }
