@@ -5,11 +5,11 @@
 // Our tables add coordinated A* and frontier coverage, and how much frontier saves against A*
 // and coordinated A*. Writes DIR/uniform_tables.csv and DIR/uniform_tables.md (atomically) and
 // prints a summary. The experiment and the choices behind it are documented in
-// experiments/include/antkit/experiments/paper_tables.hpp.
+// experiments/include/antkit/experiments/uniform_tables.hpp.
 #include "commands.hpp"
 #include "output.hpp"
 
-#include <antkit/experiments/paper_tables.hpp>
+#include <antkit/experiments/uniform_tables.hpp>
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <cstdio>
@@ -24,7 +24,7 @@ namespace {
 using antkit::cli::Format;
 using antkit::kernel::InputError;
 namespace uniform = antkit::uniform;
-namespace ex = antkit::uniform::experiments;
+namespace ex = antkit::experiments::uniform_tables;
 
 struct ExperimentOptions {
   std::int64_t runs = 10;
@@ -87,9 +87,9 @@ nlohmann::json run_experiment(const ExperimentOptions& o) {
     row["robots"] = r.paper->robots;
     for (std::size_t a = 0; a < ex::table_columns(c); ++a) {
       const std::string name(uniform::algorithm_name(ex::kTableAlgorithms[a]));
-      row[name + "_coverage"] = std::stod(ex::fixed(r.coverage[a], 2));
-      row[name + "_movements"] = std::stod(ex::fixed(r.movements[a], 1));
-      row[name + "_moves"] = std::stod(ex::fixed(r.moves[a], 1));
+      row[name + "_coverage"] = std::stod(antkit::experiments::fixed(r.coverage[a], 2));
+      row[name + "_movements"] = std::stod(antkit::experiments::fixed(r.movements[a], 1));
+      row[name + "_moves"] = std::stod(antkit::experiments::fixed(r.moves[a], 1));
     }
     table.push_back(row);
   }

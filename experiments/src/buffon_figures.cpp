@@ -372,9 +372,9 @@ Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner) {
   Figure14 out{params, {}, 0};
   if (!runner.root()) return out;
   kernel::TraceHash digest;
-  std::vector<buffon::Figure14Arena> arenas;
+  std::vector<Figure14Arena> arenas;
   for (std::size_t k = 0; k < diameters.size(); ++k) {
-    buffon::Figure14Arena a{static_cast<double>(diameters[k]), shapes[k].area(), {}, {}};
+    Figure14Arena a{static_cast<double>(diameters[k]), shapes[k].area(), {}, {}};
     for (std::uint64_t t = 0; t < trials; ++t) {
       Payload p = payloads[k * trials + t];
       for (const std::uint64_t w : p.words()) digest.add_u64(w);
@@ -386,16 +386,16 @@ Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner) {
         r.rs_cells.push_back(p.get());
       }
       r.rs_cell_raw = p.get_i();
-      buffon::add_checkpoints(a, r);
+      add_checkpoints(a, r);
     }
     arenas.push_back(std::move(a));
   }
   for (std::size_t k = 0; k < K; ++k) {
-    const auto fit = buffon::calibrate_at(arenas, k);
+    const auto fit = calibrate_at(arenas, k);
     const double total = 2.0 * 168.0 * static_cast<double>(k + 1);
     for (const auto& a : arenas) {
-      if (buffon::is_calibration_diameter(a.diameter)) continue;
-      const std::vector<double> est = buffon::estimates_at(a, k, fit);
+      if (is_calibration_diameter(a.diameter)) continue;
+      const std::vector<double> est = estimates_at(a, k, fit);
       out.rows.push_back({a.diameter, total, a.area, buffon::quantile(est, 0.5),
                           buffon::quantile(est, 0.25), buffon::quantile(est, 0.75),
                           buffon::quantile(a.rs[k], 0.5), buffon::quantile(a.rs[k], 0.25),

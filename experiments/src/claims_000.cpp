@@ -325,9 +325,9 @@ const std::vector<ClaimSpec> kClaims = {
      "buffon/figure14.csv",
      [](const ClaimInputs& in) {
        const auto& arenas = in.buffon->fig14.arenas;
-       std::vector<const buffon::Figure14Arena*> test;
+       std::vector<const Figure14Arena*> test;
        for (const auto& a : arenas)
-         if (!buffon::is_calibration_diameter(a.diameter)) test.push_back(&a);
+         if (!is_calibration_diameter(a.diameter)) test.push_back(&a);
        std::vector<Part> parts;
        if (test.empty()) return parts;
        const std::size_t last = test[0]->rs.size() - 1;
@@ -371,14 +371,14 @@ const std::vector<ClaimSpec> kClaims = {
        if (arenas.empty()) return parts;
        std::vector<double> cal_area, test_area;
        for (const auto& a : arenas)
-         (buffon::is_calibration_diameter(a.diameter) ? cal_area : test_area).push_back(a.area);
+         (is_calibration_diameter(a.diameter) ? cal_area : test_area).push_back(a.area);
        const std::size_t ncal = cal_area.size();
        for (std::size_t k = 0; k < arenas.front().nbc.size(); ++k) {
          Samples s;
          for (const auto& a : arenas)
-           if (buffon::is_calibration_diameter(a.diameter)) s.push_back(a.nbc[k]);
+           if (is_calibration_diameter(a.diameter)) s.push_back(a.nbc[k]);
          for (const auto& a : arenas)
-           if (!buffon::is_calibration_diameter(a.diameter)) s.push_back(a.nbc[k]);
+           if (!is_calibration_diameter(a.diameter)) s.push_back(a.nbc[k]);
          parts.push_back(bootstrap_part(
              "worst |estimate / area - 1|, total length " +
                  number(2.0 * 168 * static_cast<double>(k + 1)),
@@ -386,7 +386,7 @@ const std::vector<ClaimSpec> kClaims = {
              [cal_area, test_area, ncal](const Samples& x) {
                std::vector<double> xs;
                for (std::size_t i = 0; i < ncal; ++i) xs.push_back(median(x[i]));
-               const auto fit = buffon::fit_power_law(xs, cal_area);
+               const auto fit = fit_power_law(xs, cal_area);
                double worst = 0;
                for (std::size_t t = 0; t < test_area.size(); ++t) {
                  std::vector<double> est;

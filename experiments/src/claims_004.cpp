@@ -1,6 +1,6 @@
 // Paper 004's claims (Tyler, Hettiarachchi): Tables 1-4. One ClaimSpec per claim (claims.hpp);
 // reproduce.cpp evaluates them. Run k of every algorithm of a row shares the map and the starts
-// (paper_tables.hpp), and run k of every row shares its obstacle shuffle, so the samples of a
+// (uniform_tables.hpp), and run k of every row shares its obstacle shuffle, so the samples of a
 // comparison are paired.
 #include <algorithm>
 #include <antkit/experiments/claims.hpp>
@@ -11,7 +11,7 @@ namespace antkit::experiments {
 
 namespace {
 
-namespace ut = uniform::experiments;
+namespace ut = uniform_tables;
 constexpr std::size_t kRw = 0, kPm = 1, kAStar = 2;
 
 const ut::TablesRow& at(const ClaimInputs& in, int density, int robots) {

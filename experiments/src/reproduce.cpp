@@ -5,9 +5,9 @@
 #include <antkit/experiments/drawing.hpp>
 #include <antkit/experiments/explore_tables.hpp>
 #include <antkit/experiments/format.hpp>
-#include <antkit/experiments/paper_tables.hpp>
 #include <antkit/experiments/reproduce.hpp>
 #include <antkit/experiments/stc_tours.hpp>
+#include <antkit/experiments/uniform_tables.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
@@ -23,7 +23,7 @@
 
 namespace antkit::experiments {
 
-namespace ut = antkit::uniform::experiments;
+namespace ut = antkit::experiments::uniform_tables;
 using kernel::InputError;
 
 namespace {

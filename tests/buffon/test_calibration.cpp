@@ -14,7 +14,7 @@ TEST_CASE("the power fit recovers a + b x^c from exact points", "[property]") {
     const double c = -*rc::gen::inRange(50, 150) / 100.0;
     std::vector<double> x{0.13, 0.21, 0.35, 0.9}, y;
     for (double xi : x) y.push_back(a + b * std::pow(xi, c));
-    const auto fit = buffon::fit_power_law(x, y);
+    const auto fit = antkit::experiments::fit_power_law(x, y);
     for (std::size_t i = 0; i < x.size(); ++i)
       RC_ASSERT(std::abs(fit(x[i]) - y[i]) <= 1e-6 * std::abs(y[i]));
   });

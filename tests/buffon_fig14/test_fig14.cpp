@@ -41,17 +41,17 @@ TEST_CASE("Figure 14: calibrated Buffon beats Randomized Search at short trails"
   constexpr int K = 10, T = 40;
   const std::int64_t step_raw = std::int64_t{168} * 65536;
   const std::uint64_t seed = 20261121;
-  std::vector<buffon::Figure14Arena> arenas;
+  std::vector<antkit::experiments::Figure14Arena> arenas;
   for (int d = 30; d <= 100; d += 10) {
     const auto arena = geometry::build_arena_spec("circle:d=" + std::to_string(d), "test").arena;
     const buffon::World world(arena.walls_fx());
     buffon::TrialParams params;
     params.seed = seed;
     params.experiment = 8400 + static_cast<std::uint64_t>(d);
-    buffon::Figure14Arena a{static_cast<double>(d), arena.area(), {}, {}};
+    antkit::experiments::Figure14Arena a{static_cast<double>(d), arena.area(), {}, {}};
     for (std::uint64_t t = 0; t < T; ++t) {
       const auto r = buffon::run_checkpoints(world, params, t, step_raw, K);
-      buffon::add_checkpoints(a, r);
+      antkit::experiments::add_checkpoints(a, r);
       const double cell = static_cast<double>(r.rs_cell_raw) / 65536.0;
       for (std::size_t k = 0; k < K; ++k) {
         const double total = 2.0 * 168.0 * static_cast<double>(k + 1);
@@ -64,11 +64,11 @@ TEST_CASE("Figure 14: calibrated Buffon beats Randomized Search at short trails"
   }
   std::vector<double> buffon_err(K), rs_err100(K), trial_err(K);
   for (std::size_t k = 0; k < K; ++k) {
-    const auto fit = buffon::calibrate_at(arenas, k);
+    const auto fit = antkit::experiments::calibrate_at(arenas, k);
     std::vector<double> errs, each;
     for (const auto& a : arenas) {
-      if (buffon::is_calibration_diameter(a.diameter)) continue;
-      const std::vector<double> est = buffon::estimates_at(a, k, fit);
+      if (antkit::experiments::is_calibration_diameter(a.diameter)) continue;
+      const std::vector<double> est = antkit::experiments::estimates_at(a, k, fit);
       errs.push_back(std::abs(buffon::quantile(est, 0.5) / a.area - 1));
       for (double e : est) each.push_back(std::abs(e / a.area - 1));
       if (a.diameter == 100) rs_err100[k] = std::abs(buffon::quantile(a.rs[k], 0.5) / a.area - 1);

@@ -84,7 +84,7 @@ struct Figure14 {
   std::uint64_t hash = 0;        // a digest of every trial's checkpoint counts
   // Not in the CSV: every circle's per-trial nBC and RS estimates at each checkpoint (calibration
   // and test circles, by diameter), from which the claims' bootstrap refits the calibration.
-  std::vector<buffon::Figure14Arena> arenas{};
+  std::vector<Figure14Arena> arenas{};
 };
 
 [[nodiscard]] Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner);

@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace antkit::buffon {
+namespace antkit::experiments {
 
 struct PowerFit {
   double a = 0, b = 0, c = -1;
@@ -98,7 +98,7 @@ inline bool is_calibration_diameter(double d) {
 }
 
 // Appends one trial's checkpoints (checkpoints.hpp) to the arena's columns.
-inline void add_checkpoints(Figure14Arena& a, const CheckpointResult& r) {
+inline void add_checkpoints(Figure14Arena& a, const buffon::CheckpointResult& r) {
   const std::size_t k_count = r.bc.size();
   a.nbc.resize(k_count);
   a.rs.resize(k_count);
@@ -112,7 +112,7 @@ inline void add_checkpoints(Figure14Arena& a, const CheckpointResult& r) {
 
 // The median of a sample (type 7 quantile, as estimate.hpp's quantile).
 inline double median_of(std::vector<double> v) {
-  return quantile(std::move(v), 0.5);
+  return buffon::quantile(std::move(v), 0.5);
 }
 
 // The fit at checkpoint k: area = a + b nBC^c through the calibration circles' median nBC.
@@ -134,4 +134,4 @@ inline std::vector<double> estimates_at(const Figure14Arena& a, std::size_t k,
   return est;
 }
 
-} // namespace antkit::buffon
+} // namespace antkit::experiments

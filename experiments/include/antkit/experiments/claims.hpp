@@ -20,7 +20,7 @@
 // convention).
 #include <antkit/experiments/buffon_figures.hpp>
 #include <antkit/experiments/explore_tables.hpp>
-#include <antkit/experiments/paper_tables.hpp>
+#include <antkit/experiments/uniform_tables.hpp>
 #include <antkit/experiments/reproduce.hpp>
 #include <antkit/experiments/stc_floor.hpp>
 #include <antkit/experiments/stc_tours.hpp>
@@ -44,8 +44,8 @@ struct ClaimInputs {
   const ExploreTables* los = nullptr;
   const StcTours* stc = nullptr;
   const FloorCurves* floor = nullptr; // paper 002's robot on its floor (with stc)
-  const std::vector<uniform::experiments::TablesRow>* uniform = nullptr;
-  const std::vector<uniform::experiments::TablesRow>* uniform_disk = nullptr;
+  const std::vector<uniform_tables::TablesRow>* uniform = nullptr;
+  const std::vector<uniform_tables::TablesRow>* uniform_disk = nullptr;
   std::uint32_t uniform_runs = 0;
 };
 

@@ -34,7 +34,7 @@
 // Ids missing on purpose: 000-2 is the trail length of Section 5 (added with issue 29; it was
 // once Figure 5(b)'s "most points on y = x", which is 000-1 again); 004-1 would be "RW's movements
 // equal A*'s", which the paper's tables show (within 1 %) but which our driver imposes (RW's tick
-// limit is A*'s ticks, paper_tables.hpp), so no run can decide it.
+// limit is A*'s ticks, uniform_tables.hpp), so no run can decide it.
 #include <antkit/experiments/run.hpp>
 #include <antkit/experiments/verdict.hpp>
 #include <cstdint>

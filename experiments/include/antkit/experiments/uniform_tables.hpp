@@ -2,7 +2,7 @@
 // The driver that reproduces Tables 1-4 of paper 004 (Tyler & Hettiarachchi) and sets our numbers
 // beside the paper's. Not part of antkit::algorithms (it uses threads and reports in floating
 // point); `antkit cover-experiment` and `antkit reproduce` call it. The runner is in
-// experiments/src/paper_tables.cpp.
+// experiments/src/uniform_tables.cpp.
 //
 // The experiment (paper: "obstacle density of 0%, 10%, 20% and 30% ... 1 to 4 robots ... averaged
 // over 10 independent runs"). The paper gives neither the environment size, the sensor distance
@@ -32,7 +32,18 @@
 #include <string>
 #include <vector>
 
-namespace antkit::uniform::experiments {
+namespace antkit::experiments::uniform_tables {
+
+// The uniform-coverage family this experiment runs (algorithms/uniform).
+using uniform::Algorithm;
+using uniform::algorithm_name;
+using uniform::CoverageResult;
+using uniform::CoverageWorld;
+using uniform::kPpm;
+using uniform::place_robots;
+using uniform::random_obstacles;
+using uniform::run_coverage;
+using uniform::SensorModel;
 
 // The paper's numbers: Tables 1-4 of paper 004, coverage % and movements, RW, PM and A*, 1-4
 // robots.
@@ -131,9 +142,7 @@ inline TrialOut run_trial(const TablesConfig& c, const PaperRow& row, std::uint3
 
 // Runs every (density, robots, run) as a unit of `runner` and reduces in that order; on MPI
 // ranks other than 0 the result is empty.
-std::vector<TablesRow> run_tables(const TablesConfig& c, const antkit::experiments::Runner& runner);
-
-using antkit::experiments::fixed; // as the tables print numbers (format.hpp)
+std::vector<TablesRow> run_tables(const TablesConfig& c, const Runner& runner);
 
 // The files of `antkit cover-experiment`: the rows as CSV, and the four tables (ours / paper's)
 // with the coordinated-A* and frontier comparisons as Markdown.
@@ -141,6 +150,6 @@ std::string tables_csv(const std::vector<TablesRow>& rows, const TablesConfig& c
 std::string tables_markdown(const std::vector<TablesRow>& rows, const TablesConfig& c);
 // Coverage against movements, one panel per obstacle density, RW, PM and A* (ours: filled, the
 // paper's: open markers), one point per robot count.
-antkit::experiments::Figure tables_plot(const std::vector<TablesRow>& rows, const TablesConfig& c);
+Figure tables_plot(const std::vector<TablesRow>& rows, const TablesConfig& c);
 
-} // namespace antkit::uniform::experiments
+} // namespace antkit::experiments::uniform_tables

@@ -1,31 +1,30 @@
 #include <algorithm>
-#include <antkit/experiments/paper_tables.hpp>
+#include <antkit/experiments/uniform_tables.hpp>
 #include <cstdio>
 #include <sstream>
 
-namespace antkit::uniform::experiments {
+namespace antkit::experiments::uniform_tables {
 
-std::vector<TablesRow> run_tables(const TablesConfig& c,
-                                  const antkit::experiments::Runner& runner) {
+std::vector<TablesRow> run_tables(const TablesConfig& c, const Runner& runner) {
   const std::size_t per_row = c.runs;
-  const auto payloads = antkit::experiments::run_units(
-      runner,
-      c.sensor_model == SensorModel::Disk ? "paper 004, tables 1-4, disk sensor"
-                                          : "paper 004, tables 1-4",
-      kPaperTables.size() * per_row, [&](std::uint64_t k) {
-        const auto t = detail::run_trial(c, kPaperTables[k / per_row],
-                                         static_cast<std::uint32_t>(k % per_row));
-        antkit::experiments::Payload p;
-        for (std::size_t a = 0; a < table_columns(c); ++a) {
-          const auto& r = t.result[a];
-          p.put(r.viewed);
-          p.put(r.viewable);
-          p.put(r.movements);
-          p.put(r.moves);
-          p.put(r.hash);
-        }
-        return p;
-      });
+  const auto payloads =
+      run_units(runner,
+                c.sensor_model == SensorModel::Disk ? "paper 004, tables 1-4, disk sensor"
+                                                    : "paper 004, tables 1-4",
+                kPaperTables.size() * per_row, [&](std::uint64_t k) {
+                  const auto t = detail::run_trial(c, kPaperTables[k / per_row],
+                                                   static_cast<std::uint32_t>(k % per_row));
+                  Payload p;
+                  for (std::size_t a = 0; a < table_columns(c); ++a) {
+                    const auto& r = t.result[a];
+                    p.put(r.viewed);
+                    p.put(r.viewable);
+                    p.put(r.movements);
+                    p.put(r.moves);
+                    p.put(r.hash);
+                  }
+                  return p;
+                });
   std::vector<TablesRow> rows;
   if (!runner.root()) return rows;
   for (std::size_t r = 0; r < kPaperTables.size(); ++r) {
@@ -34,7 +33,7 @@ std::vector<TablesRow> run_tables(const TablesConfig& c,
     kernel::TraceHash digest;
     for (std::size_t a = 0; a < kTableColumns; ++a) row.coverage_min[a] = 100.0;
     for (std::size_t run = 0; run < per_row; ++run) {
-      antkit::experiments::Payload p = payloads[r * per_row + run];
+      Payload p = payloads[r * per_row + run];
       for (std::size_t a = 0; a < table_columns(c); ++a) {
         const auto viewed = p.get(), viewable = p.get(), movements = p.get(), moves = p.get(),
                    hash = p.get();
@@ -142,14 +141,12 @@ std::string tables_markdown(const std::vector<TablesRow>& rows, const TablesConf
   return s.str();
 }
 
-antkit::experiments::Figure tables_plot(const std::vector<TablesRow>& rows, const TablesConfig& c) {
-  using antkit::experiments::PlotPanel;
-  using antkit::experiments::PlotSeries;
-  antkit::experiments::Figure fig;
+Figure tables_plot(const std::vector<TablesRow>& rows, const TablesConfig& c) {
+  Figure fig;
   fig.title = "Paper 004: coverage against movements, RW, PM and A*";
   fig.x_label = "movements (ticks, log axis)";
   // Movements span 100 to 5 000: on a log axis PM's short runs are not crowded into one corner.
-  fig.x_axis = antkit::experiments::Axis::Log;
+  fig.x_axis = Axis::Log;
   fig.y_label = "coverage, % of viewable free cells";
   fig.y_from_zero = true;
   fig.caption = "Filled, joined: ours, mean of " + std::to_string(c.runs) + " runs per point (" +
@@ -186,4 +183,4 @@ antkit::experiments::Figure tables_plot(const std::vector<TablesRow>& rows, cons
   return fig;
 }
 
-} // namespace antkit::uniform::experiments
+} // namespace antkit::experiments::uniform_tables
