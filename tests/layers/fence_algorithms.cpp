@@ -3,4 +3,5 @@
 // of a layer it may not use, must not be.
 #include <antkit/kernel/grid.hpp>
 #include <antkit/stc/world.hpp>
+// Of a layer this one may not use:
 #include <antkit/geometry/arena.hpp>

@@ -2,4 +2,5 @@
 // the kernel layer's target. The headers of the layers it uses are found; the last include,
 // of a layer it may not use, must not be.
 #include <antkit/kernel/grid.hpp>
+// Of a layer this one may not use:
 #include <antkit/maps/map_io.hpp>

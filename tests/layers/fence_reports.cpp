@@ -2,6 +2,7 @@
 // the reports layer's target. The headers of the layers it uses are found; the last include,
 // of a layer it may not use, must not be.
 #include <antkit/devices/log.hpp>
-#include <antkit/testing/stc.hpp>
 #include <antkit/reports/reports.hpp>
+#include <antkit/testing/stc.hpp>
+// Of a layer this one may not use:
 #include <antkit/experiments/run.hpp>

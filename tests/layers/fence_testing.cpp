@@ -4,4 +4,5 @@
 #include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
 #include <antkit/testing/stc.hpp>
+// Of a layer this one may not use:
 #include <antkit/devices/log.hpp>

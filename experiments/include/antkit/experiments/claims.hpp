@@ -20,10 +20,10 @@
 // convention).
 #include <antkit/experiments/buffon_figures.hpp>
 #include <antkit/experiments/explore_tables.hpp>
-#include <antkit/experiments/uniform_tables.hpp>
 #include <antkit/experiments/reproduce.hpp>
 #include <antkit/experiments/stc_floor.hpp>
 #include <antkit/experiments/stc_tours.hpp>
+#include <antkit/experiments/uniform_tables.hpp>
 #include <antkit/experiments/verdict.hpp>
 #include <cstdint>
 #include <functional>
