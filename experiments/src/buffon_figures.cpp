@@ -164,7 +164,9 @@ PlotPoint efficiency_point(const BuffonFigureRow& r) {
 // Figures 5 and 9: sizes that span a decade, so nBC (which falls as 1 / area) on log axes, and
 // beside it the efficiency, linear, with the 0.9 threshold at which claims 000-4 and 000-10 call a
 // circle blended.
-void nbc_and_efficiency(Figure& fig, PlotPanel& nbc, const BuffonFigure& f) {
+// with_ideal: also draw Buffon's ideal count for the first series (one line per series would crowd
+// a figure of several widths).
+void nbc_and_efficiency(Figure& fig, PlotPanel& nbc, const BuffonFigure& f, bool with_ideal) {
   fig.x_axis = Axis::Log;
   fig.y_axis = Axis::Log;
   nbc.title = "nBC (log axes)";
@@ -183,12 +185,14 @@ void nbc_and_efficiency(Figure& fig, PlotPanel& nbc, const BuffonFigure& f) {
   }
   // Buffon's ideal count for the first series (the circles), 2 L1 / (pi A) at the median L1: where
   // nBC falls below it the trails blend.
-  PlotSeries ideal{"no blending: 2 L1 / (π A)", "#606060", true, false, {}};
-  for (const auto& r : f.rows)
-    if (r.arena.series == nbc.series.front().name && r.area > 0)
-      ideal.points.push_back(
-          {r.arena.x, 2 * r.length1_median / (M_PI * r.area), std::nullopt, std::nullopt});
-  nbc.series.push_back(std::move(ideal));
+  if (with_ideal) {
+    PlotSeries ideal{"no blending: 2 L1 / (π A)", "#606060", true, false, {}};
+    for (const auto& r : f.rows)
+      if (r.arena.series == nbc.series.front().name && r.area > 0)
+        ideal.points.push_back(
+            {r.arena.x, 2 * r.length1_median / (M_PI * r.area), std::nullopt, std::nullopt});
+    nbc.series.push_back(std::move(ideal));
+  }
   fig.legend = nbc.series; // one legend for both panels
   fig.panels = {nbc, std::move(eff)};
 }
@@ -227,7 +231,7 @@ Figure buffon_figure_plot(const BuffonFigure& f) {
   case 5:
     fig.title = "Paper 000, Figure 5: nBC of circles and squares";
     fig.x_label = "diameter d, robot diameters (squares: same area)";
-    nbc_and_efficiency(fig, panel, f);
+    nbc_and_efficiency(fig, panel, f, true);
     fig.caption = "Medians with interquartile bars; " + trials + ", seed " +
                   std::to_string(f.params.seed) +
                   ".\nLeft: nBC falls as 1 / area, so log axes keep every size apart; the dashed "
@@ -237,9 +241,7 @@ Figure buffon_figure_plot(const BuffonFigure& f) {
   case 9:
     fig.title = "Paper 000, Figure 9: trail width";
     fig.x_label = "diameter of the circle, robot diameters";
-    nbc_and_efficiency(fig, panel, f);
-    fig.panels[0].series.pop_back(); // one ideal line per width would crowd the panel
-    fig.legend.pop_back();
+    nbc_and_efficiency(fig, panel, f, false);
     fig.caption = "Medians with interquartile bars; " + trials + ", seed " +
                   std::to_string(f.params.seed) +
                   ".\nLeft: nBC on log axes. Right: efficiency; below 0.9 (red line) the trails "

@@ -111,7 +111,7 @@ const std::vector<ClaimSpec> kClaims = {
          char buf[160];
          std::snprintf(buf, sizeof buf, "%s%s: %.0f %% of %zu tours exact, coverage %.1f %%",
                        out.empty() ? "" : "; ", p.factor == "drift" ? "calibrated" : "uncalibrated",
-                       100 * p.exact, p.exact_runs.size(), 100 * p.coverage);
+                       100 * p.exact, p.coverage_runs.size(), 100 * p.coverage);
          out += buf;
        }
        return out + ". The calibration corrects each turn against the frame before it, so the "

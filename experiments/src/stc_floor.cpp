@@ -123,7 +123,6 @@ FloorCurves run_floor_curves(const FloorParams& p, const Runner& runner) {
       pt.repeats_per_subcell += reachable > 0 ? repeats / reachable : 0;
       pt.exact += exact ? 1 : 0;
       pt.max_offset += offset;
-      pt.exact_runs.push_back(exact ? 1 : 0);
       pt.coverage_runs.push_back(reachable > 0 ? covered / reachable : 0);
     }
     const double n = static_cast<double>(trials);

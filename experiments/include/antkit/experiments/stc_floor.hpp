@@ -40,8 +40,8 @@ struct FloorPoint {
   std::int64_t level = 0;
   double coverage = 0, repeats_per_subcell = 0, exact = 0; // means over the trials
   double max_offset = 0; // mean of each run's largest distance from a sub-cell's centre
-  // Per trial, in trial order (the claims' intervals): 1 or 0, and the fraction covered.
-  std::vector<double> exact_runs, coverage_runs;
+  // The fraction covered per trial, in trial order (the claims' intervals).
+  std::vector<double> coverage_runs;
 };
 
 struct FloorBoard {

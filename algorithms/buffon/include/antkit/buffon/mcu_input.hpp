@@ -20,6 +20,7 @@
 // (fixed_trial.hpp: the world's buckets, the pheromone raster, visit 1's trail and the bound of
 // the crossing index over it). A run that needs more is refused, by the host before QEMU starts
 // and again by the chip.
+#include <antkit/algorithms/little_endian.hpp>
 #include <antkit/buffon/fixed_trial.hpp>
 #include <antkit/buffon/world.hpp>
 #include <cstddef>
@@ -67,28 +68,17 @@ enum class McuBuffonError : std::uint8_t {
   return "unknown error";
 }
 
-namespace detail {
-constexpr std::uint64_t le(const std::uint8_t* p, int bytes) noexcept {
-  std::uint64_t v = 0;
-  for (int i = bytes - 1; i >= 0; --i) v = (v << 8) | p[i];
-  return v;
-}
-constexpr std::int32_t le_i32(const std::uint8_t* p) noexcept {
-  return static_cast<std::int32_t>(static_cast<std::uint32_t>(le(p, 4)));
-}
-} // namespace detail
-
 [[nodiscard]] constexpr McuBuffonError
 read_mcu_buffon_header(const std::uint8_t* bytes, std::size_t size, McuBuffonRun& run) noexcept {
   if (size < kMcuBuffonHeaderBytes) return McuBuffonError::Short;
   for (std::size_t i = 0; i < 8; ++i)
     if (bytes[i] != static_cast<std::uint8_t>(kMcuBuffonMagic[i])) return McuBuffonError::Magic;
-  run.seed = detail::le(bytes + 8, 8);
-  run.steps = static_cast<std::int64_t>(detail::le(bytes + 16, 8));
-  run.width = Fx::from_raw(detail::le_i32(bytes + 24));
-  run.body.noise = Fx::from_raw(detail::le_i32(bytes + 28));
-  run.body.speed = Fx::from_raw(detail::le_i32(bytes + 32));
-  run.walls = static_cast<std::uint32_t>(detail::le(bytes + 36, 4));
+  run.seed = algorithms::load_le(bytes + 8, 8);
+  run.steps = static_cast<std::int64_t>(algorithms::load_le(bytes + 16, 8));
+  run.width = Fx::from_raw(algorithms::load_le_i32(bytes + 24));
+  run.body.noise = Fx::from_raw(algorithms::load_le_i32(bytes + 28));
+  run.body.speed = Fx::from_raw(algorithms::load_le_i32(bytes + 32));
+  run.walls = static_cast<std::uint32_t>(algorithms::load_le(bytes + 36, 4));
   if (run.steps < 1 || run.steps > 10000000) return McuBuffonError::Steps;
   if (run.walls < 1 || run.walls > kMcuArenaBytes / kMcuWallBytes) return McuBuffonError::Walls;
   return McuBuffonError::None;
@@ -97,8 +87,9 @@ read_mcu_buffon_header(const std::uint8_t* bytes, std::size_t size, McuBuffonRun
 // Wall i of the input's wall bytes.
 [[nodiscard]] constexpr FxSegment read_mcu_wall(const std::uint8_t* walls, std::size_t i) noexcept {
   const std::uint8_t* p = walls + i * kMcuWallBytes;
-  return {{Fx::from_raw(detail::le_i32(p)), Fx::from_raw(detail::le_i32(p + 4))},
-          {Fx::from_raw(detail::le_i32(p + 8)), Fx::from_raw(detail::le_i32(p + 12))}};
+  return {{Fx::from_raw(algorithms::load_le_i32(p)), Fx::from_raw(algorithms::load_le_i32(p + 4))},
+          {Fx::from_raw(algorithms::load_le_i32(p + 8)),
+           Fx::from_raw(algorithms::load_le_i32(p + 12))}};
 }
 
 // The arena bytes a trial needs on the chip: its walls (as FxSegment, at the arena's start), then

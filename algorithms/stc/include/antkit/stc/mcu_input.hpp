@@ -15,6 +15,7 @@
 // The image keeps its floor in one static array of kMcuFloorBytes (online STC: and its memory of
 // the cells seen, FixedCellMemory, in the rest of it); a map whose floor (and memory) needs more
 // (mcu_bytes) is refused on the host, with the limit in the message, and again on the chip.
+#include <antkit/algorithms/little_endian.hpp>
 #include <antkit/stc/floor.hpp>
 #include <antkit/stc/online.hpp>
 #include <cstddef>
@@ -89,36 +90,27 @@ enum class McuInputError : std::uint8_t {
   return "?";
 }
 
-namespace detail {
-constexpr std::uint64_t le(const std::uint8_t* p, int bytes) noexcept {
-  std::uint64_t v = 0;
-  for (int i = bytes - 1; i >= 0; --i) v = (v << 8) | p[i];
-  return v;
-}
-} // namespace detail
-
 // Reads the header; the map's bytes follow it (floor_size(width, height).bit_bytes of them).
 [[nodiscard]] constexpr McuInputError read_mcu_header(const std::uint8_t* p, std::size_t n,
                                                       McuRun& run) noexcept {
   if (n < kMcuHeaderBytes) return McuInputError::Short;
   for (int i = 0; i < 8; ++i)
     if (p[i] != static_cast<std::uint8_t>(kMcuMagic[i])) return McuInputError::Magic;
-  const auto variant = static_cast<std::uint32_t>(detail::le(p + 8, 4));
+  const auto variant = static_cast<std::uint32_t>(algorithms::load_le(p + 8, 4));
   if (variant < 1 || variant > 3) return McuInputError::Variant;
   run.variant = static_cast<McuVariant>(variant);
   run.marker = variant == 2 ? Marker::Edge : Marker::WholeSubCell;
-  run.width = static_cast<std::int32_t>(static_cast<std::uint32_t>(detail::le(p + 12, 4)));
-  run.height = static_cast<std::int32_t>(static_cast<std::uint32_t>(detail::le(p + 16, 4)));
+  run.width = algorithms::load_le_i32(p + 12);
+  run.height = algorithms::load_le_i32(p + 16);
   if (run.width < 2 || run.height < 2 || run.width > kMcuMaxSide || run.height > kMcuMaxSide)
     return McuInputError::Size;
-  run.start = {static_cast<std::int32_t>(static_cast<std::uint32_t>(detail::le(p + 20, 4))),
-               static_cast<std::int32_t>(static_cast<std::uint32_t>(detail::le(p + 24, 4)))};
+  run.start = {algorithms::load_le_i32(p + 20), algorithms::load_le_i32(p + 24)};
   const CellGridShape shape{run.width / 2, run.height / 2};
   if (run.start.x < 0 || run.start.y < 0 || !shape.in_bounds(cell_of(run.start)))
     return McuInputError::Start;
-  run.noise.ppm = static_cast<std::uint32_t>(detail::le(p + 28, 4));
-  run.noise.seed = detail::le(p + 32, 8);
-  run.noise.trial = detail::le(p + 40, 8);
+  run.noise.ppm = static_cast<std::uint32_t>(algorithms::load_le(p + 28, 4));
+  run.noise.seed = algorithms::load_le(p + 32, 8);
+  run.noise.trial = algorithms::load_le(p + 40, 8);
   if (mcu_bytes(run) > kMcuFloorBytes) return McuInputError::TooLarge;
   return McuInputError::None;
 }
