@@ -46,6 +46,7 @@
 #include "commands.hpp"
 #include "output.hpp"
 
+#include <antkit/algorithms/units.hpp>
 #include <antkit/buffon/estimate.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/stopping.hpp>
@@ -183,12 +184,13 @@ void run(const BuffonCommand& c) {
 
   const auto count = static_cast<std::uint64_t>(c.trials);
   std::vector<buffon::TrialResult> results(count);
-  antkit::buffon::parallel_for(count, static_cast<unsigned>(c.threads), [&](std::uint64_t i) {
-    buffon::TrialParams p = params;
-    p.keep_trails = (i == 0 && (!c.svg.empty() || !c.png.empty()));
-    results[i] =
-        markers ? buffon::run_two_marker_trial(world, p, i) : buffon::run_trial(world, p, i);
-  });
+  antkit::algorithms::for_each_unit(
+      count, static_cast<unsigned>(c.threads), [&](std::uint64_t i, unsigned) {
+        buffon::TrialParams p = params;
+        p.keep_trails = (i == 0 && (!c.svg.empty() || !c.png.empty()));
+        results[i] =
+            markers ? buffon::run_two_marker_trial(world, p, i) : buffon::run_trial(world, p, i);
+      });
 
   nlohmann::json trials = nlohmann::json::array();
   std::vector<double> nbcs, areas, lengths2;

@@ -2,29 +2,33 @@
 // measurement is algorithms/buffon/precision_cost.hpp).
 //
 //   antkit buffon-cost --out DIR [--quick] [--trials N] [--seed S] [--threads T]
-//                      [--max-steps N]
+//                      [--max-steps N] [--format table|json]
 //
 // Runs the sweep of experiments/buffon_cost.hpp (Buffon with two markers, with the online first
 // visit, and RS, to P = 0.2, 0.1 and 0.05 against area) and writes DIR/precision_cost.csv,
 // DIR/precision_cost_fits.csv, DIR/precision_cost.svg and .png (the columns and the figure are
-// described there), then prints the fits and the four paths. --quick: circles and squares of 314,
+// described there), then prints the fits and the four paths (as JSON with --format json: the fits,
+// the files and the number of MPI ranks). --quick: circles and squares of 314,
 // 1 257 and 5 027 only, P = 0.2 and 0.1, 3 trials (for tests and a first look; the full run takes
 // minutes). Progress on stderr.
+//
+//   mpirun -n K antkit buffon-cost ...   splits the trials across K MPI ranks; rank 0 gathers them
+//                                        and writes the same files
 #include "commands.hpp"
+#include "output.hpp"
+#include "ranks.hpp"
 
 #include <antkit/experiments/buffon_cost.hpp>
 #include <antkit/experiments/format.hpp>
 #include <antkit/experiments/plot.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <string>
-#include <unistd.h>
 
 namespace {
 
@@ -40,41 +44,28 @@ struct CostCommand {
   std::uint64_t seed = 1;
   std::int64_t threads = 1;
   std::int64_t max_steps = 40000000;
+  antkit::cli::Format format = antkit::cli::Format::Table;
 };
 
 void run(const CostCommand& c) {
   if (c.out.empty()) throw InputError("--out", "give an output directory");
-  if (c.trials_given && (c.trials < 1 || c.trials > 100000))
-    throw InputError("--trials", "the number of trials must be in [1, 100000]");
   if (c.threads < 1 || c.threads > 256)
     throw InputError("--threads", "the number of threads must be in [1, 256]");
-  if (c.max_steps < 2 || c.max_steps > 100000000)
-    throw InputError("--max-steps", "the budget per trial must be in [2, 100000000]");
-  std::error_code ec;
-  std::filesystem::create_directories(c.out, ec);
-  if (ec || !std::filesystem::is_directory(c.out))
-    throw InputError("--out", "cannot create the directory '" + c.out + "'");
-  if (::access(c.out.c_str(), W_OK) != 0)
-    throw InputError("--out", "cannot write into the directory '" + c.out + "'");
-
   ex::BuffonCostParams params;
   params.quick = c.quick;
-  if (c.trials_given) params.trials = static_cast<std::uint64_t>(c.trials);
+  if (c.trials_given)
+    params.trials = static_cast<std::uint64_t>(std::max<std::int64_t>(c.trials, 0));
   params.seed = c.seed;
-  params.threads = static_cast<unsigned>(c.threads);
   params.budget = c.max_steps;
+  ex::validate(params); // before the output directory is made
 
-  const auto start = std::chrono::steady_clock::now();
-  const bool tty = ::isatty(2) != 0;
-  const auto cost = ex::run_buffon_cost(params, [&](std::size_t done, std::size_t total) {
-    const double s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double eta = s / static_cast<double>(done) * static_cast<double>(total - done);
-    std::cerr << (tty ? "\r" : "") << "buffon-cost: " << done << "/" << total << " points, "
-              << std::fixed << std::setprecision(0) << s << " s, about " << eta << " s left"
-              << std::defaultfloat << std::setprecision(6) << (tty ? "   " : "\n") << std::flush;
-  });
-  if (tty) std::cerr << '\n';
+  ex::BuffonCost cost;
+  const int ranks = antkit::cli::run_on_ranks(c.out, static_cast<unsigned>(c.threads),
+                                              antkit::cli::stage_progress("buffon-cost"),
+                                              [&](const antkit::algorithms::Runner& runner) {
+                                                cost = ex::run_buffon_cost(params, runner);
+                                              });
+  if (ranks == 0) return; // another rank than 0: rank 0 writes and prints
 
   std::array<std::filesystem::path, 4> files;
   try {
@@ -85,6 +76,20 @@ void run(const CostCommand& c) {
   }
   ex::release_drawing_caches();
 
+  if (c.format == antkit::cli::Format::Json) {
+    nlohmann::json fits = nlohmann::json::array();
+    for (const auto& f : cost.table.fits)
+      fits.push_back({{"method", buffon::cost_method_name(f.method)},
+                      {"precision", f.precision_millionths / 1e6},
+                      {"exponent", f.exponent},
+                      {"coefficient", f.coefficient},
+                      {"points", f.points}});
+    nlohmann::json paths = nlohmann::json::array();
+    for (const auto& file : files) paths.push_back(file.string());
+    antkit::cli::emit({{"fits", std::move(fits)}, {"files", std::move(paths)}, {"ranks", ranks}},
+                      c.format, std::cout);
+    return;
+  }
   std::cout << "method   P      exponent  coefficient  points\n";
   for (const auto& f : cost.table.fits)
     std::cout << std::left << std::setw(9) << buffon::cost_method_name(f.method) << std::setw(7)
@@ -107,6 +112,7 @@ void register_buffon_cost(CLI::App& app) {
   sub->add_option("--threads", options->threads, "Worker threads (default 1)");
   sub->add_option("--max-steps", options->max_steps,
                   "Step budget of one trial, all trails together (default 40000000)");
+  antkit::cli::add_format_option(*sub, options->format);
   sub->callback([options, trials] {
     options->trials_given = trials->count() > 0;
     run(*options);

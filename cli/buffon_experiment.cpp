@@ -37,7 +37,7 @@ void run(const ExperimentCommand& c) {
   if (!std::filesystem::is_directory(c.out))
     throw InputError("--out", "cannot make the directory '" + c.out + "'");
   const auto start = std::chrono::steady_clock::now();
-  ex::Runner runner;
+  antkit::algorithms::Runner runner;
   runner.threads = static_cast<unsigned>(c.threads);
   const std::filesystem::path dir(c.out);
   const std::string stem = "figure" + std::to_string(c.params.figure);

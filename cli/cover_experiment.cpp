@@ -61,7 +61,7 @@ nlohmann::json run_experiment(const ExperimentOptions& o) {
   const std::filesystem::path dir(o.out);
   if (!std::filesystem::is_directory(dir))
     throw InputError("--out", "'" + o.out + "' is not a directory");
-  antkit::experiments::Runner runner;
+  antkit::algorithms::Runner runner;
   runner.threads = static_cast<unsigned>(o.jobs);
   const auto rows = ex::run_tables(c, runner);
   const auto csv_path = dir / "uniform_tables.csv";

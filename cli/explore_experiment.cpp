@@ -31,7 +31,7 @@ struct Options {
 nlohmann::json run(const Options& o) {
   ex::ExploreTables t;
   try {
-    t = ex::run_explore_tables(o.seed, ex::Runner{});
+    t = ex::run_explore_tables(o.seed, antkit::algorithms::Runner{});
   } catch (const std::runtime_error& e) {
     throw antkit::cli::CheckFailed(e.what());
   }

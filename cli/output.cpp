@@ -15,7 +15,7 @@
 
 namespace antkit::cli {
 
-antkit::experiments::Progress stage_progress(const std::string& tool) {
+antkit::algorithms::Progress stage_progress(const std::string& tool) {
   const auto start = std::chrono::steady_clock::now();
   const auto seconds = [start] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

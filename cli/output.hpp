@@ -3,7 +3,7 @@
 // people (the default) or as JSON for programs. A subcommand builds one JSON value and calls
 // emit().
 #include <CLI/CLI.hpp>
-#include <antkit/experiments/run.hpp>
+#include <antkit/algorithms/units.hpp>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <stdexcept>
@@ -18,7 +18,7 @@ enum class Format { Table, Json };
 
 // Progress of an experiment's stages on stderr: a live bar with the time left when stderr is a
 // terminal, else a line per quarter of each stage ("tool: stage: done/total units, t s").
-antkit::experiments::Progress stage_progress(const std::string& tool);
+antkit::algorithms::Progress stage_progress(const std::string& tool);
 
 // Adds `--format table|json` to a subcommand.
 void add_format_option(CLI::App& sub, Format& format);

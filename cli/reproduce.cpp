@@ -12,6 +12,7 @@
 // not an error), 2 for bad options.
 #include "commands.hpp"
 #include "output.hpp"
+#include "ranks.hpp"
 
 #include <antkit/experiments/plot.hpp>
 #include <antkit/experiments/reproduce.hpp>
@@ -21,12 +22,8 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <string>
 #include <unistd.h>
-#if ANTKIT_HAVE_MPI
-#include <antkit/mpi/session.hpp>
-#endif
 
 namespace {
 
@@ -70,33 +67,14 @@ void run(const ReproduceCommand& c) {
   const auto seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  ex::Runner runner;
-  runner.threads = static_cast<unsigned>(c.threads);
-  runner.progress = antkit::cli::stage_progress("reproduce");
-
   ex::ReproduceReport report;
-  int ranks = 1;
-#if ANTKIT_HAVE_MPI
-  std::optional<antkit::mpi::Session> session;
-  if (antkit::mpi::launched()) {
-    session.emplace();
-    ranks = session->size();
-    if (!antkit::cli::make_out_dir_on_rank0(*session, c.out)) return;
-    runner.rank = session->rank();
-    runner.ranks = session->size();
-    runner.gather = [&](const std::string& mine) { return session->gather_to_root(mine); };
-    if (session->rank() != 0) runner.progress = {};
-    report = ex::reproduce(o, runner);
-    if (session->rank() != 0) return;
-  } else
-#endif
-  {
-    antkit::cli::make_out_dir(c.out);
-    report = ex::reproduce(o, runner);
-  }
+  const int ranks = antkit::cli::run_on_ranks(
+      c.out, static_cast<unsigned>(c.threads), antkit::cli::stage_progress("reproduce"),
+      [&](const antkit::algorithms::Runner& runner) { report = ex::reproduce(o, runner); });
+  if (ranks == 0) return; // another rank than 0: rank 0 prints
   ex::release_drawing_caches();
   std::cerr << "reproduce: done in " << std::fixed << std::setprecision(1) << seconds() << " s ("
-            << runner.threads << " thread(s) x " << ranks << " rank(s)); report in "
+            << c.threads << " thread(s) x " << ranks << " rank(s)); report in "
             << (std::filesystem::path(c.out) / "README.md").string() << '\n'
             << std::defaultfloat << std::setprecision(6);
   if (c.format == antkit::cli::Format::Json) {

@@ -250,7 +250,7 @@ void run_noise_command(const NoiseOptions& o) {
     // Trials run in order, each with its own keyed stream (trial = its index): the curve does
     // not depend on anything but the seed (experiments/stc_tours.hpp).
     points = antkit::experiments::run_stc_noise(map.cells, start, {o.variant}, ppm, o.trials,
-                                                o.seed, antkit::experiments::Runner{}, &reachable);
+                                                o.seed, antkit::algorithms::Runner{}, &reachable);
   } catch (const InputError& e) {
     throw InputError(o.start.empty() ? o.map : "--start", e.message());
   }

@@ -37,7 +37,7 @@ void run(const FloorExperimentCommand& c) {
     p.max_board = 10;
   }
   antkit::cli::make_out_dir(c.out);
-  ex::Runner runner;
+  antkit::algorithms::Runner runner;
   runner.threads = static_cast<unsigned>(c.threads);
   runner.progress = antkit::cli::stage_progress("stc-floor-experiment");
   const auto curves = ex::run_floor_curves(p, runner);

@@ -24,6 +24,7 @@
 //
 // Exit status: 0 all match, 1 a mismatch or a missing golden line, 2 bad usage or input.
 #include <algorithm>
+#include <antkit/algorithms/units.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/two_markers.hpp>
 #include <antkit/devices/stc_floor/floor.hpp>
@@ -210,13 +211,14 @@ void add_buffon(std::vector<Scenario>& out) {
              // Each trial's hash and both trails' lengths (the markers' lengths come from
              // exact roots seeded in binary64).
              std::vector<std::uint64_t> words(3 * kBuffonTrials);
-             buffon::parallel_for(kBuffonTrials, threads, [&](std::uint64_t t) {
-               const auto r = markers ? buffon::run_two_marker_trial(world, p, t)
-                                      : buffon::run_trial(world, p, t);
-               words[3 * t] = r.hash;
-               words[3 * t + 1] = static_cast<std::uint64_t>(r.length1_raw);
-               words[3 * t + 2] = static_cast<std::uint64_t>(r.length2_raw);
-             });
+             antkit::algorithms::for_each_unit(
+                 kBuffonTrials, threads, [&](std::uint64_t t, unsigned) {
+                   const auto r = markers ? buffon::run_two_marker_trial(world, p, t)
+                                          : buffon::run_trial(world, p, t);
+                   words[3 * t] = r.hash;
+                   words[3 * t + 1] = static_cast<std::uint64_t>(r.length1_raw);
+                   words[3 * t + 2] = static_cast<std::uint64_t>(r.length2_raw);
+                 });
              kernel::TraceHash all;
              for (const std::uint64_t w : words) all.add_u64(w);
              return all.finish();

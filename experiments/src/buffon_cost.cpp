@@ -30,14 +30,15 @@ std::vector<BuffonCostArena> buffon_cost_arenas(bool quick) {
   return arenas;
 }
 
-BuffonCost run_buffon_cost(const BuffonCostParams& params,
-                           const std::function<void(std::size_t, std::size_t)>& progress) {
+void validate(const BuffonCostParams& params) {
   if (params.trials && (*params.trials < 1 || *params.trials > 100000))
-    throw kernel::InputError("--trials", "the number of trials must be in [1, 100000]");
-  if (params.threads < 1 || params.threads > 256)
-    throw kernel::InputError("--threads", "the number of threads must be in [1, 256]");
+    throw kernel::InputError("trials", "the number of trials must be in [1, 100000]");
   if (params.budget < 2 || params.budget > 100000000)
-    throw kernel::InputError("--max-steps", "the budget per trial must be in [2, 100000000]");
+    throw kernel::InputError("step budget", "the budget per trial must be in [2, 100000000]");
+}
+
+BuffonCost run_buffon_cost(const BuffonCostParams& params, const algorithms::Runner& runner) {
+  validate(params);
   std::vector<std::unique_ptr<buffon::World>> worlds;
   std::vector<buffon::CostArena> arenas;
   for (const auto& [spec, family] : buffon_cost_arenas(params.quick)) {
@@ -51,10 +52,9 @@ BuffonCost run_buffon_cost(const BuffonCostParams& params,
   out.params = params;
   out.run.trials = params.trials ? *params.trials : (params.quick ? 3 : 9);
   out.run.seed = params.seed;
-  out.run.threads = params.threads;
   out.run.budget = params.budget;
   if (params.quick) out.run.precisions = {200000, 100000};
-  out.table = buffon::precision_cost(arenas, out.run, progress);
+  out.table = buffon::precision_cost(arenas, out.run, runner);
   return out;
 }
 

@@ -69,7 +69,7 @@ std::vector<BuffonArena> buffon_figure_arenas(int figure) {
   return pts;
 }
 
-BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const Runner& runner) {
+BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const algorithms::Runner& runner) {
   const auto arenas = buffon_figure_arenas(params.figure);
   if (arenas.empty()) throw InputError("--figure", "the figure must be 5, 6, 7, 8 or 9 (or 14)");
   check(params);
@@ -87,27 +87,28 @@ BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const Runner& r
     trial_params.push_back(tp);
   }
   const auto trials = static_cast<std::uint64_t>(params.trials);
-  const auto payloads = run_units(runner, "paper 000, figure " + std::to_string(params.figure),
-                                  arenas.size() * trials, [&](std::uint64_t u) {
-                                    const std::size_t k = u / trials;
-                                    const auto r =
-                                        buffon::run_trial(worlds[k], trial_params[k], u % trials);
-                                    Payload p;
-                                    p.put(r.bc);
-                                    p.put_i(r.length1_raw);
-                                    p.put_i(r.length2_raw);
-                                    p.put(r.crossings_exact);
-                                    p.put(r.blocked);
-                                    p.put(r.hash);
-                                    return p;
-                                  });
+  const auto payloads =
+      algorithms::run_units(runner, "paper 000, figure " + std::to_string(params.figure),
+                            arenas.size() * trials, [&](std::uint64_t u) {
+                              const std::size_t k = u / trials;
+                              const auto r =
+                                  buffon::run_trial(worlds[k], trial_params[k], u % trials);
+                              algorithms::Payload p;
+                              p.put(r.bc);
+                              p.put_i(r.length1_raw);
+                              p.put_i(r.length2_raw);
+                              p.put(r.crossings_exact);
+                              p.put(r.blocked);
+                              p.put(r.hash);
+                              return p;
+                            });
   BuffonFigure out{params, {}, 0};
   if (!runner.root()) return out;
   kernel::TraceHash digest;
   for (std::size_t k = 0; k < arenas.size(); ++k) {
     std::vector<double> nbc, cf, blocked, length1, bc_values;
     for (std::uint64_t t = 0; t < trials; ++t) {
-      Payload p = payloads[k * trials + t];
+      algorithms::Payload p = payloads[k * trials + t];
       const auto bc = p.get();
       const double l1 = static_cast<double>(p.get_i()) / 65536.0;
       const double l2 = static_cast<double>(p.get_i()) / 65536.0;
@@ -338,7 +339,7 @@ Figure buffon_figure5b_plot(const BuffonFigure& f) {
   return fig;
 }
 
-Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner) {
+Figure14 run_figure14(const BuffonFigureParams& params, const algorithms::Runner& runner) {
   check(params);
   constexpr int K = 10;
   const std::int64_t step_raw = std::int64_t{168} * 65536;
@@ -357,11 +358,11 @@ Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner) {
     trial_params.push_back(tp);
   }
   const auto trials = static_cast<std::uint64_t>(params.trials);
-  const auto payloads =
-      run_units(runner, "paper 000, figure 14", diameters.size() * trials, [&](std::uint64_t u) {
+  const auto payloads = algorithms::run_units(
+      runner, "paper 000, figure 14", diameters.size() * trials, [&](std::uint64_t u) {
         const std::size_t k = u / trials;
         const auto r = buffon::run_checkpoints(worlds[k], trial_params[k], u % trials, step_raw, K);
-        Payload p;
+        algorithms::Payload p;
         p.put(r.bc.size());
         for (std::size_t i = 0; i < r.bc.size(); ++i) {
           p.put(r.bc[i]);
@@ -378,7 +379,7 @@ Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner) {
   for (std::size_t k = 0; k < diameters.size(); ++k) {
     Figure14Arena a{static_cast<double>(diameters[k]), shapes[k].area(), {}, {}};
     for (std::uint64_t t = 0; t < trials; ++t) {
-      Payload p = payloads[k * trials + t];
+      algorithms::Payload p = payloads[k * trials + t];
       for (const std::uint64_t w : p.words()) digest.add_u64(w);
       buffon::CheckpointResult r;
       const auto n = p.get();

@@ -39,7 +39,7 @@ double sample_deviation(const std::vector<double>& v) {
   return std::sqrt(s / static_cast<double>(v.size() - 1));
 }
 
-ExploreTables run_explore_tables(std::uint64_t seed, const Runner& runner) {
+ExploreTables run_explore_tables(std::uint64_t seed, const algorithms::Runner& runner) {
   struct Unit {
     std::size_t env, method;
     int trial;
@@ -50,7 +50,7 @@ ExploreTables run_explore_tables(std::uint64_t seed, const Runner& runner) {
       for (int t = 1; t <= kExploreEnvironments[e].repetitions; ++t) units.push_back({e, m, t});
   const kernel::Cell corner{0, 24};
   const auto payloads =
-      run_units(runner, "paper 001, tables 2-3", units.size(), [&](std::uint64_t u) {
+      algorithms::run_units(runner, "paper 001, tables 2-3", units.size(), [&](std::uint64_t u) {
         const Unit& unit = units[u];
         const auto& env = kExploreEnvironments[unit.env];
         const auto trial = static_cast<std::uint64_t>(unit.trial);
@@ -62,7 +62,7 @@ ExploreTables run_explore_tables(std::uint64_t seed, const Runner& runner) {
         if (!r.completed || r.explored != r.observable)
           throw std::runtime_error(std::string(env.name) + ", trial " + std::to_string(unit.trial) +
                                    ": the exploration did not complete");
-        Payload p;
+        algorithms::Payload p;
         p.put(r.steps);
         p.put(r.eme);
         p.put(r.hash);
@@ -73,7 +73,7 @@ ExploreTables run_explore_tables(std::uint64_t seed, const Runner& runner) {
   if (!runner.root()) return out;
   kernel::TraceHash digest;
   for (std::size_t u = 0; u < units.size(); ++u) {
-    Payload p = payloads[u];
+    algorithms::Payload p = payloads[u];
     auto& runs = out.runs[units[u].env][units[u].method];
     runs.steps.push_back(static_cast<double>(p.get()));
     runs.eme.push_back(static_cast<double>(p.get()));

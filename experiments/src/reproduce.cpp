@@ -190,7 +190,7 @@ std::string claims_markdown(const std::vector<Claim>& claims) {
   return s.str();
 }
 
-ReproduceReport reproduce(const ReproduceOptions& o, const Runner& runner) {
+ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& runner) {
   validate(o);
   const auto wants = [&](const char* family) {
     return o.only.empty() || std::find(o.only.begin(), o.only.end(), family) != o.only.end();

@@ -60,7 +60,7 @@ struct Level {
 
 } // namespace
 
-FloorCurves run_floor_curves(const FloorParams& p, const Runner& runner) {
+FloorCurves run_floor_curves(const FloorParams& p, const algorithms::Runner& runner) {
   FloorCurves c;
   c.params = p;
   std::vector<Level> levels;
@@ -69,8 +69,8 @@ FloorCurves run_floor_curves(const FloorParams& p, const Runner& runner) {
   for (const auto v : p.drift) levels.push_back({"drift", v});
   for (const auto v : p.drift) levels.push_back({"drift-uncalibrated", v});
   const auto trials = static_cast<std::uint64_t>(p.trials);
-  const auto payloads =
-      run_units(runner, "stc floor curves", levels.size() * trials, [&](std::uint64_t unit) {
+  const auto payloads = algorithms::run_units(
+      runner, "stc floor curves", levels.size() * trials, [&](std::uint64_t unit) {
         const Level& l = levels[unit / trials];
         const std::uint64_t t = unit % trials;
         sf::FloorOptions f;
@@ -80,7 +80,7 @@ FloorCurves run_floor_curves(const FloorParams& p, const Runner& runner) {
         if (l.factor.rfind("drift", 0) == 0)
           f.drift_ppm_per_minute = static_cast<std::int32_t>(l.level);
         const auto r = run_one(board(p.cells, 10, p.seed, t), f, l.factor != "drift-uncalibrated");
-        Payload out;
+        algorithms::Payload out;
         out.put_i(r.reachable);
         out.put_i(r.covered);
         out.put_i(r.repeats);
@@ -91,14 +91,14 @@ FloorCurves run_floor_curves(const FloorParams& p, const Runner& runner) {
       });
   // Board sizes: each unit one (fade, n); n from 2 to max_board, decided in order afterwards.
   const auto sizes = static_cast<std::uint64_t>(std::max(0, p.max_board - 1));
-  const auto boards =
-      run_units(runner, "stc floor boards", p.board_fade_s.size() * sizes, [&](std::uint64_t unit) {
+  const auto boards = algorithms::run_units(
+      runner, "stc floor boards", p.board_fade_s.size() * sizes, [&](std::uint64_t unit) {
         sf::FloorOptions f;
         f.seed = p.seed;
         f.fade_half_life_ms = 1000 * p.board_fade_s[unit / sizes];
         const auto n = static_cast<std::int32_t>(2 + unit % sizes);
         const auto r = run_one(board(n, 0, p.seed, 0), f, true);
-        Payload out;
+        algorithms::Payload out;
         out.put(r.exact ? 1 : 0);
         out.put_i(r.clock_ms);
         out.put(r.hash);
@@ -112,7 +112,7 @@ FloorCurves run_floor_curves(const FloorParams& p, const Runner& runner) {
     pt.factor = levels[li].factor;
     pt.level = levels[li].level;
     for (std::uint64_t t = 0; t < trials; ++t) {
-      Payload w = payloads[li * trials + t];
+      algorithms::Payload w = payloads[li * trials + t];
       const auto reachable = static_cast<double>(w.get_i());
       const auto covered = static_cast<double>(w.get_i());
       const auto repeats = static_cast<double>(w.get_i());
@@ -137,7 +137,7 @@ FloorCurves run_floor_curves(const FloorParams& p, const Runner& runner) {
     FloorBoard b;
     b.fade_s = p.board_fade_s[fi];
     for (std::uint64_t k = 0; k < sizes; ++k) {
-      Payload w = boards[fi * sizes + k];
+      algorithms::Payload w = boards[fi * sizes + k];
       const bool exact = w.get() == 1;
       const auto ms = w.get_i();
       h.add_u64(w.get());

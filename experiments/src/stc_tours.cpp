@@ -50,7 +50,7 @@ kernel::OccupancyGrid stc_experiment_map(const StcToursParams& params, const std
 std::vector<StcNoisePoint> run_stc_noise(const kernel::OccupancyGrid& map, kernel::Cell start,
                                          const std::vector<std::string>& variants,
                                          const std::vector<std::uint32_t>& ppm, int trials,
-                                         std::uint64_t seed, const Runner& runner,
+                                         std::uint64_t seed, const algorithms::Runner& runner,
                                          std::int64_t* reachable, std::uint64_t* hash) {
   std::vector<stc::Variant> vs;
   for (const auto& name : variants) {
@@ -65,14 +65,14 @@ std::vector<StcNoisePoint> run_stc_noise(const kernel::OccupancyGrid& map, kerne
   const std::int64_t reach =
       stc::run_stc(map, start, vs.empty() ? stc::Variant::Ant : vs[0], quiet).reachable_subcells;
   const std::size_t levels = ppm.size(), n = static_cast<std::size_t>(std::max(0, trials));
-  const auto units =
-      run_units(runner, "paper 002, marker noise", vs.size() * levels * n, [&](std::uint64_t u) {
+  const auto units = algorithms::run_units(
+      runner, "paper 002, marker noise", vs.size() * levels * n, [&](std::uint64_t u) {
         const stc::Variant v = vs[u / (levels * n)];
         stc::RunOptions run;
         run.noise = {ppm[(u / n) % levels], seed, static_cast<std::uint64_t>(u % n)};
         run.record_path = false;
         const auto r = stc::run_stc(map, start, v, run);
-        Payload p;
+        algorithms::Payload p;
         p.put_i(r.covered);
         p.put_i(r.repeats);
         p.put(r.covered == r.reachable_subcells && r.returned_to_start ? 1 : 0);
@@ -91,7 +91,7 @@ std::vector<StcNoisePoint> run_stc_noise(const kernel::OccupancyGrid& map, kerne
       point.variant = std::string(stc::variant_name(vs[vi]));
       point.ppm = ppm[level];
       for (std::size_t t = 0; t < n; ++t) {
-        Payload p = units[(vi * levels + level) * n + t];
+        algorithms::Payload p = units[(vi * levels + level) * n + t];
         point.coverage += static_cast<double>(p.get_i()) / all;
         point.repeats_per_subcell += static_cast<double>(p.get_i()) / all;
         point.complete += static_cast<double>(p.get());
@@ -109,7 +109,7 @@ std::vector<StcNoisePoint> run_stc_noise(const kernel::OccupancyGrid& map, kerne
   return points;
 }
 
-StcTours run_stc_tours(const StcToursParams& params, const Runner& runner) {
+StcTours run_stc_tours(const StcToursParams& params, const algorithms::Runner& runner) {
   StcTours out;
   out.params = params;
   std::vector<kernel::OccupancyGrid> grids;
@@ -123,11 +123,11 @@ StcTours run_stc_tours(const StcToursParams& params, const Runner& runner) {
     out.maps.push_back(random_name(k));
   }
   const std::size_t variants = stc::kVariants.size();
-  const auto tours =
-      run_units(runner, "paper 002, tours", grids.size() * variants, [&](std::uint64_t u) {
+  const auto tours = algorithms::run_units(
+      runner, "paper 002, tours", grids.size() * variants, [&](std::uint64_t u) {
         const auto& map = grids[u / variants];
         const stc::Variant v = stc::kVariants[u % variants];
-        Payload p;
+        algorithms::Payload p;
         const auto start = stc::default_start(map, v);
         if (!start) {
           p.put(0); // no place to start: an empty row
@@ -168,7 +168,7 @@ StcTours run_stc_tours(const StcToursParams& params, const Runner& runner) {
 
   kernel::TraceHash digest;
   for (std::size_t u = 0; u < tours.size(); ++u) {
-    Payload p = tours[u];
+    algorithms::Payload p = tours[u];
     StcTourRow row;
     row.map = out.maps[u / variants];
     row.variant = std::string(stc::variant_name(stc::kVariants[u % variants]));

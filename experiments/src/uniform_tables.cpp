@@ -5,26 +5,26 @@
 
 namespace antkit::experiments::uniform_tables {
 
-std::vector<TablesRow> run_tables(const TablesConfig& c, const Runner& runner) {
+std::vector<TablesRow> run_tables(const TablesConfig& c, const algorithms::Runner& runner) {
   const std::size_t per_row = c.runs;
-  const auto payloads =
-      run_units(runner,
-                c.sensor_model == SensorModel::Disk ? "paper 004, tables 1-4, disk sensor"
-                                                    : "paper 004, tables 1-4",
-                kPaperTables.size() * per_row, [&](std::uint64_t k) {
-                  const auto t = detail::run_trial(c, kPaperTables[k / per_row],
-                                                   static_cast<std::uint32_t>(k % per_row));
-                  Payload p;
-                  for (std::size_t a = 0; a < table_columns(c); ++a) {
-                    const auto& r = t.result[a];
-                    p.put(r.viewed);
-                    p.put(r.viewable);
-                    p.put(r.movements);
-                    p.put(r.moves);
-                    p.put(r.hash);
-                  }
-                  return p;
-                });
+  const auto payloads = algorithms::run_units(
+      runner,
+      c.sensor_model == SensorModel::Disk ? "paper 004, tables 1-4, disk sensor"
+                                          : "paper 004, tables 1-4",
+      kPaperTables.size() * per_row, [&](std::uint64_t k) {
+        const auto t = detail::run_trial(c, kPaperTables[k / per_row],
+                                         static_cast<std::uint32_t>(k % per_row));
+        algorithms::Payload p;
+        for (std::size_t a = 0; a < table_columns(c); ++a) {
+          const auto& r = t.result[a];
+          p.put(r.viewed);
+          p.put(r.viewable);
+          p.put(r.movements);
+          p.put(r.moves);
+          p.put(r.hash);
+        }
+        return p;
+      });
   std::vector<TablesRow> rows;
   if (!runner.root()) return rows;
   for (std::size_t r = 0; r < kPaperTables.size(); ++r) {
@@ -33,7 +33,7 @@ std::vector<TablesRow> run_tables(const TablesConfig& c, const Runner& runner) {
     kernel::TraceHash digest;
     for (std::size_t a = 0; a < kTableColumns; ++a) row.coverage_min[a] = 100.0;
     for (std::size_t run = 0; run < per_row; ++run) {
-      Payload p = payloads[r * per_row + run];
+      algorithms::Payload p = payloads[r * per_row + run];
       for (std::size_t a = 0; a < table_columns(c); ++a) {
         const auto viewed = p.get(), viewable = p.get(), movements = p.get(), moves = p.get(),
                    hash = p.get();

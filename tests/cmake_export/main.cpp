@@ -50,7 +50,7 @@ int main() {
       antkit::kernel::hash_hex(hash.finish()).c_str(), ok ? "ok" : "FAILED");
   // The experiments layer: paper 001's tables (fast wall-follow in the empty room takes the
   // paper's 47 steps, give or take) and a figure drawn with Cairo to SVG and PNG.
-  const auto tables = antkit::experiments::run_explore_tables(1, antkit::experiments::Runner{});
+  const auto tables = antkit::experiments::run_explore_tables(1, antkit::algorithms::Runner{});
   const double empty_room = antkit::experiments::mean_of(tables.runs[0][0].steps);
   antkit::experiments::Figure figure;
   figure.title = "consumer";

@@ -3,6 +3,7 @@
 // the two-marker alternative on the same polygons. Fixed seeds (20261125); every line printed
 // names the polygon and its trial, so a failure reproduces from the log. Slow: about a minute.
 #include <algorithm>
+#include <antkit/algorithms/units.hpp>
 #include <antkit/buffon/estimate.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/stopping.hpp>
@@ -119,7 +120,8 @@ std::vector<Polygon> polygons(std::size_t count) {
 
 std::vector<Outcome> run_all(const std::vector<Polygon>& gs, std::uint32_t p, bool markers) {
   std::vector<Outcome> out(gs.size());
-  buffon::parallel_for(gs.size(), 2, [&](std::uint64_t k) { out[k] = run(gs[k], k, p, markers); });
+  antkit::algorithms::for_each_unit(
+      gs.size(), 2, [&](std::uint64_t k, unsigned) { out[k] = run(gs[k], k, p, markers); });
   for (std::size_t k = 0; k < out.size(); ++k)
     std::cout << (markers ? "markers" : "online") << " P " << p / 1e6 << " polygon " << k
               << " area " << out[k].area << " corrected " << out[k].corrected << " error "

@@ -35,11 +35,15 @@ TEST_CASE("precision_cost: two small circles, every method reaches P = 0.2") {
   params.precisions = {200000};
   params.trials = 3;
   std::size_t calls = 0;
-  const auto table = buffon::precision_cost(arenas, params, [&](std::size_t done, std::size_t n) {
+  antkit::algorithms::Runner runner;
+  runner.progress = [&](std::string_view stage, std::uint64_t done, std::uint64_t n) {
     ++calls;
+    CHECK(stage == "trials");
     CHECK(done == calls);
-    CHECK(n == 6);
-  });
+    CHECK(n == 18); // every trial of every point is a unit
+  };
+  const auto table = buffon::precision_cost(arenas, params, runner);
+  CHECK(calls == 18);
   REQUIRE(table.points.size() == 6); // 2 arenas x 1 precision x 3 methods
   for (const auto& p : table.points) {
     INFO(p.arena << " " << buffon::cost_method_name(p.method));
@@ -54,8 +58,9 @@ TEST_CASE("precision_cost: two small circles, every method reaches P = 0.2") {
   REQUIRE(table.fits.size() == 3);
   for (const auto& f : table.fits) CHECK(f.points == 2);
   // Threads change nothing.
-  params.threads = 2;
-  const auto again = buffon::precision_cost(arenas, params);
+  antkit::algorithms::Runner two;
+  two.threads = 2;
+  const auto again = buffon::precision_cost(arenas, params, two);
   for (std::size_t i = 0; i < table.points.size(); ++i)
     CHECK(*again.points[i].median == *table.points[i].median);
   // A budget too small: no method reaches P, every median is absent and no fit is made.

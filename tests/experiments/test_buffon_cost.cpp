@@ -52,14 +52,17 @@ TEST_CASE("run_buffon_cost --quick: every arena, P and method, its fits, its fig
   ex::BuffonCostParams p;
   p.quick = true;
   p.trials = 1;
-  p.threads = 2;
-  std::size_t calls = 0, last_total = 0;
-  const auto cost = ex::run_buffon_cost(p, [&](std::size_t done, std::size_t total) {
+  antkit::algorithms::Runner runner;
+  runner.threads = 2;
+  std::size_t calls = 0;
+  std::uint64_t last_total = 0;
+  runner.progress = [&](std::string_view, std::uint64_t done, std::uint64_t total) {
     ++calls;
     CHECK(done == calls);
     last_total = total;
-  });
-  CHECK(calls == 36); // 6 arenas, P = 0.2 and 0.1, 3 methods
+  };
+  const auto cost = ex::run_buffon_cost(p, runner);
+  CHECK(calls == 36); // 6 arenas, P = 0.2 and 0.1, 3 methods, 1 trial: 36 units
   CHECK(last_total == 36);
   CHECK(cost.run.trials == 1);
   CHECK(cost.run.precisions == std::vector<std::uint32_t>{200000, 100000});
@@ -77,11 +80,11 @@ TEST_CASE("run_buffon_cost --quick: every arena, P and method, its fits, its fig
   CHECK(figure.caption.rfind("1 trials per point", 0) == 0);
 
   // Threads do not change a byte (precision_cost reduces in trial order).
-  p.threads = 1;
   p.trials = 2;
   const auto one = ex::run_buffon_cost(p);
-  p.threads = 3;
-  const auto three = ex::run_buffon_cost(p);
+  antkit::algorithms::Runner three_threads;
+  three_threads.threads = 3;
+  const auto three = ex::run_buffon_cost(p, three_threads);
   CHECK(ex::buffon_cost_csv(one) == ex::buffon_cost_csv(three));
   CHECK(ex::buffon_cost_fits_csv(one) == ex::buffon_cost_fits_csv(three));
 
@@ -100,17 +103,16 @@ TEST_CASE("run_buffon_cost --quick: every arena, P and method, its fits, its fig
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("run_buffon_cost refuses trials, threads and budgets out of range", "[experiments]") {
+TEST_CASE("run_buffon_cost refuses trials and budgets out of range, in its own words",
+          "[experiments]") {
   ex::BuffonCostParams p;
   p.quick = true;
   p.trials = 0;
-  CHECK(refusal(p) == "--trials: the number of trials must be in [1, 100000]");
+  CHECK(refusal(p) == "trials: the number of trials must be in [1, 100000]");
   p.trials = 100001;
-  CHECK(refusal(p) == "--trials: the number of trials must be in [1, 100000]");
+  CHECK(refusal(p) == "trials: the number of trials must be in [1, 100000]");
   p.trials = 1;
-  p.threads = 0;
-  CHECK(refusal(p) == "--threads: the number of threads must be in [1, 256]");
-  p.threads = 1;
   p.budget = 1;
-  CHECK(refusal(p) == "--max-steps: the budget per trial must be in [2, 100000000]");
+  CHECK(refusal(p) == "step budget: the budget per trial must be in [2, 100000000]");
+  CHECK_THROWS_AS(ex::validate(p), antkit::kernel::InputError);
 }

@@ -47,7 +47,7 @@ TEST_CASE("reproduce writes the report, the tables and the figures, and decides 
       fs::temp_directory_path() / ("antkit-reproduce-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  ex::Runner runner;
+  antkit::algorithms::Runner runner;
   runner.threads = 2;
   const auto report = ex::reproduce(options(dir), runner);
 
@@ -78,7 +78,7 @@ TEST_CASE("reproduce writes the report, the tables and the figures, and decides 
   // 001-3 has a part per environment: fast wall-follow's mean E.M.E minus the frontier
   // baseline's (without sweeping), recounted from the tables, with an interval around it; the
   // claim's verdict is the partly convention over the parts' verdicts.
-  const auto tables = ex::run_explore_tables(1, ex::Runner{});
+  const auto tables = ex::run_explore_tables(1, antkit::algorithms::Runner{});
   for (const auto& c : report.claims)
     if (c.id == "001-3") {
       REQUIRE(c.parts.size() == tables.runs.size());
@@ -122,7 +122,7 @@ TEST_CASE("reproduce writes the same bytes for any number of threads", "[propert
   for (const unsigned threads : {1u, 3u}) {
     const fs::path dir = base / std::to_string(threads);
     fs::create_directories(dir);
-    ex::Runner runner;
+    antkit::algorithms::Runner runner;
     runner.threads = threads;
     (void)ex::reproduce(options(dir), runner);
     const auto files = tree(dir);

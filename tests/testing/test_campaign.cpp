@@ -4,11 +4,14 @@
 #include <antkit/campaign/campaign.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
+#include <barrier>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <unistd.h>
 
 namespace {
@@ -133,26 +136,48 @@ TEST_CASE("campaign: a time limit stops at a case boundary, and bad options are 
   CHECK_THROWS_AS(campaign::run(bad), kernel::InputError);
 }
 
-TEST_CASE("campaign: ranks split the cases and merge into the one-process result",
+TEST_CASE("campaign: ranks split the cases and rank 0 returns the one-process result",
           "[testing][campaign]") {
   auto o = options(campaign::Family::Los, 200, 1);
   o.extra_rule = [](const kernel::OccupancyGrid& m) { return m.width() > 8 ? "wide" : ""; };
   const auto whole = campaign::run(o);
   REQUIRE(!whole.failures.empty());
-  std::vector<campaign::Result> parts;
-  for (std::uint32_t r = 0; r < 3; ++r) {
-    auto part = o;
-    part.rank = r;
-    part.ranks = 3;
-    parts.push_back(campaign::run(part));
-    CHECK(parts.back().cases_run == 200u);
-  }
-  const auto merged = campaign::merge(parts);
+  // Three ranks simulated by three threads that share a gather (the real mpirun is
+  // mpi.campaign.identical).
+  constexpr int kRanks = 3;
+  std::barrier sync(kRanks);
+  std::mutex lock;
+  std::vector<std::string> texts(kRanks);
+  std::vector<campaign::Result> results(kRanks);
+  std::vector<std::thread> pool;
+  for (int r = 0; r < kRanks; ++r)
+    pool.emplace_back([&, r] {
+      campaign::Ranks ranks;
+      ranks.rank = r;
+      ranks.ranks = kRanks;
+      ranks.gather = [&, r](const std::string& mine) {
+        {
+          const std::lock_guard<std::mutex> held(lock);
+          texts[static_cast<std::size_t>(r)] = mine;
+        }
+        sync.arrive_and_wait();
+        std::vector<std::string> all;
+        if (r == 0) all = texts;
+        sync.arrive_and_wait(); // nobody writes the next batch's text before rank 0 has read
+        return all;
+      };
+      results[static_cast<std::size_t>(r)] = campaign::run(o, ranks);
+    });
+  for (auto& t : pool) t.join();
+  for (const auto& part : results) CHECK(part.cases_run == 200u);
+  CHECK(results[1].failures.empty());
+  CHECK(results[2].moves == 0u);
+  const auto& merged = results[0];
   CHECK(merged.moves == whole.moves);
   CHECK(merged.vacuous == whole.vacuous);
   REQUIRE(merged.failures.size() == whole.failures.size());
   for (std::size_t i = 0; i < whole.failures.size(); ++i) {
-    // Through text and back, as the MPI gather carries them.
+    // Through text and back, as summary.json carries them.
     const auto f = campaign::deserialize(campaign::serialize(merged.failures[i]));
     CHECK(f.case_index == whole.failures[i].case_index);
     CHECK(f.map.cells() == whole.failures[i].map.cells());
@@ -161,6 +186,10 @@ TEST_CASE("campaign: ranks split the cases and merge into the one-process result
     CHECK(f.rule == whole.failures[i].rule);
     CHECK(f.shrink_steps == whole.failures[i].shrink_steps);
   }
+  // Several ranks without a gather is a programming error, not a silent partial result.
+  campaign::Ranks lonely;
+  lonely.ranks = 2;
+  CHECK_THROWS_AS(campaign::run(o, lonely), std::logic_error);
 }
 
 TEST_CASE("campaign: a Buffon failure is written as its WKT arena with its command",

@@ -1,14 +1,11 @@
 // Buffon's-needle measurement: two visits, the pheromone raster, the detector (measurement.hpp).
 #include <algorithm>
+#include <antkit/algorithms/units.hpp>
 #include <antkit/buffon/crossing_counter.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/stopping.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <atomic>
-#include <exception>
-#include <mutex>
 #include <optional>
-#include <thread>
 
 namespace antkit::buffon {
 
@@ -181,41 +178,10 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
   return result;
 }
 
-void parallel_for(std::uint64_t count, unsigned threads,
-                  const std::function<void(std::uint64_t)>& f) {
-  threads = std::max(1u, threads);
-  if (threads == 1 || count <= 1) {
-    for (std::uint64_t i = 0; i < count; ++i) f(i);
-    return;
-  }
-  std::atomic<std::uint64_t> next{0};
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  auto worker = [&] {
-    for (;;) {
-      const std::uint64_t i = next.fetch_add(1);
-      if (i >= count) return;
-      try {
-        f(i);
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(error_mutex);
-        if (!error) error = std::current_exception();
-        next.store(count);
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  const auto n = static_cast<unsigned>(std::min<std::uint64_t>(threads, count));
-  pool.reserve(n);
-  for (unsigned t = 0; t < n; ++t) pool.emplace_back(worker);
-  for (auto& th : pool) th.join();
-  if (error) std::rethrow_exception(error);
-}
-
 std::vector<TrialResult> run_trials(const World& world, const TrialParams& params,
                                     std::uint64_t count, unsigned threads) {
   std::vector<TrialResult> results(static_cast<std::size_t>(count));
-  parallel_for(count, threads, [&](std::uint64_t i) {
+  algorithms::for_each_unit(count, threads, [&](std::uint64_t i, unsigned) {
     results[static_cast<std::size_t>(i)] = run_trial(world, params, i);
   });
   return results;

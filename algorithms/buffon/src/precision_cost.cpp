@@ -66,7 +66,7 @@ double trial_cost(const CostArena& a, CostMethod method, std::uint32_t p, const 
 } // namespace
 
 CostTable precision_cost(std::span<const CostArena> arenas, const CostParams& c,
-                         const std::function<void(std::size_t, std::size_t)>& progress) {
+                         const algorithms::Runner& runner) {
   if (arenas.empty()) throw kernel::InputError("arenas", "no arena to measure");
   if (c.precisions.empty() || c.methods.empty())
     throw kernel::InputError("precision", "no precision or no method to measure");
@@ -76,40 +76,60 @@ CostTable precision_cost(std::span<const CostArena> arenas, const CostParams& c,
   if (c.trials < 1 || c.trials > 100000)
     throw kernel::InputError("trials", "the number of trials must be in [1, 100000]");
   detail::check_total_steps(c.budget);
-  CostTable out;
-  const std::size_t total = arenas.size() * c.precisions.size() * c.methods.size();
-  for (std::size_t ai = 0; ai < arenas.size(); ++ai)
+  // The points, arena-major, then precision, then method; a point's trials are units
+  // point * trials + trial.
+  struct At {
+    std::size_t arena, precision;
+    CostMethod method;
+  };
+  std::vector<At> at;
+  for (std::size_t ai = 0; ai < arenas.size(); ++ai) {
+    if (arenas[ai].world == nullptr)
+      throw kernel::InputError("arenas", arenas[ai].name + " has no world");
     for (std::size_t pi = 0; pi < c.precisions.size(); ++pi)
-      for (const CostMethod m : c.methods) {
-        const CostArena& a = arenas[ai];
-        if (a.world == nullptr) throw kernel::InputError("arenas", a.name + " has no world");
+      for (const CostMethod m : c.methods) at.push_back({ai, pi, m});
+  }
+  const std::vector<algorithms::Payload> units =
+      algorithms::run_units(runner, "trials", at.size() * c.trials, [&](std::uint64_t unit) {
+        const At& p = at[static_cast<std::size_t>(unit / c.trials)];
         // Streams: experiment 17000 + 100 arena + 10 precision + method, so that no two points
         // share a draw and a point's trials do not depend on which other points are measured.
-        const std::uint64_t experiment = 17000 + 100 * ai + 10 * pi + static_cast<std::uint64_t>(m);
-        std::vector<double> costs(static_cast<std::size_t>(c.trials));
-        parallel_for(c.trials, c.threads, [&](std::uint64_t t) {
-          costs[static_cast<std::size_t>(t)] = trial_cost(a, m, c.precisions[pi], c, experiment, t);
-        });
-        CostPoint point{a.name, a.family, a.area, c.precisions[pi], m, {}, {}, {}, 0, c.trials};
-        for (const double v : costs) point.reached += std::isfinite(v) ? 1u : 0u;
-        // Unreached trials are +infinity: they sort last and a quantile that lands on one is
-        // absent (not reached), never a finite number averaged with infinity.
-        auto q = [&costs](double at) -> std::optional<double> {
-          std::vector<double> v = costs;
-          std::sort(v.begin(), v.end());
-          const double pos = at * static_cast<double>(v.size() - 1);
-          const auto i = static_cast<std::size_t>(std::floor(pos));
-          const std::size_t j = std::min(i + 1, v.size() - 1);
-          if (!std::isfinite(v[j]) && pos > static_cast<double>(i)) return std::nullopt;
-          if (!std::isfinite(v[i])) return std::nullopt;
-          return v[i] + (pos - static_cast<double>(i)) * (v[j] - v[i]);
-        };
-        point.median = q(0.5);
-        point.q1 = q(0.25);
-        point.q3 = q(0.75);
-        out.points.push_back(point);
-        if (progress) progress(out.points.size(), total);
-      }
+        const std::uint64_t experiment =
+            17000 + 100 * p.arena + 10 * p.precision + static_cast<std::uint64_t>(p.method);
+        algorithms::Payload out;
+        out.put_d(trial_cost(arenas[p.arena], p.method, c.precisions[p.precision], c, experiment,
+                             unit % c.trials));
+        return out;
+      });
+  CostTable out;
+  if (!runner.root()) return out;
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    const CostArena& a = arenas[at[i].arena];
+    std::vector<double> costs(static_cast<std::size_t>(c.trials));
+    for (std::uint64_t t = 0; t < c.trials; ++t) {
+      algorithms::Payload unit = units[static_cast<std::size_t>(i * c.trials + t)];
+      costs[static_cast<std::size_t>(t)] = unit.get_d();
+    }
+    CostPoint point{a.name, a.family, a.area,  c.precisions[at[i].precision], at[i].method, {}, {},
+                    {},     0,        c.trials};
+    for (const double v : costs) point.reached += std::isfinite(v) ? 1u : 0u;
+    // Unreached trials are +infinity: they sort last and a quantile that lands on one is absent
+    // (not reached), never a finite number averaged with infinity.
+    auto q = [&costs](double where) -> std::optional<double> {
+      std::vector<double> v = costs;
+      std::sort(v.begin(), v.end());
+      const double pos = where * static_cast<double>(v.size() - 1);
+      const auto lo = static_cast<std::size_t>(std::floor(pos));
+      const std::size_t hi = std::min(lo + 1, v.size() - 1);
+      if (!std::isfinite(v[hi]) && pos > static_cast<double>(lo)) return std::nullopt;
+      if (!std::isfinite(v[lo])) return std::nullopt;
+      return v[lo] + (pos - static_cast<double>(lo)) * (v[hi] - v[lo]);
+    };
+    point.median = q(0.5);
+    point.q1 = q(0.25);
+    point.q3 = q(0.75);
+    out.points.push_back(point);
+  }
   for (const std::uint32_t p : c.precisions)
     for (const CostMethod m : c.methods) {
       std::vector<double> x, y;

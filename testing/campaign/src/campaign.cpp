@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <antkit/algorithms/units.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/campaign/campaign.hpp>
 #include <antkit/geometry/atomic_file.hpp>
@@ -17,11 +18,9 @@
 #include <antkit/uniform/coverage.hpp>
 #include <antkit/uniform/scenario.hpp>
 #include <antkit/uniform/world.hpp>
-#include <atomic>
 #include <chrono>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
-#include <thread>
 #include <utility>
 
 namespace antkit::campaign {
@@ -379,7 +378,7 @@ Failure shrink(const F& family, const Options& o, std::uint64_t index, Broken br
 }
 
 template <class F>
-Result run_family(const F& family, const Options& o, const Progress& progress) {
+Result run_family(const F& family, const Options& o, const Ranks& ranks, const Progress& progress) {
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   const unsigned threads = std::max(1u, o.threads);
@@ -388,65 +387,71 @@ Result run_family(const F& family, const Options& o, const Progress& progress) {
   Result out;
   std::vector<typename F::Context> contexts(threads);
   std::vector<std::optional<typename F::Value>> values;
-  std::vector<Broken> broken;
-  std::vector<std::uint64_t> moves(threads, 0), vacuous(threads, 0);
   auto last_report = started;
-  const std::uint64_t ranks = std::max<std::uint32_t>(1, o.ranks);
-  std::vector<std::uint64_t> mine; // this rank's cases of the batch
+  // The engine's runner: these threads, these ranks. A batch is the units 0..span-1, unit u being
+  // case first + done + u; this rank's are rank, rank + ranks, ... (units_on_rank).
+  algorithms::Runner runner;
+  runner.threads = threads;
+  runner.rank = ranks.rank;
+  runner.ranks = std::max(1, ranks.ranks);
+  runner.gather = ranks.gather;
+  const auto rank = static_cast<std::uint64_t>(runner.rank);
+  const auto step = static_cast<std::uint64_t>(runner.ranks);
   for (std::uint64_t done = 0; done < o.cases;) {
     if (o.time_limit_s > 0) {
       const bool late =
           std::chrono::duration<double>(Clock::now() - started).count() >= o.time_limit_s;
-      if (o.stop_together ? o.stop_together(late) : late) {
+      if (ranks.any ? ranks.any(late) : late) {
         out.stopped_by_time = true;
         break;
       }
     }
-    const std::uint64_t span = std::min(batch * ranks, o.cases - done);
-    mine.clear();
-    for (std::uint64_t g = done; g < done + span; ++g)
-      if (g % ranks == o.rank) mine.push_back(o.first + g);
-    const std::uint64_t n = mine.size();
-    // rapidcheck's generation context is process-wide, so cases are generated here, in order, and
-    // only checked in parallel.
+    const std::uint64_t span = std::min(batch * step, o.cases - done);
+    // rapidcheck's generation context is process-wide, so this rank's cases are generated here,
+    // in order, and only checked in parallel.
     values.clear();
-    for (const std::uint64_t index : mine) {
+    for (std::uint64_t k = 0; k < algorithms::units_on_rank(runner, span); ++k) {
       try {
-        values.emplace_back(gen(case_random(o, index), kSize).value());
+        values.emplace_back(gen(case_random(o, o.first + done + rank + k * step), kSize).value());
       } catch (const rc::GenerationFailure&) {
         values.emplace_back(std::nullopt); // a generator gave up (a suchThat out of tries): vacuous
       }
     }
-    broken.assign(n, std::nullopt);
-    std::atomic<std::uint64_t> next{0};
-    auto work = [&](unsigned t) {
-      for (std::uint64_t k; (k = next.fetch_add(1)) < n;) {
-        const std::uint64_t before = moves[t];
-        if (values[k]) broken[k] = check_with_extra(family, o, *values[k], contexts[t], moves[t]);
-        if (moves[t] == before) ++vacuous[t];
+    // A unit's verdict: the moves it checked, whether it was vacuous, and what broke.
+    const auto verdicts =
+        algorithms::run_units(runner, "cases", span, [&](std::uint64_t u, unsigned t) {
+          const auto& value = values[static_cast<std::size_t>((u - rank) / step)];
+          std::uint64_t moves = 0;
+          Broken broken;
+          if (value) broken = check_with_extra(family, o, *value, contexts[t], moves);
+          algorithms::Payload p;
+          p.put(moves);
+          p.put(broken ? 1 : 0);
+          if (broken) {
+            p.put_text(broken->first);
+            p.put_text(broken->second);
+          }
+          return p;
+        });
+    for (std::uint64_t u = 0; u < verdicts.size(); ++u) { // rank 0 only: the others get none
+      algorithms::Payload p = verdicts[static_cast<std::size_t>(u)];
+      const std::uint64_t moves = p.get();
+      out.moves += moves;
+      out.vacuous += moves == 0 ? 1 : 0;
+      if (p.get() != 0) {
+        std::string variant = p.get_text();
+        std::string rule = p.get_text();
+        out.failures.push_back(
+            shrink(family, o, o.first + done + u, std::pair{std::move(variant), std::move(rule)}));
       }
-    };
-    if (threads == 1 || n <= 1) {
-      work(0);
-    } else {
-      std::vector<std::thread> pool;
-      for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
-      work(0);
-      for (auto& th : pool) th.join();
     }
-    for (std::uint64_t k = 0; k < n; ++k)
-      if (broken[k]) out.failures.push_back(shrink(family, o, mine[k], broken[k]));
     done += span;
     out.cases_run = done;
-    if (progress &&
+    if (progress && runner.root() &&
         (Clock::now() - last_report > std::chrono::milliseconds(250) || done == o.cases)) {
       progress(done, o.cases);
       last_report = Clock::now();
     }
-  }
-  for (unsigned t = 0; t < threads; ++t) {
-    out.moves += moves[t];
-    out.vacuous += vacuous[t];
   }
   return out;
 }
@@ -497,7 +502,6 @@ void validate(const Options& o) {
                                        std::to_string(kMaxSide));
   if (!(o.time_limit_s >= 0) || o.time_limit_s > 1e9)
     throw InputError("--time", "expected a time in seconds, 0 or more");
-  if (o.ranks < 1 || o.rank >= o.ranks) throw std::logic_error("campaign: rank out of range");
   if (o.threads < 1 || o.threads > 256)
     throw InputError("--threads", "expected 1 to 256 threads, not " + std::to_string(o.threads));
   const auto known = family_variants(o.family);
@@ -511,36 +515,26 @@ void validate(const Options& o) {
 }
 
 Result run(const Options& options, const Progress& progress) {
+  return run(options, Ranks{}, progress);
+}
+
+Result run(const Options& options, const Ranks& ranks, const Progress& progress) {
   validate(options);
+  if (ranks.ranks < 1 || ranks.rank < 0 || ranks.rank >= ranks.ranks ||
+      (ranks.ranks > 1 && !ranks.gather))
+    throw std::logic_error("campaign: rank out of range, or several ranks and no gather");
   const auto names = options.variants.empty() ? family_variants(options.family) : options.variants;
   switch (options.family) {
   case Family::Stc:
-    return run_family(StcFamily(names), options, progress);
+    return run_family(StcFamily(names), options, ranks, progress);
   case Family::Los:
-    return run_family(LosFamily(names), options, progress);
+    return run_family(LosFamily(names), options, ranks, progress);
   case Family::Uniform:
-    return run_family(UniformFamily(names), options, progress);
+    return run_family(UniformFamily(names), options, ranks, progress);
   case Family::Buffon:
-    return run_family(BuffonFamily(names), options, progress);
+    return run_family(BuffonFamily(names), options, ranks, progress);
   }
   return {};
-}
-
-Result merge(const std::vector<Result>& parts) {
-  Result out;
-  if (parts.empty()) return out;
-  out.cases_run = parts.front().cases_run;
-  out.stopped_by_time = parts.front().stopped_by_time;
-  for (const auto& p : parts) {
-    if (p.cases_run != out.cases_run || p.stopped_by_time != out.stopped_by_time)
-      throw std::logic_error("campaign: ranks ran different cases");
-    out.moves += p.moves;
-    out.vacuous += p.vacuous;
-    out.failures.insert(out.failures.end(), p.failures.begin(), p.failures.end());
-  }
-  std::stable_sort(out.failures.begin(), out.failures.end(),
-                   [](const Failure& a, const Failure& b) { return a.case_index < b.case_index; });
-  return out;
 }
 
 std::string serialize(const Failure& f) {

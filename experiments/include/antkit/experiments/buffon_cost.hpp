@@ -35,7 +35,6 @@ struct BuffonCostParams {
   bool quick = false;
   std::optional<std::uint64_t> trials; // per point; default 9, or 3 when quick
   std::uint64_t seed = 1;
-  unsigned threads = 1;
   std::int64_t budget = 40000000; // steps per trial, both trails together
 };
 
@@ -53,12 +52,15 @@ struct BuffonCost {
   buffon::CostTable table;
 };
 
-// Throws kernel::InputError("--trials" / "--threads" / "--max-steps", ...) for trials outside
-// [1, 100000], threads outside [1, 256] or a budget outside [2, 100000000], as the command does.
-// `progress(done, total)` is called after each point (precision_cost.hpp).
-[[nodiscard]] BuffonCost
-run_buffon_cost(const BuffonCostParams& params,
-                const std::function<void(std::size_t, std::size_t)>& progress = {});
+// Throws kernel::InputError("trials" / "step budget", ...) for trials outside [1, 100000] or a
+// budget outside [2, 100000000] (what run_buffon_cost checks first).
+void validate(const BuffonCostParams& params);
+
+// Throws as validate() does. The trials are `runner`'s units (precision_cost.hpp): under MPI
+// every rank calls it and rank 0 gets the result (the other ranks get an empty table); the result
+// does not depend on the threads or the ranks.
+[[nodiscard]] BuffonCost run_buffon_cost(const BuffonCostParams& params,
+                                         const algorithms::Runner& runner = {});
 
 [[nodiscard]] std::string buffon_cost_csv(const BuffonCost& c);
 [[nodiscard]] std::string buffon_cost_fits_csv(const BuffonCost& c);

@@ -19,10 +19,10 @@
 // units of each visit (total 336 k, k = 1..10); circle d uses experiment 5400 + d. The fit uses the
 // calibration arenas' median nBC at the same checkpoint; each trial of a test arena then gives one
 // estimate.
+#include <antkit/algorithms/units.hpp>
 #include <antkit/experiments/calibration.hpp>
 #include <antkit/experiments/format.hpp>
 #include <antkit/experiments/plot.hpp>
-#include <antkit/experiments/run.hpp>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -66,7 +66,7 @@ struct BuffonFigure {
 
 // Throws kernel::InputError("--figure" / "--trials" / "--steps") for parameters out of range.
 [[nodiscard]] BuffonFigure run_buffon_figure(const BuffonFigureParams& params,
-                                             const Runner& runner);
+                                             const algorithms::Runner& runner);
 [[nodiscard]] std::string buffon_figure_csv(const BuffonFigure& f);
 [[nodiscard]] Figure buffon_figure_plot(const BuffonFigure& f);
 // Figure 5b: each square's median nBC against the circle's of the same area, with y = x.
@@ -87,7 +87,8 @@ struct Figure14 {
   std::vector<Figure14Arena> arenas{};
 };
 
-[[nodiscard]] Figure14 run_figure14(const BuffonFigureParams& params, const Runner& runner);
+[[nodiscard]] Figure14 run_figure14(const BuffonFigureParams& params,
+                                    const algorithms::Runner& runner);
 [[nodiscard]] std::string figure14_csv(const Figure14& f);
 [[nodiscard]] Figure figure14_plot(const Figure14& f);
 

@@ -13,8 +13,8 @@
 // Table 3's "Sheng et al." is our frontier baseline (Sheng et al.'s g = w1 I - w2 D + w3 lambda
 // with w1 = w2 = 1, w3 = 0) without line-of-sight sweeping, the original method; the same
 // baseline with sweeping is run beside it.
+#include <antkit/algorithms/units.hpp>
 #include <antkit/experiments/plot.hpp>
-#include <antkit/experiments/run.hpp>
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -80,7 +80,8 @@ struct ExploreTables {
 };
 
 // Throws std::runtime_error when a run does not complete (it never should).
-[[nodiscard]] ExploreTables run_explore_tables(std::uint64_t seed, const Runner& runner);
+[[nodiscard]] ExploreTables run_explore_tables(std::uint64_t seed,
+                                               const algorithms::Runner& runner);
 
 [[nodiscard]] double mean_of(const std::vector<double>& v);
 // The sample standard deviation (n - 1), which reproduces the paper's Table 2 deviations.

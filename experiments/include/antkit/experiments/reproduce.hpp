@@ -35,7 +35,7 @@
 // once Figure 5(b)'s "most points on y = x", which is 000-1 again); 004-1 would be "RW's movements
 // equal A*'s", which the paper's tables show (within 1 %) but which our driver imposes (RW's tick
 // limit is A*'s ticks, uniform_tables.hpp), so no run can decide it.
-#include <antkit/experiments/run.hpp>
+#include <antkit/algorithms/units.hpp>
 #include <antkit/experiments/verdict.hpp>
 #include <cstdint>
 #include <filesystem>
@@ -110,7 +110,8 @@ void validate(const ReproduceOptions& options);
 // Runs everything asked for. Under MPI every rank calls it (the trials are split across the ranks
 // by `runner`); rank 0 reduces, decides, writes the files and returns the report, the other ranks
 // return an empty report. Throws kernel::InputError when `out` cannot be written.
-[[nodiscard]] ReproduceReport reproduce(const ReproduceOptions& options, const Runner& runner);
+[[nodiscard]] ReproduceReport reproduce(const ReproduceOptions& options,
+                                        const algorithms::Runner& runner);
 
 // The claims as a Markdown table (the report's first section; `antkit reproduce` prints it).
 [[nodiscard]] std::string claims_markdown(const std::vector<Claim>& claims);

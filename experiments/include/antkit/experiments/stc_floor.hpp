@@ -16,7 +16,7 @@
 // `max_board`; the largest n up to the first that is not exact, with the tour's duration on the
 // floor's clock. The default times (floor.hpp: 2 s of LEDs and 1 s of driving a move, 1.5 s a
 // quarter turn, 0.1 s a frame) make a move about 3.5 s.
-#include <antkit/experiments/run.hpp>
+#include <antkit/algorithms/units.hpp>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -59,7 +59,8 @@ struct FloorCurves {
   std::uint64_t hash = 0;           // every run's tour hash and counts, in unit order
 };
 
-[[nodiscard]] FloorCurves run_floor_curves(const FloorParams& params, const Runner& runner);
+[[nodiscard]] FloorCurves run_floor_curves(const FloorParams& params,
+                                           const algorithms::Runner& runner);
 
 // The two tables: floor_curves.csv (a row per factor and level) and floor_boards.csv (a row per
 // fading half-life).

@@ -15,8 +15,8 @@
 // sub-cells: a real map, and one of the larger ones that STC's 2 x 2 cells leave connected), else
 // on the first random map, each mark reading misread with probability p, `noise_trials` keyed
 // trials per level (trial t of level p uses the noise stream (seed, t)).
+#include <antkit/algorithms/units.hpp>
 #include <antkit/experiments/plot.hpp>
-#include <antkit/experiments/run.hpp>
 #include <antkit/kernel/grid.hpp>
 #include <cstdint>
 #include <filesystem>
@@ -59,7 +59,7 @@ struct StcNoisePoint {
 [[nodiscard]] std::vector<StcNoisePoint>
 run_stc_noise(const kernel::OccupancyGrid& map, kernel::Cell start,
               const std::vector<std::string>& variants, const std::vector<std::uint32_t>& ppm,
-              int trials, std::uint64_t seed, const Runner& runner,
+              int trials, std::uint64_t seed, const algorithms::Runner& runner,
               std::int64_t* reachable = nullptr, std::uint64_t* hash = nullptr);
 
 struct StcTours {
@@ -72,7 +72,8 @@ struct StcTours {
   std::uint64_t hash = 0;           // every tour's and noisy run's trace hash, in unit order
 };
 
-[[nodiscard]] StcTours run_stc_tours(const StcToursParams& params, const Runner& runner);
+[[nodiscard]] StcTours run_stc_tours(const StcToursParams& params,
+                                     const algorithms::Runner& runner);
 
 // A map of the experiment by name (a shared map's file name, or "random-64-64-10 #k"), for the
 // picture of one tour.

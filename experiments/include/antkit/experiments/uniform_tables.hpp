@@ -21,9 +21,9 @@
 //   * Coordinated A* and frontier coverage ("go beyond the paper") run on the same maps and
 //     starts, with the same 10 * W * H limit.
 #include <algorithm>
+#include <antkit/algorithms/units.hpp>
 #include <antkit/experiments/format.hpp>
 #include <antkit/experiments/plot.hpp>
-#include <antkit/experiments/run.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/uniform/coverage.hpp>
 #include <antkit/uniform/scenario.hpp>
@@ -142,7 +142,7 @@ inline TrialOut run_trial(const TablesConfig& c, const PaperRow& row, std::uint3
 
 // Runs every (density, robots, run) as a unit of `runner` and reduces in that order; on MPI
 // ranks other than 0 the result is empty.
-std::vector<TablesRow> run_tables(const TablesConfig& c, const Runner& runner);
+std::vector<TablesRow> run_tables(const TablesConfig& c, const algorithms::Runner& runner);
 
 // The files of `antkit cover-experiment`: the rows as CSV, and the four tables (ours / paper's)
 // with the coordinated-A* and frontier comparisons as Markdown.

@@ -188,14 +188,10 @@ VisitLog run_visit(const World& world, const TrialParams& params, std::uint64_t 
 
 TrialResult run_trial(const World& world, const TrialParams& params, std::uint64_t trial);
 
-// Trials 0 .. count-1 on `threads` workers (at least 1); results in trial order, identical for any
-// thread count.
+// Trials 0 .. count-1 on `threads` workers (at least 1; algorithms::for_each_unit); results in
+// trial order, identical for any thread count.
 std::vector<TrialResult> run_trials(const World& world, const TrialParams& params,
                                     std::uint64_t count, unsigned threads);
-
-// Runs f(i) for i in [0, count) on `threads` workers; the caller stores results by index.
-void parallel_for(std::uint64_t count, unsigned threads,
-                  const std::function<void(std::uint64_t)>& f);
 
 // Integer square root (floor) of a 64-bit value.
 std::uint64_t isqrt64(std::uint64_t n) noexcept;

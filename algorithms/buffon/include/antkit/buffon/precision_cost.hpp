@@ -11,9 +11,9 @@
 // (an oracle stop: RS has no rule of its own). A trial that runs out of budget counts as an
 // infinite trail in the median: a point whose median is then infinite is reported as not reached.
 // Trials run in parallel and are reduced in trial order; the result does not depend on threads.
+#include <antkit/algorithms/units.hpp>
 #include <antkit/buffon/world.hpp>
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -54,7 +54,6 @@ struct CostParams {
   std::uint64_t trials = 9;
   std::uint64_t seed = 1;
   std::int64_t budget = 40000000; // steps per trial, both trails together
-  unsigned threads = 1;
 };
 
 struct CostTable {
@@ -63,10 +62,12 @@ struct CostTable {
 };
 
 // Throws InputError for no arena, no precision, a precision outside (0, 1), trials outside
-// [1, 100000] or a budget outside [2, 100000000]. `progress(done, total)` is called after each
-// point.
+// [1, 100000] or a budget outside [2, 100000000]. Every trial of every point is a unit of
+// `runner` (algorithms/units.hpp: its threads, its MPI ranks, its progress, stage "trials"), in
+// point order then trial order; rank 0 returns the table, other ranks an empty one. The table does
+// not depend on the threads or the ranks.
 CostTable precision_cost(std::span<const CostArena> arenas, const CostParams& params,
-                         const std::function<void(std::size_t, std::size_t)>& progress = {});
+                         const algorithms::Runner& runner = {});
 
 // Least squares of log(y) on log(x) over points with x, y > 0 (at least two distinct x): the
 // exponent and the coefficient of y = c x^e. Exposed for the tests.

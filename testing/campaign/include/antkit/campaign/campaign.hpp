@@ -48,12 +48,18 @@ struct Options {
   // shrinking and the failure outputs at work (tests; `--plant max-width=N` of the command).
   std::function<std::string(const kernel::OccupancyGrid&)> extra_rule;
   std::string extra_rule_name; // what the summary calls it (empty: none)
-  // One process of several (MPI ranks): this one runs the cases whose index, counted from
-  // `first`, is rank modulo ranks. The result then holds this rank's moves, vacuous cases and
-  // failures; gather them with merge(). `stop_together(local)` must return whether any rank wants
-  // to stop; it is called at every batch boundary, by every rank, when there is a time limit.
-  std::uint32_t rank = 0, ranks = 1;
-  std::function<bool(bool)> stop_together;
+};
+
+// One process of several (MPI ranks; mpi.hpp fills it from a session). The cases run as units of
+// the engine (antkit/algorithms/units.hpp) in batches: rank r checks the cases whose index,
+// counted from `first`, is r modulo ranks, and after each batch `gather` (a collective: every
+// rank's text, in rank order, on rank 0) brings every rank's verdicts to rank 0, which shrinks the
+// failures. `any(local)` (a collective) says whether any rank wants to stop; every rank calls it
+// at every batch boundary when there is a time limit.
+struct Ranks {
+  int rank = 0, ranks = 1;
+  std::function<std::vector<std::string>(const std::string& mine)> gather;
+  std::function<bool(bool local)> any;
 };
 
 // Throws kernel::InputError naming the option for a value out of range or an unknown variant.
@@ -84,11 +90,12 @@ using Progress = std::function<void(std::uint64_t done, std::uint64_t total)>;
 
 [[nodiscard]] Result run(const Options& options, const Progress& progress = {});
 
-// Several ranks' results as one: moves and vacuous cases added, failures in case order. Every
-// part must have run the same cases (the same cases_run and stopped_by_time).
-[[nodiscard]] Result merge(const std::vector<Result>& parts);
+// The campaign as one rank of several. Rank 0 returns the whole campaign's result, the same as
+// run() in one process; the other ranks return only cases_run and stopped_by_time (and call no
+// progress).
+[[nodiscard]] Result run(const Options& options, const Ranks& ranks, const Progress& progress = {});
 
-// A failure as one line of text and back (for gathering across processes).
+// A failure as one line of text and back (summary.json's lines; tests).
 [[nodiscard]] std::string serialize(const Failure& failure);
 [[nodiscard]] Failure deserialize(std::string_view text);
 

@@ -1,15 +1,16 @@
 // run_units: unit order, thread and rank independence, failures named by unit. MPI ranks are
 // simulated by threads that share a gather (the real mpirun is tested by mpi.reproduce.identical).
-#include <antkit/experiments/run.hpp>
+#include <antkit/algorithms/units.hpp>
+#include <atomic>
 #include <barrier>
 #include <catch2/catch.hpp>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
 
-using antkit::experiments::Payload;
-using antkit::experiments::run_units;
-using antkit::experiments::Runner;
+using antkit::algorithms::Payload;
+using antkit::algorithms::run_units;
+using antkit::algorithms::Runner;
 
 namespace {
 
@@ -114,4 +115,37 @@ TEST_CASE("a payload refuses to be read past its end") {
   CHECK_THROWS_AS(p.get(), std::logic_error);
   Payload cut = Payload::of({100, 0});
   CHECK_THROWS_AS(cut.get_text(), std::logic_error);
+}
+
+TEST_CASE("for_each_unit runs every unit once, on workers numbered below the thread count") {
+  for (const unsigned threads : {1u, 2u, 4u, 9u}) {
+    std::vector<std::atomic<int>> runs(50);
+    std::atomic<bool> worker_in_range{true};
+    antkit::algorithms::for_each_unit(50, threads, [&](std::uint64_t u, unsigned t) {
+      ++runs[u];
+      if (t >= threads) worker_in_range = false;
+    });
+    for (const auto& r : runs) CHECK(r.load() == 1);
+    CHECK(worker_in_range);
+  }
+  // The per-worker scratch the thread number is for: each worker's own slot, no lock.
+  std::vector<std::uint64_t> sums(3, 0);
+  antkit::algorithms::for_each_unit(1000, 3, [&](std::uint64_t u, unsigned t) { sums[t] += u; });
+  CHECK(sums[0] + sums[1] + sums[2] == 999u * 1000u / 2u);
+}
+
+TEST_CASE("for_each_unit rethrows the lowest failing unit's exception, whatever the threads") {
+  for (const unsigned threads : {1u, 2u, 3u, 8u}) {
+    std::vector<std::atomic<int>> runs(40);
+    try {
+      antkit::algorithms::for_each_unit(40, threads, [&](std::uint64_t u, unsigned) {
+        ++runs[u];
+        if (u == 17 || u == 5 || u == 33) throw std::runtime_error(std::to_string(u));
+      });
+      FAIL("no exception");
+    } catch (const std::runtime_error& e) {
+      CHECK(std::string(e.what()) == "5");
+    }
+    for (std::size_t u = 0; u <= 5; ++u) CHECK(runs[u].load() == 1); // every unit up to it ran
+  }
 }
