@@ -1,6 +1,7 @@
 // Buffon counts at trail-length checkpoints and the RS baseline (checkpoints.hpp).
 #include <algorithm>
 #include <antkit/buffon/checkpoints.hpp>
+#include <antkit/buffon/step_root.hpp>
 #include <antkit/buffon/stopping.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <cmath>
@@ -60,6 +61,7 @@ void walk(const World& world, const TrialParams& params, std::uint64_t trial, in
   p.steps = limit_raw * 13 / (10 * 2202) + 1000;
   kernel::TraceHash unused;
   std::int64_t length = 0;
+  std::uint64_t step = 0; // the previous step's length: the next one's guess (step_root.hpp)
   FxPoint prev{};
   bool first = true, done = false;
   // The callback ignores everything past the limit; a visit that falls short of it (a robot stuck
@@ -69,7 +71,8 @@ void walk(const World& world, const TrialParams& params, std::uint64_t trial, in
     if (!first) {
       const std::int64_t dx = std::int64_t{pose.position.x.raw()} - prev.x.raw();
       const std::int64_t dy = std::int64_t{pose.position.y.raw()} - prev.y.raw();
-      length += static_cast<std::int64_t>(isqrt64(static_cast<std::uint64_t>(dx * dx + dy * dy)));
+      step = step_root(static_cast<std::uint64_t>(dx * dx + dy * dy), step);
+      length += static_cast<std::int64_t>(step);
     }
     first = false;
     prev = pose.position;

@@ -9,22 +9,6 @@
 
 namespace antkit::buffon {
 
-std::uint64_t isqrt64(std::uint64_t n) noexcept {
-  std::uint64_t r = 0;
-  std::uint64_t bit = std::uint64_t{1} << 62;
-  while (bit > n) bit >>= 2;
-  while (bit != 0) {
-    if (n >= r + bit) {
-      n -= r + bit;
-      r = (r >> 1) + bit;
-    } else {
-      r >>= 1;
-    }
-    bit >>= 2;
-  }
-  return r;
-}
-
 PheromoneRaster::PheromoneRaster(FxPoint lower, FxPoint upper, Fx width,
                                  std::vector<std::uint64_t> storage)
     : storage_(std::move(storage)) {

@@ -1,5 +1,6 @@
 // Two distinguishable markers (two_markers.hpp).
 #include <antkit/buffon/crossing_counter.hpp>
+#include <antkit/buffon/step_root.hpp>
 #include <antkit/buffon/stopping.hpp>
 #include <antkit/buffon/two_markers.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -79,11 +80,12 @@ TrialResult run_two_marker_trial(const World& world, const TrialParams& params,
   // Lengths: each step's length is the walk's, attributed to the piece (and so the marker) it
   // laid; the same integer roots as run_visit's total.
   std::vector<double> piece_length;
+  std::uint64_t last = 0; // the previous step's length: the next one's guess (step_root.hpp)
   for (std::size_t s = 1; s < log.trail.size(); ++s) {
     const std::int64_t dx = std::int64_t{log.trail[s].x.raw()} - log.trail[s - 1].x.raw();
     const std::int64_t dy = std::int64_t{log.trail[s].y.raw()} - log.trail[s - 1].y.raw();
-    const auto root = static_cast<std::int64_t>(
-        detail::exact_floor_sqrt(static_cast<std::uint64_t>(dx * dx + dy * dy)));
+    last = step_root(static_cast<std::uint64_t>(dx * dx + dy * dy), last);
+    const auto root = static_cast<std::int64_t>(last);
     const auto k = static_cast<std::size_t>((static_cast<std::int64_t>(s) - 1) / kSwitchSteps);
     lengths[k % 2] += root;
     if (piece_length.size() <= k) piece_length.push_back(0);

@@ -193,9 +193,6 @@ TrialResult run_trial(const World& world, const TrialParams& params, std::uint64
 std::vector<TrialResult> run_trials(const World& world, const TrialParams& params,
                                     std::uint64_t count, unsigned threads);
 
-// Integer square root (floor) of a 64-bit value.
-std::uint64_t isqrt64(std::uint64_t n) noexcept;
-
 // ---------------------------------------------------------------------------------------------
 
 namespace detail {
@@ -203,16 +200,6 @@ namespace detail {
 void check_visit_steps(std::int64_t steps);
 // Throws InputError("step budget") unless 2 <= steps <= 100000000 (a budget of both visits).
 void check_total_steps(std::int64_t steps);
-
-// floor(sqrt(n)) exactly, for n < 2^52: the binary64 root is within one of it (n and the
-// correctly rounded root are exact there), and the two loops make it exact; the double is only
-// the first guess, so the result is the same integer on every platform.
-inline std::uint64_t exact_floor_sqrt(std::uint64_t n) noexcept {
-  auto r = static_cast<std::uint64_t>(std::sqrt(static_cast<double>(n)));
-  while (r * r > n) --r;
-  while ((r + 1) * (r + 1) <= n) ++r;
-  return r;
-}
 
 } // namespace detail
 

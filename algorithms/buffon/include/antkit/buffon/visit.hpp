@@ -3,6 +3,7 @@
 // Freestanding (issue 27): the host's run_visit and the Cortex-M image (mcu/src/buffon_run.cpp)
 // call these same inline functions, so that the chip's trace hash is the host's by construction.
 #include <antkit/buffon/exploration.hpp>
+#include <antkit/buffon/step_root.hpp>
 #include <antkit/buffon/world.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/random.hpp>
@@ -25,21 +26,18 @@ struct VisitStreams {
 };
 
 namespace detail {
-// The exact floor square root of a step's squared length n2, started from the commanded forward
-// distance (the step's length is within a few raw units of it) and corrected by +/- 1 per
-// comparison: root = f - 2 + the number of k in {f - 1, f, f + 1} with
-// k^2 <= n2, which is exact whenever (f - 2)^2 <= n2 < (f + 2)^2 (checked; the loop takes the
-// rest). The data-dependent loop branches were mispredicted on a good share of the steps.
+// The exact floor square root of a step's squared length n2 (step_root.hpp), guessed from the
+// commanded forward distance f (the step's length is within a few raw units of it) as
+// f - 2 + the number of k in {f - 1, f, f + 1} with k^2 <= n2, branch-free (data-dependent loop
+// branches were mispredicted on a good share of the steps); step_root takes the guess only when it
+// is the root, else runs the proved loop.
 inline std::uint64_t step_length_raw(std::uint64_t n2, Fx forward) noexcept {
-  if (n2 == 0) return 0;
-  auto root = static_cast<std::uint64_t>(kernel::abs(forward).raw());
-  if (root >= 2 && (root - 2) * (root - 2) <= n2 && n2 < (root + 2) * (root + 2)) {
-    return root - 2 + std::uint64_t{(root - 1) * (root - 1) <= n2} +
-           std::uint64_t{root * root <= n2} + std::uint64_t{(root + 1) * (root + 1) <= n2};
-  }
-  while (root * root > n2) --root;
-  while ((root + 1) * (root + 1) <= n2) ++root;
-  return root;
+  const auto f = static_cast<std::uint64_t>(kernel::abs(forward).raw());
+  const std::uint64_t guess = f < 2 || n2 == 0 ? 0 // a blocked step: 0 is its root
+                                               : f - 2 + std::uint64_t{(f - 1) * (f - 1) <= n2} +
+                                                     std::uint64_t{f * f <= n2} +
+                                                     std::uint64_t{(f + 1) * (f + 1) <= n2};
+  return step_root(n2, guess);
 }
 
 inline std::uint64_t hash_word(std::int32_t lo, std::int32_t hi) noexcept {
