@@ -48,14 +48,12 @@
 
 #include <antkit/buffon/area_measurement.hpp>
 #include <antkit/experiments/buffon_figures.hpp>
-#include <antkit/experiments/drawing.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
 #include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/reports/reports.hpp>
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -144,44 +142,6 @@ nlohmann::json trial_json(const buffon::AreaTrial& a, bool budgeted, bool online
   return j;
 }
 
-// Trial 0's trails in the arena, drawn with Cairo (title, legend, caption).
-void draw_trails(const BuffonCommand& c, const geometry::Arena& arena,
-                 const buffon::TrialResult& t) {
-  antkit::experiments::TrailPanel panel;
-  panel.title = c.arena + " (area " + antkit::experiments::number(arena.area()) + ")";
-  for (const auto& ring : arena.rings()) {
-    std::vector<antkit::experiments::XY> pts;
-    for (const auto& p : ring) pts.emplace_back(p[0], p[1]);
-    panel.rings.push_back(std::move(pts));
-  }
-  // Every 4th point (steps are 0.04 units), and both ends of every jump longer than a step (the
-  // pieces of a marker's trail under --rule markers), so that no chord is drawn across the arena.
-  const auto thin = [](const std::vector<antkit::kernel::FxPoint>& pts) {
-    std::vector<antkit::experiments::XY> out;
-    const auto at = [&](std::size_t i) {
-      return antkit::experiments::XY{geometry::to_double(pts[i].x), geometry::to_double(pts[i].y)};
-    };
-    const auto jump = [&](std::size_t i) { // between i and i + 1
-      const auto [ax, ay] = at(i);
-      const auto [bx, by] = at(i + 1);
-      return std::hypot(bx - ax, by - ay) > 1.0;
-    };
-    for (std::size_t i = 0; i < pts.size(); ++i)
-      if (i % 4 == 0 || i + 1 == pts.size() || jump(i) || (i > 0 && jump(i - 1)))
-        out.push_back(at(i));
-    return out;
-  };
-  panel.trail1 = thin(t.trail1);
-  panel.trail2 = thin(t.trail2);
-  antkit::experiments::save_trails_figure(
-      "Buffon's needle, trial 0 (paper 000)",
-      std::to_string(t.steps1 > 0 ? t.steps1 : c.steps) + " and " +
-          std::to_string(t.steps2 > 0 ? t.steps2 : c.steps) + " steps; " +
-          (t.bc > 0 ? std::to_string(t.bc) + " crossings counted (BC), " : std::string()) +
-          std::to_string(t.crossings_exact) + " exact crossings of the two trails.",
-      {panel}, c.svg, c.png);
-}
-
 void run(const BuffonCommand& c) {
   antkit::cli::check_buffon_run_size(c.trials, c.steps, c.threads);
   if (c.max_steps2 != 0 && !c.precision_given)
@@ -258,7 +218,9 @@ void run(const BuffonCommand& c) {
     std::cerr << "antkit: note: " << note << '\n';
   }
   result["hash"] = antkit::kernel::hash_hex(s.hash);
-  if (!c.svg.empty() || !c.png.empty()) draw_trails(c, arena, m.trials[0].run);
+  if (!c.svg.empty() || !c.png.empty())
+    antkit::experiments::save_trial_trails_figure(c.arena, arena, m.trials[0].run, c.steps, c.svg,
+                                                  c.png);
   antkit::cli::emit(result, c.format, std::cout);
 }
 
