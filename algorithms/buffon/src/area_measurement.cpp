@@ -1,6 +1,8 @@
 #include <antkit/buffon/area_measurement.hpp>
 #include <antkit/buffon/two_markers.hpp>
 #include <antkit/kernel/hash.hpp>
+#include <utility>
+#include <vector>
 
 namespace antkit::buffon {
 
