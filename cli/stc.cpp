@@ -24,7 +24,6 @@
 
 #include <algorithm>
 #include <antkit/algorithms/options.hpp>
-#include <antkit/experiments/drawing.hpp>
 #include <antkit/experiments/stc_tour.hpp>
 #include <antkit/experiments/stc_tours.hpp>
 #include <antkit/geometry/atomic_file.hpp>
@@ -109,14 +108,8 @@ void run_stc_command(const StcOptions& o) {
   const RunResult r =
       antkit::experiments::write_stc_tour(map.cells, start, variant, request.noise, out);
   if (!o.svg.empty() || !o.png.empty())
-    antkit::experiments::save_tour_figure(
-        map.cells, r.path,
-        std::string(variant_name(variant)) + " STC on " +
-            std::filesystem::path(o.map).filename().string(),
-        std::to_string(r.reachable_subcells) + " reachable sub-cells, " +
-            std::to_string(r.covered) + " covered, " + std::to_string(r.repeats) +
-            " repeats, back at the start cell: " + (r.returned_to_start ? "yes" : "no") + ".",
-        o.svg, o.png);
+    antkit::experiments::save_stc_tour_figure(
+        map.cells, r, std::filesystem::path(o.map).filename().string(), o.svg, o.png);
   if (!json) {
     nlohmann::json j = antkit::reports::stc_json(
         r, map.cells.width(), map.cells.height(), start,
@@ -127,9 +120,7 @@ void run_stc_command(const StcOptions& o) {
     antkit::cli::emit(j, o.format, std::cout);
   }
   if (o.noise.empty() || request.noise.ppm == 0) {
-    const bool ok = r.closed && r.returned_to_start && r.covered == r.reachable_subcells &&
-                    (variant == Variant::Full || r.repeats == 0);
-    if (!ok)
+    if (!keeps_invariants(r))
       throw antkit::cli::CheckFailed(
           "the " + std::string(variant_name(variant)) + " tour broke an invariant (covered " +
           std::to_string(r.covered) + " of " + std::to_string(r.reachable_subcells) + ", repeats " +

@@ -1,3 +1,4 @@
+#include <antkit/experiments/drawing.hpp>
 #include <antkit/experiments/stc_tour.hpp>
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/hash.hpp>
@@ -101,6 +102,17 @@ stc::RunResult write_stc_tour(const kernel::OccupancyGrid& map, kernel::Cell sta
     json->flush();
   }
   return r;
+}
+
+void save_stc_tour_figure(const kernel::OccupancyGrid& map, const stc::RunResult& r,
+                          const std::string& map_name, const std::filesystem::path& svg,
+                          const std::filesystem::path& png) {
+  save_tour_figure(map, r.path, std::string(stc::variant_name(r.variant)) + " STC on " + map_name,
+                   std::to_string(r.reachable_subcells) + " reachable sub-cells, " +
+                       std::to_string(r.covered) + " covered, " + std::to_string(r.repeats) +
+                       " repeats, back at the start cell: " + (r.returned_to_start ? "yes" : "no") +
+                       ".",
+                   svg, png);
 }
 
 } // namespace antkit::experiments

@@ -1,6 +1,7 @@
 // write_stc_tour (experiments/stc_tour.hpp), the tour `antkit stc` streams: the JSON document's
-// path and counts are run_stc's, the path files (CSV and binary) hold the same positions, and a
-// start run_stc refuses is named as the caller asks, with no byte of JSON and no path file.
+// path and counts are run_stc's (and its tour keeps its invariants, stc::keeps_invariants), the
+// path files (CSV and binary) hold the same positions, and a start run_stc refuses is named as the
+// caller asks, with no byte of JSON and no path file.
 #include <antkit/experiments/stc_tour.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -52,6 +53,7 @@ TEST_CASE("write_stc_tour: the streamed JSON and path files are run_stc's tour",
       out.binary_path = binary;
       const auto r = antkit::experiments::write_stc_tour(map, start, variant, {}, out);
       CHECK(r.hash == expected.hash);
+      CHECK(stc::keeps_invariants(r));
       CHECK(r.path.empty()); // not kept unless asked for
       const auto j = nlohmann::json::parse(json.str());
       CHECK(j["variant"] == std::string(stc::variant_name(variant)));
@@ -86,9 +88,21 @@ TEST_CASE("write_stc_tour: the streamed JSON and path files are run_stc's tour",
     const stc::NoiseModel noise{10000, 5, 0};
     const auto r = antkit::experiments::write_stc_tour(map, {0, 0}, stc::Variant::Ant, noise, out);
     CHECK(static_cast<std::int64_t>(r.path.size()) == r.positions);
+    antkit::experiments::save_stc_tour_figure(map, r, "room", dir / "tour.svg", "");
+    CHECK(fs::exists(dir / "tour.svg"));
     const auto j = nlohmann::json::parse(json.str());
     CHECK(j["noise_ppm"] == 10000);
     CHECK(j["seed"] == 5);
+  }
+  SECTION("keeps_invariants: a repeat breaks an exact tour, not a full one") {
+    auto r = stc::run_stc(map, {0, 0}, stc::Variant::Ant);
+    REQUIRE(stc::keeps_invariants(r));
+    r.repeats = 1;
+    CHECK_FALSE(stc::keeps_invariants(r));
+    r.variant = stc::Variant::Full;
+    CHECK(stc::keeps_invariants(r));
+    r.covered -= 1;
+    CHECK_FALSE(stc::keeps_invariants(r));
   }
   SECTION("a refused start: named as asked, no JSON, no path file") {
     std::ostringstream json;

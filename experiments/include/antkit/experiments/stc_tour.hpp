@@ -36,4 +36,11 @@ struct StcTourOutput {
                                             stc::Variant variant, const stc::NoiseModel& noise,
                                             const StcTourOutput& out);
 
+// The picture of a tour run with keep_path (save_tour_figure): titled with its variant and
+// `map_name`, with a caption of its counts. Throws kernel::InputError for a file that cannot be
+// written.
+void save_stc_tour_figure(const kernel::OccupancyGrid& map, const stc::RunResult& result,
+                          const std::string& map_name, const std::filesystem::path& svg,
+                          const std::filesystem::path& png);
+
 } // namespace antkit::experiments
