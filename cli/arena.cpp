@@ -9,6 +9,7 @@
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/maps/map_io.hpp>
 #include <antkit/reports/reports.hpp>
 #include <cctype>
 #include <iostream>
@@ -25,20 +26,6 @@ struct ArenaOptions {
   std::string out_wkt;
   antkit::cli::Format format = antkit::cli::Format::Table;
 };
-
-// MovingAI's map format (movingai.com/benchmarks/formats.html): '.' passable, '@' out of bounds.
-// Kept minimal and local here; the general map writer lives with the maps.
-std::string moving_ai_map(const antkit::kernel::OccupancyGrid& grid) {
-  std::string text = "type octile\nheight " + std::to_string(grid.height()) + "\nwidth " +
-                     std::to_string(grid.width()) + "\nmap\n";
-  text.reserve(text.size() + grid.size() + static_cast<std::size_t>(grid.height()));
-  for (std::int32_t y = 0; y < grid.height(); ++y) {
-    for (std::int32_t x = 0; x < grid.width(); ++x)
-      text += grid[{x, y}] == antkit::kernel::Occupancy::Free ? '.' : '@';
-    text += '\n';
-  }
-  return text;
-}
 
 void run(const ArenaOptions& o) {
   using namespace antkit::geometry;
@@ -75,7 +62,9 @@ void run(const ArenaOptions& o) {
                         {"origin",
                          {static_cast<double>(raster.frame.col0) * cell.value(),
                           static_cast<double>(raster.frame.row0) * cell.value()}}};
-    map_text = moving_ai_map(raster.grid);
+    antkit::maps::GridMap map; // a raster has at least one cell: write_movingai takes it
+    map.cells = raster.grid;
+    map_text = antkit::maps::write_movingai(map);
   }
   std::optional<std::string> wkt_text;
   if (!o.out_wkt.empty()) wkt_text = write_wkt(*arena) + "\n";

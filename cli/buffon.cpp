@@ -46,20 +46,14 @@
 #include "commands.hpp"
 #include "output.hpp"
 
-#include <antkit/algorithms/units.hpp>
-#include <antkit/buffon/estimate.hpp>
-#include <antkit/buffon/measurement.hpp>
-#include <antkit/buffon/stopping.hpp>
-#include <antkit/buffon/two_markers.hpp>
+#include <antkit/buffon/area_measurement.hpp>
 #include <antkit/experiments/buffon_figures.hpp>
-#include <antkit/experiments/drawing.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
 #include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/reports/reports.hpp>
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -89,54 +83,64 @@ struct BuffonCommand {
   Format format = Format::Table;
 };
 
-double fx_to_double(std::int64_t raw) {
-  return static_cast<double>(raw) / 65536.0;
-}
-
 nlohmann::json optional_json(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json();
 }
 
-// Trial 0's trails in the arena, drawn with Cairo (title, legend, caption).
-void draw_trails(const BuffonCommand& c, const geometry::Arena& arena,
-                 const buffon::TrialResult& t) {
-  antkit::experiments::TrailPanel panel;
-  panel.title = c.arena + " (area " + antkit::experiments::number(arena.area()) + ")";
-  for (const auto& ring : arena.rings()) {
-    std::vector<antkit::experiments::XY> pts;
-    for (const auto& p : ring) pts.emplace_back(p[0], p[1]);
-    panel.rings.push_back(std::move(pts));
+const char* stop_name(buffon::TrialStop stop) {
+  switch (stop) {
+  case buffon::TrialStop::precision:
+    return "precision";
+  case buffon::TrialStop::visit1_cap:
+    return "visit 1 cap";
+  case buffon::TrialStop::visit2_cap:
+    return "visit 2 cap";
+  case buffon::TrialStop::budget:
+    return "budget";
   }
-  // Every 4th point (steps are 0.04 units), and both ends of every jump longer than a step (the
-  // pieces of a marker's trail under --rule markers), so that no chord is drawn across the arena.
-  const auto thin = [](const std::vector<antkit::kernel::FxPoint>& pts) {
-    std::vector<antkit::experiments::XY> out;
-    const auto at = [&](std::size_t i) {
-      return antkit::experiments::XY{geometry::to_double(pts[i].x), geometry::to_double(pts[i].y)};
-    };
-    const auto jump = [&](std::size_t i) { // between i and i + 1
-      const auto [ax, ay] = at(i);
-      const auto [bx, by] = at(i + 1);
-      return std::hypot(bx - ax, by - ay) > 1.0;
-    };
-    for (std::size_t i = 0; i < pts.size(); ++i)
-      if (i % 4 == 0 || i + 1 == pts.size() || jump(i) || (i > 0 && jump(i - 1)))
-        out.push_back(at(i));
-    return out;
-  };
-  panel.trail1 = thin(t.trail1);
-  panel.trail2 = thin(t.trail2);
-  antkit::experiments::save_trails_figure(
-      "Buffon's needle, trial 0 (paper 000)",
-      std::to_string(t.steps1 > 0 ? t.steps1 : c.steps) + " and " +
-          std::to_string(t.steps2 > 0 ? t.steps2 : c.steps) + " steps; " +
-          (t.bc > 0 ? std::to_string(t.bc) + " crossings counted (BC), " : std::string()) +
-          std::to_string(t.crossings_exact) + " exact crossings of the two trails.",
-      {panel}, c.svg, c.png);
+  return "";
 }
 
-// The default --max-steps of --rule markers and online.
-constexpr std::int64_t kDefaultBudget = 20000000;
+// One trial's JSON (the keys are documented at the top of this file).
+nlohmann::json trial_json(const buffon::AreaTrial& a, bool budgeted, bool online1) {
+  const buffon::TrialResult& t = a.run;
+  const auto& cf = a.closed_form;
+  nlohmann::json j = {
+      {"trial", t.trial},
+      {"bc", t.bc},
+      {"nbc", a.nbc},
+      {"length1", a.length1},
+      {"length2", a.length2},
+      {"crossings_exact", t.crossings_exact},
+      {"area_closed_form", cf.area ? nlohmann::json(*cf.area) : nlohmann::json()},
+      {"area_closed_form_ci", {cf.lower, cf.upper ? nlohmann::json(*cf.upper) : nlohmann::json()}},
+      {"blocked", t.blocked},
+      {"hash", antkit::kernel::hash_hex(t.hash)}};
+  if (a.precision) {
+    const buffon::PrecisionEstimate& estimate = *a.precision;
+    j["reached_precision"] = t.reached_precision;
+    j["precision_ci"] = {optional_json(estimate.ci.lower), optional_json(estimate.ci.upper)};
+    j["variance_visit1"] = t.variance_visit1;
+    j["variance_visit2"] = t.variance_visit2;
+    j["wall_encounters"] = t.wall_encounters;
+    j["area_corrected"] = optional_json(estimate.area_corrected);
+    j["area_corrected_ci"] = {optional_json(estimate.corrected_ci.lower),
+                              optional_json(estimate.corrected_ci.upper)};
+    if (budgeted) j["precision_reached"] = optional_json(estimate.precision_reached);
+  }
+  if (budgeted) {
+    j["steps1"] = t.steps1;
+    j["steps2"] = t.steps2;
+    j["length_total"] = a.length1 + a.length2;
+    if (a.stopped) j["stopped"] = stop_name(*a.stopped);
+  }
+  if (online1) {
+    j["first_visit_reached"] = t.first_visit_reached;
+    j["self_crossings"] = t.self_crossings;
+    j["area_pilot"] = optional_json(a.area_pilot);
+  }
+  return j;
+}
 
 void run(const BuffonCommand& c) {
   antkit::cli::check_buffon_run_size(c.trials, c.steps, c.threads);
@@ -165,133 +169,58 @@ void run(const BuffonCommand& c) {
   buffon::BodyParams body;
   body.noise = geometry::fixed_from_double<antkit::kernel::Fx>(c.noise, "--noise");
   const buffon::World world(arena.walls_fx(), body);
-  buffon::TrialParams params;
+  buffon::AreaMeasurementParams params;
+  params.trials = static_cast<std::uint64_t>(c.trials);
+  params.threads = static_cast<unsigned>(c.threads);
   params.seed = c.seed;
   params.steps = c.steps;
   params.width = geometry::fixed_from_double<antkit::kernel::Fx>(c.width, "--width");
-  const bool online = c.precision_given;
-  std::uint32_t precision = 0;
-  if (online) {
-    precision = buffon::parse_precision(c.precision);
-    params.precision_millionths = precision;
+  if (c.precision_given) {
+    params.precision_millionths = buffon::parse_precision(c.precision);
+    params.rule = rule;
     params.visit2_steps = c.max_steps2;
-    params.online_first_visit = online1;
-    // markers and online stop on P: without --max-steps their budget is generous (P = 0.05 on
-    // a 31 416-unit^2 circle took a median 1.8 M steps online and 0.8 M with two markers,
-    // results/precision_cost), so that asking for P gets P.
-    params.total_steps = c.max_steps != 0 ? c.max_steps : (online1 || markers) ? kDefaultBudget : 0;
+    params.total_steps = c.max_steps;
   }
+  params.keep_first_trails = !c.svg.empty() || !c.png.empty();
+  const buffon::AreaMeasurement m = buffon::measure_area(world, params);
 
-  const auto count = static_cast<std::uint64_t>(c.trials);
-  std::vector<buffon::TrialResult> results(count);
-  antkit::algorithms::for_each_unit(
-      count, static_cast<unsigned>(c.threads), [&](std::uint64_t i, unsigned) {
-        buffon::TrialParams p = params;
-        p.keep_trails = (i == 0 && (!c.svg.empty() || !c.png.empty()));
-        results[i] =
-            markers ? buffon::run_two_marker_trial(world, p, i) : buffon::run_trial(world, p, i);
-      });
-
+  const bool online = c.precision_given;
+  const bool budgeted = buffon::budgeted(params);
   nlohmann::json trials = nlohmann::json::array();
-  std::vector<double> nbcs, areas, lengths2;
-  std::uint64_t stopped = 0, first_reached = 0, short_budget = 0;
-  std::vector<double> lengths1, totals, corrected;
-  antkit::kernel::TraceHash all(c.seed);
-  for (const auto& t : results) {
-    const double l1 = fx_to_double(t.length1_raw), l2 = fx_to_double(t.length2_raw);
-    const double nbc = l2 > 0 ? static_cast<double>(t.bc) / l2 : 0.0;
-    // Two markers count the pairs of pieces apart in time only (two_markers.hpp): pair_share.
-    const auto cf = buffon::closed_form_area(l1 * t.pair_share, l2, t.crossings_exact);
-    nbcs.push_back(nbc);
-    if (cf.area) areas.push_back(*cf.area);
-    all.add_u64(t.hash);
-    lengths2.push_back(l2);
-    trials.push_back({{"trial", t.trial},
-                      {"bc", t.bc},
-                      {"nbc", nbc},
-                      {"length1", l1},
-                      {"length2", l2},
-                      {"crossings_exact", t.crossings_exact},
-                      {"area_closed_form", cf.area ? nlohmann::json(*cf.area) : nlohmann::json()},
-                      {"area_closed_form_ci",
-                       {cf.lower, cf.upper ? nlohmann::json(*cf.upper) : nlohmann::json()}},
-                      {"blocked", t.blocked},
-                      {"hash", antkit::kernel::hash_hex(t.hash)}});
-    buffon::PrecisionEstimate estimate;
-    if (online) {
-      stopped += t.reached_precision ? 1 : 0;
-      trials.back()["reached_precision"] = t.reached_precision;
-      // The rule's own interval and the erosion-corrected estimate (estimate.hpp).
-      estimate = buffon::precision_estimate({cf.area, t.crossings_exact, t.variance_visit1,
-                                             t.variance_visit2, t.wall_encounters, l1 + l2});
-      trials.back()["precision_ci"] = {optional_json(estimate.ci.lower),
-                                       optional_json(estimate.ci.upper)};
-      trials.back()["variance_visit1"] = t.variance_visit1;
-      trials.back()["variance_visit2"] = t.variance_visit2;
-      trials.back()["wall_encounters"] = t.wall_encounters;
-      trials.back()["area_corrected"] = optional_json(estimate.area_corrected);
-      trials.back()["area_corrected_ci"] = {optional_json(estimate.corrected_ci.lower),
-                                            optional_json(estimate.corrected_ci.upper)};
-      if (estimate.area_corrected) corrected.push_back(*estimate.area_corrected);
-    }
-    if (online1 || markers) {
-      auto& j = trials.back();
-      // The precision reached: the rule's interval's upper side over the estimate, minus 1.
-      j["precision_reached"] = optional_json(estimate.precision_reached);
-      if (!t.reached_precision) ++short_budget;
-      j["steps1"] = t.steps1;
-      j["steps2"] = t.steps2;
-      j["length_total"] = l1 + l2;
-      totals.push_back(l1 + l2);
-      lengths1.push_back(l1);
-      if (markers) j["stopped"] = t.reached_precision ? "precision" : "budget";
-    }
-    if (online1) {
-      first_reached += t.first_visit_reached ? 1 : 0;
-      auto& j = trials.back();
-      j["first_visit_reached"] = t.first_visit_reached;
-      j["self_crossings"] = t.self_crossings;
-      constexpr double pi = 3.14159265358979323846;
-      j["area_pilot"] = t.self_crossings > 0
-                            ? nlohmann::json(l1 * l1 / (pi * static_cast<double>(t.self_crossings)))
-                            : nlohmann::json();
-      j["stopped"] = t.reached_precision     ? "precision"
-                     : t.first_visit_reached ? "visit 2 cap"
-                                             : "visit 1 cap";
-    }
-  }
+  for (const auto& a : m.trials) trials.push_back(trial_json(a, budgeted, online1));
+  const buffon::AreaSummary& s = m.summary;
   nlohmann::json result;
   result["arena"] = {{"spec", c.arena}, {"area", arena.area()}};
   result["trials"] = trials;
-  result["summary"] = {
-      {"nbc_median", buffon::quantile(nbcs, 0.5)},
-      {"nbc_q1", buffon::quantile(nbcs, 0.25)},
-      {"nbc_q3", buffon::quantile(nbcs, 0.75)},
-      {"area_closed_form_median",
-       areas.empty() ? nlohmann::json() : nlohmann::json(buffon::quantile(areas, 0.5))}};
+  result["summary"] = {{"nbc_median", s.nbc_median},
+                       {"nbc_q1", s.nbc_q1},
+                       {"nbc_q3", s.nbc_q3},
+                       {"area_closed_form_median", optional_json(s.area_closed_form_median)}};
   if (online) {
-    result["summary"]["precision"] = static_cast<double>(precision) / buffon::kPrecisionDenominator;
-    result["summary"]["reached_precision"] = stopped;
-    result["summary"]["length2_median"] = buffon::quantile(lengths2, 0.5);
-    result["summary"]["area_corrected_median"] =
-        corrected.empty() ? nlohmann::json() : nlohmann::json(buffon::quantile(corrected, 0.5));
+    result["summary"]["precision"] =
+        static_cast<double>(params.precision_millionths) / buffon::kPrecisionDenominator;
+    result["summary"]["reached_precision"] = s.reached_precision;
+    result["summary"]["length2_median"] = s.length2_median;
+    result["summary"]["area_corrected_median"] = optional_json(s.area_corrected_median);
   }
-  if (online1 || markers) {
+  if (budgeted) {
     result["summary"]["rule"] = c.rule;
-    result["summary"]["length1_median"] = buffon::quantile(lengths1, 0.5);
-    result["summary"]["length_total_median"] = buffon::quantile(totals, 0.5);
+    result["summary"]["length1_median"] = s.length1_median;
+    result["summary"]["length_total_median"] = s.length_total_median;
   }
-  if (online1) result["summary"]["first_visit_reached"] = first_reached;
-  if ((online1 || markers) && short_budget > 0) {
+  if (online1) result["summary"]["first_visit_reached"] = s.first_visit_reached;
+  if (budgeted && s.out_of_steps > 0) {
     // Said on stderr too, where a table reader looks for trouble.
-    const std::string note = std::to_string(short_budget) + " of " + std::to_string(count) +
+    const std::string note = std::to_string(s.out_of_steps) + " of " + std::to_string(c.trials) +
                              " trials ran out of steps before reaching P = " + c.precision +
                              "; their precision_reached says what they reached (raise --max-steps)";
     result["summary"]["budget_note"] = note;
     std::cerr << "antkit: note: " << note << '\n';
   }
-  result["hash"] = antkit::kernel::hash_hex(all.finish());
-  if (!c.svg.empty() || !c.png.empty()) draw_trails(c, arena, results[0]);
+  result["hash"] = antkit::kernel::hash_hex(s.hash);
+  if (!c.svg.empty() || !c.png.empty())
+    antkit::experiments::save_trial_trails_figure(c.arena, arena, m.trials[0].run, c.steps, c.svg,
+                                                  c.png);
   antkit::cli::emit(result, c.format, std::cout);
 }
 

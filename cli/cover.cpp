@@ -10,8 +10,7 @@
 #include "output.hpp"
 
 #include <algorithm>
-#include <antkit/experiments/drawing.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/experiments/coverage_run.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/uniform/coverage.hpp>
@@ -47,30 +46,6 @@ struct CoverOptions {
   std::string trace;
   Format format = Format::Table;
 };
-
-// The final state: viewed and unviewed free cells, obstacles, the robots; legend and caption.
-void draw(const CoverOptions& o, const uniform::CoverageWorld& world, const std::string& summary) {
-  const auto& map = world.map();
-  antkit::experiments::GridPanel p;
-  p.states = antkit::kernel::Grid<std::uint8_t>(map.width(), map.height(), 0);
-  for (std::int32_t y = 0; y < map.height(); ++y)
-    for (std::int32_t x = 0; x < map.width(); ++x) {
-      const auto c = map[{x, y}];
-      p.states[{x, y}] = c == antkit::kernel::Occupancy::Blocked   ? 2
-                         : c == antkit::kernel::Occupancy::Unknown ? 3
-                         : world.is_viewed({x, y})                 ? 0
-                                                                   : 1;
-    }
-  for (const auto& r : world.robots()) p.robots.emplace_back(r.cell.x + 0.5, r.cell.y + 0.5);
-  antkit::experiments::GridLegend legend;
-  legend.states = {{"#ffffff", "free, viewed"},
-                   {"#9e9e9e", "free, not viewed"},
-                   {"#202020", "blocked"},
-                   {"#606060", "unknown"}};
-  legend.robot = {"#d62728", "robots at the end"};
-  antkit::experiments::save_grid_figure(o.algo + " coverage (paper 004)", summary, {p}, legend,
-                                        o.svg, o.png);
-}
 
 nlohmann::json run_cover(const CoverOptions& o) {
   const auto algo = uniform::parse_algorithm(o.algo);
@@ -118,33 +93,12 @@ nlohmann::json run_cover(const CoverOptions& o) {
   if (o.trace.empty()) {
     r = uniform::run_coverage(world, *algo, o.seed, o.trial, limit);
   } else {
-    // The trace `antkit check cover` reads (testing/include/antkit/testing/run_audit.hpp): the
-    // poses after every tick, streamed into a temporary file that replaces --trace only whole.
-    antkit::geometry::write_file_atomic(o.trace, [&](std::ostream& out) {
-      out << "# antkit cover trace: the poses after each tick (tick 0: the start)\n"
-          << "# sensor: " << o.sensor << "\ntick,robot,x,y,bearing\n";
-      const uniform::TickObserver observer = [&out](const uniform::CoverageWorld& w,
-                                                    std::uint64_t tick) {
-        for (std::size_t i = 0; i < w.robot_count(); ++i) {
-          const auto& p = w.robot(i);
-          out << tick << ',' << i << ',' << p.cell.x << ',' << p.cell.y << ',' << int{p.bearing}
-              << '\n';
-        }
-      };
-      r = uniform::run_coverage(world, *algo, o.seed, o.trial, limit, observer);
-      out << "# claim viewed: " << r.viewed << "\n# claim viewable: " << r.viewable << '\n';
-    });
+    // The trace `antkit check cover` reads, streamed into a file that replaces --trace only whole.
+    r = antkit::experiments::run_coverage_traced(world, *algo, o.seed, o.trial, limit, o.sensor,
+                                                 o.trace);
   }
-  if (!o.svg.empty() || !o.png.empty()) {
-    char coverage[32];
-    std::snprintf(coverage, sizeof coverage, "%.2f",
-                  100.0 * static_cast<double>(r.viewed) / static_cast<double>(r.viewable));
-    draw(o, world,
-         std::to_string(r.robots) + " robot(s), sensor distance " + std::to_string(o.sensor) +
-             ": " + coverage + " % of the viewable free cells viewed in " +
-             std::to_string(r.movements) +
-             " movements (stop: " + std::string(uniform::stop_reason_name(r.stop)) + ").");
-  }
+  if (!o.svg.empty() || !o.png.empty())
+    antkit::experiments::save_coverage_figure(o.algo, world, r, o.sensor, o.svg, o.png);
 
   nlohmann::json j;
   j["algo"] = std::string(uniform::algorithm_name(r.algorithm));

@@ -10,13 +10,11 @@
 #include "output.hpp"
 
 #include <antkit/experiments/uniform_tables.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 namespace {
@@ -63,15 +61,11 @@ nlohmann::json run_experiment(const ExperimentOptions& o) {
     throw InputError("--out", "'" + o.out + "' is not a directory");
   antkit::algorithms::Runner runner;
   runner.threads = static_cast<unsigned>(o.jobs);
-  const auto rows = ex::run_tables(c, runner);
-  const auto csv_path = dir / "uniform_tables.csv";
-  const auto md_path = dir / "uniform_tables.md";
-  antkit::geometry::write_file_atomic(csv_path, ex::tables_csv(rows, c));
-  antkit::geometry::write_file_atomic(md_path, ex::tables_markdown(rows, c));
+  const ex::TablesSummary summary = ex::write_tables(ex::run_tables(c, runner), c, dir);
 
   nlohmann::json j;
-  j["csv"] = csv_path.string();
-  j["markdown"] = md_path.string();
+  j["csv"] = summary.csv.string();
+  j["markdown"] = summary.markdown.string();
   j["width"] = c.width;
   j["height"] = c.height;
   j["sensor"] = c.sensor;
@@ -79,22 +73,20 @@ nlohmann::json run_experiment(const ExperimentOptions& o) {
   j["seed"] = c.seed;
   j["sensor_model"] = o.sensor_model;
   nlohmann::json table = nlohmann::json::array();
-  antkit::kernel::TraceHash digest;
-  for (const auto& r : rows) {
-    digest.add_u64(r.hash);
+  for (const auto& r : summary.rows) {
     nlohmann::json row;
-    row["density"] = r.paper->density_percent;
-    row["robots"] = r.paper->robots;
-    for (std::size_t a = 0; a < ex::table_columns(c); ++a) {
-      const std::string name(uniform::algorithm_name(ex::kTableAlgorithms[a]));
-      row[name + "_coverage"] = std::stod(antkit::experiments::fixed(r.coverage[a], 2));
-      row[name + "_movements"] = std::stod(antkit::experiments::fixed(r.movements[a], 1));
-      row[name + "_moves"] = std::stod(antkit::experiments::fixed(r.moves[a], 1));
+    row["density"] = r.density_percent;
+    row["robots"] = r.robots;
+    for (const auto& column : r.columns) {
+      const std::string name(uniform::algorithm_name(column.algorithm));
+      row[name + "_coverage"] = column.coverage;
+      row[name + "_movements"] = column.movements;
+      row[name + "_moves"] = column.moves;
     }
     table.push_back(row);
   }
   j["rows"] = table;
-  j["hash"] = antkit::kernel::hash_hex(digest.finish());
+  j["hash"] = antkit::kernel::hash_hex(summary.hash);
   return j;
 }
 

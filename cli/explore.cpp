@@ -19,7 +19,7 @@
 
 #include <algorithm>
 #include <antkit/algorithms/options.hpp>
-#include <antkit/experiments/drawing.hpp>
+#include <antkit/experiments/explore_tables.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/los/explore.hpp>
@@ -116,26 +116,6 @@ Environment build_environment(const ExploreCommand& c) {
   return env;
 }
 
-// The final shared map and both trails, with Table 1's colours, a legend and a caption.
-void draw(const ExploreCommand& c, const los::ExploreResult& r) {
-  antkit::experiments::GridPanel p;
-  p.title = "after " + std::to_string(r.steps) + " steps";
-  p.states = antkit::kernel::Grid<std::uint8_t>(r.cells.width(), r.cells.height(), 0);
-  for (std::int32_t y = 0; y < r.cells.height(); ++y)
-    for (std::int32_t x = 0; x < r.cells.width(); ++x)
-      p.states[{x, y}] = static_cast<std::uint8_t>(r.cells[{x, y}]);
-  p.trails.resize(2);
-  for (std::size_t robot = 0; robot < 2; ++robot)
-    for (const Cell cell : r.trajectories[robot])
-      p.trails[robot].emplace_back(cell.x + 0.5, cell.y + 0.5);
-  antkit::experiments::save_grid_figure(
-      c.algo + " exploration (paper 001)",
-      std::to_string(r.cells.width()) + " x " + std::to_string(r.cells.height()) + " cells; " +
-          std::to_string(r.steps) + " steps, E.M.E " + std::to_string(r.eme) + ", " +
-          std::to_string(r.explored) + " cells explored.",
-      {p}, antkit::experiments::exploration_legend(), c.svg, c.png);
-}
-
 nlohmann::json run(const ExploreCommand& c) {
   los::ExploreOptions options;
   if (c.algo == "fast-wall-follow") {
@@ -163,7 +143,8 @@ nlohmann::json run(const ExploreCommand& c) {
   const los::ExploreResult r = los::explore(env.grid, pair[0], pair[1], options);
   if (!r.completed)
     throw antkit::cli::CheckFailed("the exploration did not finish within its tick budget");
-  if (!c.svg.empty() || !c.png.empty()) draw(c, r);
+  if (!c.svg.empty() || !c.png.empty())
+    antkit::experiments::save_exploration_figure(c.algo, r, c.svg, c.png);
 
   nlohmann::json j;
   j["algo"] = c.algo;

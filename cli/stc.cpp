@@ -24,16 +24,14 @@
 
 #include <algorithm>
 #include <antkit/algorithms/options.hpp>
-#include <antkit/experiments/drawing.hpp>
+#include <antkit/experiments/stc_tour.hpp>
 #include <antkit/experiments/stc_tours.hpp>
 #include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/reports/reports.hpp>
-#include <antkit/stc/path_format.hpp>
 #include <antkit/stc/start.hpp>
 #include <antkit/stc/world.hpp>
-#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -66,34 +64,6 @@ struct StcOptions {
   Format format = Format::Table;
 };
 
-// stdout or a file, through a large buffer; numbers written with to_chars.
-class Out {
-public:
-  explicit Out(std::ostream& sink) : sink_(sink) { buf_.reserve(kBuffer + 64); }
-  ~Out() { flush(); }
-  Out(const Out&) = delete;
-  Out& operator=(const Out&) = delete;
-  Out& operator<<(std::string_view s) {
-    buf_.append(s);
-    if (buf_.size() >= kBuffer) flush();
-    return *this;
-  }
-  Out& operator<<(std::int64_t v) {
-    char digits[24];
-    const auto end = std::to_chars(digits, digits + sizeof digits, v).ptr;
-    return *this << std::string_view(digits, static_cast<std::size_t>(end - digits));
-  }
-  void flush() {
-    sink_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
-    buf_.clear();
-  }
-
-private:
-  static constexpr std::size_t kBuffer = std::size_t{1} << 20;
-  std::ostream& sink_;
-  std::string buf_;
-};
-
 // What `antkit stc` and `antkit stc-mcu-input` read from the same options, refused the same way:
 // the variant, the marker noise, the map and the start.
 struct StcRequest {
@@ -121,91 +91,36 @@ void run_stc_command(const StcOptions& o) {
   const Variant variant = request.variant;
   const auto& map = request.map;
   const Cell start = request.start;
-  RunOptions run;
-  run.noise = request.noise;
   // Every bad input is refused before the first byte of output: the path file's name is checked
-  // and the file opened (write_file_atomic) before the run, and run_stc checks the start before
-  // the first position, which writes the JSON's head.
+  // here, the file opened (write_file_atomic) before the run, and the start checked before the
+  // first position, which writes the JSON's head (experiments/stc_tour.hpp).
   const auto ext = std::filesystem::path(o.path_out).extension();
   if (!o.path_out.empty() && ext != ".csv" && ext != ".bin")
     throw InputError("--path-out", "'" + o.path_out + "': give a .csv or a .bin file name");
-  path_format::TourWriter* path_file = nullptr;
   const bool json = o.format == Format::Json;
-  std::optional<Out> out;
-  std::int64_t written = 0;
-  const auto head = [&] {
-    out.emplace(std::cout);
-    *out << "{\n  \"variant\": \"" << variant_name(variant)
-         << "\",\n  \"width\": " << std::int64_t{map.cells.width()}
-         << ",\n  \"height\": " << std::int64_t{map.cells.height()} << ",\n  \"start\": ["
-         << std::int64_t{start.x} << ", " << std::int64_t{start.y} << "],\n  \"path\": [";
-  };
-  run.record_path = !o.svg.empty() || !o.png.empty();
-  if (json || !o.path_out.empty())
-    run.on_position = [&](SubCell s) {
-      if (json) {
-        if (written == 0) head();
-        *out << (written == 0       ? "\n    ["
-                 : written % 8 == 0 ? ",\n    ["
-                                    : ", [")
-             << std::int64_t{s.x} << ", " << std::int64_t{s.y} << "]";
-        ++written;
-      }
-      if (path_file) path_file->add(s);
-    };
-  RunResult r;
-  const auto tour = [&] {
-    try {
-      r = run_stc(map.cells, start, variant, run);
-    } catch (const InputError& e) { // name the option or the file the start came from
-      throw InputError(o.start.empty() ? o.map : "--start", e.message());
-    }
-  };
-  if (o.path_out.empty()) {
-    tour();
-  } else {
-    antkit::geometry::write_file_atomic(o.path_out, [&](std::ostream& file) {
-      path_format::TourWriter writer(file, ext == ".bin", map.cells.width(), map.cells.height(),
-                                     start);
-      path_file = &writer;
-      tour();
-      writer.finish();
-      path_file = nullptr;
-    });
-  }
+  antkit::experiments::StcTourOutput out;
+  out.json = json ? &std::cout : nullptr;
+  out.path_file = o.path_out;
+  out.binary_path = ext == ".bin";
+  out.keep_path = !o.svg.empty() || !o.png.empty();
+  if (!o.noise.empty()) out.seed = o.seed;
+  out.start_where = o.start.empty() ? o.map : "--start"; // the option or the file it came from
+  const RunResult r =
+      antkit::experiments::write_stc_tour(map.cells, start, variant, request.noise, out);
   if (!o.svg.empty() || !o.png.empty())
-    antkit::experiments::save_tour_figure(
-        map.cells, r.path,
-        std::string(variant_name(variant)) + " STC on " +
-            std::filesystem::path(o.map).filename().string(),
-        std::to_string(r.reachable_subcells) + " reachable sub-cells, " +
-            std::to_string(r.covered) + " covered, " + std::to_string(r.repeats) +
-            " repeats, back at the start cell: " + (r.returned_to_start ? "yes" : "no") + ".",
-        o.svg, o.png);
-  if (json) {
-    if (!out) head();
-    *out << (written > 0 ? "\n  ],\n" : "],\n")
-         << "  \"reachable_subcells\": " << r.reachable_subcells
-         << ",\n  \"covered\": " << r.covered << ",\n  \"repeats\": " << r.repeats
-         << ",\n  \"returned_to_start\": " << (r.returned_to_start ? "true" : "false")
-         << ",\n  \"hash\": \"" << antkit::kernel::hash_hex(r.hash) << "\"";
-    if (!o.noise.empty())
-      *out << ",\n  \"noise_ppm\": " << std::int64_t{run.noise.ppm}
-           << ",\n  \"seed\": " << static_cast<std::int64_t>(o.seed);
-    *out << "\n}\n";
-    out->flush();
-  } else {
+    antkit::experiments::save_stc_tour_figure(
+        map.cells, r, std::filesystem::path(o.map).filename().string(), o.svg, o.png);
+  if (!json) {
     nlohmann::json j = antkit::reports::stc_json(
         r, map.cells.width(), map.cells.height(), start,
-        o.noise.empty() ? std::nullopt
-                        : std::optional(antkit::reports::StcNoiseFields{run.noise.ppm, o.seed}));
+        o.noise.empty()
+            ? std::nullopt
+            : std::optional(antkit::reports::StcNoiseFields{request.noise.ppm, o.seed}));
     j["path"] = "(" + std::to_string(r.positions) + " items; use --format json)";
     antkit::cli::emit(j, o.format, std::cout);
   }
-  if (o.noise.empty() || run.noise.ppm == 0) {
-    const bool ok = r.closed && r.returned_to_start && r.covered == r.reachable_subcells &&
-                    (variant == Variant::Full || r.repeats == 0);
-    if (!ok)
+  if (o.noise.empty() || request.noise.ppm == 0) {
+    if (!keeps_invariants(r))
       throw antkit::cli::CheckFailed(
           "the " + std::string(variant_name(variant)) + " tour broke an invariant (covered " +
           std::to_string(r.covered) + " of " + std::to_string(r.reachable_subcells) + ", repeats " +

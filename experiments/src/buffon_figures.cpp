@@ -4,6 +4,7 @@
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/experiments/buffon_figures.hpp>
 #include <antkit/experiments/calibration.hpp>
+#include <antkit/experiments/drawing.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
 #include <antkit/kernel/hash.hpp>
@@ -452,6 +453,44 @@ Figure figure14_plot(const Figure14& f) {
   fig.legend = buffon_panel.series; // the same circles in both panels: one legend
   fig.panels = {std::move(buffon_panel), std::move(rs_panel)};
   return fig;
+}
+
+void save_trial_trails_figure(const std::string& name, const geometry::Arena& arena,
+                              const buffon::TrialResult& t, std::int64_t steps,
+                              const std::filesystem::path& svg, const std::filesystem::path& png) {
+  TrailPanel panel;
+  panel.title = name + " (area " + number(arena.area()) + ")";
+  for (const auto& ring : arena.rings()) {
+    std::vector<XY> pts;
+    for (const auto& p : ring) pts.emplace_back(p[0], p[1]);
+    panel.rings.push_back(std::move(pts));
+  }
+  // Every 4th point (steps are 0.04 units), and both ends of every jump longer than a step (the
+  // pieces of a marker's trail under --rule markers), so that no chord is drawn across the arena.
+  const auto thin = [](const std::vector<kernel::FxPoint>& pts) {
+    std::vector<XY> out;
+    const auto at = [&](std::size_t i) {
+      return XY{geometry::to_double(pts[i].x), geometry::to_double(pts[i].y)};
+    };
+    const auto jump = [&](std::size_t i) { // between i and i + 1
+      const auto [ax, ay] = at(i);
+      const auto [bx, by] = at(i + 1);
+      return std::hypot(bx - ax, by - ay) > 1.0;
+    };
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      if (i % 4 == 0 || i + 1 == pts.size() || jump(i) || (i > 0 && jump(i - 1)))
+        out.push_back(at(i));
+    return out;
+  };
+  panel.trail1 = thin(t.trail1);
+  panel.trail2 = thin(t.trail2);
+  save_trails_figure(
+      "Buffon's needle, trial 0 (paper 000)",
+      std::to_string(t.steps1 > 0 ? t.steps1 : steps) + " and " +
+          std::to_string(t.steps2 > 0 ? t.steps2 : steps) + " steps; " +
+          (t.bc > 0 ? std::to_string(t.bc) + " crossings counted (BC), " : std::string()) +
+          std::to_string(t.crossings_exact) + " exact crossings of the two trails.",
+      {panel}, svg, png);
 }
 
 } // namespace antkit::experiments

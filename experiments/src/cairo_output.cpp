@@ -1,6 +1,7 @@
 #include "cairo_output.hpp"
 
 #include <antkit/experiments/plot.hpp>
+#include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <atomic>
 #include <cairo-svg.h>
@@ -13,7 +14,6 @@
 #include <map>
 #include <memory>
 #include <sstream>
-#include <unistd.h>
 #include <vector>
 
 namespace antkit::experiments {
@@ -22,25 +22,10 @@ namespace detail {
 
 namespace {
 
-// A temporary name beside `path`, renamed over it once complete.
-std::filesystem::path temporary_beside(const std::filesystem::path& path) {
-  return path.parent_path() /
-         ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()));
-}
-
 void check(cairo_status_t status, const std::filesystem::path& path) {
   if (status != CAIRO_STATUS_SUCCESS)
     throw kernel::InputError(path.string(), std::string("could not write the figure: ") +
                                                 cairo_status_to_string(status));
-}
-
-void publish(const std::filesystem::path& tmp, const std::filesystem::path& path) {
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw kernel::InputError(path.string(), "could not write the figure: " + ec.message());
-  }
 }
 
 // Cairo names the SVG's groups after a process-wide count of the surfaces it has made
@@ -130,43 +115,41 @@ void render(double width, double height, const std::function<void(cairo_t*)>& dr
   }();
   (void)at_exit;
   drawn = true;
-  const std::filesystem::path svg_tmp = temporary_beside(svg), png_tmp = temporary_beside(png);
-  auto cleanup = [&] {
-    std::error_code ec;
-    std::filesystem::remove(svg_tmp, ec);
-    std::filesystem::remove(png_tmp, ec);
+  // Each file is written under a temporary name and renamed into place when whole
+  // (geometry::write_file_atomic_at): a failed drawing leaves neither.
+  const auto write_svg = [&](const std::filesystem::path& svg_tmp) {
+    std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+        cairo_svg_surface_create(svg_tmp.c_str(), width, height), &cairo_surface_destroy);
+    check(cairo_surface_status(surface.get()), svg);
+    std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()),
+                                                          &cairo_destroy);
+    draw(cr.get());
+    check(cairo_status(cr.get()), svg);
+    cairo_surface_finish(surface.get());
+    check(cairo_surface_status(surface.get()), svg);
+    renumber_surfaces(svg_tmp);
   };
-  try {
-    if (!svg.empty()) {
-      std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-          cairo_svg_surface_create(svg_tmp.c_str(), width, height), &cairo_surface_destroy);
-      check(cairo_surface_status(surface.get()), svg);
-      std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()),
-                                                            &cairo_destroy);
-      draw(cr.get());
-      check(cairo_status(cr.get()), svg);
-      cairo_surface_finish(surface.get());
-      check(cairo_surface_status(surface.get()), svg);
-      renumber_surfaces(svg_tmp);
-    }
-    if (!png.empty()) {
-      std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-          cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(width),
-                                     static_cast<int>(height)),
-          &cairo_surface_destroy);
-      check(cairo_surface_status(surface.get()), png);
-      std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()),
-                                                            &cairo_destroy);
-      draw(cr.get());
-      check(cairo_status(cr.get()), png);
-      check(cairo_surface_write_to_png(surface.get(), png_tmp.c_str()), png);
-    }
-    if (!svg.empty()) publish(svg_tmp, svg);
-    if (!png.empty()) publish(png_tmp, png);
-  } catch (...) {
-    cleanup();
-    throw;
-  }
+  const auto write_png = [&](const std::filesystem::path& png_tmp) {
+    std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+        cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(width),
+                                   static_cast<int>(height)),
+        &cairo_surface_destroy);
+    check(cairo_surface_status(surface.get()), png);
+    std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()),
+                                                          &cairo_destroy);
+    draw(cr.get());
+    check(cairo_status(cr.get()), png);
+    check(cairo_surface_write_to_png(surface.get(), png_tmp.c_str()), png);
+  };
+  if (!svg.empty() && !png.empty())
+    geometry::write_file_atomic_at(svg, [&](const std::filesystem::path& svg_tmp) {
+      write_svg(svg_tmp);
+      geometry::write_file_atomic_at(png, write_png);
+    });
+  else if (!svg.empty())
+    geometry::write_file_atomic_at(svg, write_svg);
+  else if (!png.empty())
+    geometry::write_file_atomic_at(png, write_png);
 }
 
 } // namespace detail

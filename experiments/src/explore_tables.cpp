@@ -259,4 +259,24 @@ void explore_stages_figure(std::uint64_t seed, const std::filesystem::path& svg,
       panels, exploration_legend(), svg, png);
 }
 
+void save_exploration_figure(const std::string& algorithm, const los::ExploreResult& r,
+                             const std::filesystem::path& svg, const std::filesystem::path& png) {
+  GridPanel p;
+  p.title = "after " + std::to_string(r.steps) + " steps";
+  p.states = kernel::Grid<std::uint8_t>(r.cells.width(), r.cells.height(), 0);
+  for (std::int32_t y = 0; y < r.cells.height(); ++y)
+    for (std::int32_t x = 0; x < r.cells.width(); ++x)
+      p.states[{x, y}] = static_cast<std::uint8_t>(r.cells[{x, y}]);
+  p.trails.resize(2);
+  for (std::size_t robot = 0; robot < 2; ++robot)
+    for (const kernel::Cell cell : r.trajectories[robot])
+      p.trails[robot].emplace_back(cell.x + 0.5, cell.y + 0.5);
+  save_grid_figure(algorithm + " exploration (paper 001)",
+                   std::to_string(r.cells.width()) + " x " + std::to_string(r.cells.height()) +
+                       " cells; " + std::to_string(r.steps) + " steps, E.M.E " +
+                       std::to_string(r.eme) + ", " + std::to_string(r.explored) +
+                       " cells explored.",
+                   {p}, exploration_legend(), svg, png);
+}
+
 } // namespace antkit::experiments

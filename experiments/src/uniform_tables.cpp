@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <antkit/experiments/uniform_tables.hpp>
+#include <antkit/geometry/atomic_file.hpp>
 #include <cstdio>
 #include <sstream>
 
@@ -181,6 +182,35 @@ Figure tables_plot(const std::vector<TablesRow>& rows, const TablesConfig& c) {
     fig.panels.push_back(std::move(panel));
   }
   return fig;
+}
+
+TablesSummary tables_summary(const std::vector<TablesRow>& rows, const TablesConfig& c) {
+  TablesSummary s;
+  kernel::TraceHash digest;
+  for (const auto& r : rows) {
+    digest.add_u64(r.hash);
+    TablesSummaryRow row;
+    row.density_percent = r.paper->density_percent;
+    row.robots = r.paper->robots;
+    for (std::size_t a = 0; a < table_columns(c); ++a)
+      row.columns.push_back({kTableAlgorithms[a], std::stod(fixed(r.coverage[a], 2)),
+                             std::stod(fixed(r.movements[a], 1)), std::stod(fixed(r.moves[a], 1))});
+    s.rows.push_back(std::move(row));
+  }
+  s.hash = digest.finish();
+  return s;
+}
+
+TablesSummary write_tables(const std::vector<TablesRow>& rows, const TablesConfig& c,
+                           const std::filesystem::path& dir) {
+  const auto csv = dir / "uniform_tables.csv";
+  const auto md = dir / "uniform_tables.md";
+  geometry::write_file_atomic(csv, tables_csv(rows, c));
+  geometry::write_file_atomic(md, tables_markdown(rows, c));
+  TablesSummary s = tables_summary(rows, c);
+  s.csv = csv;
+  s.markdown = md;
+  return s;
 }
 
 } // namespace antkit::experiments::uniform_tables

@@ -17,17 +17,11 @@ std::filesystem::path temporary_beside(const std::filesystem::path& path) {
 }
 } // namespace
 
-void write_file_atomic(const std::filesystem::path& path,
-                       const std::function<void(std::ostream&)>& write) {
+void write_file_atomic_at(const std::filesystem::path& path,
+                          const std::function<void(const std::filesystem::path&)>& write) {
   const auto tmp = temporary_beside(path);
   try {
-    {
-      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-      if (!out) throw kernel::InputError(path.string(), "cannot open for writing");
-      write(out);
-      out.flush();
-      if (!out) throw kernel::InputError(path.string(), "write failed");
-    }
+    write(tmp);
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
     if (ec) throw kernel::InputError(path.string(), "cannot rename into place: " + ec.message());
@@ -36,6 +30,17 @@ void write_file_atomic(const std::filesystem::path& path,
     std::filesystem::remove(tmp, ignored);
     throw;
   }
+}
+
+void write_file_atomic(const std::filesystem::path& path,
+                       const std::function<void(std::ostream&)>& write) {
+  write_file_atomic_at(path, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw kernel::InputError(path.string(), "cannot open for writing");
+    write(out);
+    out.flush();
+    if (!out) throw kernel::InputError(path.string(), "write failed");
+  });
 }
 
 void write_file_atomic(const std::filesystem::path& path, std::string_view content) {

@@ -109,7 +109,7 @@ kernel::Grid<CellState> read_los_cells(std::string_view text, const std::string&
     try {
       j = nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
-      const auto [line, column] = detail::line_column(text, e.byte == 0 ? 0 : e.byte - 1);
+      const auto [line, column] = kernel::position_of(text, e.byte == 0 ? 0 : e.byte - 1);
       throw InputError(source, line, column, "JSON: " + detail::json_message(e.what()));
     } catch (const nlohmann::json::exception& e) {
       // Not a syntax error: a number out of range ("4E427"), which nlohmann reports without a
@@ -131,12 +131,11 @@ kernel::Grid<CellState> read_los_cells(std::string_view text, const std::string&
       lines.push_back(0);
     }
   } else {
-    detail::Lines text_lines(text);
-    std::string_view l;
-    while (text_lines.next(l)) {
-      if (l.find_first_not_of(" \t") == std::string_view::npos) continue;
-      rows.emplace_back(l);
-      lines.push_back(text_lines.number());
+    kernel::TextLines text_lines(text);
+    while (const auto l = text_lines.next()) {
+      if (l->text.find_first_not_of(" \t") == std::string_view::npos) continue;
+      rows.emplace_back(l->text);
+      lines.push_back(l->number);
     }
   }
   if (rows.empty() || rows.front().empty()) throw InputError(source, "no cell states");
@@ -201,12 +200,12 @@ CoverTrace read_cover_trace(std::string_view text, const std::string& source) {
   CoverTrace t;
   constexpr std::int64_t kMaxRobots = 1 << 16;
   constexpr std::int64_t kMaxRows = std::int64_t{1} << 28;
-  detail::Lines text_lines(text);
-  std::string_view l;
+  kernel::TextLines text_lines(text);
   bool header_allowed = true;
   std::int64_t robots = 0, rows_read = 0;
-  while (text_lines.next(l)) {
-    const std::size_t line = text_lines.number();
+  while (const auto next = text_lines.next()) {
+    const std::string_view l = next->text;
+    const std::size_t line = next->number;
     std::size_t i = 0;
     while (i < l.size() && blank(l[i])) ++i;
     if (i == l.size()) continue;

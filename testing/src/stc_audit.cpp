@@ -107,7 +107,7 @@ public:
   }
   bool parse_error(std::size_t position, const std::string&,
                    const nlohmann::detail::exception& e) override {
-    const auto [line, column] = detail::line_column(text_, position == 0 ? 0 : position - 1);
+    const auto [line, column] = kernel::position_of(text_, position == 0 ? 0 : position - 1);
     throw InputError(source_, line, column, "JSON: " + detail::json_message(e.what()));
   }
 
@@ -164,11 +164,11 @@ using detail::blank;
 TourFile read_csv(std::string_view text, const std::string& source, TourOrder order) {
   TourFile out;
   out.order = order;
-  detail::Lines lines(text);
-  std::string_view l;
+  kernel::TextLines lines(text);
   bool first = true;
-  while (lines.next(l)) {
-    const std::size_t line = lines.number();
+  while (const auto next = lines.next()) {
+    const std::string_view l = next->text;
+    const std::size_t line = next->number;
     std::size_t i = 0;
     auto col = [&] { return i + 1; };
     auto skip = [&] {

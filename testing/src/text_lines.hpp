@@ -1,40 +1,19 @@
 #pragma once
-// What the text readers of antkit::testing share (stc_audit.cpp, run_audit.cpp): lines, positions
-// and the wording of nlohmann-json's errors.
-#include <algorithm>
+// What the text readers of antkit::testing share (stc_audit.cpp, run_audit.cpp) beyond the
+// kernel's line scanner (kernel/text_lines.hpp): headers, whole numbers and the wording of
+// nlohmann-json's errors.
+#include <antkit/kernel/text_lines.hpp>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <string_view>
-#include <utility>
 
 namespace antkit::testing::detail {
 
 inline bool blank(char c) noexcept {
   return c == ' ' || c == '\t';
 }
-
-// The lines of a text, LF or CRLF (the CR dropped), numbered from 1.
-class Lines {
-public:
-  explicit Lines(std::string_view text) noexcept : text_(text) {}
-  // The next line into `line`; false at the end of the text.
-  bool next(std::string_view& line) noexcept {
-    if (pos_ >= text_.size()) return false;
-    ++number_;
-    const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
-    line = text_.substr(pos_, end - pos_);
-    pos_ = end + 1;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    return true;
-  }
-  [[nodiscard]] std::size_t number() const noexcept { return number_; }
-
-private:
-  std::string_view text_;
-  std::size_t pos_ = 0, number_ = 0;
-};
 
 // Whether `line` is `header` once spaces and tabs are left out ("x , y" is the header "x,y").
 inline bool is_header(std::string_view line, std::string_view header) noexcept {
@@ -66,22 +45,6 @@ inline Whole scan_whole(std::string_view l, std::size_t& i, bool plus = false) n
   }
   if (negative) w.value = -w.value;
   return w;
-}
-
-// Line and column (from 1, column in bytes) of byte offset `pos` of `text`.
-inline std::pair<std::size_t, std::size_t> line_column(std::string_view text,
-                                                       std::size_t pos) noexcept {
-  pos = std::min(pos, text.size());
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i < pos; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return {line, column};
 }
 
 // An nlohmann-json error's message without its tag: "[json.exception.parse_error.101] parse error

@@ -1,6 +1,7 @@
 // The figures' layout (experiments/plot.hpp): a picture as tall as its contents (no empty band
 // above the caption), panels in rows, one legend per figure, a panel's own y axis, labelled
 // reference lines and points, and the same bytes for the same figure.
+#include <algorithm>
 #include <antkit/experiments/plot.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
@@ -9,6 +10,7 @@
 #include <sstream>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 namespace ex = antkit::experiments;
 
@@ -133,5 +135,29 @@ TEST_CASE("save_figure: nothing to draw on a log axis is refused, no file left",
                   antkit::kernel::InputError);
   CHECK_FALSE(std::filesystem::exists(dir / "none.svg"));
   CHECK_FALSE(std::filesystem::exists(dir / "none.png"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("save_figure: written whole or not at all - a PNG that cannot be written leaves no SVG "
+          "and no temporary file",
+          "[plot]") {
+  const ex::Figure f = one_panel("caption");
+  const auto dir = scratch() / "atomic";
+  std::filesystem::create_directories(dir);
+  try {
+    ex::save_figure(f, dir / "fig.svg", dir / "absent" / "fig.png");
+    FAIL("a PNG in a missing directory was written");
+  } catch (const antkit::kernel::InputError& e) {
+    CHECK(e.where() == (dir / "absent" / "fig.png").string());
+    CHECK(e.message().rfind("could not write the figure: ", 0) == 0);
+  }
+  CHECK(std::filesystem::is_empty(dir));
+  ex::save_figure(f, dir / "fig.svg", dir / "fig.png");
+  ex::save_figure(f, "", dir / "only.png");
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  CHECK(names == std::vector<std::string>{"fig.png", "fig.svg", "only.png"});
   std::filesystem::remove_all(dir);
 }

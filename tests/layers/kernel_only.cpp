@@ -10,3 +10,4 @@
 #include <antkit/kernel/random.hpp>
 #include <antkit/kernel/raster.hpp>
 #include <antkit/kernel/segment.hpp>
+#include <antkit/kernel/text_lines.hpp>

@@ -20,10 +20,13 @@
 // calibration arenas' median nBC at the same checkpoint; each trial of a test arena then gives one
 // estimate.
 #include <antkit/algorithms/units.hpp>
+#include <antkit/buffon/measurement.hpp>
 #include <antkit/experiments/calibration.hpp>
 #include <antkit/experiments/format.hpp>
 #include <antkit/experiments/plot.hpp>
+#include <antkit/geometry/arena.hpp>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -71,6 +74,16 @@ struct BuffonFigure {
 [[nodiscard]] Figure buffon_figure_plot(const BuffonFigure& f);
 // Figure 5b: each square's median nBC against the circle's of the same area, with y = x.
 [[nodiscard]] Figure buffon_figure5b_plot(const BuffonFigure& figure5);
+
+// One trial's two trails over its arena (`antkit buffon --svg/--png`), like the paper's Figure 4:
+// `name` titles the panel (with the arena's area), `steps` is the visits' length when the trial
+// does not say (TrialResult::steps1/steps2 are 0 for two fixed visits). The trails are thinned to
+// every 4th point, keeping both ends of every jump longer than a unit (the pieces of a marker's
+// trail), so that no chord is drawn across the arena. Throws kernel::InputError for a file that
+// cannot be written.
+void save_trial_trails_figure(const std::string& name, const geometry::Arena& arena,
+                              const buffon::TrialResult& trial, std::int64_t steps,
+                              const std::filesystem::path& svg, const std::filesystem::path& png);
 
 struct Figure14Row {
   double diameter = 0, total_length = 0, area = 0;

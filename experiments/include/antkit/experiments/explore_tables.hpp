@@ -15,6 +15,7 @@
 // baseline with sweeping is run beside it.
 #include <antkit/algorithms/units.hpp>
 #include <antkit/experiments/plot.hpp>
+#include <antkit/los/explore.hpp>
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -101,5 +102,12 @@ struct ExploreTables {
 // ticks, drawn to svg and png (drawing.hpp).
 void explore_stages_figure(std::uint64_t seed, const std::filesystem::path& svg,
                            const std::filesystem::path& png);
+
+// One exploration's picture (`antkit explore --svg/--png`): the final shared map with Table 1's
+// colours (exploration_legend), both robots' trails, and a caption with the size, steps, E.M.E and
+// cells explored; `algorithm` titles it as the caller names it. Throws kernel::InputError for a
+// file that cannot be written.
+void save_exploration_figure(const std::string& algorithm, const los::ExploreResult& result,
+                             const std::filesystem::path& svg, const std::filesystem::path& png);
 
 } // namespace antkit::experiments

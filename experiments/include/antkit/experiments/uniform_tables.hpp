@@ -29,6 +29,7 @@
 #include <antkit/uniform/scenario.hpp>
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -148,6 +149,31 @@ std::vector<TablesRow> run_tables(const TablesConfig& c, const algorithms::Runne
 // with the coordinated-A* and frontier comparisons as Markdown.
 std::string tables_csv(const std::vector<TablesRow>& rows, const TablesConfig& c);
 std::string tables_markdown(const std::vector<TablesRow>& rows, const TablesConfig& c);
+// What `antkit cover-experiment` reports of a run besides its files: per row the obstacle density,
+// the robot count and each algorithm's mean coverage (%), movements and moves rounded as the
+// Markdown tables print them (2, 1 and 1 decimals), and a digest of the rows' hashes in row order.
+struct TablesSummaryColumn {
+  Algorithm algorithm = Algorithm::RandomWanderer;
+  double coverage = 0, movements = 0, moves = 0;
+};
+struct TablesSummaryRow {
+  int density_percent = 0;
+  int robots = 0;
+  std::vector<TablesSummaryColumn> columns; // table_columns(c) of kTableAlgorithms, in order
+};
+struct TablesSummary {
+  std::filesystem::path csv, markdown; // the files written
+  std::vector<TablesSummaryRow> rows;
+  std::uint64_t hash = 0;
+};
+[[nodiscard]] TablesSummary tables_summary(const std::vector<TablesRow>& rows,
+                                           const TablesConfig& c);
+// Writes dir/uniform_tables.csv and dir/uniform_tables.md (tables_csv, tables_markdown), each whole
+// or not at all (geometry::write_file_atomic; InputError(the file) when one cannot be written), and
+// returns the summary with their paths.
+TablesSummary write_tables(const std::vector<TablesRow>& rows, const TablesConfig& c,
+                           const std::filesystem::path& dir);
+
 // Coverage against movements, one panel per obstacle density, RW, PM and A* (ours: filled, the
 // paper's: open markers), one point per robot count.
 Figure tables_plot(const std::vector<TablesRow>& rows, const TablesConfig& c);

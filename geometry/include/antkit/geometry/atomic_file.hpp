@@ -14,4 +14,11 @@ void write_file_atomic(const std::filesystem::path& path,
                        const std::function<void(std::ostream&)>& write);
 void write_file_atomic(const std::filesystem::path& path, std::string_view content);
 
+// The same for a writer that opens the file itself by its name (Cairo's SVG and PNG surfaces):
+// `write` is given the temporary file's name beside `path` and writes it whole; it is then renamed
+// over `path`. When `write` throws or the rename fails the temporary file is removed and `path`
+// left as it was; a failed rename throws InputError(path, "cannot rename into place: ...").
+void write_file_atomic_at(const std::filesystem::path& path,
+                          const std::function<void(const std::filesystem::path& temporary)>& write);
+
 } // namespace antkit::geometry

@@ -118,6 +118,14 @@ struct RunResult {
 RunResult run_stc(const kernel::OccupancyGrid& map, SubCell start, Variant variant,
                   const RunOptions& options = {});
 
+// Whether a run's own counts say its tour kept the invariants of its variant: it closed, ended
+// back at (or beside) the start, and covered every reachable sub-cell, with no repeat for the exact
+// variants (full may repeat). A noise-free run always should (`antkit stc` exits 1 otherwise).
+[[nodiscard]] inline bool keeps_invariants(const RunResult& r) noexcept {
+  return r.closed && r.returned_to_start && r.covered == r.reachable_subcells &&
+         (r.variant == Variant::Full || r.repeats == 0);
+}
+
 // Throws kernel::InputError("start", ...) unless `start` is a place `variant` can start from: a
 // free sub-cell of the cell area, in a free cell for the exact variants (run_stc checks this
 // first).

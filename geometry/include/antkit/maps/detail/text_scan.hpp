@@ -1,9 +1,11 @@
 #pragma once
-// Small text-scanning helpers shared by the map readers: lines with their numbers, byte offsets
-// turned into LINE:COL, whole-number parsing with a cap, and printable quoting of bad input for
-// error messages. Internal to antkit::maps; not part of its stable interface.
+// Small text-scanning helpers shared by the map readers: lines with their numbers and byte offsets
+// turned into LINE:COL (the kernel's, text_lines.hpp), whole-number parsing with a cap, and
+// printable quoting of bad input for error messages. Internal to antkit::maps; not part of its
+// stable interface.
 #include <antkit/kernel/grid.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/kernel/text_lines.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <cstddef>
 #include <cstdint>
@@ -13,56 +15,11 @@
 
 namespace antkit::maps::detail {
 
-// One line of a text: its content without the '\n' and without one '\r' before it (CRLF files),
-// its number (from 1) and the byte offset of its first character.
-struct Line {
-  std::string_view text;
-  std::size_t number = 0;
-  std::size_t offset = 0;
-};
-
-class LineReader {
-public:
-  explicit LineReader(std::string_view text) : text_(text) {}
-  // The next line, or nothing at the end. A text that ends with '\n' has no empty last line.
-  std::optional<Line> next() {
-    if (pos_ >= text_.size()) return std::nullopt;
-    const auto end = text_.find('\n', pos_);
-    const auto stop = end == std::string_view::npos ? text_.size() : end;
-    Line line{text_.substr(pos_, stop - pos_), ++number_, pos_};
-    if (!line.text.empty() && line.text.back() == '\r') line.text.remove_suffix(1);
-    pos_ = end == std::string_view::npos ? text_.size() : end + 1;
-    return line;
-  }
-  // Where the text ends, as a position (for "the file ends before ..." messages).
-  [[nodiscard]] std::size_t end_offset() const noexcept { return text_.size(); }
-
-private:
-  std::string_view text_;
-  std::size_t pos_ = 0;
-  std::size_t number_ = 0;
-};
-
-struct Position {
-  std::size_t line = 1;
-  std::size_t column = 1;
-};
-
-// The LINE:COL of a byte offset (lines counted by '\n', columns in bytes, both from 1). An offset
-// at the very end of a text that ends with '\n' is on the line after the last one.
-inline Position position_of(std::string_view text, std::size_t offset) {
-  Position p;
-  const auto stop = offset < text.size() ? offset : text.size();
-  for (std::size_t i = 0; i < stop; ++i) {
-    if (text[i] == '\n') {
-      ++p.line;
-      p.column = 1;
-    } else {
-      ++p.column;
-    }
-  }
-  return p;
-}
+// The lines and positions are the kernel's one line scanner (kernel/text_lines.hpp).
+using Line = kernel::TextLine;
+using LineReader = kernel::TextLines;
+using Position = kernel::TextPosition;
+using kernel::position_of;
 
 [[noreturn]] inline void fail(const std::string& name, std::size_t line, std::size_t column,
                               const std::string& message) {
