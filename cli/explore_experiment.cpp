@@ -9,7 +9,6 @@
 #include "output.hpp"
 
 #include <antkit/experiments/explore_tables.hpp>
-#include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <filesystem>
@@ -35,15 +34,11 @@ nlohmann::json run(const Options& o) {
   } catch (const std::runtime_error& e) {
     throw antkit::cli::CheckFailed(e.what());
   }
-  const std::filesystem::path dir(o.out);
   std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
+  std::filesystem::create_directories(o.out, ec);
+  if (ec || !std::filesystem::is_directory(o.out))
     throw antkit::kernel::InputError("--out", "cannot make the directory '" + o.out + "'");
-  antkit::geometry::write_file_atomic(dir / "table2.csv", ex::table2_csv(t));
-  antkit::geometry::write_file_atomic(dir / "table2.md", ex::table2_markdown(t));
-  antkit::geometry::write_file_atomic(dir / "table3.csv", ex::table3_csv(t));
-  antkit::geometry::write_file_atomic(dir / "table3.md", ex::table3_markdown(t));
+  const auto files = ex::write_explore_tables(t, o.out);
 
   nlohmann::json rows = nlohmann::json::array();
   for (std::size_t e = 0; e < ex::kExploreEnvironments.size(); ++e) {
@@ -62,8 +57,7 @@ nlohmann::json run(const Options& o) {
   }
   nlohmann::json j;
   j["seed"] = o.seed;
-  j["files"] = {(dir / "table2.csv").string(), (dir / "table2.md").string(),
-                (dir / "table3.csv").string(), (dir / "table3.md").string()};
+  j["files"] = {files[0].string(), files[1].string(), files[2].string(), files[3].string()};
   j["table3"] = std::move(rows);
   j["hash"] = antkit::kernel::hash_hex(t.hash);
   return j;

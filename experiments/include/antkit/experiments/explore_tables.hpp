@@ -93,6 +93,12 @@ struct ExploreTables {
 [[nodiscard]] std::string table2_markdown(const ExploreTables& t);
 [[nodiscard]] std::string table3_csv(const ExploreTables& t);
 [[nodiscard]] std::string table3_markdown(const ExploreTables& t);
+
+// Makes `dir` and writes table2.csv, table2.md, table3.csv and table3.md into it, each atomically;
+// returns their paths in that order. Throws kernel::InputError(dir, ...) when the directory cannot
+// be made or a file cannot be written.
+std::array<std::filesystem::path, 4> write_explore_tables(const ExploreTables& t,
+                                                          const std::filesystem::path& dir);
 // Figures 5-6 of the paper as one figure: mean steps and mean E.M.E per environment, ours and the
 // paper's.
 [[nodiscard]] Figure explore_plot(const ExploreTables& t);
