@@ -26,6 +26,15 @@
 # image's 112 KiB arena (online: with its memory of the cells seen) is refused with both sizes in
 # the message.
 #
+#   scripts/run-on-mcu.sh rs --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X]
+#
+# runs one Randomized Search walk (paper 000, Section 8.1: visit 3 of trial 0's streams, marking
+# the 0.1 x 0.1 cells under the body) and prints one JSON object whose hash, cells, length_raw and
+# blocked equal those of `antkit rs-mcu-input --host` with the same arguments (the host's run_rs).
+# The host sends the arena's walls (`antkit rs-mcu-input`); the behaviour, the world's steps, RS's
+# raster and the hash run on the chip, in the same 112 KiB arena: walls, wall buckets and a byte
+# per raster cell of the walls' box, refused with the sizes and the limit when they exceed it.
+#
 # Options before the subcommand:
 #   --icount   run QEMU with -icount shift=0 (its virtual clock advances 1 ns per instruction, and
 #              the emulated STM32F405's SysTick counts 168 per us of it) and add to the JSON
@@ -44,6 +53,7 @@ usage() {
     "[--noise P] [--seed S]" >&2
   echo "       scripts/run-on-mcu.sh [--icount] buffon --arena SPEC --steps N [--seed S] [--width W]" \
     "[--noise X]" >&2
+  echo "       scripts/run-on-mcu.sh [--icount] rs --arena SPEC --steps N [--seed S] [--noise X]" >&2
   exit 2
 }
 
@@ -59,9 +69,9 @@ done
 command=$1
 shift
 case "$command" in
-stc | buffon) ;;
+stc | buffon | rs) ;;
 *)
-  echo "run-on-mcu.sh: unknown command '$command' (stc, buffon)" >&2
+  echo "run-on-mcu.sh: unknown command '$command' (stc, buffon, rs)" >&2
   exit 2
   ;;
 esac
@@ -119,7 +129,8 @@ elif [ $status -ne 0 ]; then
 fi
 if [ $icount -eq 1 ]; then
   ticks=$(jq -r .ticks "$work/out")
-  # A tour's moves (stc: its positions less the start) or both visits' steps (buffon: "moves").
+  # A tour's moves (stc: its positions less the start) or the steps (buffon: both visits', rs:
+  # the walk's; "moves").
   moves=$(jq -r 'if .moves then .moves else .positions - 1 end' "$work/out")
   instructions=$((ticks * 125 / 21))
   jq -c --argjson i "$instructions" --argjson m "$moves" \

@@ -16,6 +16,24 @@ namespace antkit::mcu {
 
 using namespace antkit::buffon;
 
+bool read_walls(std::int32_t file, const std::uint8_t* head, std::size_t got, std::uint32_t count,
+                FxSegment* walls) {
+  // The bytes already read, then the file's, in pieces of 64 walls.
+  std::uint8_t piece[64 * kMcuWallBytes];
+  std::size_t have = got - kMcuBuffonHeaderBytes;
+  for (std::size_t k = 0; k < have; ++k) piece[k] = head[kMcuBuffonHeaderBytes + k];
+  std::size_t done = 0;
+  while (done < count) {
+    const std::size_t want = (count - done < 64 ? count - done : 64) * kMcuWallBytes - have;
+    if (mcu::read(file, piece + have, want) != want) return false;
+    const std::size_t n = (have + want) / kMcuWallBytes;
+    for (std::size_t i = 0; i < n; ++i) walls[done + i] = read_mcu_wall(piece, i);
+    done += n;
+    have = 0;
+  }
+  return true;
+}
+
 int run_buffon(const char* path, std::int32_t file, std::int32_t size, const std::uint8_t* head,
                std::size_t got, std::uint8_t* arena, std::size_t bytes) {
   McuBuffonRun run;
@@ -24,24 +42,9 @@ int run_buffon(const char* path, std::int32_t file, std::int32_t size, const std
   if (size < 0 || static_cast<std::uint64_t>(size) !=
                       kMcuBuffonHeaderBytes + std::uint64_t{run.walls} * kMcuWallBytes)
     return refuse(path, "its length is not the header and its walls");
-  // The walls, as FxSegment, at the arena's start: the bytes already read, then the file's, in
-  // pieces of 64 walls.
+  // The walls, as FxSegment, at the arena's start.
   auto* walls = reinterpret_cast<FxSegment*>(arena);
-  {
-    std::uint8_t piece[64 * kMcuWallBytes];
-    std::size_t have = got - kMcuBuffonHeaderBytes;
-    for (std::size_t k = 0; k < have; ++k) piece[k] = head[kMcuBuffonHeaderBytes + k];
-    std::size_t done = 0;
-    while (done < run.walls) {
-      const std::size_t want =
-          (run.walls - done < 64 ? run.walls - done : 64) * kMcuWallBytes - have;
-      if (mcu::read(file, piece + have, want) != want) return refuse(path, "ends inside the walls");
-      const std::size_t n = (have + want) / kMcuWallBytes;
-      for (std::size_t i = 0; i < n; ++i) walls[done + i] = read_mcu_wall(piece, i);
-      done += n;
-      have = 0;
-    }
-  }
+  if (!read_walls(file, head, got, run.walls, walls)) return refuse(path, "ends inside the walls");
   const std::size_t from = static_cast<std::size_t>(mcu_walls_bytes(run.walls));
   mcu::ticks_start();
   FixedTrialResult r;

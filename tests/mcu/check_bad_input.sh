@@ -36,6 +36,9 @@ expect buffon-missing-wkt "error: .*nope\.wkt" "$run" buffon --arena nope.wkt --
 expect buffon-bad-steps "error: --steps: the steps per visit must be in" "$run" buffon --arena square:area=25 --steps 0
 expect buffon-bad-width "error: --width" "$run" buffon --arena square:area=25 --steps 100 --width 0
 expect buffon-bad-noise "error: --noise" "$run" buffon --arena square:area=25 --steps 100 --noise 3
+expect rs-bad-arena "error: --arena" "$run" rs --arena circle:d=-3 --steps 100
+expect rs-bad-steps "error: --steps: the steps must be in" "$run" rs --arena square:area=25 --steps 0
+expect rs-bad-noise "error: --noise" "$run" rs --arena square:area=25 --steps 100 --noise 3
 
 # The chip's own refusals: a file that is not an input, and one cut short.
 work=$(mktemp -d)
@@ -51,7 +54,11 @@ head -c 100 "$work/good" >"$work/short"
 "$ANTKIT_EXE" buffon-mcu-input --arena square:area=25 --steps 100 --out "$work/buffon" >/dev/null
 head -c 60 "$work/buffon" >"$work/buffon-short"
 { head -c 16 "$work/buffon"; printf '\0\0\0\0\0\0\0\0'; tail -c +25 "$work/buffon"; } >"$work/buffon-steps"
-for f in text short buffon-short buffon-steps; do
+# An RS input cut inside its walls, and one whose header asks for 0 steps.
+"$ANTKIT_EXE" rs-mcu-input --arena square:area=25 --steps 100 --out "$work/rs" >/dev/null
+head -c 60 "$work/rs" >"$work/rs-short"
+{ head -c 16 "$work/rs"; printf '\0\0\0\0\0\0\0\0'; tail -c +25 "$work/rs"; } >"$work/rs-steps"
+for f in text short buffon-short buffon-steps rs-short rs-steps; do
   out=$(chip "$work/$f")
   status=$?
   if [ $status -eq 2 ] && [[ "$out" == "error: $work/$f: "* ]]; then
