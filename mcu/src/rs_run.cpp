@@ -2,24 +2,72 @@
 // --host` runs on the host (buffon/checkpoints.hpp run_rs), from the same sources. The host sends
 // the arena as its Q15.16 walls (buffon/rs_mcu_input.hpp); the chip reads them into its arena and
 // runs run_fixed_rs (buffon/randomized_search.hpp: the world's buckets, the behaviour's visit 3,
-// RS's raster of 0.1 x 0.1 cells marked under the body, and the walk's trace hash) in the rest.
+// RS's raster of 0.1 x 0.1 cells marked under the body, and the walk's trace hash) in the rest;
+// then the same walk with the C API's behaviour deciding ("c_api" in the JSON), which proves the
+// C API's antkit_buffon_behaviour_* on the chip against the host.
 #include "buffon_run.hpp"
 #include "semihost.hpp"
 #include "text.hpp"
 #include "ticks.hpp"
 
 #include <antkit/buffon/rs_mcu_input.hpp>
+#include <antkit/c/antkit.h>
 
 namespace antkit::mcu {
 
 using namespace antkit::buffon;
 
 namespace {
-// The walk (kept out of line so that the map file shows the step path's size).
-[[gnu::noinline]] const char* walk(std::span<const FxSegment> walls, const McuRsRun& run,
-                                   std::span<std::uint8_t> buffer, FixedRsResult& r) {
-  return run_fixed_rs(walls, run.body, run.seed, 0, run.steps, buffer, r);
+
+// The walk through the core (kept out of line so that the map file shows the step path's size).
+[[gnu::noinline]] FixedRsResult walk(FixedRs& rs, const McuRsRun& run) {
+  return run_fixed_rs(rs, run.seed, 0, run.steps);
 }
+
+// The same walk with the C API's behaviour (antkit_buffon_behaviour_*: the calls a C firmware
+// makes) deciding each step: the readings, the world's move and the step's length are
+// visit_step's (visit.hpp), the hash words hash_visit_step's, so that the result must be
+// run_fixed_rs's, and run_rs's on the host. RS's marks are cleared first.
+[[gnu::noinline]] FixedRsResult walk_c_api(FixedRs& rs, const McuRsRun& run) {
+  for (std::uint64_t k = 0; k < rs.raster.cells(); ++k) rs.raster.v[k] = 0;
+  VisitStreams streams(run.seed, kExperiment, 0, kRsVisit);
+  antkit_buffon_behaviour behaviour;
+  antkit_buffon_behaviour_init(&behaviour, run.seed, kExperiment, 0, kRsVisit);
+  antkit_trace_hash hash;
+  antkit_trace_hash_init(&hash, run.seed);
+  antkit_trace_hash_add_u64(&hash, 0);
+  Pose pose = rs.start;
+  FixedRsResult r;
+  r.cells = rs_mark(rs.raster, pose.position);
+  for (std::int64_t s = 0; s < run.steps; ++s) {
+    const Observation obs = rs.world.sense(pose, &streams.noise);
+    antkit_ir_reading reading;
+    for (std::size_t i = 0; i < 6; ++i) reading.ir[i] = obs.ir[i].raw();
+    const antkit_wheel_command c = antkit_buffon_behaviour_step(&behaviour, &reading);
+    const Command cmd{Fx::from_raw(c.left), Fx::from_raw(c.right)};
+    const FxPoint before = pose.position;
+    if (!rs.world.move(pose, cmd)) ++r.blocked;
+    const std::int64_t dx = std::int64_t{pose.position.x.raw()} - before.x.raw();
+    const std::int64_t dy = std::int64_t{pose.position.y.raw()} - before.y.raw();
+    const Fx forward = rs.world.body().speed * (cmd.left + cmd.right) * Fx::from_ratio(1, 2);
+    r.length_raw += static_cast<std::int64_t>(
+        detail::step_length_raw(static_cast<std::uint64_t>(dx * dx + dy * dy), forward));
+    r.cells += rs_mark(rs.raster, pose.position);
+    std::int32_t rr = 0, wl = 0, wr = 0;
+    antkit_buffon_behaviour_state(&behaviour, &rr, &wl, &wr);
+    antkit_trace_hash_add_u64(&hash,
+                              detail::hash_word(pose.position.x.raw(), pose.position.y.raw()));
+    antkit_trace_hash_add_u64(&hash,
+                              detail::hash_word(static_cast<std::int32_t>(pose.heading.raw()), rr));
+    antkit_trace_hash_add_u64(&hash, detail::hash_word(wl, wr));
+  }
+  antkit_trace_hash_add_u64(&hash, r.cells);
+  antkit_trace_hash_add_u64(&hash, r.blocked);
+  r.hash = antkit_trace_hash_finish(&hash);
+  r.bytes = rs.bytes;
+  return r;
+}
+
 } // namespace
 
 int run_rs(const char* path, std::int32_t file, std::int32_t size, const std::uint8_t* head,
@@ -33,18 +81,24 @@ int run_rs(const char* path, std::int32_t file, std::int32_t size, const std::ui
   auto* walls = reinterpret_cast<FxSegment*>(arena);
   if (!read_walls(file, head, got, run.walls, walls)) return refuse(path, "ends inside the walls");
   const std::size_t from = static_cast<std::size_t>(mcu_walls_bytes(run.walls));
-  mcu::ticks_start();
-  FixedRsResult r;
-  if (const char* why = walk({walls, run.walls}, run, {arena + from, bytes - from}, r))
+  static FixedRs rs;
+  if (const char* why = prepare_fixed_rs({walls, run.walls}, run.body, run.seed, 0,
+                                         {arena + from, bytes - from}, rs))
     return refuse(path, why);
+  mcu::ticks_start();
+  const FixedRsResult r = walk(rs, run);
   const std::uint64_t ticks = mcu::ticks_now();
+  const FixedRsResult c = walk_c_api(rs, run);
   Text t;
   t << "{\"steps\": " << run.steps << ", \"seed\": ";
   t.u64(run.seed) << ", \"cells\": ";
   t.u64(r.cells) << ", \"cell_raw\": " << kRsCellRaw << ", \"length_raw\": " << r.length_raw
                  << ", \"blocked\": ";
   t.u64(r.blocked) << ", \"hash\": \"";
-  t.hex(r.hash) << "\", \"walls\": " << std::int64_t{run.walls}
+  t.hex(r.hash) << "\", \"c_api\": {\"cells\": ";
+  t.u64(c.cells) << ", \"length_raw\": " << c.length_raw << ", \"blocked\": ";
+  t.u64(c.blocked) << ", \"hash\": \"";
+  t.hex(c.hash) << "\"}, \"walls\": " << std::int64_t{run.walls}
                 << ", \"arena_bytes\": " << static_cast<std::int64_t>(from + r.bytes)
                 << ", \"arena_limit\": " << static_cast<std::int64_t>(bytes)
                 << ", \"moves\": " << run.steps

@@ -1,14 +1,15 @@
 // One step-turn wanderer run on the robot's own processor (issue 27): what `antkit cover --algo rw
 // --robots 1` runs on the host, with the controller, the world's ticks and the trace hash on the
 // chip. The host sends the map's Free cells as bits, the start it placed, the viewable cells it
-// counted and the sensor's footprint (uniform/wanderer_mcu_input.hpp); the chip runs StepTurnCore
-// (uniform/step_turn.hpp) in StepTurnWorld (uniform/step_turn_world.hpp) and prints the numbers
-// `antkit cover --format json` prints.
+// counted and the sensor's footprint (uniform/wanderer_mcu_input.hpp); the chip runs the C API's
+// wanderer (antkit_step_turn_wanderer: StepTurnCore, uniform/step_turn.hpp) in StepTurnWorld
+// (uniform/step_turn_world.hpp) and prints the numbers `antkit cover --format json` prints.
 #include "buffon_run.hpp"
 #include "semihost.hpp"
 #include "text.hpp"
 #include "ticks.hpp"
 
+#include <antkit/c/antkit.h>
 #include <antkit/uniform/wanderer_mcu_input.hpp>
 
 namespace antkit::mcu {
@@ -17,8 +18,19 @@ using namespace antkit::uniform;
 
 namespace {
 
+// The C API's wanderer as run_step_turn's controller.
+struct CWanderer {
+  antkit_step_turn_wanderer state;
+  CWanderer(std::uint64_t seed, std::uint64_t trial) noexcept {
+    antkit_step_turn_wanderer_init(&state, seed, trial, 0);
+  }
+  Command step(bool front_free) noexcept {
+    return {static_cast<Action>(antkit_step_turn_wanderer_step(&state, front_free ? 1 : 0))};
+  }
+};
+
 // The run (kept out of line so that the map file shows the step path's size).
-[[gnu::noinline]] StepTurnResult wander(StepTurnWorld& world, StepTurnCore& wanderer,
+[[gnu::noinline]] StepTurnResult wander(StepTurnWorld& world, CWanderer& wanderer,
                                         std::uint64_t limit) {
   return run_step_turn(world, wanderer, limit);
 }
@@ -93,7 +105,7 @@ int run_wanderer(const char* path, std::int32_t file, std::int32_t size, const s
   static StepTurnWorld world;
   world.init(run.width, run.height, free_bits, arena + plan.viewed_at, {rays, run.rays},
              {between, run.between}, run.start, run.bearing, run.viewable);
-  StepTurnCore wanderer(run.seed, run.trial, 0);
+  CWanderer wanderer(run.seed, run.trial);
   const StepTurnResult result = wander(world, wanderer, run.limit);
   const std::uint64_t ticks = mcu::ticks_now();
   Text t;
@@ -110,9 +122,10 @@ int run_wanderer(const char* path, std::int32_t file, std::int32_t size, const s
   t.u64(run.seed) << ", \"trial\": ";
   t.u64(run.trial) << ", \"limit\": ";
   t.u64(run.limit) << ", \"draws\": ";
-  t.u64(wanderer.steps()) << ", \"arena_bytes\": " << static_cast<std::int64_t>(plan.total)
-                          << ", \"arena_limit\": " << static_cast<std::int64_t>(bytes)
-                          << ", \"ticks\": " << static_cast<std::int64_t>(ticks) << "}\n";
+  t.u64(antkit_step_turn_wanderer_steps(&wanderer.state))
+      << ", \"arena_bytes\": " << static_cast<std::int64_t>(plan.total)
+      << ", \"arena_limit\": " << static_cast<std::int64_t>(bytes)
+      << ", \"ticks\": " << static_cast<std::int64_t>(ticks) << "}\n";
   t.flush();
   return 0;
 }

@@ -3,10 +3,11 @@
 // over storage the caller gives, the body's footprint stamped on it, and one RS walk of a fixed
 // number of steps in a buffer. Freestanding: no allocation, no exception, errors returned. The
 // host's run_checkpoints, rs_footprint, rs_cost_to_precision and run_rs (checkpoints.cpp) mark
-// through ByteRasterCore and rs_mark; the Cortex-M image (mcu/src/rs_run.cpp) runs run_fixed_rs,
-// whose steps are visit.hpp's, so the chip's cells, length and trace hash are run_rs's.
+// through ByteRasterCore and rs_mark; the Cortex-M image (mcu/src/rs_run.cpp) lays a walk out
+// with prepare_fixed_rs and runs it twice: with run_fixed_rs, whose steps are visit.hpp's, and
+// with the C API's behaviour (antkit/c/antkit.h); both must give run_rs's cells, length and hash.
 //
-// The trace hash of an RS walk (run_rs and run_fixed_rs): TraceHash(seed), the trial, every step's
+// The trace hash of an RS walk (run_rs, run_fixed_rs): TraceHash(seed), the trial, every step's
 // hash_visit_step (visit.hpp), then the marked cells and the blocked steps.
 #include <antkit/buffon/visit.hpp>
 #include <antkit/buffon/world.hpp>
@@ -104,51 +105,63 @@ struct FixedRsResult {
   return raster_at + raster_cells;
 }
 
-// RS for `steps` steps (visit kRsVisit of trial `trial`, seed `seed`, experiment kExperiment) over
-// `walls` with `body`, in `buffer` (8-byte aligned; the walls are read, not copied): the world's
-// buckets and the raster of cells of side kRsCellRaw over the walls' box. Returns null, or why it
-// cannot run (an invalid world or start, a raster or plan larger than the buffer).
-[[nodiscard]] inline const char* run_fixed_rs(std::span<const FxSegment> walls, BodyParams body,
-                                              std::uint64_t seed, std::uint64_t trial,
-                                              std::int64_t steps, std::span<std::uint8_t> buffer,
-                                              FixedRsResult& result) noexcept {
-  if (steps < 0 || steps > 100000000) return "the steps must be in [0, 100000000]";
+// An RS walk's world, raster and start laid out in a buffer (prepare_fixed_rs).
+struct FixedRs {
+  WorldCore world;
+  ByteRasterCore raster;
+  Pose start{};
+  std::uint64_t bytes = 0; // of the buffer used
+};
+
+// Lays out an RS walk over `walls` with `body` in `buffer` (8-byte aligned; the walls are read, not
+// copied): the world's buckets and the raster of cells of side kRsCellRaw over the walls' box,
+// all unmarked, and the start of visit kRsVisit of trial `trial`. Returns null, or why it cannot
+// (an invalid world or start, a raster or plan larger than the buffer).
+[[nodiscard]] inline const char* prepare_fixed_rs(std::span<const FxSegment> walls, BodyParams body,
+                                                  std::uint64_t seed, std::uint64_t trial,
+                                                  std::span<std::uint8_t> buffer,
+                                                  FixedRs& rs) noexcept {
   WorldLayout layout;
   if (const WorldError e = WorldCore::plan(walls, body, layout); e != WorldError::None)
     return describe(e);
-  ByteRasterCore raster;
-  if (!raster.init(layout.lower, layout.upper, kRsCellRaw))
+  if (!rs.raster.init(layout.lower, layout.upper, kRsCellRaw))
     return "RS's raster has more than 2^32 cells";
-  const std::uint64_t need = fixed_rs_bytes(layout, raster.cells());
-  if (need > buffer.size()) return "the walk's plan is larger than the buffer";
+  rs.bytes = fixed_rs_bytes(layout, rs.raster.cells());
+  if (rs.bytes > buffer.size()) return "the walk's plan is larger than the buffer";
   const std::uint64_t members_at = ((layout.buckets + 1) * 4 + 7) & ~std::uint64_t{7};
-  const std::uint64_t raster_at = need - raster.cells();
-  WorldCore world;
-  world.build(walls, body, layout,
-              {reinterpret_cast<std::uint32_t*>(buffer.data()),
-               static_cast<std::size_t>(layout.buckets + 1)},
-              {reinterpret_cast<BucketWall*>(buffer.data() + members_at),
-               static_cast<std::size_t>(layout.members)});
-  raster.bind(buffer.data() + raster_at, 0);
+  rs.world.build(walls, body, layout,
+                 {reinterpret_cast<std::uint32_t*>(buffer.data()),
+                  static_cast<std::size_t>(layout.buckets + 1)},
+                 {reinterpret_cast<BucketWall*>(buffer.data() + members_at),
+                  static_cast<std::size_t>(layout.members)});
+  rs.raster.bind(buffer.data() + (rs.bytes - rs.raster.cells()), 0);
   VisitStreams streams(seed, kExperiment, trial, kRsVisit);
-  Pose pose{};
-  if (const WorldError e = world.place_start(streams.start, pose); e != WorldError::None)
+  if (const WorldError e = rs.world.place_start(streams.start, rs.start); e != WorldError::None)
     return describe(e);
+  return nullptr;
+}
+
+// RS for `steps` steps (visit kRsVisit of trial `trial`, seed `seed`, experiment kExperiment) in
+// a prepared layout: visit.hpp's steps with ExplorationBehaviour, the cells marked from the start
+// on, and the walk's trace hash.
+[[nodiscard]] inline FixedRsResult run_fixed_rs(FixedRs& rs, std::uint64_t seed,
+                                                std::uint64_t trial, std::int64_t steps) noexcept {
+  VisitStreams streams(seed, kExperiment, trial, kRsVisit);
   ExplorationBehaviour behaviour(streams.behaviour);
+  Pose pose = rs.start;
   kernel::TraceHash hash(seed);
   hash.add_u64(trial);
   FixedRsResult r;
-  r.cells = rs_mark(raster, pose.position);
+  r.cells = rs_mark(rs.raster, pose.position);
   for (std::int64_t s = 0; s < steps; ++s) {
-    (void)visit_step(world, behaviour, pose, streams.noise, r.length_raw, r.blocked);
-    r.cells += rs_mark(raster, pose.position);
+    (void)visit_step(rs.world, behaviour, pose, streams.noise, r.length_raw, r.blocked);
+    r.cells += rs_mark(rs.raster, pose.position);
     hash_visit_step(hash, pose, behaviour);
   }
   hash.add_u64(r.cells).add_u64(r.blocked);
   r.hash = hash.finish();
-  r.bytes = need;
-  result = r;
-  return nullptr;
+  r.bytes = rs.bytes;
+  return r;
 }
 
 } // namespace antkit::buffon

@@ -140,10 +140,13 @@ private:
 };
 
 // run_coverage's loop (coverage.hpp) for one robot of Algorithm::RandomWanderer driven by
-// `wanderer`: the hash is TraceHash(0) over the algorithm's number (0), the robot count (1) and
-// the state before the first tick and after every tick.
-inline StepTurnResult run_step_turn(StepTurnWorld& world, StepTurnCore& wanderer,
-                                    std::uint64_t limit) noexcept {
+// `wanderer` (StepTurnCore, or anything whose step(front_free) answers as it does: the Cortex-M
+// image passes the C API's antkit_step_turn_wanderer): the hash is TraceHash(0) over the
+// algorithm's number (0), the robot count (1) and the state before the first tick and after every
+// tick.
+template <class Wanderer = StepTurnCore>
+StepTurnResult run_step_turn(StepTurnWorld& world, Wanderer& wanderer,
+                             std::uint64_t limit) noexcept {
   StepTurnResult out;
   kernel::TraceHash hash;
   hash.add_u8(0).add_u64(1);
