@@ -13,6 +13,7 @@
 
 #include <antkit/buffon/crossing_counter_core.hpp>
 #include <antkit/buffon/fixed_trial.hpp>
+#include <antkit/buffon/mcu_digest_input.hpp>
 #include <antkit/buffon/mcu_input.hpp>
 #include <antkit/buffon/visit.hpp>
 #include <antkit/c/antkit.h>
@@ -154,8 +155,13 @@ bool read_walls(std::int32_t file, const std::uint8_t* head, std::size_t got, st
 
 int run_buffon(const char* path, std::int32_t file, std::int32_t size, const std::uint8_t* head,
                std::size_t got, std::uint8_t* arena, std::size_t bytes) {
+  // The determinism matrix's input (mcu_digest_input.hpp): the same layout, another magic.
+  const bool digest = got >= 8 && __builtin_memcmp(head, kMcuBuffonDigestMagic, 8) == 0;
+  std::uint8_t header[kMcuBuffonHeaderBytes];
+  for (std::size_t k = 0; k < kMcuBuffonHeaderBytes && k < got; ++k)
+    header[k] = k < 8 && digest ? static_cast<std::uint8_t>(kMcuBuffonMagic[k]) : head[k];
   McuBuffonRun run;
-  if (const McuBuffonError e = read_mcu_buffon_header(head, got, run); e != McuBuffonError::None)
+  if (const McuBuffonError e = read_mcu_buffon_header(header, got, run); e != McuBuffonError::None)
     return refuse(path, describe(e));
   if (size < 0 || static_cast<std::uint64_t>(size) !=
                       kMcuBuffonHeaderBytes + std::uint64_t{run.walls} * kMcuWallBytes)
@@ -164,6 +170,27 @@ int run_buffon(const char* path, std::int32_t file, std::int32_t size, const std
   auto* walls = reinterpret_cast<FxSegment*>(arena);
   if (!read_walls(file, head, got, run.walls, walls)) return refuse(path, "ends inside the walls");
   const std::size_t from = static_cast<std::size_t>(mcu_walls_bytes(run.walls));
+  if (digest) {
+    // Trials 0 .. 3 and their digest, as determinism/scenarios.cpp hashes run_trials.
+    kernel::TraceHash all;
+    Text t;
+    t << "{\"steps\": " << run.steps << ", \"seed\": ";
+    t.u64(run.seed) << ", \"trials\": [";
+    for (std::uint64_t trial = 0; trial < kMcuBuffonDigestTrials; ++trial) {
+      FixedTrialResult r;
+      if (const char* why = run_fixed_trial({walls, run.walls}, run.body, run.width, run.seed,
+                                            trial, run.steps, {arena + from, bytes - from}, r))
+        return refuse(path, why);
+      all.add_u64(r.hash);
+      t << (trial == 0 ? "" : ", ") << "{\"trial\": " << static_cast<std::int64_t>(trial)
+        << ", \"trial_hash\": \"";
+      t.hex(r.hash) << "\"}";
+    }
+    t << "], \"hash\": \"";
+    t.hex(all.finish()) << "\"}\n";
+    t.flush();
+    return 0;
+  }
   mcu::ticks_start();
   FixedTrialResult r;
   if (const char* why = run_fixed_trial({walls, run.walls}, run.body, run.width, run.seed, 0,

@@ -14,6 +14,7 @@
 #include "text.hpp"
 #include "ticks.hpp"
 
+#include <antkit/buffon/mcu_digest_input.hpp>
 #include <antkit/buffon/mcu_input.hpp>
 #include <antkit/buffon/rs_mcu_input.hpp>
 #include <antkit/c/antkit.h>
@@ -94,7 +95,8 @@ int main() {
   const std::size_t got = mcu::read(file, g_header, sizeof g_header);
   // A Buffon trial (buffon/mcu_input.hpp) in the same arena.
   static_assert(antkit::buffon::kMcuArenaBytes == kMcuFloorBytes);
-  if (got >= 8 && __builtin_memcmp(g_header, antkit::buffon::kMcuBuffonMagic, 8) == 0)
+  if (got >= 8 && (__builtin_memcmp(g_header, antkit::buffon::kMcuBuffonMagic, 8) == 0 ||
+                   __builtin_memcmp(g_header, antkit::buffon::kMcuBuffonDigestMagic, 8) == 0))
     return mcu::run_buffon(path, file, size, g_header, got, g_arena, sizeof g_arena);
   // A Randomized Search walk (buffon/rs_mcu_input.hpp), likewise.
   if (got >= 8 && __builtin_memcmp(g_header, antkit::buffon::kMcuRsMagic, 8) == 0)
