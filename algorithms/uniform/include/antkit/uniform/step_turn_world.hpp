@@ -1,23 +1,19 @@
 #pragma once
 // One step-turn wanderer in paper 004's world, over storage the caller gives (issue 27): what
 // `antkit cover --algo rw` runs for one robot (CoverageWorld, world.hpp, with coverage.hpp's tick
-// loop), freestanding, so that the Cortex-M image (mcu/src/wanderer_run.cpp) runs it. The rules are
-// CoverageWorld's for a lone robot: the sensor views every cell of the precomputed footprint
-// (SensorFootprint's rays and the cells between, which the host computes and sends) to which
-// every cell between is Free; a forward move needs the cell ahead on the map and Free and, on a
-// diagonal, both side cells Free; the state hashed after every tick is CoverageWorld::hash_state's
-// (the pose, the viewed cells, the viewed free cells); the run stops as run_coverage stops
-// (complete, checked before every tick, or the time limit). The controller is StepTurnCore
-// (step_turn.hpp), whose commands are RandomWanderer's for robot 0.
+// loop), freestanding, so that the Cortex-M image (mcu/src/wanderer_run.cpp) runs it. The world's
+// rules are not restated here: the move, the turn, the view and the hashed state are
+// coverage_rules.hpp's, which CoverageWorld calls too; this file holds only the storage (the map's
+// Free cells and the viewed cells as bits, the footprint the host computed and sent) and the one
+// robot's pose. The run stops as run_coverage stops (complete, checked before every tick, or the
+// time limit). The controller is StepTurnCore (step_turn.hpp), whose commands are
+// RandomWanderer's for robot 0.
 //
 // Memory: the map's Free cells and the viewed cells as bits (1 bit per cell each), the footprint's
 // rays (12 bytes each) and the cells between (4 bytes each). No allocation, no exception.
-//
-// This restates CoverageWorld's rules for one robot rather than sharing its code (world.cpp owns
-// its cells in kernel::Grid vectors); the Cortex-M tests hold the two to the same trace hash on
-// every shared map that fits (tests/mcu/check_wanderer.sh).
 #include <antkit/kernel/grid.hpp>
 #include <antkit/kernel/hash.hpp>
+#include <antkit/uniform/coverage_rules.hpp>
 #include <antkit/uniform/step_turn.hpp>
 #include <cstddef>
 #include <cstdint>
@@ -29,9 +25,11 @@ namespace antkit::uniform {
 struct StepTurnRay {
   std::int16_t dx = 0, dy = 0;
   std::uint32_t first = 0, count = 0;
+  friend constexpr kernel::Cell offset_of(const StepTurnRay& r) noexcept { return {r.dx, r.dy}; }
 };
 struct StepTurnOffset {
   std::int16_t dx = 0, dy = 0;
+  friend constexpr kernel::Cell offset_of(StepTurnOffset d) noexcept { return {d.dx, d.dy}; }
 };
 
 // coverage.hpp's StopReason, by number (0 complete, 2 time limit; a wanderer never stops itself).
@@ -52,10 +50,11 @@ public:
             std::uint8_t* viewed, std::span<const StepTurnRay> rays,
             std::span<const StepTurnOffset> between, kernel::Cell start, std::uint8_t bearing,
             std::uint64_t viewable) noexcept {
-    w_ = width, h_ = height, free_ = free_bits, viewed_ = viewed, rays_ = rays;
-    between_ = between, cell_ = start, bearing_ = bearing & 7u, viewable_ = viewable;
-    for (std::uint64_t k = 0; k < bytes(width, height); ++k) viewed_[k] = 0;
-    viewed_cells_ = viewed_free_ = 0;
+    cells_ = Cells{width, height, free_bits, viewed};
+    rays_ = rays, between_ = between, cell_ = start, bearing_ = bearing & 7u;
+    viewable_ = viewable;
+    for (std::uint64_t k = 0; k < bytes(width, height); ++k) viewed[k] = 0;
+    counts_ = {};
     view();
   }
   [[nodiscard]] static constexpr std::uint64_t bytes(std::int32_t width,
@@ -63,23 +62,15 @@ public:
     return (static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) + 7) / 8;
   }
 
-  [[nodiscard]] bool in_bounds(kernel::Cell c) const noexcept {
-    return c.x >= 0 && c.y >= 0 && c.x < w_ && c.y < h_;
-  }
   [[nodiscard]] bool is_free(kernel::Cell c) const noexcept {
-    return in_bounds(c) && bit(free_, index(c));
+    return cells_.in_bounds(c) && cells_.free_at(c);
   }
-  // CoverageWorld::passable_step (no other robot to occupy the target).
+  // CoverageWorld::can_step (no other robot to occupy the target).
   [[nodiscard]] bool can_step(std::uint8_t bearing) const noexcept {
-    const kernel::Cell d = kernel::kNeighbours8[bearing & 7u];
-    if (!is_free(cell_ + d)) return false;
-    return d.x == 0 || d.y == 0 ||
-           (is_free({cell_.x + d.x, cell_.y}) && is_free({cell_.x, cell_.y + d.y}));
+    return passable_step_rule(cell_, bearing, [this](kernel::Cell c) { return is_free(c); });
   }
   [[nodiscard]] bool front_free() const noexcept { return can_step(bearing_); }
-  void turn(int eighths) noexcept {
-    bearing_ = static_cast<std::uint8_t>((bearing_ + static_cast<unsigned>(eighths % 8 + 8)) & 7u);
-  }
+  void turn(int eighths) noexcept { bearing_ = turned_bearing(bearing_, eighths); }
   // Steps along the bearing and views from the new cell; false (nothing happens) when blocked.
   bool forward() noexcept {
     if (!can_step(bearing_)) return false;
@@ -89,54 +80,52 @@ public:
   }
   // Marks what the robot views from its cell; returns how many cells were newly viewed.
   std::uint32_t view() noexcept {
-    std::uint32_t fresh = 0;
-    for (const StepTurnRay& ray : rays_) {
-      const kernel::Cell c{cell_.x + ray.dx, cell_.y + ray.dy};
-      if (!in_bounds(c) || bit(viewed_, index(c)) || !clear(ray)) continue;
-      viewed_[index(c) / 8] =
-          static_cast<std::uint8_t>(viewed_[index(c) / 8] | (1u << (index(c) % 8)));
-      ++fresh;
-      if (bit(free_, index(c))) ++viewed_free_;
-    }
-    viewed_cells_ += fresh;
-    return fresh;
+    return view_from(cells_, cell_, rays_, between_.data(), counts_);
   }
   // CoverageWorld::hash_state for one robot.
   void hash_state(kernel::TraceHash& hash) const noexcept {
-    hash.add_i32(cell_.x).add_i32(cell_.y).add_u8(bearing_);
-    hash.add_u64(viewed_cells_).add_u64(viewed_free_);
+    hash_pose(hash, cell_, bearing_);
+    hash_counts(hash, counts_);
   }
 
   [[nodiscard]] kernel::Cell cell() const noexcept { return cell_; }
   [[nodiscard]] std::uint8_t bearing() const noexcept { return bearing_; }
-  [[nodiscard]] std::uint64_t viewed_free() const noexcept { return viewed_free_; }
+  [[nodiscard]] std::uint64_t viewed_free() const noexcept { return counts_.free; }
   [[nodiscard]] std::uint64_t viewable() const noexcept { return viewable_; }
 
 private:
-  [[nodiscard]] std::uint64_t index(kernel::Cell c) const noexcept {
-    return static_cast<std::uint64_t>(c.y) * static_cast<std::uint64_t>(w_) +
-           static_cast<std::uint64_t>(c.x);
-  }
-  [[nodiscard]] static bool bit(const std::uint8_t* bits, std::uint64_t k) noexcept {
-    return ((bits[k / 8] >> (k % 8)) & 1u) != 0;
-  }
-  // Every cell between lies in the box of the robot's cell and the ray's target, both on the map.
-  [[nodiscard]] bool clear(const StepTurnRay& ray) const noexcept {
-    for (std::uint32_t k = 0; k < ray.count; ++k) {
-      const StepTurnOffset d = between_[ray.first + k];
-      if (!bit(free_, index({cell_.x + d.dx, cell_.y + d.dy}))) return false;
+  // coverage_rules.hpp's storage over the bits: a line-of-sight sensor on one component, so every
+  // viewed Free cell counts.
+  struct Cells {
+    std::int32_t w = 0, h = 0;
+    const std::uint8_t* free = nullptr;
+    std::uint8_t* seen = nullptr;
+    [[nodiscard]] bool in_bounds(kernel::Cell c) const noexcept {
+      return c.x >= 0 && c.y >= 0 && c.x < w && c.y < h;
     }
-    return true;
-  }
+    [[nodiscard]] bool free_at(kernel::Cell c) const noexcept { return bit(free, index(c)); }
+    [[nodiscard]] bool viewed(kernel::Cell c) const noexcept { return bit(seen, index(c)); }
+    void mark_viewed(kernel::Cell c) const noexcept {
+      seen[index(c) / 8] = static_cast<std::uint8_t>(seen[index(c) / 8] | (1u << (index(c) % 8)));
+    }
+    [[nodiscard]] bool counts_free(kernel::Cell c) const noexcept { return free_at(c); }
+    [[nodiscard]] static constexpr bool sees_through() noexcept { return false; }
+    [[nodiscard]] std::uint64_t index(kernel::Cell c) const noexcept {
+      return static_cast<std::uint64_t>(c.y) * static_cast<std::uint64_t>(w) +
+             static_cast<std::uint64_t>(c.x);
+    }
+    [[nodiscard]] static bool bit(const std::uint8_t* bits, std::uint64_t k) noexcept {
+      return ((bits[k / 8] >> (k % 8)) & 1u) != 0;
+    }
+  };
 
-  std::int32_t w_ = 0, h_ = 0;
-  const std::uint8_t* free_ = nullptr;
-  std::uint8_t* viewed_ = nullptr;
+  Cells cells_;
   std::span<const StepTurnRay> rays_;
   std::span<const StepTurnOffset> between_;
   kernel::Cell cell_{};
   std::uint8_t bearing_ = 0;
-  std::uint64_t viewable_ = 0, viewed_cells_ = 0, viewed_free_ = 0;
+  std::uint64_t viewable_ = 0;
+  ViewCounts counts_;
 };
 
 // run_coverage's loop (coverage.hpp) for one robot of Algorithm::RandomWanderer driven by
