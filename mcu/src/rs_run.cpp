@@ -3,9 +3,10 @@
 // the arena as its Q15.16 walls (buffon/rs_mcu_input.hpp); the chip reads them into its arena and
 // runs run_fixed_rs (buffon/randomized_search.hpp: the world's buckets, the behaviour's visit 3,
 // RS's raster of 0.1 x 0.1 cells marked under the body, and the walk's trace hash) in the rest;
-// then the same walk with the C API's behaviour deciding ("c_api" in the JSON), which proves the
-// C API's antkit_buffon_behaviour_* on the chip against the host.
+// then the same walk with the C API's behaviour and hash as run_fixed_rs's parts ("c_api" in the
+// JSON), which proves the C API's antkit_buffon_behaviour_* on the chip against the host.
 #include "buffon_run.hpp"
+#include "c_api_parts.hpp"
 #include "semihost.hpp"
 #include "text.hpp"
 #include "ticks.hpp"
@@ -24,48 +25,12 @@ namespace {
   return run_fixed_rs(rs, run.seed, 0, run.steps);
 }
 
-// The same walk with the C API's behaviour (antkit_buffon_behaviour_*: the calls a C firmware
-// makes) deciding each step: the readings, the world's move and the step's length are
-// visit_step's (visit.hpp), the hash words hash_visit_step's, so that the result must be
-// run_fixed_rs's, and run_rs's on the host. RS's marks are cleared first.
+// The same walk with the C API's behaviour and hash (antkit_buffon_behaviour_*,
+// antkit_trace_hash_*: the calls a C firmware makes) as run_fixed_rs's parts (c_api_parts.hpp), so
+// that the result must be run_fixed_rs's, and run_rs's on the host. RS's marks are cleared first.
 [[gnu::noinline]] FixedRsResult walk_c_api(FixedRs& rs, const McuRsRun& run) {
   for (std::uint64_t k = 0; k < rs.raster.cells(); ++k) rs.raster.v[k] = 0;
-  VisitStreams streams(run.seed, kExperiment, 0, kRsVisit);
-  antkit_buffon_behaviour behaviour;
-  antkit_buffon_behaviour_init(&behaviour, run.seed, kExperiment, 0, kRsVisit);
-  antkit_trace_hash hash;
-  antkit_trace_hash_init(&hash, run.seed);
-  antkit_trace_hash_add_u64(&hash, 0);
-  Pose pose = rs.start;
-  FixedRsResult r;
-  r.cells = rs_mark(rs.raster, pose.position);
-  for (std::int64_t s = 0; s < run.steps; ++s) {
-    const Observation obs = rs.world.sense(pose, &streams.noise);
-    antkit_ir_reading reading;
-    for (std::size_t i = 0; i < 6; ++i) reading.ir[i] = obs.ir[i].raw();
-    const antkit_wheel_command c = antkit_buffon_behaviour_step(&behaviour, &reading);
-    const Command cmd{Fx::from_raw(c.left), Fx::from_raw(c.right)};
-    const FxPoint before = pose.position;
-    if (!rs.world.move(pose, cmd)) ++r.blocked;
-    const std::int64_t dx = std::int64_t{pose.position.x.raw()} - before.x.raw();
-    const std::int64_t dy = std::int64_t{pose.position.y.raw()} - before.y.raw();
-    const Fx forward = rs.world.body().speed * (cmd.left + cmd.right) * Fx::from_ratio(1, 2);
-    r.length_raw += static_cast<std::int64_t>(
-        detail::step_length_raw(static_cast<std::uint64_t>(dx * dx + dy * dy), forward));
-    r.cells += rs_mark(rs.raster, pose.position);
-    std::int32_t rr = 0, wl = 0, wr = 0;
-    antkit_buffon_behaviour_state(&behaviour, &rr, &wl, &wr);
-    antkit_trace_hash_add_u64(&hash,
-                              detail::hash_word(pose.position.x.raw(), pose.position.y.raw()));
-    antkit_trace_hash_add_u64(&hash,
-                              detail::hash_word(static_cast<std::int32_t>(pose.heading.raw()), rr));
-    antkit_trace_hash_add_u64(&hash, detail::hash_word(wl, wr));
-  }
-  antkit_trace_hash_add_u64(&hash, r.cells);
-  antkit_trace_hash_add_u64(&hash, r.blocked);
-  r.hash = antkit_trace_hash_finish(&hash);
-  r.bytes = rs.bytes;
-  return r;
+  return run_fixed_rs<CApiParts>(rs, run.seed, 0, run.steps);
 }
 
 } // namespace

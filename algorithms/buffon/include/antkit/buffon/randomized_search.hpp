@@ -4,8 +4,9 @@
 // number of steps in a buffer. Freestanding: no allocation, no exception, errors returned. The
 // host's run_checkpoints, rs_footprint, rs_cost_to_precision and run_rs (checkpoints.cpp) mark
 // through ByteRasterCore and rs_mark; the Cortex-M image (mcu/src/rs_run.cpp) lays a walk out
-// with prepare_fixed_rs and runs it twice: with run_fixed_rs, whose steps are visit.hpp's, and
-// with the C API's behaviour (antkit/c/antkit.h); both must give run_rs's cells, length and hash.
+// with prepare_fixed_rs and runs run_fixed_rs, whose steps are visit.hpp's, twice: with the C++
+// cores and with the C API's behaviour and hash (antkit/c/antkit.h) as its parts; both must give
+// run_rs's cells, length and hash.
 //
 // The trace hash of an RS walk (run_rs, run_fixed_rs): TraceHash(seed), the trial, every step's
 // hash_visit_step (visit.hpp), then the marked cells and the blocked steps.
@@ -142,22 +143,21 @@ struct FixedRs {
 }
 
 // RS for `steps` steps (visit kRsVisit of trial `trial`, seed `seed`, experiment kExperiment) in
-// a prepared layout: visit.hpp's steps with ExplorationBehaviour, the cells marked from the start
-// on, and the walk's trace hash.
-[[nodiscard]] inline FixedRsResult run_fixed_rs(FixedRs& rs, std::uint64_t seed,
-                                                std::uint64_t trial, std::int64_t steps) noexcept {
+// a prepared layout: visit.hpp's steps with Parts' behaviour and hash (VisitParts: the C++ cores;
+// the Cortex-M image also passes the C API's), the cells marked from the start on, and the walk's
+// trace hash.
+template <class Parts = VisitParts>
+[[nodiscard]] FixedRsResult run_fixed_rs(FixedRs& rs, std::uint64_t seed, std::uint64_t trial,
+                                         std::int64_t steps) noexcept {
   VisitStreams streams(seed, kExperiment, trial, kRsVisit);
-  ExplorationBehaviour behaviour(streams.behaviour);
-  Pose pose = rs.start;
-  kernel::TraceHash hash(seed);
+  typename Parts::Behaviour behaviour = Parts::behaviour(seed, trial, kRsVisit);
+  typename Parts::Hash hash = Parts::hash(seed);
   hash.add_u64(trial);
   FixedRsResult r;
-  r.cells = rs_mark(rs.raster, pose.position);
-  for (std::int64_t s = 0; s < steps; ++s) {
-    (void)visit_step(rs.world, behaviour, pose, streams.noise, r.length_raw, r.blocked);
-    r.cells += rs_mark(rs.raster, pose.position);
-    hash_visit_step(hash, pose, behaviour);
-  }
+  const VisitEnd end = run_visit_steps(rs.world, behaviour, streams.noise, rs.start, steps, hash,
+                                       [&](FxPoint p) { r.cells += rs_mark(rs.raster, p); });
+  r.length_raw = end.length_raw;
+  r.blocked = end.blocked;
   hash.add_u64(r.cells).add_u64(r.blocked);
   r.hash = hash.finish();
   r.bytes = rs.bytes;
