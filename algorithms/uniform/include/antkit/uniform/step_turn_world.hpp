@@ -5,15 +5,15 @@
 // rules are not restated here: the move, the turn, the view and the hashed state are
 // coverage_rules.hpp's, which CoverageWorld calls too; this file holds only the storage (the map's
 // Free cells and the viewed cells as bits, the footprint the host computed and sent) and the one
-// robot's pose. The run stops as run_coverage stops (complete, checked before every tick, or the
-// time limit). The controller is StepTurnCore (step_turn.hpp), whose commands are
-// RandomWanderer's for robot 0.
+// robot's pose. The ticks are coverage_ticks.hpp's run_ticks, which run_coverage runs too. The
+// controller is StepTurnCore (step_turn.hpp), whose commands are RandomWanderer's for robot 0.
 //
 // Memory: the map's Free cells and the viewed cells as bits (1 bit per cell each), the footprint's
 // rays (12 bytes each) and the cells between (4 bytes each). No allocation, no exception.
 #include <antkit/kernel/grid.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/uniform/coverage_rules.hpp>
+#include <antkit/uniform/coverage_ticks.hpp>
 #include <antkit/uniform/step_turn.hpp>
 #include <cstddef>
 #include <cstdint>
@@ -32,8 +32,8 @@ struct StepTurnOffset {
   friend constexpr kernel::Cell offset_of(StepTurnOffset d) noexcept { return {d.dx, d.dy}; }
 };
 
-// coverage.hpp's StopReason, by number (0 complete, 2 time limit; a wanderer never stops itself).
-enum class StepTurnStop : std::uint8_t { Complete = 0, TimeLimit = 2 };
+// Complete or TimeLimit (a wanderer never stops itself).
+using StepTurnStop = TickStop;
 
 struct StepTurnResult {
   std::uint64_t viewed = 0, viewable = 0, movements = 0, moves = 0, hash = 0;
@@ -70,14 +70,25 @@ public:
     return passable_step_rule(cell_, bearing, [this](kernel::Cell c) { return is_free(c); });
   }
   [[nodiscard]] bool front_free() const noexcept { return can_step(bearing_); }
-  void turn(int eighths) noexcept { bearing_ = turned_bearing(bearing_, eighths); }
-  // Steps along the bearing and views from the new cell; false (nothing happens) when blocked.
-  bool forward() noexcept {
-    if (!can_step(bearing_)) return false;
-    cell_ = cell_ + kernel::kNeighbours8[bearing_];
-    view();
+
+  // run_ticks' world (coverage_ticks.hpp), as CoverageWorld answers for robot 0 of 1.
+  [[nodiscard]] static constexpr std::size_t robot_count() noexcept { return 1; }
+  [[nodiscard]] bool complete() const noexcept { return counts_.free == viewable_; }
+  [[nodiscard]] std::uint8_t bearing(std::size_t) const noexcept { return bearing_; }
+  bool turn(std::size_t, int eighths) noexcept {
+    bearing_ = turned_bearing(bearing_, eighths);
     return true;
   }
+  // Faces `bearing`, then steps; false (nothing happens) when blocked.
+  bool move(std::size_t, std::uint8_t bearing) noexcept {
+    bearing &= 7u;
+    if (!can_step(bearing)) return false;
+    bearing_ = bearing;
+    cell_ = cell_ + kernel::kNeighbours8[bearing];
+    return true;
+  }
+  std::uint32_t view(std::size_t) noexcept { return view(); }
+
   // Marks what the robot views from its cell; returns how many cells were newly viewed.
   std::uint32_t view() noexcept {
     return view_from(cells_, cell_, rays_, between_.data(), counts_);
@@ -128,49 +139,25 @@ private:
   ViewCounts counts_;
 };
 
-// run_coverage's loop (coverage.hpp) for one robot of Algorithm::RandomWanderer driven by
-// `wanderer` (StepTurnCore, or anything whose step(front_free) answers as it does: the Cortex-M
-// image passes the C API's antkit_step_turn_wanderer): the hash is TraceHash(0) over the
-// algorithm's number (0), the robot count (1) and the state before the first tick and after every
-// tick.
+// run_coverage's run (coverage.hpp: run_ticks) for one robot of Algorithm::RandomWanderer (number
+// 0) driven by `wanderer` (StepTurnCore, or anything whose step(front_free) answers as it does: the
+// Cortex-M image passes the C API's antkit_step_turn_wanderer).
 template <class Wanderer = StepTurnCore>
 StepTurnResult run_step_turn(StepTurnWorld& world, Wanderer& wanderer,
                              std::uint64_t limit) noexcept {
+  struct Team {
+    StepTurnWorld& world;
+    Wanderer& wanderer;
+    Command command(std::size_t) noexcept { return wanderer.step(world.front_free()); }
+  } team{world, wanderer};
+  const TickRun run = run_ticks(world, team, 0, limit, [](std::uint64_t) {});
   StepTurnResult out;
-  kernel::TraceHash hash;
-  hash.add_u8(0).add_u64(1);
-  world.hash_state(hash);
-  for (;;) {
-    if (world.viewed_free() == world.viewable()) {
-      out.stop = StepTurnStop::Complete;
-      break;
-    }
-    if (out.movements >= limit) {
-      out.stop = StepTurnStop::TimeLimit;
-      break;
-    }
-    const Command cmd = wanderer.step(world.front_free());
-    bool done = false;
-    switch (cmd.action) {
-    case Action::TurnLeft:
-      world.turn(1), done = true;
-      break;
-    case Action::TurnRight:
-      world.turn(-1), done = true;
-      break;
-    case Action::Forward:
-      done = world.forward();
-      break;
-    default:
-      break;
-    }
-    if (done) ++out.moves;
-    ++out.movements;
-    world.hash_state(hash);
-  }
+  out.movements = run.movements;
+  out.moves = run.moves;
+  out.hash = run.hash;
+  out.stop = run.stop;
   out.viewed = world.viewed_free();
   out.viewable = world.viewable();
-  out.hash = hash.finish();
   return out;
 }
 

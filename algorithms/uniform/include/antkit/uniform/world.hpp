@@ -99,6 +99,7 @@ public:
   [[nodiscard]] std::size_t robot_count() const noexcept { return robots_.size(); }
   [[nodiscard]] const std::vector<Pose>& robots() const noexcept { return robots_; }
   [[nodiscard]] const Pose& robot(std::size_t i) const noexcept { return robots_[i]; }
+  [[nodiscard]] std::uint8_t bearing(std::size_t i) const noexcept { return robots_[i].bearing; }
 
   // The communal map: 1 where a cell has been viewed.
   [[nodiscard]] const kernel::Grid<std::uint8_t>& viewed() const noexcept { return viewed_; }
