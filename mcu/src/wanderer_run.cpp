@@ -3,7 +3,8 @@
 // chip. The host sends the map's Free cells as bits, the start it placed, the viewable cells it
 // counted and the sensor's footprint (uniform/wanderer_mcu_input.hpp); the chip runs the C API's
 // wanderer (antkit_step_turn_wanderer: StepTurnCore, uniform/step_turn.hpp) in StepTurnWorld
-// (uniform/step_turn_world.hpp) and prints the numbers `antkit cover --format json` prints.
+// (uniform/step_turn_world.hpp: the host's coverage_rules.hpp and coverage_ticks.hpp over bits in
+// the arena) and prints the numbers `antkit cover --format json` prints.
 #include "buffon_run.hpp"
 #include "semihost.hpp"
 #include "text.hpp"
@@ -80,8 +81,8 @@ int run_wanderer(const char* path, std::int32_t file, std::int32_t size, const s
     return refuse(path, "ends inside the cells between");
   mcu::close(file);
   // A ray's cells between must be in the list and in the box of the robot and the ray's target,
-  // which keeps every read on the map (StepTurnWorld::clear); the footprint SensorFootprint
-  // computes always is.
+  // which keeps every read on the map (coverage_rules.hpp's ray_clear); the footprint
+  // SensorFootprint computes always is.
   const std::int32_t r = static_cast<std::int32_t>(run.sensor);
   for (std::uint32_t i = 0; i < run.rays; ++i) {
     const StepTurnRay& ray = rays[i];
