@@ -2,7 +2,8 @@
 # The Cortex-M image's footprint (issue 27), as a Markdown table for the README: flash of each
 # controller's step path (from the image's symbol table: nm -S), the stack of each function on it
 # (gcc -fstack-usage), the controllers' state, the whole image (size), and the instructions per move
-# of a tour on den312d under QEMU with -icount (an estimate of cycles: see scripts/run-on-mcu.sh).
+# of a tour on den312d under QEMU with -icount (an estimate of cycles: see scripts/run-on-mcu.sh);
+# then Buffon, Randomized Search and the step-turn wanderer the same way.
 #
 #   bench/mcu_footprint.sh        builds build/mcu if needed (through scripts/run-on-mcu.sh)
 set -euo pipefail
@@ -13,6 +14,8 @@ ant=$(scripts/run-on-mcu.sh --icount stc --map $map --variant ant)
 edge=$(scripts/run-on-mcu.sh --icount stc --map $map --variant ant-edge)
 online=$(scripts/run-on-mcu.sh --icount stc --map $map --variant online)
 buffon=$(scripts/run-on-mcu.sh --icount buffon --arena square:area=25 --steps 3000 --seed 1)
+rs=$(scripts/run-on-mcu.sh --icount rs --arena square:area=25 --steps 3000 --seed 1)
+wanderer=$(scripts/run-on-mcu.sh --icount wanderer --map $map)
 image=build/mcu/antkit_mcu.elf
 symbols=$(arm-none-eabi-nm -S -C "$image")
 stack=$(cat $(find build/mcu -name '*.su'))
@@ -51,10 +54,31 @@ echo
 # the world's sensing and collisions, the trace hash, the sine table, and the 64/128-bit helpers
 # a 32-bit core needs for them.
 behaviour=$(size_of 'ExplorationBehaviour::step|BufferedStream::refill')
-world=$(size_of 'visit<antkit::buffon::run_fixed_trial|buffon::visit_step|WorldCore::sense_walls|WorldCore::clear_walls|closer_than|TraceHash::add_u64|kernel::uniform<long, 16>|RasterCore::lay|RasterCore::at_exact|orientation_in<|soft::Int<true>::divmod|div_round_half_up<|__udivmoddi4')
+# TraceHash::add_u64 is out of line once per translation unit that calls it (buffon_run's and
+# rs_run's, the same code): one copy is counted.
+hash64=$((16#$(grep -E 'TraceHash::add_u64' <<<"$symbols" | head -1 | awk '{ print $2 }')))
+world=$(($(size_of 'visit<antkit::buffon::run_fixed_trial|buffon::visit_step|WorldCore::sense_walls|WorldCore::clear_walls|closer_than|kernel::uniform<long, 16>|RasterCore::lay|RasterCore::at_exact|orientation_in<|soft::Int<true>::divmod|div_round_half_up<|__udivmoddi4') + hash64))
 table=$(size_of 'kSineQ30')
 echo "| Buffon | flash | stack | RAM |"
 echo "|---|---|---|---|"
 echo "| behaviour + detector step (\`ExplorationBehaviour::step\`, its stream's refill; the detector inlined) | $behaviour B | $(stack_of 'ExplorationBehaviour::step') + $(stack_of 'BufferedStream::refill') B | 136 B behaviour + 8 B detector (C structs: 160 B, 8 B) |"
 echo "| the world's step (visit loops, \`visit_step\`, sensing, collisions, raster, crossing count, hash, 64/128-bit helpers) | $world B + $table B sine table | $(stack_of 'sense_walls') B (sense_walls) | $(jq .arena_bytes <<<"$buffon") B of the arena for square:area=25, 3000 steps |"
 echo "| instructions per step (QEMU -icount; both visits of square:area=25, 3000 steps) | $(jq .instructions_per_move <<<"$buffon") | | |"
+echo
+# Randomized Search (one walk of square:area=25, 3000 steps) and the step-turn wanderer (den312d,
+# sensor 5, to antkit cover's default limit of 10 W H ticks). RS's controller is the Buffon
+# behaviour (above); its world's step is run_fixed_rs's loop (RS's marking inlined but for the
+# disk stamp), visit_step and the world's sensing and collisions as Buffon's. The wanderer's
+# controller is the C API's step (StepTurnCore, its stream's draw and refill inlined); its world's
+# step is the tick loop (turns and moves inlined), the view and the hash of the state.
+rs_world=$(size_of 'buffon::run_fixed_rs|ByteRasterCore::disk<antkit::buffon::rs_mark|buffon::visit_step|WorldCore::sense_walls|WorldCore::clear_walls|closer_than|kernel::uniform<long, 16>|orientation_in<|soft::Int<true>::divmod|div_round_half_up<|__udivmoddi4')
+w_ctl=$(size_of ' antkit_step_turn_wanderer_step$')
+w_world=$(size_of 'wander\(antkit::uniform::StepTurnWorld|StepTurnWorld::view|StepTurnWorld::can_step|StepTurnWorld::hash_state')
+echo "| Randomized Search, step-turn wanderer | flash | stack | RAM |"
+echo "|---|---|---|---|"
+echo "| RS: controller step | the Buffon behaviour's (above; C API \`antkit_buffon_behaviour_step\`) | | 136 B (C struct 160 B) |"
+echo "| RS: the world's step (\`run_fixed_rs\`'s loop, RS's disk stamp, \`visit_step\`, sensing, collisions, hash, 64/128-bit helpers) | $((rs_world + hash64)) B + the $table B sine table | $(stack_of 'sense_walls') B (sense_walls) | $(jq .arena_bytes <<<"$rs") B of the arena for square:area=25 (walls, buckets, 1 B per 0.1 x 0.1 cell) |"
+echo "| RS: instructions per step (QEMU -icount; square:area=25, 3000 steps) | $(jq .instructions_per_move <<<"$rs") | | |"
+echo "| wanderer: controller step (C API: \`antkit_step_turn_wanderer_step\`, the draw inlined) | $w_ctl B | $(stack_of 'antkit_step_turn_wanderer_step') B | 56 B (\`antkit_step_turn_wanderer\`: 64 B) |"
+echo "| wanderer: the world's step (tick loop, \`StepTurnWorld::view\`, \`can_step\`, \`hash_state\`) | $w_world B | $(stack_of 'wander\(') + $(stack_of 'StepTurnWorld::view') B (loop, view) | $(jq .arena_bytes <<<"$wanderer") B for den312d: 2 bits per cell, 12 B per sensor ray and 4 B per cell between (sensor 5: 81 rays) |"
+echo "| wanderer: instructions per tick, den312d (QEMU -icount; controller, world, view and hash) | $(jq .instructions_per_move <<<"$wanderer") | | |"

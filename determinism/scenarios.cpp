@@ -14,8 +14,9 @@
 //                                                 hash of the states up to it, and its state (for
 //                                                 finding the first step where two builds part)
 //   antkit_determinism --maps DIR --mcu-inputs DIR2
-//                                                 writes the Cortex-M image's input of every STC
-//                                                 scenario it runs into DIR2, "name file" per line
+//                                                 writes the Cortex-M image's input of every
+//                                                 scenario it runs (STC; Buffon on the square with
+//                                                 a pillar) into DIR2, "name file" per line
 //                                                 (the matrix's cortex-m4 configuration)
 //   antkit_determinism --teeth native-endian [--check FILE | --trace teeth/native-endian]
 //                                                 Buffon's first trail hashed over the bytes of its
@@ -25,6 +26,7 @@
 // Exit status: 0 all match, 1 a mismatch or a missing golden line, 2 bad usage or input.
 #include <algorithm>
 #include <antkit/algorithms/units.hpp>
+#include <antkit/buffon/mcu_digest_input.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/two_markers.hpp>
 #include <antkit/devices/stc_floor/floor.hpp>
@@ -449,6 +451,35 @@ void write_mcu_inputs(MapShelf& shelf, const std::string& dir) {
         if (!out.flush()) throw kernel::InputError(file, "cannot write");
         std::printf("%s %s\n", name.c_str(), file.c_str());
       }
+  // Buffon on the square with a pillar (its 8 walls, buckets, raster, trail and crossing index fit
+  // the chip; the circle's 256 walls do not): buffon/mcu_input.hpp's bytes with the digest magic
+  // (buffon/mcu_digest_input.hpp), the scenario's defaults (body, width) and 3000 steps per visit.
+  for (const std::uint64_t seed : {std::uint64_t{1}, std::uint64_t{2}, std::uint64_t{3}}) {
+    const std::string name = "buffon/square-pillar/seed" + std::to_string(seed);
+    const auto walls = square_with_pillar();
+    const buffon::BodyParams body;
+    const buffon::TrialParams p;
+    std::vector<std::uint8_t> bytes(std::begin(buffon::kMcuBuffonDigestMagic),
+                                    std::end(buffon::kMcuBuffonDigestMagic));
+    const auto put = [&bytes](std::uint64_t v, int n) {
+      for (int i = 0; i < n; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    };
+    put(seed, 8);
+    put(3000, 8);
+    put(static_cast<std::uint32_t>(p.width.raw()), 4);
+    put(static_cast<std::uint32_t>(body.noise.raw()), 4);
+    put(static_cast<std::uint32_t>(body.speed.raw()), 4);
+    put(walls.size(), 4);
+    for (const auto& w : walls)
+      for (const std::int32_t v : {w.a.x.raw(), w.a.y.raw(), w.b.x.raw(), w.b.y.raw()})
+        put(static_cast<std::uint32_t>(v), 4);
+    std::string file = dir + "/buffon_square-pillar_seed" + std::to_string(seed);
+    std::ofstream out(file, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()),
+              static_cast<std::streamsize>(bytes.size()));
+    if (!out.flush()) throw kernel::InputError(file, "cannot write");
+    std::printf("%s %s\n", name.c_str(), file.c_str());
+  }
 }
 
 int usage(const std::string& why) {

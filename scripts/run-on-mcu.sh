@@ -26,6 +26,26 @@
 # image's 112 KiB arena (online: with its memory of the cells seen) is refused with both sizes in
 # the message.
 #
+#   scripts/run-on-mcu.sh rs --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X]
+#
+# runs one Randomized Search walk (paper 000, Section 8.1: visit 3 of trial 0's streams, marking
+# the 0.1 x 0.1 cells under the body) and prints one JSON object whose hash, cells, length_raw and
+# blocked equal those of `antkit rs-mcu-input --host` with the same arguments (the host's run_rs).
+# The host sends the arena's walls (`antkit rs-mcu-input`); the behaviour, the world's steps, RS's
+# raster and the hash run on the chip, in the same 112 KiB arena: walls, wall buckets and a byte
+# per raster cell of the walls' box, refused with the sizes and the limit when they exceed it.
+#
+#   scripts/run-on-mcu.sh wanderer (--map F | --size WxH --density P) [--seed S] [--trial K]
+#                         [--sensor R] [--limit T]
+#
+# runs paper 004's Random Wanderer for one robot that only steps and turns (uniform/step_turn.hpp)
+# and prints one JSON object whose hash, viewed, viewable, movements, moves and stop equal those of
+# `antkit cover --algo rw --robots 1 --format json` with the same arguments. The host reads the map,
+# places the robot, counts the viewable cells and computes the sensor's footprint (`antkit
+# wanderer-mcu-input`); the wanderer, the world's ticks (moves, line-of-sight views) and the hash
+# run on the chip, in the same 112 KiB arena: 2 bits per map cell and the footprint, refused with
+# the sizes and the limit when they exceed it.
+#
 # Options before the subcommand:
 #   --icount   run QEMU with -icount shift=0 (its virtual clock advances 1 ns per instruction, and
 #              the emulated STM32F405's SysTick counts 168 per us of it) and add to the JSON
@@ -44,6 +64,9 @@ usage() {
     "[--noise P] [--seed S]" >&2
   echo "       scripts/run-on-mcu.sh [--icount] buffon --arena SPEC --steps N [--seed S] [--width W]" \
     "[--noise X]" >&2
+  echo "       scripts/run-on-mcu.sh [--icount] rs --arena SPEC --steps N [--seed S] [--noise X]" >&2
+  echo "       scripts/run-on-mcu.sh [--icount] wanderer (--map F | --size WxH --density P) [--seed S]" \
+    "[--trial K] [--sensor R] [--limit T]" >&2
   exit 2
 }
 
@@ -59,9 +82,9 @@ done
 command=$1
 shift
 case "$command" in
-stc | buffon) ;;
+stc | buffon | rs | wanderer) ;;
 *)
-  echo "run-on-mcu.sh: unknown command '$command' (stc, buffon)" >&2
+  echo "run-on-mcu.sh: unknown command '$command' (stc, buffon, rs, wanderer)" >&2
   exit 2
   ;;
 esac
@@ -119,8 +142,10 @@ elif [ $status -ne 0 ]; then
 fi
 if [ $icount -eq 1 ]; then
   ticks=$(jq -r .ticks "$work/out")
-  # A tour's moves (stc: its positions less the start) or both visits' steps (buffon: "moves").
-  moves=$(jq -r 'if .moves then .moves else .positions - 1 end' "$work/out")
+  # A tour's moves (stc: its positions less the start), the steps (buffon: both visits', rs: the
+  # walk's; "moves") or the ticks (wanderer: "movements").
+  moves=$(jq -r 'if .movements then .movements elif .moves then .moves else .positions - 1 end' \
+    "$work/out")
   instructions=$((ticks * 125 / 21))
   jq -c --argjson i "$instructions" --argjson m "$moves" \
     '. + {instructions: $i, instructions_per_move: (if $m > 0 then ($i / $m | floor) else 0 end)}' \

@@ -9,6 +9,7 @@
 #include <antkit/stc/ant.hpp>
 #include <antkit/stc/floor.hpp>
 #include <antkit/stc/online.hpp>
+#include <antkit/uniform/step_turn.hpp>
 #include <cstdint>
 #include <cstring>
 #include <new>
@@ -61,6 +62,15 @@ static_assert(sizeof(ExplorationBehaviour) <= sizeof(antkit_buffon_behaviour) &&
 static_assert(sizeof(CrossingDetector) <= sizeof(antkit_buffon_detector) &&
               alignof(CrossingDetector) <= alignof(antkit_buffon_detector) &&
               std::is_trivially_copyable_v<CrossingDetector>);
+
+using antkit::uniform::StepTurnCore;
+static_assert(sizeof(StepTurnCore) <= sizeof(antkit_step_turn_wanderer) &&
+              alignof(StepTurnCore) <= alignof(antkit_step_turn_wanderer) &&
+              std::is_trivially_copyable_v<StepTurnCore>);
+static_assert(ANTKIT_WANDER_WAIT == static_cast<int>(antkit::uniform::Action::Wait) &&
+              ANTKIT_WANDER_TURN_LEFT == static_cast<int>(antkit::uniform::Action::TurnLeft) &&
+              ANTKIT_WANDER_TURN_RIGHT == static_cast<int>(antkit::uniform::Action::TurnRight) &&
+              ANTKIT_WANDER_FORWARD == static_cast<int>(antkit::uniform::Action::Forward));
 
 static_assert(sizeof(AntStc) <= sizeof(antkit_ant_stc) && std::is_trivially_copyable_v<AntStc>);
 static_assert(sizeof(AntEdgeStc) <= sizeof(antkit_ant_edge_stc) &&
@@ -296,6 +306,27 @@ antkit_wheel_command antkit_buffon_behaviour_step(antkit_buffon_behaviour* state
   for (std::size_t i = 0; i < 6; ++i) obs.ir[i] = antkit::kernel::Fx::from_raw(reading->ir[i]);
   const antkit::buffon::Command c = object_in<ExplorationBehaviour>(state).step(obs);
   return {c.left.raw(), c.right.raw()};
+}
+
+void antkit_buffon_behaviour_state(const antkit_buffon_behaviour* state, int32_t* r,
+                                   int32_t* w_left, int32_t* w_right) {
+  const auto& b = object_in<ExplorationBehaviour>(state);
+  if (r != nullptr) *r = b.r().raw();
+  if (w_left != nullptr) *w_left = b.w_left().raw();
+  if (w_right != nullptr) *w_right = b.w_right().raw();
+}
+
+void antkit_step_turn_wanderer_init(antkit_step_turn_wanderer* state, uint64_t seed, uint64_t trial,
+                                    uint64_t robot) {
+  ::new (static_cast<void*>(state->opaque)) StepTurnCore(seed, trial, robot);
+}
+
+int antkit_step_turn_wanderer_step(antkit_step_turn_wanderer* state, int front_free) {
+  return static_cast<int>(object_in<StepTurnCore>(state).step(front_free != 0).action);
+}
+
+uint64_t antkit_step_turn_wanderer_steps(const antkit_step_turn_wanderer* state) {
+  return object_in<StepTurnCore>(state).steps();
 }
 
 void antkit_buffon_detector_init(antkit_buffon_detector* state) {

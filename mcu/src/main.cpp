@@ -1,5 +1,6 @@
-// The Cortex-M image (issue 27): one run of ant-like STC (`ant`, `ant-edge` or `online`) or one
-// Buffon trial (buffon_run.cpp, when the input is a Buffon one) on the robot's own processor. It
+// The Cortex-M image (issue 27): one run of ant-like STC (`ant`, `ant-edge` or `online`), one
+// Buffon trial (buffon_run.cpp, when the input is a Buffon one), one Randomized Search walk
+// (rs_run.cpp) or one step-turn wanderer run (wanderer_run.cpp) on the robot's own processor. It
 // reads its input (stc/mcu_input.hpp: the map's free sub-cells, the start, the marker and the
 // noise) from the host file named on its semihosting command line, runs the controller through the
 // C API (antkit/c/antkit.h) over the floor of floor.hpp — the host's StcWorld steps the same floor
@@ -13,10 +14,13 @@
 #include "text.hpp"
 #include "ticks.hpp"
 
+#include <antkit/buffon/mcu_digest_input.hpp>
 #include <antkit/buffon/mcu_input.hpp>
+#include <antkit/buffon/rs_mcu_input.hpp>
 #include <antkit/c/antkit.h>
 #include <antkit/stc/floor.hpp>
 #include <antkit/stc/mcu_input.hpp>
+#include <antkit/uniform/wanderer_mcu_input.hpp>
 #include <cstddef>
 #include <cstdint>
 
@@ -91,8 +95,16 @@ int main() {
   const std::size_t got = mcu::read(file, g_header, sizeof g_header);
   // A Buffon trial (buffon/mcu_input.hpp) in the same arena.
   static_assert(antkit::buffon::kMcuArenaBytes == kMcuFloorBytes);
-  if (got >= 8 && __builtin_memcmp(g_header, antkit::buffon::kMcuBuffonMagic, 8) == 0)
+  if (got >= 8 && (__builtin_memcmp(g_header, antkit::buffon::kMcuBuffonMagic, 8) == 0 ||
+                   __builtin_memcmp(g_header, antkit::buffon::kMcuBuffonDigestMagic, 8) == 0))
     return mcu::run_buffon(path, file, size, g_header, got, g_arena, sizeof g_arena);
+  // A Randomized Search walk (buffon/rs_mcu_input.hpp), likewise.
+  if (got >= 8 && __builtin_memcmp(g_header, antkit::buffon::kMcuRsMagic, 8) == 0)
+    return mcu::run_rs(path, file, size, g_header, got, g_arena, sizeof g_arena);
+  // A step-turn wanderer run (uniform/wanderer_mcu_input.hpp), likewise.
+  static_assert(antkit::uniform::kMcuWandererArenaBytes == kMcuFloorBytes);
+  if (got >= 8 && __builtin_memcmp(g_header, antkit::uniform::kMcuWandererMagic, 8) == 0)
+    return mcu::run_wanderer(path, file, size, g_header, got, g_arena, sizeof g_arena);
   if (const McuInputError e = read_mcu_header(g_header, got, run); e != McuInputError::None)
     return refuse(path, describe(e));
   const FloorSize fs = floor_size(run.width, run.height);

@@ -36,6 +36,13 @@ expect buffon-missing-wkt "error: .*nope\.wkt" "$run" buffon --arena nope.wkt --
 expect buffon-bad-steps "error: --steps: the steps per visit must be in" "$run" buffon --arena square:area=25 --steps 0
 expect buffon-bad-width "error: --width" "$run" buffon --arena square:area=25 --steps 100 --width 0
 expect buffon-bad-noise "error: --noise" "$run" buffon --arena square:area=25 --steps 100 --noise 3
+expect rs-bad-arena "error: --arena" "$run" rs --arena circle:d=-3 --steps 100
+expect rs-bad-steps "error: --steps: the steps must be in" "$run" rs --arena square:area=25 --steps 0
+expect rs-bad-noise "error: --noise" "$run" rs --arena square:area=25 --steps 100 --noise 3
+expect wanderer-missing-map "error: .*nope\.map: cannot open" "$run" wanderer --map nope.map
+expect wanderer-bad-sensor "error: --sensor" "$run" wanderer --map "$den" --sensor -1
+expect wanderer-bad-density "error: .*density" "$run" wanderer --size 20x20 --density 2
+expect wanderer-no-map "error: .*give either --map" "$run" wanderer --seed 3
 
 # The chip's own refusals: a file that is not an input, and one cut short.
 work=$(mktemp -d)
@@ -51,7 +58,15 @@ head -c 100 "$work/good" >"$work/short"
 "$ANTKIT_EXE" buffon-mcu-input --arena square:area=25 --steps 100 --out "$work/buffon" >/dev/null
 head -c 60 "$work/buffon" >"$work/buffon-short"
 { head -c 16 "$work/buffon"; printf '\0\0\0\0\0\0\0\0'; tail -c +25 "$work/buffon"; } >"$work/buffon-steps"
-for f in text short buffon-short buffon-steps; do
+# An RS input cut inside its walls, and one whose header asks for 0 steps.
+"$ANTKIT_EXE" rs-mcu-input --arena square:area=25 --steps 100 --out "$work/rs" >/dev/null
+head -c 60 "$work/rs" >"$work/rs-short"
+{ head -c 16 "$work/rs"; printf '\0\0\0\0\0\0\0\0'; tail -c +25 "$work/rs"; } >"$work/rs-steps"
+# A wanderer input cut inside its map, and one whose start lies off the map.
+"$ANTKIT_EXE" wanderer-mcu-input --map "$den" --out "$work/wanderer" >/dev/null
+head -c 200 "$work/wanderer" >"$work/wanderer-short"
+{ head -c 48 "$work/wanderer"; printf '\377\377\0\0'; tail -c +53 "$work/wanderer"; } >"$work/wanderer-start"
+for f in text short buffon-short buffon-steps rs-short rs-steps wanderer-short wanderer-start; do
   out=$(chip "$work/$f")
   status=$?
   if [ $status -eq 2 ] && [[ "$out" == "error: $work/$f: "* ]]; then

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # check_buffon.sh ARENA STEPS SEED [antkit buffon options...]: scripts/run-on-mcu.sh buffon's trial
-# against `antkit buffon --trials 1`'s for the same arguments (hash, bc, crossings_exact, blocked).
+# against `antkit buffon --trials 1`'s for the same arguments (hash, bc, crossings_exact, blocked),
+# both the chip's run through the cores and through the C API.
 # With ARENA prefixed by "refused:", the run must instead be refused (exit 2, nothing on stdout)
 # with the chip's limit (114688 bytes) in the message.
 set -euo pipefail
@@ -27,6 +28,11 @@ status=0
 chip=$("$here/scripts/run-on-mcu.sh" buffon --arena "$arena" --steps "$steps" --seed "$seed" "$@" \
   2>"$err") || status=$?
 [ $status -eq 0 ] || { echo "run-on-mcu.sh failed ($status): $(cat "$err")"; exit 1; }
+# The trial twice on the chip: through run_fixed_trial and through the C API's behaviour,
+# detector and hash (c_api).
+chip_c_api=$(jq -c ".c_api | $fields" <<<"$chip")
 chip=$(jq -c ".trials[0] | $fields" <<<"$chip")
 echo "chip: $chip"
+echo "chip, C API: $chip_c_api"
+[ "$chip_c_api" = "$host" ]
 [ "$chip" = "$host" ]

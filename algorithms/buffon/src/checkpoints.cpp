@@ -1,6 +1,7 @@
 // Buffon counts at trail-length checkpoints and the RS baseline (checkpoints.hpp).
 #include <algorithm>
 #include <antkit/buffon/checkpoints.hpp>
+#include <antkit/buffon/randomized_search.hpp>
 #include <antkit/buffon/step_root.hpp>
 #include <antkit/buffon/stopping.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -10,44 +11,15 @@ namespace antkit::buffon {
 
 namespace {
 
-std::int64_t floor_div(std::int64_t a, std::int64_t b) {
-  const std::int64_t q = a / b;
-  return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
-}
-
-// A raster of bytes over the walls' bounding box; disk stamps as in PheromoneRaster.
-struct ByteRaster {
-  std::int64_t x0, y0, cell, cols, rows;
-  std::vector<std::uint8_t> v;
-  ByteRaster(FxPoint lo, FxPoint hi, std::int64_t cell_raw, std::uint8_t init)
-      : x0(lo.x.raw()), y0(lo.y.raw()), cell(cell_raw),
-        cols((std::int64_t{hi.x.raw()} - x0) / cell_raw + 1),
-        rows((std::int64_t{hi.y.raw()} - y0) / cell_raw + 1) {
-    if (cols * rows > (std::int64_t{1} << 32))
+// A raster of bytes over the walls' bounding box (randomized_search.hpp's core over a vector);
+// disk stamps as in PheromoneRaster.
+struct ByteRaster : ByteRasterCore {
+  std::vector<std::uint8_t> storage;
+  ByteRaster(FxPoint lo, FxPoint hi, std::int64_t cell_raw, std::uint8_t init) {
+    if (!ByteRasterCore::init(lo, hi, cell_raw))
       throw kernel::InputError("trail width", "raster too large for this arena and width");
-    v.assign(static_cast<std::size_t>(cols * rows), init);
-  }
-  // Calls f(cell value) for every cell whose centre is within `radius` of c.
-  template <class F>
-  void disk(FxPoint c, std::int64_t radius, F&& f) {
-    const std::int64_t cx = c.x.raw() - x0, cy = c.y.raw() - y0;
-    const std::int64_t i0 = std::max<std::int64_t>(0, floor_div(cx - radius, cell));
-    const std::int64_t i1 = std::min<std::int64_t>(cols - 1, floor_div(cx + radius, cell));
-    const std::int64_t j0 = std::max<std::int64_t>(0, floor_div(cy - radius, cell));
-    const std::int64_t j1 = std::min<std::int64_t>(rows - 1, floor_div(cy + radius, cell));
-    for (std::int64_t j = j0; j <= j1; ++j) {
-      const std::int64_t dy2 = (2 * j + 1) * cell - 2 * cy;
-      for (std::int64_t i = i0; i <= i1; ++i) {
-        const std::int64_t dx2 = (2 * i + 1) * cell - 2 * cx;
-        if (dx2 * dx2 + dy2 * dy2 <= 4 * radius * radius)
-          f(v[static_cast<std::size_t>(j * cols + i)]);
-      }
-    }
-  }
-  [[nodiscard]] std::uint8_t at(FxPoint c) const {
-    const std::int64_t i = floor_div(c.x.raw() - x0, cell), j = floor_div(c.y.raw() - y0, cell);
-    if (i < 0 || j < 0 || i >= cols || j >= rows) return 0xFF;
-    return v[static_cast<std::size_t>(j * cols + i)];
+    storage.resize(static_cast<std::size_t>(cells()));
+    bind(storage.data(), init);
   }
 };
 
@@ -83,6 +55,25 @@ void walk(const World& world, const TrialParams& params, std::uint64_t trial, in
     f(pose, length);
     return true;
   });
+}
+
+// RS's walk through run_visit: visit kRsVisit of `trial` for params.steps steps, marking the
+// body's footprint from the start on, until `target` cells are marked; its steps go into `hash`.
+struct RsWalk {
+  std::uint64_t cells = 0, blocked = 0;
+  std::int64_t length_raw = 0;
+};
+RsWalk rs_walk(const World& world, const TrialParams& params, std::uint64_t trial,
+               std::uint64_t target, kernel::TraceHash& hash) {
+  ByteRaster rs(world.lower(), world.upper(), kRsCellRaw, 0);
+  RsWalk out;
+  const VisitLog log = run_visit(world, params, trial, kRsVisit, hash, [&](const Pose& pose) {
+    out.cells += rs_mark(rs, pose.position);
+    return out.cells < target;
+  });
+  out.length_raw = log.length_raw;
+  out.blocked = log.blocked;
+  return out;
 }
 
 } // namespace
@@ -121,17 +112,14 @@ CheckpointResult run_checkpoints(const World& world, const TrialParams& params, 
     }
   });
   // RS: one walk of twice the length, marking the body's footprint.
-  out.rs_cell_raw = Fx::from_ratio(1, 10).raw();
+  out.rs_cell_raw = kRsCellRaw;
   ByteRaster rs(world.lower(), world.upper(), out.rs_cell_raw, 0);
   std::uint64_t marked = 0;
   std::size_t next = 0;
-  walk(world, params, trial, 3, 2 * limit, [&](const Pose& pose, std::int64_t len) {
+  walk(world, params, trial, kRsVisit, 2 * limit, [&](const Pose& pose, std::int64_t len) {
     while (next < K && len > 2 * step_raw * static_cast<std::int64_t>(next + 1))
       out.rs_cells[next++] = marked;
-    rs.disk(pose.position, kBodyRadius.raw(), [&marked](std::uint8_t& cell) {
-      marked += cell == 0 ? 1 : 0;
-      cell = 1;
-    });
+    marked += rs_mark(rs, pose.position);
   });
   while (next < K) out.rs_cells[next++] = marked;
   return out;
@@ -139,7 +127,7 @@ CheckpointResult run_checkpoints(const World& world, const TrialParams& params, 
 
 Footprint rs_footprint(std::span<const FxPoint> trail) {
   Footprint out;
-  out.cell_raw = Fx::from_ratio(1, 10).raw();
+  out.cell_raw = kRsCellRaw;
   if (trail.empty()) return out;
   std::int32_t x0 = trail[0].x.raw(), y0 = trail[0].y.raw(), x1 = x0, y1 = y0;
   for (const auto& p : trail) {
@@ -149,11 +137,7 @@ Footprint rs_footprint(std::span<const FxPoint> trail) {
   const std::int32_t r = kBodyRadius.raw() + static_cast<std::int32_t>(out.cell_raw);
   ByteRaster rs({Fx::from_raw(x0 - r), Fx::from_raw(y0 - r)},
                 {Fx::from_raw(x1 + r), Fx::from_raw(y1 + r)}, out.cell_raw, 0);
-  for (const auto& p : trail)
-    rs.disk(p, kBodyRadius.raw(), [&out](std::uint8_t& cell) {
-      out.cells += cell == 0 ? 1 : 0;
-      cell = 1;
-    });
+  for (const auto& p : trail) out.cells += rs_mark(rs, p);
   return out;
 }
 
@@ -162,28 +146,34 @@ RsCost rs_cost_to_precision(const World& world, const TrialParams& params, std::
                             std::int64_t max_steps) {
   if (precision_millionths < 1 || precision_millionths >= kPrecisionDenominator)
     throw kernel::InputError("precision", "the relative precision must be in (0, 1)");
-  const std::int64_t cell = Fx::from_ratio(1, 10).raw();
+  const std::int64_t cell = kRsCellRaw;
   const double cell_area =
       static_cast<double>(cell) * static_cast<double>(cell) / 65536.0 / 65536.0;
   const double p = static_cast<double>(precision_millionths) / kPrecisionDenominator;
   // The first whole number of cells whose area reaches (1 - P) area: computed once, so the stop is
   // an integer comparison in the walk.
   const auto target = static_cast<std::uint64_t>(std::ceil((1.0 - p) * area / cell_area));
-  ByteRaster rs(world.lower(), world.upper(), cell, 0);
   TrialParams walk = params;
   walk.steps = max_steps;
   kernel::TraceHash unused;
-  std::uint64_t marked = 0;
+  const RsWalk w = rs_walk(world, walk, trial, target, unused);
   RsCost out;
-  const VisitLog log = run_visit(world, walk, trial, 3, unused, [&](const Pose& pose) {
-    rs.disk(pose.position, kBodyRadius.raw(), [&marked](std::uint8_t& c) {
-      marked += c == 0 ? 1 : 0;
-      c = 1;
-    });
-    return marked < target;
-  });
-  out.length_raw = log.length_raw;
-  out.reached = marked >= target;
+  out.length_raw = w.length_raw;
+  out.reached = w.cells >= target;
+  return out;
+}
+
+RsRun run_rs(const World& world, const TrialParams& params, std::uint64_t trial) {
+  kernel::TraceHash hash(params.seed);
+  hash.add_u64(trial);
+  const RsWalk w = rs_walk(world, params, trial, UINT64_MAX, hash);
+  hash.add_u64(w.cells).add_u64(w.blocked);
+  RsRun out;
+  out.cells = w.cells;
+  out.cell_raw = kRsCellRaw;
+  out.length_raw = w.length_raw;
+  out.blocked = w.blocked;
+  out.hash = hash.finish();
   return out;
 }
 

@@ -19,33 +19,22 @@ RandomWanderer::RandomWanderer(std::uint64_t seed, std::uint64_t trial, std::siz
     streams_.push_back(robot_stream(seed, trial, i, StreamPurpose::RandomWanderer));
 }
 
+// step_turn.hpp's keys are this family's (it cannot include scenario.hpp's containers).
+static_assert(kWandererExperiment == kStreamExperiment);
+static_assert(kWandererPurpose == static_cast<std::uint64_t>(StreamPurpose::RandomWanderer));
+
 Command RandomWanderer::step(const Observation& obs) {
-  switch (streams_[obs.robot].below(3)) {
-  case 0:
-    return {Action::TurnLeft};
-  case 2:
-    return {Action::TurnRight};
-  default: {
+  return wander_decide(streams_[obs.robot], [&obs] {
     const Pose& p = obs.world->robot(obs.robot);
-    return obs.world->can_step(p.cell, p.bearing) ? Command{Action::Forward}
-                                                  : Command{Action::Wait};
-  }
-  }
+    return obs.world->can_step(p.cell, p.bearing);
+  });
 }
 
 StepTurnWanderer::StepTurnWanderer(std::uint64_t seed, std::uint64_t trial, std::size_t robot)
-    : stream_(robot_stream(seed, trial, robot, StreamPurpose::RandomWanderer)) {}
+    : core_(seed, trial, robot) {}
 
 Command StepTurnWanderer::step(const Observation& obs) {
-  ++steps_;
-  switch (stream_.below(3)) { // RandomWanderer::step's draw and meaning
-  case 0:
-    return {Action::TurnLeft};
-  case 2:
-    return {Action::TurnRight};
-  default:
-    return obs.front_free ? Command{Action::Forward} : Command{Action::Wait};
-  }
+  return core_.step(obs.front_free); // RandomWanderer::step's draw and meaning
 }
 
 // ---- Primary Movement ----

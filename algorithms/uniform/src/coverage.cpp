@@ -1,8 +1,13 @@
 #include <antkit/uniform/controllers.hpp>
 #include <antkit/uniform/coverage.hpp>
+#include <antkit/uniform/coverage_ticks.hpp>
 #include <antkit/uniform/frontier_coverage.hpp>
 
 namespace antkit::uniform {
+
+static_assert(static_cast<int>(StopReason::Complete) == static_cast<int>(TickStop::Complete) &&
+              static_cast<int>(StopReason::NoMove) == static_cast<int>(TickStop::NoMove) &&
+              static_cast<int>(StopReason::TimeLimit) == static_cast<int>(TickStop::TimeLimit));
 
 std::string_view algorithm_name(Algorithm a) noexcept {
   switch (a) {
@@ -41,62 +46,31 @@ std::string_view stop_reason_name(StopReason r) noexcept {
 
 namespace {
 
+// run_ticks' team over a controller that takes an Observation.
+template <class Team>
+struct ObservedTeam {
+  Team& team;
+  const CoverageWorld& world;
+  Command command(std::size_t i) { return team.step(Observation{i, &world}); }
+};
+
 template <class Team>
 CoverageResult run_team(CoverageWorld& world, Team& team, Algorithm algorithm, std::uint64_t limit,
                         const TickObserver* observer) {
   CoverageResult out;
   out.algorithm = algorithm;
   out.robots = world.robot_count();
-  kernel::TraceHash hash;
-  hash.add_u8(static_cast<std::uint8_t>(algorithm)).add_u64(world.robot_count());
-  world.hash_state(hash);
-  if (observer) (*observer)(world, 0);
-  for (;;) {
-    if (world.complete()) {
-      out.stop = StopReason::Complete;
-      break;
-    }
-    if (out.movements >= limit) {
-      out.stop = StopReason::TimeLimit;
-      break;
-    }
-    bool acted = false;
-    for (std::size_t i = 0; i < world.robot_count(); ++i) {
-      const Command cmd = team.step(Observation{i, &world});
-      bool done = false;
-      switch (cmd.action) {
-      case Action::TurnLeft:
-        done = world.turn(i, 1);
-        break;
-      case Action::TurnRight:
-        done = world.turn(i, -1);
-        break;
-      case Action::Forward:
-        done = world.move(i, world.robot(i).bearing);
-        if (done) world.view(i);
-        break;
-      case Action::Step:
-        done = world.move(i, cmd.bearing);
-        if (done) world.view(i);
-        break;
-      case Action::Wait:
-      case Action::Stop:
-        break;
-      }
-      if (done) ++out.moves;
-      if (cmd.action != Action::Stop) acted = true;
-    }
-    if (!acted) {
-      out.stop = StopReason::NoMove;
-      break;
-    }
-    ++out.movements;
-    world.hash_state(hash);
-    if (observer) (*observer)(world, out.movements);
-  }
+  ObservedTeam<Team> observed{team, world};
+  const TickRun run = run_ticks(world, observed, static_cast<std::uint8_t>(algorithm), limit,
+                                [&](std::uint64_t tick) {
+                                  if (observer) (*observer)(world, tick);
+                                });
+  out.movements = run.movements;
+  out.moves = run.moves;
+  out.stop = static_cast<StopReason>(run.stop);
   out.viewed = world.viewed_free();
   out.viewable = world.viewable();
-  out.hash = hash.finish();
+  out.hash = run.hash;
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/kernel/raster.hpp>
+#include <antkit/uniform/coverage_rules.hpp>
 #include <antkit/uniform/world.hpp>
 #include <string>
 #include <utility>
@@ -10,6 +11,22 @@ namespace antkit::uniform {
 using kernel::Cell;
 using kernel::kNeighbours8;
 using kernel::Occupancy;
+
+// coverage_rules.hpp's cell storage over CoverageWorld's grids.
+struct CoverageWorld::Cells {
+  const CoverageWorld& world;
+  kernel::Grid<std::uint8_t>* marks = nullptr; // the viewed cells, for a view
+  [[nodiscard]] bool in_bounds(Cell c) const noexcept { return world.map_.in_bounds(c); }
+  [[nodiscard]] bool free_at(Cell c) const noexcept { return world.map_[c] == Occupancy::Free; }
+  [[nodiscard]] bool viewed(Cell c) const noexcept { return world.viewed_[c] != 0; }
+  void mark_viewed(Cell c) const noexcept { (*marks)[c] = 1; }
+  // A disk views through walls, also free cells of components no robot is in: those do not
+  // count for coverage. (Line of sight never reaches another component.)
+  [[nodiscard]] bool counts_free(Cell c) const noexcept {
+    return free_at(c) && (world.model_ == SensorModel::LineOfSight || world.is_viewable(c));
+  }
+  [[nodiscard]] bool sees_through() const noexcept { return world.model_ == SensorModel::Disk; }
+};
 
 SensorFootprint::SensorFootprint(std::int32_t range) : range_(range) {
   if (range < 0 || range > kMaxSensorRange)
@@ -48,12 +65,9 @@ CoverageWorld::CoverageWorld(kernel::OccupancyGrid map, std::vector<Pose> robots
   for (std::size_t k = 0; k < map_.size(); ++k) {
     const Cell c = map_.cell_at(k);
     std::uint8_t bits = 0;
-    for (std::uint8_t b = 0; b < 8; ++b) {
-      const Cell d = kNeighbours8[b];
-      bool ok = is_free(c + d);
-      if (d.x != 0 && d.y != 0) ok = ok && is_free({c.x + d.x, c.y}) && is_free({c.x, c.y + d.y});
-      if (ok) bits = static_cast<std::uint8_t>(bits | (1u << b));
-    }
+    for (std::uint8_t b = 0; b < 8; ++b)
+      if (passable_step_rule(c, b, [this](Cell n) { return is_free(n); }))
+        bits = static_cast<std::uint8_t>(bits | (1u << b));
     exits_.cells()[k] = bits;
   }
   if (robots_.size() >= 0xFFFFu)
@@ -81,12 +95,7 @@ CoverageWorld::CoverageWorld(kernel::OccupancyGrid map, std::vector<Pose> robots
 }
 
 bool CoverageWorld::clear_ray(Cell from, const SensorFootprint::Ray& ray) const noexcept {
-  if (model_ == SensorModel::Disk) return true;
-  // Every cell between lies in the bounding box of `from` and its target, both on the map.
-  const Cell* between = footprint_.between().data() + ray.first;
-  for (std::uint32_t k = 0; k < ray.count; ++k)
-    if (map_[from + between[k]] != Occupancy::Free) return false;
-  return true;
+  return ray_clear(Cells{*this}, from, ray, footprint_.between().data());
 }
 
 bool CoverageWorld::in_view(Cell from, Cell target) const noexcept {
@@ -98,16 +107,12 @@ bool CoverageWorld::in_view(Cell from, Cell target) const noexcept {
 
 bool CoverageWorld::would_view_new(Cell from) const noexcept {
   if (!map_.in_bounds(from)) return false;
-  for (const auto& ray : footprint_.rays()) {
-    const Cell c = from + ray.offset;
-    if (map_.in_bounds(c) && viewed_[c] == 0 && clear_ray(from, ray)) return true;
-  }
-  return false;
+  return would_view_new_from(Cells{*this}, from, footprint_.rays(), footprint_.between().data());
 }
 
 bool CoverageWorld::turn(std::size_t robot, int eighths) noexcept {
   auto& b = robots_[robot].bearing;
-  b = static_cast<std::uint8_t>((b + static_cast<unsigned>(eighths % 8 + 8)) & 7u);
+  b = turned_bearing(b, eighths);
   return true;
 }
 
@@ -123,25 +128,14 @@ bool CoverageWorld::move(std::size_t robot, std::uint8_t bearing) noexcept {
 }
 
 std::uint32_t CoverageWorld::view(std::size_t robot) noexcept {
-  const Cell from = robots_[robot].cell;
-  std::uint32_t fresh = 0;
-  for (const auto& ray : footprint_.rays()) {
-    const Cell c = from + ray.offset;
-    if (!map_.in_bounds(c) || viewed_[c] != 0 || !clear_ray(from, ray)) continue;
-    viewed_[c] = 1;
-    ++fresh;
-    // A disk views through walls, also free cells of components no robot is in: those do not
-    // count for coverage. (Line of sight never reaches another component.)
-    if (map_[c] == Occupancy::Free && (model_ == SensorModel::LineOfSight || is_viewable(c)))
-      ++viewed_free_;
-  }
-  viewed_cells_ += fresh;
-  return fresh;
+  Cells cells{*this, &viewed_};
+  return view_from(cells, robots_[robot].cell, footprint_.rays(), footprint_.between().data(),
+                   counts_);
 }
 
 void CoverageWorld::hash_state(kernel::TraceHash& hash) const noexcept {
-  for (const Pose& p : robots_) hash.add_i32(p.cell.x).add_i32(p.cell.y).add_u8(p.bearing);
-  hash.add_u64(viewed_cells_).add_u64(viewed_free_);
+  for (const Pose& p : robots_) hash_pose(hash, p.cell, p.bearing);
+  hash_counts(hash, counts_);
 }
 
 } // namespace antkit::uniform

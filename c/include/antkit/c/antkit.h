@@ -184,6 +184,16 @@ void antkit_buffon_behaviour_init(antkit_buffon_behaviour* state, uint64_t seed,
 antkit_wheel_command antkit_buffon_behaviour_step(antkit_buffon_behaviour* state,
                                                   const antkit_ir_reading* reading);
 
+/* The behaviour's state words that `antkit buffon`'s trace hash and a robot's log record after each
+ * step: r, w_l and w_r (Q15.16). Any pointer may be null. */
+void antkit_buffon_behaviour_state(const antkit_buffon_behaviour* state, int32_t* r,
+                                   int32_t* w_left, int32_t* w_right);
+
+/* Randomized Search (paper 000, Section 8.1; algorithms/buffon/checkpoints.hpp) is this behaviour
+ * started as visit 3, antkit_buffon_behaviour_init(&b, seed, 4, trial, 3), on a robot that marks
+ * the floor under its body and counts the marks it lays on unmarked floor: the estimate is that
+ * count times the mark's area. scripts/run-on-mcu.sh rs runs it through these functions. */
+
 /* Visit 2's pheromone detector (algorithms/buffon/detector.hpp): a leaky integrator of the
  * pheromone bit under the robot's centre with a hysteresis threshold. Each low-to-high transition
  * is one Buffon count. */
@@ -194,6 +204,31 @@ typedef struct antkit_buffon_detector {
 void antkit_buffon_detector_init(antkit_buffon_detector* state);
 /* Feeds one reading of the pheromone (non-zero: on the trail); 1 when it counts a crossing. */
 int antkit_buffon_detector_update(antkit_buffon_detector* state, int pheromone);
+
+/* ---- paper 004's Random Wanderer, for a robot that only steps and turns ------------------- */
+
+/* algorithms/uniform/step_turn.hpp: each step draws 0, 1 or 2 from the robot's keyed stream
+ * (seed, 6, trial, robot, 3); 0 turns left 45 degrees, 2 turns right 45 degrees, 1 moves one cell
+ * forward when the cell ahead is free and waits otherwise. Fed the front-free flags of `antkit
+ * cover --algo rw`'s robot, it emits that robot's commands (scripts/run-on-mcu.sh wanderer runs it
+ * through these functions). 64 bytes of state, copied freely. */
+typedef struct antkit_step_turn_wanderer {
+  uint64_t opaque[8];
+} antkit_step_turn_wanderer;
+
+enum {
+  ANTKIT_WANDER_WAIT = 0,
+  ANTKIT_WANDER_TURN_LEFT = 1,  /* 45 degrees counter-clockwise */
+  ANTKIT_WANDER_TURN_RIGHT = 2, /* 45 degrees clockwise */
+  ANTKIT_WANDER_FORWARD = 3     /* one cell ahead */
+};
+
+void antkit_step_turn_wanderer_init(antkit_step_turn_wanderer* state, uint64_t seed, uint64_t trial,
+                                    uint64_t robot);
+/* front_free non-zero: the cell ahead can be entered. Returns an ANTKIT_WANDER_* action. */
+int antkit_step_turn_wanderer_step(antkit_step_turn_wanderer* state, int front_free);
+/* The steps taken so far (with the last action, the whole state). */
+uint64_t antkit_step_turn_wanderer_steps(const antkit_step_turn_wanderer* state);
 
 /* ---- the trace hash (kernel/include/antkit/kernel/hash.hpp) --------------------------------- */
 

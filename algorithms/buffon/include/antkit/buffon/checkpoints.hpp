@@ -13,7 +13,8 @@
 // behaviour (visit 3 of the trial's streams) runs for the total length of both visits; every step
 // marks the raster cells (side 0.1, a choice: 1/10 of the body) whose centre lies under the body
 // (within 0.5 of the centre); the estimate at checkpoint k is the marked cell count times the
-// cell's area after a trail of length 2 k * step.
+// cell's area after a trail of length 2 k * step. The raster and the marking rule are
+// randomized_search.hpp's freestanding core, which the Cortex-M image runs too (issue 27).
 #include <antkit/buffon/measurement.hpp>
 #include <cstdint>
 #include <span>
@@ -58,5 +59,18 @@ struct RsCost {
 RsCost rs_cost_to_precision(const World& world, const TrialParams& params, std::uint64_t trial,
                             double area, std::uint32_t precision_millionths,
                             std::int64_t max_steps);
+
+// RS for a fixed number of steps (issue 27): visit 3 of `trial`'s streams for params.steps steps
+// (from the start: params.steps + 1 positions), marking as run_checkpoints does; the cells marked,
+// the walk's length and blocked steps, and its trace hash (randomized_search.hpp). What `antkit
+// rs-mcu-input --host` prints, and what the Cortex-M image's run_fixed_rs must reproduce.
+struct RsRun {
+  std::uint64_t cells = 0;
+  std::int64_t cell_raw = 0; // side, raw Q15.16
+  std::int64_t length_raw = 0;
+  std::uint64_t blocked = 0;
+  std::uint64_t hash = 0;
+};
+RsRun run_rs(const World& world, const TrialParams& params, std::uint64_t trial);
 
 } // namespace antkit::buffon

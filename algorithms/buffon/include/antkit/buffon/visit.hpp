@@ -2,6 +2,10 @@
 // One step of a Buffon visit (measurement.hpp, run_visit): sense, decide, move, measure, hash.
 // Freestanding (issue 27): the host's run_visit and the Cortex-M image (mcu/src/buffon_run.cpp)
 // call these same inline functions, so that the chip's trace hash is the host's by construction.
+// The behaviour and the hash are template parameters: the C++ cores (ExplorationBehaviour,
+// kernel::TraceHash: VisitParts) on the host, and on the chip also the C API's
+// (antkit_buffon_behaviour_*, antkit_trace_hash_*: mcu/src/c_api_parts.hpp), which then run these
+// same steps rather than a restatement of them.
 #include <antkit/buffon/exploration.hpp>
 #include <antkit/buffon/step_root.hpp>
 #include <antkit/buffon/world.hpp>
@@ -46,10 +50,23 @@ inline std::uint64_t hash_word(std::int32_t lo, std::int32_t hi) noexcept {
 }
 } // namespace detail
 
+// What a visit's steps are made of: a behaviour (Command step(const Observation&); r(), w_left(),
+// w_right() as Fx) made for visit `visit` of trial `trial`, and a trace hash (add_u64) started
+// from the seed. These are the C++ cores; the chip's C API parts have the same shape.
+struct VisitParts {
+  using Behaviour = ExplorationBehaviour;
+  using Hash = kernel::TraceHash;
+  static Behaviour behaviour(std::uint64_t seed, std::uint64_t trial, int visit) noexcept {
+    return Behaviour(VisitStreams(seed, kExperiment, trial, visit).behaviour);
+  }
+  static Hash hash(std::uint64_t seed) noexcept { return Hash(seed); }
+};
+
 // One step: the readings at `pose` (with the body's noise from `noise`), the behaviour's command,
 // the move (a blocked translation counts in `blocked`) and the step's exact length added to
 // `length_raw`. Returns the readings the behaviour acted on.
-inline Observation visit_step(const WorldCore& world, ExplorationBehaviour& behaviour, Pose& pose,
+template <class Behaviour>
+inline Observation visit_step(const WorldCore& world, Behaviour& behaviour, Pose& pose,
                               kernel::Stream& noise, std::int64_t& length_raw,
                               std::uint64_t& blocked) {
   const Observation obs = world.sense(pose, &noise);
@@ -65,12 +82,32 @@ inline Observation visit_step(const WorldCore& world, ExplorationBehaviour& beha
 }
 
 // The step's share of the trace hash: (x, y), (heading, r), (w_l, w_r) as 64-bit words.
-inline void hash_visit_step(kernel::TraceHash& hash, const Pose& pose,
-                            const ExplorationBehaviour& behaviour) {
+template <class Hash, class Behaviour>
+inline void hash_visit_step(Hash& hash, const Pose& pose, const Behaviour& behaviour) {
   hash.add_u64(detail::hash_word(pose.position.x.raw(), pose.position.y.raw()));
   hash.add_u64(
       detail::hash_word(static_cast<std::int32_t>(pose.heading.raw()), behaviour.r().raw()));
   hash.add_u64(detail::hash_word(behaviour.w_left().raw(), behaviour.w_right().raw()));
+}
+
+struct VisitEnd {
+  std::int64_t length_raw = 0;
+  std::uint64_t blocked = 0;
+};
+
+// A visit's steps from `pose` (run_visit's loop, measurement.hpp): `steps` times visit_step, then
+// on_step(position), then hash_visit_step; on_step(position) first at the start.
+template <class OnStep, class Behaviour, class Hash>
+VisitEnd run_visit_steps(const WorldCore& world, Behaviour& behaviour, kernel::Stream& noise,
+                         Pose pose, std::int64_t steps, Hash& hash, OnStep&& on_step) {
+  VisitEnd end;
+  on_step(pose.position);
+  for (std::int64_t s = 0; s < steps; ++s) {
+    (void)visit_step(world, behaviour, pose, noise, end.length_raw, end.blocked);
+    on_step(pose.position);
+    hash_visit_step(hash, pose, behaviour);
+  }
+  return end;
 }
 
 } // namespace antkit::buffon

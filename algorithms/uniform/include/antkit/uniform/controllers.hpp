@@ -33,6 +33,7 @@
 //   * A step along the path turns the robot to face it for free: A*'s moves are its steps.
 #include <antkit/kernel/random.hpp>
 #include <antkit/uniform/planner.hpp>
+#include <antkit/uniform/step_turn.hpp>
 #include <antkit/uniform/world.hpp>
 #include <cstddef>
 #include <cstdint>
@@ -40,21 +41,6 @@
 #include <vector>
 
 namespace antkit::uniform {
-
-enum class Action : std::uint8_t {
-  Wait = 0,      // stays put this tick
-  TurnLeft = 1,  // bearing + 1 (45 degrees counter-clockwise)
-  TurnRight = 2, // bearing - 1
-  Forward = 3,   // one cell along the bearing
-  Step = 4,      // face `bearing`, then one cell along it (A*)
-  Stop = 5,      // has no acceptable move (ceased, or nothing left to do)
-};
-
-struct Command {
-  Action action = Action::Wait;
-  std::uint8_t bearing = 0; // for Step
-  friend constexpr bool operator==(Command, Command) = default;
-};
 
 struct Observation {
   std::size_t robot = 0;
@@ -86,11 +72,10 @@ public:
   StepTurnWanderer(std::uint64_t seed, std::uint64_t trial, std::size_t robot = 0);
   Command step(const Observation& obs);
   // Draws taken from the stream so far (with the last command, the controller's whole state).
-  [[nodiscard]] std::uint64_t steps() const noexcept { return steps_; }
+  [[nodiscard]] std::uint64_t steps() const noexcept { return core_.steps(); }
 
 private:
-  kernel::Stream stream_;
-  std::uint64_t steps_ = 0;
+  StepTurnCore core_;
 };
 
 class PrimaryMovement {

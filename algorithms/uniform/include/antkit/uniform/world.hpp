@@ -18,6 +18,9 @@
 // free cell in view of a robot lies in the robot's 4-connected component; and a robot stands on,
 // and so views, every cell of its component it can reach (see can_step), which is all of it.
 //
+// The movement, view and hash rules for one robot are coverage_rules.hpp's, which the Cortex-M
+// image's one-robot world (step_turn_world.hpp) shares.
+//
 // Movement. A robot moves one cell along its bearing. The target must be on the map, Free, and
 // not occupied by another robot; a diagonal move also needs both side cells Free (no corner
 // cutting: the same rule by which a diagonal gap between two obstacles blocks line of sight, so a
@@ -29,6 +32,7 @@
 // precomputed list. The tests hold this against kernel::line_of_sight cell by cell.
 #include <antkit/kernel/grid.hpp>
 #include <antkit/kernel/hash.hpp>
+#include <antkit/uniform/coverage_rules.hpp>
 #include <antkit/uniform/scenario.hpp>
 #include <cstddef>
 #include <cstdint>
@@ -47,6 +51,7 @@ public:
     kernel::Cell offset;
     std::uint32_t first = 0;
     std::uint32_t count = 0;
+    friend constexpr kernel::Cell offset_of(const Ray& ray) noexcept { return ray.offset; }
   };
 
   // Throws kernel::InputError (where "sensor distance") unless 0 <= range <= kMaxSensorRange.
@@ -94,6 +99,7 @@ public:
   [[nodiscard]] std::size_t robot_count() const noexcept { return robots_.size(); }
   [[nodiscard]] const std::vector<Pose>& robots() const noexcept { return robots_; }
   [[nodiscard]] const Pose& robot(std::size_t i) const noexcept { return robots_[i]; }
+  [[nodiscard]] std::uint8_t bearing(std::size_t i) const noexcept { return robots_[i].bearing; }
 
   // The communal map: 1 where a cell has been viewed.
   [[nodiscard]] const kernel::Grid<std::uint8_t>& viewed() const noexcept { return viewed_; }
@@ -108,8 +114,8 @@ public:
     return l != 0 && viewable_label_[l] != 0;
   }
   [[nodiscard]] std::uint64_t viewable() const noexcept { return viewable_; }
-  [[nodiscard]] std::uint64_t viewed_free() const noexcept { return viewed_free_; }
-  [[nodiscard]] bool complete() const noexcept { return viewed_free_ == viewable_; }
+  [[nodiscard]] std::uint64_t viewed_free() const noexcept { return counts_.free; }
+  [[nodiscard]] bool complete() const noexcept { return counts_.free == viewable_; }
 
   [[nodiscard]] bool is_free(kernel::Cell c) const noexcept {
     return map_.in_bounds(c) && map_[c] == kernel::Occupancy::Free;
@@ -148,6 +154,7 @@ public:
   void hash_state(kernel::TraceHash& hash) const noexcept;
 
 private:
+  struct Cells; // coverage_rules.hpp's storage over the grids below
   [[nodiscard]] bool clear_ray(kernel::Cell from, const SensorFootprint::Ray& ray) const noexcept;
 
   kernel::OccupancyGrid map_;
@@ -160,8 +167,7 @@ private:
   FreeComponents components_;
   std::vector<std::uint8_t> viewable_label_;
   std::uint64_t viewable_ = 0;
-  std::uint64_t viewed_cells_ = 0;
-  std::uint64_t viewed_free_ = 0;
+  ViewCounts counts_; // every viewed cell, and the viewed free cells that count
 };
 
 } // namespace antkit::uniform

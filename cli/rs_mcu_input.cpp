@@ -1,0 +1,130 @@
+// `antkit rs-mcu-input` (plumbing for scripts/run-on-mcu.sh rs, issue 27): one Randomized Search
+// walk (paper 000, Section 8.1; buffon/checkpoints.hpp) for the Cortex-M image
+// (buffon/rs_mcu_input.hpp). The arena is read and built here, with CGAL, as `antkit buffon`
+// builds it, and travels as its Q15.16 walls; the options are checked as `antkit buffon` checks
+// them (exit 2, located), and a walk whose memory plan exceeds the chip's arena is refused with
+// the plan and the limit in the message.
+//
+//   antkit rs-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X] --out FILE
+//   antkit rs-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X] --host
+//
+// With --host it writes no input and runs the same walk on the host instead
+// (buffon::run_rs: run_visit over the host's World, the raster in a vector), printing
+// {"steps", "seed", "cells", "cell_raw", "area", "length_raw", "blocked", "hash"}: the numbers the
+// chip's JSON must repeat. (RS has no command of its own; this is the host side of the check.)
+#include "buffon_options.hpp"
+#include "commands.hpp"
+#include "output.hpp"
+
+#include <antkit/buffon/checkpoints.hpp>
+#include <antkit/buffon/measurement.hpp>
+#include <antkit/buffon/rs_mcu_input.hpp>
+#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/geometry/fixed_convert.hpp>
+#include <antkit/kernel/hash.hpp>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+
+using antkit::kernel::InputError;
+namespace buffon = antkit::buffon;
+
+struct RsInputCommand {
+  std::string arena, out;
+  std::int64_t steps = 0;
+  std::uint64_t seed = 1;
+  double noise = 0.0;
+  bool host = false;
+};
+
+void put(std::vector<std::uint8_t>& bytes, std::uint64_t v, int n) {
+  for (int i = 0; i < n; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+}
+
+void run(const RsInputCommand& c) {
+  if (c.steps < 1 || c.steps > 10000000)
+    throw InputError("--steps", "the steps must be in [1, 10000000]");
+  antkit::cli::check_buffon_body(0.1, c.noise);
+  if (c.host == !c.out.empty())
+    throw InputError("--out", "give either --out FILE (the chip's input) or --host");
+  const antkit::geometry::Arena arena = antkit::cli::read_buffon_arena(c.arena);
+  buffon::BodyParams body;
+  body.noise = antkit::geometry::fixed_from_double<antkit::kernel::Fx>(c.noise, "--noise");
+  const buffon::World world(arena.walls_fx(), body); // refuses as `antkit buffon` does
+  if (c.host) {
+    buffon::TrialParams params;
+    params.seed = c.seed;
+    params.steps = c.steps;
+    const buffon::RsRun r = buffon::run_rs(world, params, 0);
+    nlohmann::json j;
+    j["steps"] = c.steps;
+    j["seed"] = c.seed;
+    j["cells"] = r.cells;
+    j["cell_raw"] = r.cell_raw;
+    const double cell = static_cast<double>(r.cell_raw) / 65536.0;
+    j["area"] = static_cast<double>(r.cells) * cell * cell;
+    j["length_raw"] = r.length_raw;
+    j["blocked"] = r.blocked;
+    j["hash"] = antkit::kernel::hash_hex(r.hash);
+    antkit::cli::emit(j, antkit::cli::Format::Json, std::cout);
+    return;
+  }
+  buffon::WorldLayout layout;
+  (void)buffon::WorldCore::plan(world.walls(), body, layout); // None: the world was built
+  buffon::ByteRasterCore raster;
+  if (!raster.init(layout.lower, layout.upper, buffon::kRsCellRaw))
+    throw InputError(c.arena, "RS's raster has more than 2^32 cells");
+  const std::uint64_t walls = world.walls().size();
+  if (walls > buffon::kMcuArenaBytes / buffon::kMcuWallBytes)
+    throw InputError(c.arena, std::to_string(walls) + " walls: more than the chip's input takes (" +
+                                  buffon::describe(buffon::McuBuffonError::Walls) + ")");
+  const std::uint64_t need = buffon::mcu_rs_bytes(walls, layout, raster.cells());
+  if (need > buffon::kMcuArenaBytes)
+    throw InputError(c.arena, "too large for the chip: the walk needs " + std::to_string(need) +
+                                  " bytes (walls " +
+                                  std::to_string(buffon::mcu_walls_bytes(walls)) +
+                                  " B, world buckets " + std::to_string(layout.bytes()) +
+                                  " B, RS raster " + std::to_string(raster.cells()) +
+                                  " B: one per 0.1 x 0.1 cell); the chip's arena holds " +
+                                  std::to_string(buffon::kMcuArenaBytes) +
+                                  " bytes (112 KiB of the STM32F405's 128 KiB of SRAM); use an "
+                                  "arena of fewer walls or a smaller box");
+  std::vector<std::uint8_t> bytes(std::begin(buffon::kMcuRsMagic), std::end(buffon::kMcuRsMagic));
+  put(bytes, c.seed, 8);
+  put(bytes, static_cast<std::uint64_t>(c.steps), 8);
+  put(bytes, static_cast<std::uint32_t>(body.noise.raw()), 4);
+  put(bytes, static_cast<std::uint32_t>(body.speed.raw()), 4);
+  put(bytes, walls, 4);
+  put(bytes, 0, 4);
+  for (const auto& w : world.walls())
+    for (const std::int32_t v : {w.a.x.raw(), w.a.y.raw(), w.b.x.raw(), w.b.y.raw()})
+      put(bytes, static_cast<std::uint32_t>(v), 4);
+  antkit::geometry::write_file_atomic(
+      c.out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  std::cout << c.out << ": " << bytes.size() << " bytes, " << walls << " walls, plan " << need
+            << " of " << buffon::kMcuArenaBytes << " bytes\n";
+}
+
+void register_rs_mcu_input(CLI::App& app) {
+  auto c = std::make_shared<RsInputCommand>();
+  auto* sub = app.add_subcommand("rs-mcu-input",
+                                 "Plumbing: one Randomized Search walk's input for the Cortex-M "
+                                 "image (scripts/run-on-mcu.sh rs; buffon/rs_mcu_input.hpp), or "
+                                 "with --host the same walk run on the host");
+  sub->add_option("--arena", c->arena, "A named arena spec (square:area=25, ...) or FILE.wkt")
+      ->required();
+  sub->add_option("--steps", c->steps, "Steps of the walk")->required();
+  sub->add_option("--seed", c->seed, "Seed of the keyed streams (default 1)");
+  sub->add_option("--noise", c->noise, "IR sensor noise amplitude in [0, 1] (default 0)");
+  sub->add_option("--out", c->out, "The input file to write");
+  sub->add_flag("--host", c->host, "Run the walk on the host and print its JSON instead");
+  sub->callback([c] { run(*c); });
+}
+
+const antkit::cli::Registration reg{"rs-mcu-input", &register_rs_mcu_input};
+
+} // namespace

@@ -1,0 +1,150 @@
+// `antkit wanderer-mcu-input` (plumbing for scripts/run-on-mcu.sh wanderer, issue 27): one
+// step-turn wanderer run's input for the Cortex-M image (uniform/wanderer_mcu_input.hpp), with
+// `antkit cover --algo rw --robots 1`'s options: the map is read (or generated), the robot placed
+// and the world built and checked here as `antkit cover` does (exit 2, located); the viewable
+// cells (the robot's 4-connected free component) and the sensor's footprint (SensorFootprint) are
+// computed here and sent with the map's Free cells as bits. A run whose bits and footprint exceed
+// the chip's arena is refused with the sizes and the limit in the message.
+//
+//   antkit wanderer-mcu-input (--map FILE | --size WxH --density P) [--seed S] [--trial K]
+//                             [--sensor R] [--limit T] --out FILE
+#include "commands.hpp"
+
+#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <antkit/maps/map_io.hpp>
+#include <antkit/uniform/scenario.hpp>
+#include <antkit/uniform/wanderer_mcu_input.hpp>
+#include <antkit/uniform/world.hpp>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+
+using antkit::kernel::InputError;
+namespace uniform = antkit::uniform;
+
+// `antkit cover`'s bounds for generated maps.
+constexpr std::int32_t kMaxSide = 8192;
+constexpr std::int64_t kMaxCells = std::int64_t{1} << 26;
+
+struct WandererInputCommand {
+  std::string map, size, density, out;
+  std::uint64_t seed = 1, trial = 0;
+  std::int64_t sensor = 5;
+  std::int64_t limit = -1; // default: 10 * W * H
+};
+
+void put(std::vector<std::uint8_t>& bytes, std::uint64_t v, int n) {
+  for (int i = 0; i < n; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+}
+
+void run(const WandererInputCommand& o) {
+  if (o.map.empty() == o.size.empty())
+    throw InputError("", "give either --map FILE or --size WxH --density P");
+  if (!o.map.empty() && !o.density.empty())
+    throw InputError("--density", "a map file has its own obstacles; --density goes with --size");
+  if (!o.size.empty() && o.density.empty())
+    throw InputError("--density", "--size needs an obstacle density, such as --density 0.2");
+  if (o.sensor < 0 || o.sensor > uniform::kMaxSensorRange)
+    throw InputError("--sensor", "expected a sensor distance in [0, " +
+                                     std::to_string(uniform::kMaxSensorRange) + "] cells, not " +
+                                     std::to_string(o.sensor));
+  if (o.limit < -1) throw InputError("--limit", "expected a number of ticks >= 0");
+  antkit::kernel::OccupancyGrid grid;
+  std::optional<antkit::kernel::Cell> start;
+  if (!o.map.empty()) {
+    auto loaded = antkit::maps::load_map(o.map);
+    grid = std::move(loaded.cells);
+    start = loaded.start;
+  } else {
+    const auto [w, h] = uniform::parse_size(o.size, kMaxSide);
+    if (std::int64_t{w} * h > kMaxCells)
+      throw InputError("--size", "at most " + std::to_string(kMaxCells) + " cells, not " +
+                                     std::to_string(std::int64_t{w} * h));
+    grid = uniform::random_obstacles(w, h, uniform::parse_density_ppm(o.density), o.seed, o.trial);
+  }
+  const auto poses = uniform::place_robots(grid, 1, start, o.seed, o.trial);
+  const std::int64_t cells = std::int64_t{grid.width()} * grid.height();
+  const auto limit = static_cast<std::uint64_t>(o.limit >= 0 ? o.limit : 10 * cells);
+  const uniform::CoverageWorld world(grid, poses, static_cast<std::int32_t>(o.sensor));
+  const auto& rays = world.footprint().rays();
+  const auto& between = world.footprint().between();
+
+  uniform::McuWandererRun run;
+  run.width = grid.width(), run.height = grid.height();
+  run.rays = static_cast<std::uint32_t>(rays.size());
+  run.between = static_cast<std::uint32_t>(between.size());
+  const uniform::McuWandererPlan plan = uniform::plan_mcu_wanderer(run);
+  if (grid.width() > 32767 || grid.height() > 32767 || plan.total > uniform::kMcuWandererArenaBytes)
+    throw InputError(o.map.empty() ? "--size" : o.map,
+                     "too large for the chip: the run needs " + std::to_string(plan.total) +
+                         " bytes (the map's free cells and the viewed cells, " +
+                         std::to_string(uniform::StepTurnWorld::bytes(run.width, run.height)) +
+                         " B each for " + std::to_string(grid.width()) + " x " +
+                         std::to_string(grid.height()) + " cells; the sensor's " +
+                         std::to_string(rays.size()) + " rays and " +
+                         std::to_string(between.size()) +
+                         " cells between, 12 and 4 B each); the chip's arena holds " +
+                         std::to_string(uniform::kMcuWandererArenaBytes) +
+                         " bytes (112 KiB of the STM32F405's 128 KiB of SRAM)");
+  std::vector<std::uint8_t> bytes(std::begin(uniform::kMcuWandererMagic),
+                                  std::end(uniform::kMcuWandererMagic));
+  const uniform::Pose& pose = world.robot(0);
+  put(bytes, o.seed, 8);
+  put(bytes, o.trial, 8);
+  put(bytes, limit, 8);
+  put(bytes, world.viewable(), 8);
+  put(bytes, static_cast<std::uint32_t>(grid.width()), 4);
+  put(bytes, static_cast<std::uint32_t>(grid.height()), 4);
+  put(bytes, static_cast<std::uint32_t>(pose.cell.x), 4);
+  put(bytes, static_cast<std::uint32_t>(pose.cell.y), 4);
+  put(bytes, pose.bearing, 4);
+  put(bytes, static_cast<std::uint64_t>(o.sensor), 4);
+  put(bytes, rays.size(), 4);
+  put(bytes, between.size(), 4);
+  std::vector<std::uint8_t> bits(uniform::StepTurnWorld::bytes(run.width, run.height), 0);
+  for (std::size_t k = 0; k < grid.size(); ++k)
+    if (grid.cells()[k] == antkit::kernel::Occupancy::Free)
+      bits[k / 8] = static_cast<std::uint8_t>(bits[k / 8] | (1u << (k % 8)));
+  bytes.insert(bytes.end(), bits.begin(), bits.end());
+  for (const auto& ray : rays) {
+    put(bytes, static_cast<std::uint16_t>(ray.offset.x), 2);
+    put(bytes, static_cast<std::uint16_t>(ray.offset.y), 2);
+    put(bytes, ray.first, 4);
+    put(bytes, ray.count, 4);
+  }
+  for (const auto& c : between) {
+    put(bytes, static_cast<std::uint16_t>(c.x), 2);
+    put(bytes, static_cast<std::uint16_t>(c.y), 2);
+  }
+  antkit::geometry::write_file_atomic(
+      o.out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  std::cout << o.out << ": " << bytes.size() << " bytes, " << grid.width() << " x " << grid.height()
+            << " cells, plan " << plan.total << " of " << uniform::kMcuWandererArenaBytes
+            << " bytes\n";
+}
+
+void register_wanderer_mcu_input(CLI::App& app) {
+  auto o = std::make_shared<WandererInputCommand>();
+  auto* sub = app.add_subcommand(
+      "wanderer-mcu-input", "Plumbing: one step-turn wanderer run's input for the Cortex-M image "
+                            "(scripts/run-on-mcu.sh wanderer; uniform/wanderer_mcu_input.hpp)");
+  sub->add_option("--map", o->map, "A map file (.map, .yaml, .txt or .ascii)");
+  sub->add_option("--size", o->size, "A generated W x H grid, e.g. 100x100");
+  sub->add_option("--density", o->density, "Obstacle density of the generated grid");
+  sub->add_option("--seed", o->seed, "Seed of the keyed random streams (default 1)");
+  sub->add_option("--trial", o->trial, "Trial number of the keyed random streams (default 0)");
+  sub->add_option("--sensor", o->sensor, "Sensor distance in cells (default 5)");
+  sub->add_option("--limit", o->limit, "Time limit in ticks (default 10 * W * H)");
+  sub->add_option("--out", o->out, "The input file to write")->required();
+  sub->callback([o] { run(*o); });
+}
+
+const antkit::cli::Registration reg{"wanderer-mcu-input", &register_wanderer_mcu_input};
+
+} // namespace
