@@ -24,7 +24,8 @@ TEST_CASE("StepTurnWorld with StepTurnCore is run_coverage's random wanderer for
     const auto trial = *rc::gen::inRange<std::uint64_t>(0, 4);
     const auto sensor = *rc::gen::inRange(0, 6);
     const auto limit = *rc::gen::inRange<std::uint64_t>(0, 4000);
-    RC_PRE(obstacle_count(w, h, ppm) < static_cast<std::uint64_t>(w) * h);
+    RC_PRE(obstacle_count(w, h, ppm) <
+           static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h));
     const kernel::OccupancyGrid map = random_obstacles(w, h, ppm, seed, trial);
     const std::vector<Pose> poses = place_robots(map, 1, std::nullopt, seed, trial);
     CoverageWorld host(map, poses, sensor);
