@@ -5,9 +5,11 @@
 // Our tables add coordinated A* and frontier coverage, and how much frontier saves against A*
 // and coordinated A*. Writes DIR/uniform_tables.csv and DIR/uniform_tables.md (atomically) and
 // prints a summary. The experiment and the choices behind it are documented in
-// experiments/include/antkit/experiments/uniform_tables.hpp.
+// experiments/include/antkit/experiments/uniform_tables.hpp. Under `mpirun` the runs split across
+// the ranks (cli/ranks.hpp) and rank 0 writes the same files.
 #include "commands.hpp"
 #include "output.hpp"
+#include "ranks.hpp"
 
 #include <antkit/experiments/uniform_tables.hpp>
 #include <antkit/kernel/hash.hpp>
@@ -15,6 +17,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace {
@@ -35,7 +38,8 @@ struct ExperimentOptions {
   Format format = Format::Table;
 };
 
-nlohmann::json run_experiment(const ExperimentOptions& o) {
+// The summary, on rank 0 (nothing on the other ranks under mpirun).
+std::optional<nlohmann::json> run_experiment(const ExperimentOptions& o) {
   if (o.runs < 1 || o.runs > 1000)
     throw InputError("--runs", "expected 1 to 1000 runs, not " + std::to_string(o.runs));
   if (o.sensor < 0 || o.sensor > uniform::kMaxSensorRange)
@@ -59,9 +63,14 @@ nlohmann::json run_experiment(const ExperimentOptions& o) {
   const std::filesystem::path dir(o.out);
   if (!std::filesystem::is_directory(dir))
     throw InputError("--out", "'" + o.out + "' is not a directory");
-  antkit::algorithms::Runner runner;
-  runner.threads = static_cast<unsigned>(o.jobs);
-  const ex::TablesSummary summary = ex::write_tables(ex::run_tables(c, runner), c, dir);
+  ex::TablesSummary summary;
+  const int ranks = antkit::cli::run_on_ranks(o.out, static_cast<unsigned>(o.jobs), {},
+                                              [&](const antkit::algorithms::Runner& runner) {
+                                                auto rows = ex::run_tables(c, runner);
+                                                if (runner.root())
+                                                  summary = ex::write_tables(rows, c, dir);
+                                              });
+  if (ranks == 0) return std::nullopt;
 
   nlohmann::json j;
   j["csv"] = summary.csv.string();
@@ -87,6 +96,7 @@ nlohmann::json run_experiment(const ExperimentOptions& o) {
   }
   j["rows"] = table;
   j["hash"] = antkit::kernel::hash_hex(summary.hash);
+  j["ranks"] = ranks;
   return j;
 }
 
@@ -104,7 +114,9 @@ void register_cover_experiment(CLI::App& app) {
   sub->add_option("--jobs", o->jobs, "Threads (default 1); the results do not depend on it");
   sub->add_option("--out", o->out, "Directory for uniform_tables.csv and .md (default .)");
   antkit::cli::add_format_option(*sub, o->format);
-  sub->callback([o] { antkit::cli::emit(run_experiment(*o), o->format, std::cout); });
+  sub->callback([o] {
+    if (const auto j = run_experiment(*o)) antkit::cli::emit(*j, o->format, std::cout);
+  });
 }
 
 const antkit::cli::Registration reg{"cover-experiment", &register_cover_experiment};

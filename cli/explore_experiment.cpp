@@ -4,16 +4,19 @@
 //
 // Writes DIR/table2.csv, DIR/table2.md, DIR/table3.csv, DIR/table3.md (atomically) and prints a
 // summary. The experiment is documented in experiments/include/antkit/experiments/
-// explore_tables.hpp.
+// explore_tables.hpp. Under `mpirun` the runs split across the ranks (cli/ranks.hpp) and rank 0
+// writes the same files.
 #include "commands.hpp"
 #include "output.hpp"
+#include "ranks.hpp"
 
 #include <antkit/experiments/explore_tables.hpp>
 #include <antkit/kernel/hash.hpp>
-#include <antkit/kernel/input_error.hpp>
+#include <array>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -27,18 +30,20 @@ struct Options {
   antkit::cli::Format format = antkit::cli::Format::Table;
 };
 
-nlohmann::json run(const Options& o) {
+// The summary, on rank 0 (nothing on the other ranks under mpirun).
+std::optional<nlohmann::json> run(const Options& o) {
   ex::ExploreTables t;
-  try {
-    t = ex::run_explore_tables(o.seed, antkit::algorithms::Runner{});
-  } catch (const std::runtime_error& e) {
-    throw antkit::cli::CheckFailed(e.what());
-  }
-  std::error_code ec;
-  std::filesystem::create_directories(o.out, ec);
-  if (ec || !std::filesystem::is_directory(o.out))
-    throw antkit::kernel::InputError("--out", "cannot make the directory '" + o.out + "'");
-  const auto files = ex::write_explore_tables(t, o.out);
+  std::array<std::filesystem::path, 4> files;
+  const int ranks =
+      antkit::cli::run_on_ranks(o.out, 1, {}, [&](const antkit::algorithms::Runner& runner) {
+        try {
+          t = ex::run_explore_tables(o.seed, runner);
+        } catch (const std::runtime_error& e) {
+          throw antkit::cli::CheckFailed(e.what());
+        }
+        if (runner.root()) files = ex::write_explore_tables(t, o.out);
+      });
+  if (ranks == 0) return std::nullopt;
 
   nlohmann::json rows = nlohmann::json::array();
   for (std::size_t e = 0; e < ex::kExploreEnvironments.size(); ++e) {
@@ -60,6 +65,7 @@ nlohmann::json run(const Options& o) {
   j["files"] = {files[0].string(), files[1].string(), files[2].string(), files[3].string()};
   j["table3"] = std::move(rows);
   j["hash"] = antkit::kernel::hash_hex(t.hash);
+  j["ranks"] = ranks;
   return j;
 }
 
@@ -71,7 +77,9 @@ void register_explore_tables(CLI::App& app) {
   sub->add_option("--out", o->out, "Directory for table2/table3 .csv and .md")->default_val(".");
   sub->add_option("--seed", o->seed, "Seed of the obstacle positions")->default_val(1);
   antkit::cli::add_format_option(*sub, o->format);
-  sub->callback([o] { antkit::cli::emit(run(*o), o->format, std::cout); });
+  sub->callback([o] {
+    if (const auto j = run(*o)) antkit::cli::emit(*j, o->format, std::cout);
+  });
 }
 
 const antkit::cli::Registration reg{"explore-tables", &register_explore_tables};

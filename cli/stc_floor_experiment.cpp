@@ -7,6 +7,7 @@
 // grid. --quick: 2 boards per level and boards up to 10 x 10 cells (the default: 6 and 16).
 #include "commands.hpp"
 #include "output.hpp"
+#include "ranks.hpp"
 
 #include <antkit/experiments/stc_floor.hpp>
 #include <antkit/kernel/hash.hpp>
@@ -36,12 +37,15 @@ void run(const FloorExperimentCommand& c) {
     p.trials = 2;
     p.max_board = 10;
   }
-  antkit::cli::make_out_dir(c.out);
-  antkit::algorithms::Runner runner;
-  runner.threads = static_cast<unsigned>(c.threads);
-  runner.progress = antkit::cli::stage_progress("stc-floor-experiment");
-  const auto curves = ex::run_floor_curves(p, runner);
-  ex::write_floor_curves(curves, c.out);
+  ex::FloorCurves curves;
+  const int ranks = antkit::cli::run_on_ranks(c.out, static_cast<unsigned>(c.threads),
+                                              antkit::cli::stage_progress("stc-floor-experiment"),
+                                              [&](const antkit::algorithms::Runner& runner) {
+                                                curves = ex::run_floor_curves(p, runner);
+                                                if (runner.root())
+                                                  ex::write_floor_curves(curves, c.out);
+                                              });
+  if (ranks == 0) return; // another rank than 0: rank 0 prints
   nlohmann::json j;
   j["out"] = c.out;
   j["trials_per_level"] = p.trials;
@@ -55,6 +59,7 @@ void run(const FloorExperimentCommand& c) {
                       {"capped", b.capped}});
   j["boards"] = std::move(boards);
   j["hash"] = antkit::kernel::hash_hex(curves.hash);
+  j["ranks"] = ranks;
   antkit::cli::emit(j, c.format, std::cout);
 }
 

@@ -4,6 +4,7 @@
 # rank 0, which alone writes.
 #   cmake -DANTKIT=... -DMPIEXEC=... -DWORK=... -DARGS="a|b|..." -DSTATUS=0|1 -DMIN_FILES=N
 #         -P identical.cmake
+# With -DMAKE_OUT=1 the output directories are made first (for a command whose --out must exist).
 # STATUS is the exit status every run must have (1: the campaign plants a failing rule, so that
 # shrunk failures are found on every rank and gathered); ARGS must include --format json, whose
 # "ranks" rank 0 reports.
@@ -24,6 +25,9 @@ function(expect_status status what err)
   endif()
 endfunction()
 
+if(MAKE_OUT)
+  file(MAKE_DIRECTORY ${WORK}/plain ${WORK}/ranks1 ${WORK}/ranks2 ${WORK}/ranks4)
+endif()
 execute_process(COMMAND ${ANTKIT} ${ARGS} --out ${WORK}/plain RESULT_VARIABLE status
                 OUTPUT_QUIET ERROR_VARIABLE err)
 expect_status("${status}" "the run without MPI" "${err}")
