@@ -19,6 +19,7 @@
 #include <antkit/uniform/scenario.hpp>
 #include <antkit/uniform/world.hpp>
 #include <chrono>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <utility>
@@ -50,6 +51,14 @@ bool pseudo(const std::string& variant) {
 
 std::string cell_text(Cell c) {
   return std::to_string(c.x) + "," + std::to_string(c.y);
+}
+
+// rapidcheck's generation context is process-wide, not per thread: campaigns that run at once in
+// one process (several ranks simulated by threads, or a user's own threads) take turns to
+// generate and shrink.
+std::mutex& generation_lock() {
+  static std::mutex lock;
+  return lock;
 }
 
 rc::Random case_random(const Options& o, std::uint64_t index) {
@@ -342,6 +351,7 @@ Broken check_with_extra(const F& family, const Options& o, const typename F::Val
 
 template <class F>
 Failure shrink(const F& family, const Options& o, std::uint64_t index, Broken broken) {
+  const std::lock_guard<std::mutex> held(generation_lock());
   auto shrinkable = F::generator(o)(case_random(o, index), kSize);
   typename F::Context x;
   std::uint64_t ignored = 0, steps = 0;
@@ -410,11 +420,15 @@ Result run_family(const F& family, const Options& o, const Ranks& ranks, const P
     // rapidcheck's generation context is process-wide, so this rank's cases are generated here,
     // in order, and only checked in parallel.
     values.clear();
-    for (std::uint64_t k = 0; k < algorithms::units_on_rank(runner, span); ++k) {
-      try {
-        values.emplace_back(gen(case_random(o, o.first + done + rank + k * step), kSize).value());
-      } catch (const rc::GenerationFailure&) {
-        values.emplace_back(std::nullopt); // a generator gave up (a suchThat out of tries): vacuous
+    { // (not held through run_units: its gather is a collective the other ranks must reach)
+      const std::lock_guard<std::mutex> held(generation_lock());
+      for (std::uint64_t k = 0; k < algorithms::units_on_rank(runner, span); ++k) {
+        try {
+          values.emplace_back(gen(case_random(o, o.first + done + rank + k * step), kSize).value());
+        } catch (const rc::GenerationFailure&) {
+          values.emplace_back(
+              std::nullopt); // a generator gave up (a suchThat out of tries): vacuous
+        }
       }
     }
     // A unit's verdict: the moves it checked, whether it was vacuous, and what broke.
