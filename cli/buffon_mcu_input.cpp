@@ -9,6 +9,7 @@
 #include "buffon_options.hpp"
 #include "commands.hpp"
 
+#include <antkit/buffon/mcu_encode.hpp>
 #include <antkit/buffon/mcu_input.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/geometry/atomic_file.hpp>
@@ -31,10 +32,6 @@ struct McuInputCommand {
   double width = 0.1, noise = 0.0;
 };
 
-void put(std::vector<std::uint8_t>& bytes, std::uint64_t v, int n) {
-  for (int i = 0; i < n; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-}
-
 void run(const McuInputCommand& c) {
   antkit::cli::check_buffon_run_size(1, c.steps, 1);
   antkit::cli::check_buffon_body(c.width, c.noise);
@@ -43,50 +40,17 @@ void run(const McuInputCommand& c) {
   body.noise = antkit::geometry::fixed_from_double<antkit::kernel::Fx>(c.noise, "--noise");
   const auto width = antkit::geometry::fixed_from_double<antkit::kernel::Fx>(c.width, "--width");
   const buffon::World world(arena.walls_fx(), body); // refuses as `antkit buffon` does
-  buffon::PheromoneRaster raster(world.lower(), world.upper(), width);
-  buffon::WorldLayout layout;
-  (void)buffon::WorldCore::plan(world.walls(), body, layout); // None: the world was built
-  const std::uint64_t walls = world.walls().size();
-  if (walls > buffon::kMcuArenaBytes / buffon::kMcuWallBytes)
-    throw InputError(c.arena, std::to_string(walls) + " walls: more than the chip's input takes (" +
-                                  buffon::describe(buffon::McuBuffonError::Walls) + ")");
-  const buffon::FixedTrialPlan plan = buffon::plan_fixed_trial(layout, raster, c.steps);
-  const std::uint64_t need = buffon::mcu_buffon_bytes(walls, plan);
-  if (need > buffon::kMcuArenaBytes) {
-    const std::uint64_t fixed = buffon::mcu_walls_bytes(walls) + plan.trail_at;
-    const std::string parts = "walls " + std::to_string(buffon::mcu_walls_bytes(walls)) +
-                              " B, world buckets " + std::to_string(plan.world) +
-                              " B, pheromone raster " + std::to_string(plan.raster) +
-                              " B, visit 1's trail " + std::to_string(plan.trail) +
-                              " B, crossing index at most " + std::to_string(plan.counter) + " B";
-    const std::string limit = "the chip's arena holds " + std::to_string(buffon::kMcuArenaBytes) +
-                              " bytes (112 KiB of the STM32F405's 128 KiB of SRAM)";
-    // 28 bytes per step: 8 of trail, at most 16 of crossing index and 4 of stamp.
-    constexpr std::uint64_t per_step = 28;
-    if (fixed + 64 * per_step > buffon::kMcuArenaBytes)
-      throw InputError(c.arena, "too large for the chip: the trial needs " + std::to_string(need) +
-                                    " bytes (" + parts + "); " + limit +
-                                    "; use an arena of fewer walls or a wider --width");
-    const std::uint64_t room = (buffon::kMcuArenaBytes - fixed - 4 * 1024) / per_step;
-    throw InputError("--steps", "too many steps for the chip: the trial needs " +
-                                    std::to_string(need) + " bytes (" + parts + "); " + limit +
-                                    "; about " + std::to_string(room) +
-                                    " steps per visit fit this arena");
+  buffon::McuInput in;
+  try {
+    in = buffon::mcu_buffon_input(world, width, c.seed, c.steps);
+  } catch (const InputError& e) {
+    if (e.where() != "arena") throw;
+    throw InputError(c.arena, e.message());
   }
-  std::vector<std::uint8_t> bytes(std::begin(buffon::kMcuBuffonMagic),
-                                  std::end(buffon::kMcuBuffonMagic));
-  put(bytes, c.seed, 8);
-  put(bytes, static_cast<std::uint64_t>(c.steps), 8);
-  put(bytes, static_cast<std::uint32_t>(width.raw()), 4);
-  put(bytes, static_cast<std::uint32_t>(body.noise.raw()), 4);
-  put(bytes, static_cast<std::uint32_t>(body.speed.raw()), 4);
-  put(bytes, walls, 4);
-  for (const auto& w : world.walls())
-    for (const std::int32_t v : {w.a.x.raw(), w.a.y.raw(), w.b.x.raw(), w.b.y.raw()})
-      put(bytes, static_cast<std::uint32_t>(v), 4);
+  const auto& bytes = in.bytes;
   antkit::geometry::write_file_atomic(
       c.out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-  std::cout << c.out << ": " << bytes.size() << " bytes, " << walls << " walls, plan " << need
+  std::cout << c.out << ": " << bytes.size() << " bytes, " << in.walls << " walls, plan " << in.plan
             << " of " << buffon::kMcuArenaBytes << " bytes\n";
 }
 

@@ -17,6 +17,7 @@
 #include "output.hpp"
 
 #include <antkit/buffon/checkpoints.hpp>
+#include <antkit/buffon/mcu_encode.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/rs_mcu_input.hpp>
 #include <antkit/geometry/atomic_file.hpp>
@@ -40,10 +41,6 @@ struct RsInputCommand {
   double noise = 0.0;
   bool host = false;
 };
-
-void put(std::vector<std::uint8_t>& bytes, std::uint64_t v, int n) {
-  for (int i = 0; i < n; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-}
 
 void run(const RsInputCommand& c) {
   if (c.steps < 1 || c.steps > 10000000)
@@ -73,39 +70,17 @@ void run(const RsInputCommand& c) {
     antkit::cli::emit(j, antkit::cli::Format::Json, std::cout);
     return;
   }
-  buffon::WorldLayout layout;
-  (void)buffon::WorldCore::plan(world.walls(), body, layout); // None: the world was built
-  buffon::ByteRasterCore raster;
-  if (!raster.init(layout.lower, layout.upper, buffon::kRsCellRaw))
-    throw InputError(c.arena, "RS's raster has more than 2^32 cells");
-  const std::uint64_t walls = world.walls().size();
-  if (walls > buffon::kMcuArenaBytes / buffon::kMcuWallBytes)
-    throw InputError(c.arena, std::to_string(walls) + " walls: more than the chip's input takes (" +
-                                  buffon::describe(buffon::McuBuffonError::Walls) + ")");
-  const std::uint64_t need = buffon::mcu_rs_bytes(walls, layout, raster.cells());
-  if (need > buffon::kMcuArenaBytes)
-    throw InputError(c.arena, "too large for the chip: the walk needs " + std::to_string(need) +
-                                  " bytes (walls " +
-                                  std::to_string(buffon::mcu_walls_bytes(walls)) +
-                                  " B, world buckets " + std::to_string(layout.bytes()) +
-                                  " B, RS raster " + std::to_string(raster.cells()) +
-                                  " B: one per 0.1 x 0.1 cell); the chip's arena holds " +
-                                  std::to_string(buffon::kMcuArenaBytes) +
-                                  " bytes (112 KiB of the STM32F405's 128 KiB of SRAM); use an "
-                                  "arena of fewer walls or a smaller box");
-  std::vector<std::uint8_t> bytes(std::begin(buffon::kMcuRsMagic), std::end(buffon::kMcuRsMagic));
-  put(bytes, c.seed, 8);
-  put(bytes, static_cast<std::uint64_t>(c.steps), 8);
-  put(bytes, static_cast<std::uint32_t>(body.noise.raw()), 4);
-  put(bytes, static_cast<std::uint32_t>(body.speed.raw()), 4);
-  put(bytes, walls, 4);
-  put(bytes, 0, 4);
-  for (const auto& w : world.walls())
-    for (const std::int32_t v : {w.a.x.raw(), w.a.y.raw(), w.b.x.raw(), w.b.y.raw()})
-      put(bytes, static_cast<std::uint32_t>(v), 4);
+  buffon::McuInput in;
+  try {
+    in = buffon::mcu_rs_input(world, c.seed, c.steps);
+  } catch (const InputError& e) {
+    if (e.where() != "arena") throw;
+    throw InputError(c.arena, e.message());
+  }
+  const auto& bytes = in.bytes;
   antkit::geometry::write_file_atomic(
       c.out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-  std::cout << c.out << ": " << bytes.size() << " bytes, " << walls << " walls, plan " << need
+  std::cout << c.out << ": " << bytes.size() << " bytes, " << in.walls << " walls, plan " << in.plan
             << " of " << buffon::kMcuArenaBytes << " bytes\n";
 }
 

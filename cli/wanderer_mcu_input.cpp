@@ -3,8 +3,8 @@
 // `antkit cover --algo rw --robots 1`'s options: the map is read (or generated), the robot placed
 // and the world built and checked here as `antkit cover` does (exit 2, located); the viewable
 // cells (the robot's 4-connected free component) and the sensor's footprint (SensorFootprint) are
-// computed here and sent with the map's Free cells as bits. A run whose bits and footprint exceed
-// the chip's arena is refused with the sizes and the limit in the message.
+// encoded with the map's Free cells as bits by uniform::mcu_wanderer_input, which refuses a run
+// whose bits and footprint exceed the chip's arena (the sizes and the limit in the message).
 //
 //   antkit wanderer-mcu-input (--map FILE | --size WxH --density P) [--seed S] [--trial K]
 //                             [--sensor R] [--limit T] --out FILE
@@ -14,6 +14,7 @@
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/uniform/scenario.hpp>
+#include <antkit/uniform/wanderer_mcu_encode.hpp>
 #include <antkit/uniform/wanderer_mcu_input.hpp>
 #include <antkit/uniform/world.hpp>
 #include <iostream>
@@ -38,10 +39,6 @@ struct WandererInputCommand {
   std::int64_t sensor = 5;
   std::int64_t limit = -1; // default: 10 * W * H
 };
-
-void put(std::vector<std::uint8_t>& bytes, std::uint64_t v, int n) {
-  for (int i = 0; i < n; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-}
 
 void run(const WandererInputCommand& o) {
   if (o.map.empty() == o.size.empty())
@@ -72,60 +69,18 @@ void run(const WandererInputCommand& o) {
   const std::int64_t cells = std::int64_t{grid.width()} * grid.height();
   const auto limit = static_cast<std::uint64_t>(o.limit >= 0 ? o.limit : 10 * cells);
   const uniform::CoverageWorld world(grid, poses, static_cast<std::int32_t>(o.sensor));
-  const auto& rays = world.footprint().rays();
-  const auto& between = world.footprint().between();
-
-  uniform::McuWandererRun run;
-  run.width = grid.width(), run.height = grid.height();
-  run.rays = static_cast<std::uint32_t>(rays.size());
-  run.between = static_cast<std::uint32_t>(between.size());
-  const uniform::McuWandererPlan plan = uniform::plan_mcu_wanderer(run);
-  if (grid.width() > 32767 || grid.height() > 32767 || plan.total > uniform::kMcuWandererArenaBytes)
-    throw InputError(o.map.empty() ? "--size" : o.map,
-                     "too large for the chip: the run needs " + std::to_string(plan.total) +
-                         " bytes (the map's free cells and the viewed cells, " +
-                         std::to_string(uniform::StepTurnWorld::bytes(run.width, run.height)) +
-                         " B each for " + std::to_string(grid.width()) + " x " +
-                         std::to_string(grid.height()) + " cells; the sensor's " +
-                         std::to_string(rays.size()) + " rays and " +
-                         std::to_string(between.size()) +
-                         " cells between, 12 and 4 B each); the chip's arena holds " +
-                         std::to_string(uniform::kMcuWandererArenaBytes) +
-                         " bytes (112 KiB of the STM32F405's 128 KiB of SRAM)");
-  std::vector<std::uint8_t> bytes(std::begin(uniform::kMcuWandererMagic),
-                                  std::end(uniform::kMcuWandererMagic));
-  const uniform::Pose& pose = world.robot(0);
-  put(bytes, o.seed, 8);
-  put(bytes, o.trial, 8);
-  put(bytes, limit, 8);
-  put(bytes, world.viewable(), 8);
-  put(bytes, static_cast<std::uint32_t>(grid.width()), 4);
-  put(bytes, static_cast<std::uint32_t>(grid.height()), 4);
-  put(bytes, static_cast<std::uint32_t>(pose.cell.x), 4);
-  put(bytes, static_cast<std::uint32_t>(pose.cell.y), 4);
-  put(bytes, pose.bearing, 4);
-  put(bytes, static_cast<std::uint64_t>(o.sensor), 4);
-  put(bytes, rays.size(), 4);
-  put(bytes, between.size(), 4);
-  std::vector<std::uint8_t> bits(uniform::StepTurnWorld::bytes(run.width, run.height), 0);
-  for (std::size_t k = 0; k < grid.size(); ++k)
-    if (grid.cells()[k] == antkit::kernel::Occupancy::Free)
-      bits[k / 8] = static_cast<std::uint8_t>(bits[k / 8] | (1u << (k % 8)));
-  bytes.insert(bytes.end(), bits.begin(), bits.end());
-  for (const auto& ray : rays) {
-    put(bytes, static_cast<std::uint16_t>(ray.offset.x), 2);
-    put(bytes, static_cast<std::uint16_t>(ray.offset.y), 2);
-    put(bytes, ray.first, 4);
-    put(bytes, ray.count, 4);
+  uniform::McuWandererInput in;
+  try {
+    in = uniform::mcu_wanderer_input(world, o.seed, o.trial, limit);
+  } catch (const InputError& e) {
+    if (e.where() != "map") throw;
+    throw InputError(o.map.empty() ? "--size" : o.map, e.message());
   }
-  for (const auto& c : between) {
-    put(bytes, static_cast<std::uint16_t>(c.x), 2);
-    put(bytes, static_cast<std::uint16_t>(c.y), 2);
-  }
+  const auto& bytes = in.bytes;
   antkit::geometry::write_file_atomic(
       o.out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   std::cout << o.out << ": " << bytes.size() << " bytes, " << grid.width() << " x " << grid.height()
-            << " cells, plan " << plan.total << " of " << uniform::kMcuWandererArenaBytes
+            << " cells, plan " << in.plan << " of " << uniform::kMcuWandererArenaBytes
             << " bytes\n";
 }
 

@@ -16,7 +16,8 @@
 //   antkit_determinism --maps DIR --mcu-inputs DIR2
 //                                                 writes the Cortex-M image's input of every
 //                                                 scenario it runs (STC; Buffon on the square with
-//                                                 a pillar) into DIR2, "name file" per line
+//                                                 a pillar; the wanderer alone) into DIR2, "name
+//                                                 file" per line
 //                                                 (the matrix's cortex-m4 configuration)
 //   antkit_determinism --teeth native-endian [--check FILE | --trace teeth/native-endian]
 //                                                 Buffon's first trail hashed over the bytes of its
@@ -26,7 +27,7 @@
 // Exit status: 0 all match, 1 a mismatch or a missing golden line, 2 bad usage or input.
 #include <algorithm>
 #include <antkit/algorithms/units.hpp>
-#include <antkit/buffon/mcu_digest_input.hpp>
+#include <antkit/buffon/mcu_encode.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/two_markers.hpp>
 #include <antkit/devices/stc_floor/floor.hpp>
@@ -40,6 +41,7 @@
 #include <antkit/stc/world.hpp>
 #include <antkit/uniform/coverage.hpp>
 #include <antkit/uniform/scenario.hpp>
+#include <antkit/uniform/wanderer_mcu_encode.hpp>
 #include <antkit/uniform/world.hpp>
 #include <array>
 #include <cstdio>
@@ -358,24 +360,28 @@ void add_stc_floor(std::vector<Scenario>& out, MapShelf& shelf) {
 }
 
 // Three obstacle densities of Sturtevant's benchmark set: 0 %, 10 % and 20 %.
+constexpr std::array<const char*, 3> kUniformMaps{"empty-32-32", "random-32-32-10",
+                                                  "random-32-32-20"};
+constexpr std::int32_t kUniformSensor = 3;
+constexpr std::uint64_t kUniformTicks = 2000;
+
 void add_uniform(std::vector<Scenario>& out, MapShelf& shelf) {
   using uniform::Algorithm;
-  constexpr std::uint64_t kTicks = 2000;
   for (const auto algo : {Algorithm::RandomWanderer, Algorithm::PrimaryMovement, Algorithm::AStar,
                           Algorithm::CoordinatedAStar, Algorithm::Frontier})
     for (const std::size_t robots : {std::size_t{1}, std::size_t{4}})
-      for (const char* map : {"empty-32-32", "random-32-32-10", "random-32-32-20"}) {
+      for (const char* map : kUniformMaps) {
         const std::string name = "uniform/" + std::string(uniform::algorithm_name(algo)) + "/" +
                                  std::to_string(robots) + "robots/" + map;
         out.push_back({name, [algo, robots, map, &shelf](unsigned, Trace& trace) {
                          const auto run = [&](std::uint64_t limit) {
                            const auto& grid = shelf.get(map);
                            uniform::CoverageWorld world(
-                               grid, uniform::place_robots(grid, robots, {}, 1, 0), 3);
+                               grid, uniform::place_robots(grid, robots, {}, 1, 0), kUniformSensor);
                            auto r = uniform::run_coverage(world, algo, 1, 0, limit);
                            return std::make_pair(r, world.robots());
                          };
-                         const auto [result, end] = run(kTicks);
+                         const auto [result, end] = run(kUniformTicks);
                          if (trace.on()) {
                            // run_coverage has no per-tick hook: tick k's state is the end of a run
                            // cut after k ticks (the controllers' streams are keyed, so every cut
@@ -430,55 +436,48 @@ std::uint64_t native_endian_hash(Trace& trace) {
   return h.finish();
 }
 
-// The Cortex-M image's inputs (stc/mcu_input.hpp) for the STC scenarios it runs (ant and ant-edge
-// with and without noise, online: the same maps, starts and noise), one file per scenario in `dir`,
-// named by the scenario with '/' as '_'; prints "name file" per scenario.
+// The Cortex-M image's inputs for the scenarios it runs, one file per scenario in `dir`, named by
+// the scenario with '/' as '_'; prints "name file" per scenario. Each input is its library
+// writer's, from the scenario's own map, start, walls, body, seeds and limits:
+// - STC (stc::mcu_input): ant and ant-edge with and without noise, and online, on the three maps;
+// - Buffon on the square with a pillar (buffon::mcu_buffon_input, the digest program: four
+//   trials; its 8 walls, buckets, raster, trail and crossing index fit the chip, the circle's 256
+//   walls do not), the scenario's defaults (body, width) and 3000 steps per visit, seeds 1 to 3;
+// - the step-turn wanderer alone (uniform::mcu_wanderer_input): uniform/rw/1robots on the three
+//   maps, with add_uniform's placement, sensor 3, seed 1, trial 0 and 2000 ticks.
 void write_mcu_inputs(MapShelf& shelf, const std::string& dir) {
-  for (const char* map : kStcMaps)
-    for (const auto variant : {stc::Variant::Ant, stc::Variant::AntEdge, stc::Variant::Online})
-      for (const bool noisy : {false, true}) {
-        if (noisy && variant == stc::Variant::Online) continue; // online reads no marks
-        const std::string name = stc_scenario_name(variant, noisy, map);
-        const auto& grid = shelf.get(map);
-        const auto bytes =
-            stc::mcu_input(grid, stc_start(grid), variant, noisy ? kStcNoise : stc::NoiseModel{});
-        std::string file = dir + "/" + name;
-        for (auto k = file.size() - name.size(); k < file.size(); ++k)
-          if (file[k] == '/') file[k] = '_';
-        std::ofstream out(file, std::ios::binary);
-        out.write(reinterpret_cast<const char*>(bytes.data()),
-                  static_cast<std::streamsize>(bytes.size()));
-        if (!out.flush()) throw kernel::InputError(file, "cannot write");
-        std::printf("%s %s\n", name.c_str(), file.c_str());
-      }
-  // Buffon on the square with a pillar (its 8 walls, buckets, raster, trail and crossing index fit
-  // the chip; the circle's 256 walls do not): buffon/mcu_input.hpp's bytes with the digest magic
-  // (buffon/mcu_digest_input.hpp), the scenario's defaults (body, width) and 3000 steps per visit.
-  for (const std::uint64_t seed : {std::uint64_t{1}, std::uint64_t{2}, std::uint64_t{3}}) {
-    const std::string name = "buffon/square-pillar/seed" + std::to_string(seed);
-    const auto walls = square_with_pillar();
-    const buffon::BodyParams body;
-    const buffon::TrialParams p;
-    std::vector<std::uint8_t> bytes(std::begin(buffon::kMcuBuffonDigestMagic),
-                                    std::end(buffon::kMcuBuffonDigestMagic));
-    const auto put = [&bytes](std::uint64_t v, int n) {
-      for (int i = 0; i < n; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-    };
-    put(seed, 8);
-    put(3000, 8);
-    put(static_cast<std::uint32_t>(p.width.raw()), 4);
-    put(static_cast<std::uint32_t>(body.noise.raw()), 4);
-    put(static_cast<std::uint32_t>(body.speed.raw()), 4);
-    put(walls.size(), 4);
-    for (const auto& w : walls)
-      for (const std::int32_t v : {w.a.x.raw(), w.a.y.raw(), w.b.x.raw(), w.b.y.raw()})
-        put(static_cast<std::uint32_t>(v), 4);
-    std::string file = dir + "/buffon_square-pillar_seed" + std::to_string(seed);
+  const auto write = [&dir](const std::string& name, const std::vector<std::uint8_t>& bytes) {
+    std::string file = dir + "/" + name;
+    for (auto k = file.size() - name.size(); k < file.size(); ++k)
+      if (file[k] == '/') file[k] = '_';
     std::ofstream out(file, std::ios::binary);
     out.write(reinterpret_cast<const char*>(bytes.data()),
               static_cast<std::streamsize>(bytes.size()));
     if (!out.flush()) throw kernel::InputError(file, "cannot write");
     std::printf("%s %s\n", name.c_str(), file.c_str());
+  };
+  for (const char* map : kStcMaps)
+    for (const auto variant : {stc::Variant::Ant, stc::Variant::AntEdge, stc::Variant::Online})
+      for (const bool noisy : {false, true}) {
+        if (noisy && variant == stc::Variant::Online) continue; // online reads no marks
+        const auto& grid = shelf.get(map);
+        write(
+            stc_scenario_name(variant, noisy, map),
+            stc::mcu_input(grid, stc_start(grid), variant, noisy ? kStcNoise : stc::NoiseModel{}));
+      }
+  for (const std::uint64_t seed : {std::uint64_t{1}, std::uint64_t{2}, std::uint64_t{3}}) {
+    const buffon::World world(square_with_pillar(), buffon::BodyParams{});
+    write("buffon/square-pillar/seed" + std::to_string(seed),
+          buffon::mcu_buffon_input(world, buffon::TrialParams{}.width, seed, 3000,
+                                   buffon::McuBuffonProgram::Digest)
+              .bytes);
+  }
+  for (const char* map : kUniformMaps) {
+    const auto& grid = shelf.get(map);
+    const uniform::CoverageWorld world(grid, uniform::place_robots(grid, 1, {}, 1, 0),
+                                       kUniformSensor);
+    write("uniform/rw/1robots/" + std::string(map),
+          uniform::mcu_wanderer_input(world, 1, 0, kUniformTicks).bytes);
   }
 }
 

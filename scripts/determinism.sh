@@ -20,12 +20,14 @@
 # from the little-endian golden value, and the script shows where its trace first parts.
 #
 # cortex-m4 is not a build of antkit_determinism: the chip runs the STC scenarios of ant and
-# ant-edge (with and without marker noise) and online, on the three maps, and Buffon's on the square
-# with a pillar (seeds 1 to 3: four trials each, their digest), from inputs the clang-O0 build
-# writes (--mcu-inputs: the same map, start and noise; the same walls, body and steps), and must
-# print their golden hashes. The other scenarios (Buffon on the circle, whose 256 walls do not fit
-# the chip, and with the precision rules, LOS, offline and full STC, uniform coverage, the
-# marker-floor robot) do not run on the chip; the configuration names how many ran.
+# ant-edge (with and without marker noise) and online, on the three maps, Buffon's on the square
+# with a pillar (seeds 1 to 3: four trials each, their digest) and the lone step-turn wanderer's
+# (uniform/rw/1robots, on the three coverage maps), from inputs the clang-O0 build writes
+# (--mcu-inputs, through the library's writers: the same map, start and noise; the same walls, body
+# and steps; the same placement, sensor and ticks), and must print their golden hashes. The other
+# scenarios (Buffon on the circle, whose 256 walls do not fit the chip, and with the precision
+# rules, LOS, offline and full STC, coverage by several robots or by the planners, the marker-floor
+# robot) do not run on the chip; the configuration names how many ran.
 #
 # Builds go to build/determinism/<config> (ccache when installed). Exit status: 0 every
 # configuration gives every golden hash and the teeth bite, 1 otherwise, 2 bad usage.
@@ -176,7 +178,7 @@ for config in "${configs[@]}"; do
   echo "== $config: $compiler $flags ${extra[*]}"
   if [ "$config" = cortex-m4 ]; then
     if cortex_m4; then
-      verdict[$config]="every scenario the chip runs (STC; Buffon on the square with a pillar), hash for hash ($((SECONDS - t0)) s)"
+      verdict[$config]="every scenario the chip runs (STC; Buffon on the square with a pillar; the lone wanderer), hash for hash ($((SECONDS - t0)) s)"
     else
       verdict[$config]="MISMATCH or failure (above)"
       failed=1

@@ -35,6 +35,8 @@ inline constexpr std::size_t kMcuWallBytes = 16;
 // The image's arena: the STM32F405's 128 KiB of SRAM less 16 KiB for the stack and the image's
 // other data (the STC floor's arena, the same buffer; mcu/src/main.cpp checks they agree).
 inline constexpr std::size_t kMcuArenaBytes = 112 * 1024;
+// The most steps (per visit for a trial, of the walk for RS) an input may ask for: antkit buffon's.
+inline constexpr std::int64_t kMcuMaxSteps = 10000000;
 
 struct McuBuffonRun {
   std::uint64_t seed = 1;
@@ -79,7 +81,7 @@ read_mcu_buffon_header(const std::uint8_t* bytes, std::size_t size, McuBuffonRun
   run.body.noise = Fx::from_raw(algorithms::load_le_i32(bytes + 28));
   run.body.speed = Fx::from_raw(algorithms::load_le_i32(bytes + 32));
   run.walls = static_cast<std::uint32_t>(algorithms::load_le(bytes + 36, 4));
-  if (run.steps < 1 || run.steps > 10000000) return McuBuffonError::Steps;
+  if (run.steps < 1 || run.steps > kMcuMaxSteps) return McuBuffonError::Steps;
   if (run.walls < 1 || run.walls > kMcuArenaBytes / kMcuWallBytes) return McuBuffonError::Walls;
   return McuBuffonError::None;
 }

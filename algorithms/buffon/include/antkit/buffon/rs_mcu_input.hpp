@@ -61,7 +61,7 @@ read_mcu_rs_header(const std::uint8_t* bytes, std::size_t size, McuRsRun& run) n
   run.body.noise = Fx::from_raw(algorithms::load_le_i32(bytes + 24));
   run.body.speed = Fx::from_raw(algorithms::load_le_i32(bytes + 28));
   run.walls = static_cast<std::uint32_t>(algorithms::load_le(bytes + 32, 4));
-  if (run.steps < 1 || run.steps > 10000000) return McuBuffonError::Steps;
+  if (run.steps < 1 || run.steps > kMcuMaxSteps) return McuBuffonError::Steps;
   if (run.walls < 1 || run.walls > kMcuArenaBytes / kMcuWallBytes) return McuBuffonError::Walls;
   return McuBuffonError::None;
 }
