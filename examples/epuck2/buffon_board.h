@@ -6,6 +6,10 @@
 
 #include <antkit/c/antkit.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The six front IR readings I_0 (left, +90 degrees) .. I_5 (right, -90 degrees), each in
  * [0, 65536]: 0 when no wall is within the sensor's range, growing to 65536 at contact
  * (antkit_ir_reading). */
@@ -20,5 +24,9 @@ void buffon_board_step(antkit_wheel_command wheels, int lay_trail);
 
 /* Stops the wheels and the marker. */
 void buffon_board_stop(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

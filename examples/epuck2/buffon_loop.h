@@ -4,6 +4,10 @@
 
 #include <antkit/c/antkit.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct buffon_visit_log {
   antkit_trace_hash hash; /* the behaviour's state words, step by step (for a robot's own log) */
   uint32_t steps;
@@ -17,5 +21,9 @@ typedef struct buffon_visit_log {
  * A = 2 L1 L2 / (pi BC), with L1 and L2 the trails' lengths from the robot's odometry (the
  * erosion correction is `antkit buffon-from-logs`'s). */
 void buffon_visit(uint64_t seed, uint64_t trial, int visit, uint32_t steps, buffon_visit_log* log);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
