@@ -80,28 +80,10 @@ int run_wanderer(const char* path, std::int32_t file, std::int32_t size, const s
           [between](std::uint32_t i, const std::uint8_t* p) { between[i] = read_mcu_offset(p); }))
     return refuse(path, "ends inside the cells between");
   mcu::close(file);
-  // A ray's cells between must be in the list and in the box of the robot and the ray's target,
-  // which keeps every read on the map (coverage_rules.hpp's ray_clear); the footprint
-  // SensorFootprint computes always is.
-  const std::int32_t r = static_cast<std::int32_t>(run.sensor);
-  for (std::uint32_t i = 0; i < run.rays; ++i) {
-    const StepTurnRay& ray = rays[i];
-    if (ray.dx < -r || ray.dx > r || ray.dy < -r || ray.dy > r ||
-        std::uint64_t{ray.first} + ray.count > run.between)
-      return refuse(path, "a sensor ray lies outside the sensor's range or its list");
-    for (std::uint32_t k = 0; k < ray.count; ++k) {
-      const StepTurnOffset d = between[ray.first + k];
-      const bool in_x = ray.dx < 0 ? d.dx >= ray.dx && d.dx <= 0 : d.dx >= 0 && d.dx <= ray.dx;
-      const bool in_y = ray.dy < 0 ? d.dy >= ray.dy && d.dy <= 0 : d.dy >= 0 && d.dy <= ray.dy;
-      if (!in_x || !in_y) return refuse(path, "a cell between lies outside its ray's box");
-    }
-  }
   const auto* free_bits = arena + plan.free_at;
-  const std::uint64_t s =
-      static_cast<std::uint64_t>(run.start.y) * static_cast<std::uint64_t>(run.width) +
-      static_cast<std::uint64_t>(run.start.x);
-  if (((free_bits[s / 8] >> (s % 8)) & 1u) == 0)
-    return refuse(path, "the start does not lie on a free cell");
+  if (const char* why =
+          check_mcu_wanderer_records(run, free_bits, {rays, run.rays}, {between, run.between}))
+    return refuse(path, why);
   mcu::ticks_start();
   static StepTurnWorld world;
   world.init(run.width, run.height, free_bits, arena + plan.viewed_at, {rays, run.rays},

@@ -21,6 +21,7 @@
 #include <antkit/uniform/step_turn_world.hpp>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace antkit::uniform {
 
@@ -125,6 +126,34 @@ read_mcu_wanderer_header(const std::uint8_t* b, std::size_t size, McuWandererRun
 [[nodiscard]] constexpr StepTurnOffset read_mcu_offset(const std::uint8_t* p) noexcept {
   return {static_cast<std::int16_t>(algorithms::load_le(p, 2)),
           static_cast<std::int16_t>(algorithms::load_le(p + 2, 2))};
+}
+
+// The checks the chip makes on an input's records once it has read them, before the run: each ray
+// lies within the sensor's range and its cells between within the list and within the box of the
+// robot and the ray's target, which keeps every read of the run on the map (coverage_rules.hpp's
+// ray_clear); and the start lies on a free cell. SensorFootprint's footprint always passes. Null
+// when the records pass, else the reason.
+[[nodiscard]] constexpr const char*
+check_mcu_wanderer_records(const McuWandererRun& run, const std::uint8_t* free_bits,
+                           std::span<const StepTurnRay> rays,
+                           std::span<const StepTurnOffset> between) noexcept {
+  const auto r = static_cast<std::int32_t>(run.sensor);
+  for (const StepTurnRay& ray : rays) {
+    if (ray.dx < -r || ray.dx > r || ray.dy < -r || ray.dy > r ||
+        std::uint64_t{ray.first} + ray.count > between.size())
+      return "a sensor ray lies outside the sensor's range or its list";
+    for (std::uint32_t k = 0; k < ray.count; ++k) {
+      const StepTurnOffset d = between[ray.first + k];
+      const bool in_x = ray.dx < 0 ? d.dx >= ray.dx && d.dx <= 0 : d.dx >= 0 && d.dx <= ray.dx;
+      const bool in_y = ray.dy < 0 ? d.dy >= ray.dy && d.dy <= 0 : d.dy >= 0 && d.dy <= ray.dy;
+      if (!in_x || !in_y) return "a cell between lies outside its ray's box";
+    }
+  }
+  const std::uint64_t s =
+      static_cast<std::uint64_t>(run.start.y) * static_cast<std::uint64_t>(run.width) +
+      static_cast<std::uint64_t>(run.start.x);
+  if (((free_bits[s / 8] >> (s % 8)) & 1u) == 0) return "the start does not lie on a free cell";
+  return nullptr;
 }
 
 } // namespace antkit::uniform
