@@ -94,6 +94,8 @@ void register_buffon_experiment(CLI::App& app) {
   sub->callback([options] { run(*options); });
 }
 
-const antkit::cli::Registration reg{"buffon-experiment", &register_buffon_experiment};
+// "trials" and "steps per visit" are main.cpp's words every command shows alike.
+const antkit::cli::Registration reg{
+    "buffon-experiment", &register_buffon_experiment, {{"figure", "--figure"}}};
 
 } // namespace

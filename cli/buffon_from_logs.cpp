@@ -80,7 +80,8 @@ void register_from_logs(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{"buffon-from-logs", &register_from_logs};
+const antkit::cli::Registration reg{
+    "buffon-from-logs", &register_from_logs, {{"arena spec", "--arena"}}};
 
 // `antkit rs-from-log LOG`: the Randomized Search baseline (paper 000 section 8.1) from one logged
 // walk: the area the body covered along its dead-reckoned trail.

@@ -180,7 +180,15 @@ void register_campaign(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{"campaign", &register_campaign};
+// campaign::validate()'s words for its inputs, as this command's options.
+const antkit::cli::Registration reg{"campaign",
+                                    &register_campaign,
+                                    {{"cases", "--cases"},
+                                     {"first case", "--first"},
+                                     {"largest map", "--max-size"},
+                                     {"time limit", "--time"},
+                                     {"threads", "--threads"},
+                                     {"variants", "--variants"}}};
 
 } // namespace
 #endif

@@ -8,11 +8,10 @@
 #include <iostream>
 #include <map>
 #include <string>
-#include <string_view>
 
 namespace antkit::cli {
-std::map<std::string, Registrar>& registry() {
-  static std::map<std::string, Registrar> commands;
+std::map<std::string, Command>& registry() {
+  static std::map<std::string, Command> commands;
   return commands;
 }
 } // namespace antkit::cli
@@ -33,16 +32,25 @@ void refuse_empty_values(CLI::App& app) {
 }
 
 // The library names its inputs in its own words (InputError::where(): "trail width", "stopping
-// rule"); the command line shows each as the option that carries it. Every other where() (a file
-// position, a spec, an option the command itself named) is shown as it is.
-std::string shown(const antkit::kernel::InputError& e) {
-  static const std::map<std::string_view, std::string_view> flags = {
+// rule"); the command line shows each as the option that carries it (commands.hpp): the words the
+// subcommand that ran registered, then the words below, which every command shows as the same
+// option. Every other where() (a file position, a spec, an option the command itself named) is
+// shown as it is.
+std::string shown(const antkit::kernel::InputError& e, const CLI::App& app) {
+  static const antkit::cli::FlagWords common = {
       {"precision", "--precision"},     {"stopping rule", "--rule"},    {"trail width", "--width"},
       {"step budget", "--max-steps"},   {"steps per visit", "--steps"}, {"trials", "--trials"},
       {"sensor distance", "--sensor"},  {"map size", "--size"},         {"robots", "--robots"},
       {"obstacle density", "--density"}};
-  const auto it = flags.find(e.where());
-  return it == flags.end() ? std::string(e.what()) : std::string(it->second) + ": " + e.message();
+  const std::string& where = e.where();
+  for (const CLI::App* sub : app.get_subcommands()) { // the one that ran (none before parsing)
+    const auto command = antkit::cli::registry().find(sub->get_name());
+    if (command == antkit::cli::registry().end()) continue;
+    const auto it = command->second.flags.find(where);
+    if (it != command->second.flags.end()) return it->second + ": " + e.message();
+  }
+  const auto it = common.find(where);
+  return it == common.end() ? std::string(e.what()) : it->second + ": " + e.message();
 }
 
 } // namespace
@@ -53,7 +61,7 @@ int main(int argc, char** argv) {
                "antkit"};
   app.set_version_flag("--version", std::string("antkit ") + ANTKIT_VERSION);
   app.require_subcommand(1);
-  for (const auto& [name, registrar] : antkit::cli::registry()) registrar(app);
+  for (const auto& entry : antkit::cli::registry()) entry.second.registrar(app);
   refuse_empty_values(app);
 
   try {
@@ -81,7 +89,7 @@ int main(int argc, char** argv) {
     std::cerr << "antkit: error: " << e.what() << "\n(run `antkit --help` for usage)\n";
     return 2;
   } catch (const antkit::kernel::InputError& e) {
-    std::cerr << "antkit: error: " << shown(e) << '\n';
+    std::cerr << "antkit: error: " << shown(e, app) << '\n';
     return 2;
   } catch (const antkit::cli::CheckFailed& e) {
     std::cerr << "antkit: check failed: " << e.what() << '\n';

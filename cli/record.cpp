@@ -201,6 +201,23 @@ void register_record(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{"record", &register_record};
+// devices::record()'s words for its inputs (adapter.hpp, serial.hpp), as this command's options.
+const antkit::cli::Registration reg{
+    "record",
+    &register_record,
+    {{"device", "--device"},
+     {"port", "--port"},
+     {"baud rate", "--baud"},
+     {"controller", "--controller"},
+     {"controller parameter", "--param"},
+     {"controller parameter heading", "--param heading"},
+     {"controller parameter quarter_turn_ms", "--param quarter_turn_ms"},
+     {"controller parameter led_ms", "--param led_ms"},
+     {"steps", "--steps"},
+     {"control period", "--period"},
+     {"arena spec", "--arena"},
+     {"floor map", "--map"},
+     {"start sub-cell", "--start"},
+     {"camera calibration", "--calibration"}}};
 
 } // namespace

@@ -115,6 +115,7 @@ void register_reproduce(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{"reproduce", &register_reproduce};
+const antkit::cli::Registration reg{
+    "reproduce", &register_reproduce, {{"output directory", "--out"}, {"families", "--only"}}};
 
 } // namespace

@@ -191,8 +191,8 @@ std::string stop_reason(StopKind kind, const std::string& detail, const SafeStop
 
 RecordSummary record(const RecordOptions& options, const RecordProgress& progress) {
   if (options.steps && (*options.steps < 0 || *options.steps > 1000000000))
-    throw kernel::InputError("--steps", "expected a whole number in [0, 1000000000]");
-  const Device& dev = device(options.device, "--device");
+    throw kernel::InputError("steps", "expected a whole number in [0, 1000000000]");
+  const Device& dev = device(options.device, "device");
   PreparedRun run = dev.prepare(options);
   // A log is never replaced by accident: a mistyped name must not lose a recorded visit.
   check_new_log(options.out, options.force);

@@ -62,11 +62,11 @@ public:
 
   [[nodiscard]] PreparedRun prepare(const RecordOptions& o) const override {
     const std::string others = " is an option of the stc-floor robot";
-    if (!o.map.empty()) throw kernel::InputError("--map", others);
-    if (o.start) throw kernel::InputError("--start", others);
-    if (!o.calibration.empty()) throw kernel::InputError("--calibration", others);
+    if (!o.map.empty()) throw kernel::InputError("floor map", others);
+    if (o.start) throw kernel::InputError("start sub-cell", others);
+    if (!o.calibration.empty()) throw kernel::InputError("camera calibration", others);
     ControllerSpec spec =
-        make_spec(o.controller.name, o.controller.seed, o.controller.params, "--controller");
+        make_spec(o.controller.name, o.controller.seed, o.controller.params, "controller");
     (void)make_controller(spec); // refuses a spec it cannot build, before anything is opened
     const RobotDescription& robot = describe(robot_);
     PreparedRun run;
@@ -97,22 +97,22 @@ public:
   emulate(const EmulateOptions& o,
           const std::function<void(const std::string&)>& ready) const override {
     const std::string others = " is an option of the stc-floor robot";
-    if (o.map) throw kernel::InputError("--map", others);
-    if (o.start) throw kernel::InputError("--start", others);
-    if (o.heading) throw kernel::InputError("--heading", others);
-    if (o.noise) throw kernel::InputError("--noise", others);
-    if (o.dark_offset) throw kernel::InputError("--dark-offset", others);
-    if (o.fade_s) throw kernel::InputError("--fade", others);
-    if (o.rotation_error) throw kernel::InputError("--rotation-error", others);
-    if (o.drift) throw kernel::InputError("--drift", others);
+    if (o.map) throw kernel::InputError("floor map", others);
+    if (o.start) throw kernel::InputError("start sub-cell", others);
+    if (o.heading) throw kernel::InputError("start heading", others);
+    if (o.noise) throw kernel::InputError("camera noise", others);
+    if (o.dark_offset) throw kernel::InputError("dark offset", others);
+    if (o.fade_s) throw kernel::InputError("fade half-life", others);
+    if (o.rotation_error) throw kernel::InputError("rotation error", others);
+    if (o.drift) throw kernel::InputError("drift", others);
     EmulatorOptions options;
     options.seed = o.seed;
     options.faults = parse_faults(o.faults);
     options.pace = o.pace;
     std::optional<TcpListener> listener;
     if (o.listen)
-      listener.emplace(
-          TcpListener::listen(parse_tcp_endpoint(*o.listen, "--listen", true), "--listen"));
+      listener.emplace(TcpListener::listen(parse_tcp_endpoint(*o.listen, "listen address", true),
+                                           "listen address"));
     FirmwareEmulator emulator(robot_, o.walls, options);
     EmulateReport r;
     if (listener) {

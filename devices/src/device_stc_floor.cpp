@@ -162,7 +162,7 @@ PilotOptions pilot_options(const ControllerSpec& spec) {
   PilotOptions p;
   const auto variant = stc::parse_variant(spec.name);
   if (!variant || (*variant != stc::Variant::Ant && *variant != stc::Variant::AntEdge))
-    throw kernel::InputError("--controller",
+    throw kernel::InputError("controller",
                              "the stc-floor robot runs ant or ant-edge, not '" + spec.name + "'");
   p.controller = *variant;
   std::vector<std::string> seen;
@@ -171,10 +171,10 @@ PilotOptions pilot_options(const ControllerSpec& spec) {
     const std::string& key = param.first;
     const std::int64_t value = param.second;
     if (std::find(seen.begin(), seen.end(), key) != seen.end())
-      throw kernel::InputError("--param", "'" + key + "' given twice");
+      throw kernel::InputError("controller parameter", "'" + key + "' given twice");
     seen.push_back(key);
     const auto in = [&](std::int64_t lo, std::int64_t hi, const char* what) {
-      if (value < lo || value > hi) throw kernel::InputError("--param " + key, what);
+      if (value < lo || value > hi) throw kernel::InputError("controller parameter " + key, what);
       return static_cast<std::int32_t>(value);
     };
     if (key == "heading")
@@ -184,9 +184,10 @@ PilotOptions pilot_options(const ControllerSpec& spec) {
     else if (key == "led_ms")
       p.led_ms = in(0, kMaxLedMs, "expected 0 to 60000 ms");
     else
-      throw kernel::InputError("--param", "the stc-floor robot takes heading, quarter_turn_ms "
-                                          "and led_ms, not '" +
-                                              key + "'");
+      throw kernel::InputError("controller parameter",
+                               "the stc-floor robot takes heading, quarter_turn_ms "
+                               "and led_ms, not '" +
+                                   key + "'");
   }
   return p;
 }
@@ -281,8 +282,8 @@ public:
   [[nodiscard]] LineSettings line() const noexcept override { return {115200, 8, 1, Parity::None}; }
 
   [[nodiscard]] PreparedRun prepare(const RecordOptions& o) const override {
-    if (!o.arena.empty()) throw kernel::InputError("--arena", std::string(kOnlySerial));
-    if (o.period) throw kernel::InputError("--period", std::string(kOnlySerial));
+    if (!o.arena.empty()) throw kernel::InputError("arena spec", std::string(kOnlySerial));
+    if (o.period) throw kernel::InputError("control period", std::string(kOnlySerial));
     PilotOptions pilot = pilot_options(o.controller);
     std::shared_ptr<const MapPlace> map;
     if (!o.map.empty()) map = std::make_shared<const MapPlace>(read_map_place(o.map));
@@ -297,11 +298,11 @@ public:
                                  "the map has no free cell (2 x 2 free sub-cells) to start in");
       pilot.start = *start;
     } else {
-      throw kernel::InputError("--start",
+      throw kernel::InputError("start sub-cell",
                                "without --map the robot's start sub-cell must be given (X,Y)");
     }
     if (pilot.start.x < 0 || pilot.start.y < 0)
-      throw kernel::InputError("--start", "expected a sub-cell X,Y >= 0");
+      throw kernel::InputError("start sub-cell", "expected a sub-cell X,Y >= 0");
     const Calibration calibration =
         o.calibration.empty() ? ideal_calibration() : read_calibration(o.calibration);
     PreparedRun run;
@@ -330,13 +331,14 @@ public:
   [[nodiscard]] EmulateReport
   emulate(const EmulateOptions& o,
           const std::function<void(const std::string&)>& ready) const override {
-    if (o.arena) throw kernel::InputError("--arena", std::string(kOnlySerial));
-    if (!o.faults.empty()) throw kernel::InputError("--fault", std::string(kOnlySerial));
-    if (o.pace) throw kernel::InputError("--pace", std::string(kOnlySerial));
+    if (o.arena) throw kernel::InputError("arena spec", std::string(kOnlySerial));
+    if (!o.faults.empty()) throw kernel::InputError("fault", std::string(kOnlySerial));
+    if (o.pace) throw kernel::InputError("pacing", std::string(kOnlySerial));
     if (o.listen)
-      throw kernel::InputError("--listen", "the stc-floor emulator serves a pty (its frames are "
-                                           "too large for one reply over the Webots relay)");
-    if (!o.map) throw kernel::InputError("--map", "stc-floor needs a map (--map FILE)");
+      throw kernel::InputError("listen address",
+                               "the stc-floor emulator serves a pty (its frames are "
+                               "too large for one reply over the Webots relay)");
+    if (!o.map) throw kernel::InputError("floor map", "stc-floor needs a map (--map FILE)");
     const MapPlace map = read_map_place(*o.map);
     stc::SubCell start{};
     if (o.start)
@@ -350,22 +352,22 @@ public:
                                "the map has no free cell (2 x 2 free sub-cells) to start in");
     // The floor's own ranges (FloorWorld) decide; here only what fits its fields.
     const auto in = [](const std::optional<std::int64_t>& v, std::int64_t fallback,
-                       const char* option) {
+                       const char* input) {
       const std::int64_t x = v.value_or(fallback);
-      if (x < INT32_MIN || x > INT32_MAX) throw kernel::InputError(option, "out of range");
+      if (x < INT32_MIN || x > INT32_MAX) throw kernel::InputError(input, "out of range");
       return static_cast<std::int32_t>(x);
     };
     FloorOptions f;
     f.seed = o.seed;
-    f.noise = in(o.noise, 0, "--noise");
-    f.dark_offset = in(o.dark_offset, 12, "--dark-offset");
+    f.noise = in(o.noise, 0, "camera noise");
+    f.dark_offset = in(o.dark_offset, 12, "dark offset");
     const std::int64_t fade_s = o.fade_s.value_or(0);
     if (fade_s < 0 || fade_s > 86400)
-      throw kernel::InputError("--fade", "expected 0 to 86400 seconds");
+      throw kernel::InputError("fade half-life", "expected 0 to 86400 seconds");
     f.fade_half_life_ms = fade_s * 1000;
-    f.rotation_error_ppm = in(o.rotation_error, 0, "--rotation-error");
-    f.drift_ppm_per_minute = in(o.drift, 0, "--drift");
-    const int heading = in(o.heading, 1, "--heading");
+    f.rotation_error_ppm = in(o.rotation_error, 0, "rotation error");
+    f.drift_ppm_per_minute = in(o.drift, 0, "drift");
+    const int heading = in(o.heading, 1, "start heading");
     FloorEmulator emulator(map.cells, start, heading, f);
     Pty pty = Pty::open();
     ready(pty.slave_path());

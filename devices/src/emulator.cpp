@@ -25,9 +25,9 @@ constexpr std::uint32_t kMillion = 1000000;
 // "0.05" -> 50000 ppm: a probability with up to six decimals, in [0, 1].
 std::uint32_t parse_probability(std::string_view text, const std::string& spec) {
   const auto bad = [&] {
-    return InputError("--fault", "'" + spec +
-                                     "': the probability must be a decimal in [0, 1] with at "
-                                     "most six decimals, e.g. 0.05");
+    return InputError("fault", "'" + spec +
+                                   "': the probability must be a decimal in [0, 1] with at "
+                                   "most six decimals, e.g. 0.05");
   };
   std::uint64_t whole = 0, frac = 0;
   std::size_t i = 0, digits = 0;
@@ -60,7 +60,7 @@ std::int64_t parse_count(std::string_view text, const std::string& spec, std::in
     v = v * 10 + (c - '0');
   }
   if (v < 0 || v > hi)
-    throw InputError("--fault",
+    throw InputError("fault",
                      "'" + spec + "': expected a whole number in [0, " + std::to_string(hi) + "]");
   return v;
 }
@@ -80,15 +80,15 @@ FaultSpec parse_faults(const std::vector<std::string>& specs) {
   for (const auto& spec : specs) {
     const auto eq = spec.find('=');
     if (eq == std::string::npos)
-      throw InputError("--fault", "'" + spec +
-                                      "': expected delay=P:MS, garbage=P, drop=P, cut=P or "
-                                      "disconnect=N");
+      throw InputError("fault", "'" + spec +
+                                    "': expected delay=P:MS, garbage=P, drop=P, cut=P or "
+                                    "disconnect=N");
     const std::string kind = spec.substr(0, eq);
     const std::string_view value = std::string_view(spec).substr(eq + 1);
     if (kind == "delay") {
       const auto colon = value.find(':');
       if (colon == std::string_view::npos)
-        throw InputError("--fault", "'" + spec + "': expected delay=P:MS (e.g. delay=0.1:50)");
+        throw InputError("fault", "'" + spec + "': expected delay=P:MS (e.g. delay=0.1:50)");
       f.delay_ppm = parse_probability(value.substr(0, colon), spec);
       f.delay = std::chrono::milliseconds(parse_count(value.substr(colon + 1), spec, 60000));
     } else if (kind == "garbage") {
@@ -100,8 +100,8 @@ FaultSpec parse_faults(const std::vector<std::string>& specs) {
     } else if (kind == "disconnect") {
       f.disconnect_after = parse_count(value, spec, 1000000000);
     } else {
-      throw InputError("--fault", "unknown fault '" + kind +
-                                      "': expected delay, garbage, drop, cut or disconnect");
+      throw InputError("fault", "unknown fault '" + kind +
+                                    "': expected delay, garbage, drop, cut or disconnect");
     }
   }
   return f;

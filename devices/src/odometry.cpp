@@ -278,7 +278,7 @@ BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& vi
   }
   if (!arena.spec.empty()) {
     if (!out.arena.empty() && arena.spec != out.arena)
-      throw InputError("--arena",
+      throw InputError("arena spec",
                        "'" + arena.spec + "' but the logs' headers name arena '" + out.arena + "'");
     if (out.arena.empty()) out.arena = arena.spec, out.arena_source = ArenaSource::option;
   }

@@ -43,7 +43,7 @@ constexpr Rate kRates[] = {{1200, B1200},     {2400, B2400},     {4800, B4800},
 speed_t speed_code(std::uint32_t baud) {
   for (const auto& r : kRates)
     if (r.baud == baud) return r.code;
-  throw InputError("--baud", "unsupported baud rate " + std::to_string(baud));
+  throw InputError("baud rate", "unsupported baud rate " + std::to_string(baud));
 }
 
 int remaining_ms(Clock::time_point deadline) {
@@ -101,8 +101,8 @@ long lock_holder(const struct stat& device, int self_fd) {
 }
 
 [[noreturn]] void port_busy(const std::string& path, long pid) {
-  throw InputError("--port", "'" + path + "' is busy: port busy" +
-                                 (pid > 0 ? ", held by process " + std::to_string(pid) : ""));
+  throw InputError("port", "'" + path + "' is busy: port busy" +
+                               (pid > 0 ? ", held by process " + std::to_string(pid) : ""));
 }
 
 // An OFD write lock on the whole device (serial.hpp says why OFD). A kernel without OFD locks
@@ -296,7 +296,7 @@ SerialPort SerialPort::connect(const TcpEndpoint& to, std::size_t max_line,
                                std::chrono::milliseconds timeout) {
   const std::string name = std::string(kTcpScheme) + to.text();
   AddrInfo addrs;
-  resolve(to, "--port", false, addrs);
+  resolve(to, "port", false, addrs);
   const auto deadline = Clock::now() + timeout;
   int last = ECONNREFUSED;
   for (const addrinfo* a = addrs.list; a != nullptr; a = a->ai_next) {
@@ -328,7 +328,7 @@ SerialPort SerialPort::open(const std::string& path, const LineSettings& setting
                             std::size_t max_line) {
   if (is_tcp_port(path))
     return connect(
-        parse_tcp_endpoint(std::string_view(path).substr(kTcpScheme.size()), "--port", false),
+        parse_tcp_endpoint(std::string_view(path).substr(kTcpScheme.size()), "port", false),
         max_line);
   const speed_t speed = speed_code(settings.baud);
   const int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
@@ -336,11 +336,11 @@ SerialPort SerialPort::open(const std::string& path, const LineSettings& setting
     struct stat st {};
     port_busy(path, ::stat(path.c_str(), &st) == 0 ? lock_holder(st, -1) : -1);
   }
-  if (fd < 0) throw InputError("--port", "cannot open '" + path + "': " + std::strerror(errno));
+  if (fd < 0) throw InputError("port", "cannot open '" + path + "': " + std::strerror(errno));
   SerialPort port(fd, path, max_line);
   termios t{};
   if (::tcgetattr(fd, &t) != 0)
-    throw InputError("--port",
+    throw InputError("port",
                      "'" + path + "' is not a serial port or terminal: " + std::strerror(errno));
   lock_port(fd, path); // before any setting changes: a held port is left as its holder set it
   // Other processes may not open it while we drive the robot; close() clears it again (a pty
@@ -362,7 +362,7 @@ SerialPort SerialPort::open(const std::string& path, const LineSettings& setting
   ::cfsetispeed(&t, speed);
   ::cfsetospeed(&t, speed);
   if (::tcsetattr(fd, TCSANOW, &t) != 0)
-    throw InputError("--port", "cannot set up '" + path + "': " + std::strerror(errno));
+    throw InputError("port", "cannot set up '" + path + "': " + std::strerror(errno));
   ::tcflush(fd, TCIOFLUSH);
   return port;
 }
@@ -730,7 +730,7 @@ void TcpListener::resume() {
   if (listening_) return;
   if (fd_ == -2) {
     fd_ = -1;
-    *this = listen(at_, "--listen");
+    *this = listen(at_, "listen address");
     return;
   }
   if (fd_ < 0) throw LinkError(LinkError::Kind::System, at_.text() + ": the listener is closed");

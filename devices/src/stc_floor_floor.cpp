@@ -33,16 +33,16 @@ FloorWorld::FloorWorld(const kernel::OccupancyGrid& map, stc::SubCell start, int
   auto bad = [](const std::string& where, const std::string& m) {
     throw kernel::InputError(where, m);
   };
-  if (o_.noise < 0 || o_.noise > 255) bad("--noise", "expected 0 to 255");
-  if (o_.dark_offset < 0 || o_.dark_offset > 255) bad("--dark-offset", "expected 0 to 255");
-  if (o_.fade_half_life_ms < 0) bad("--fade", "expected a half-life >= 0");
+  if (o_.noise < 0 || o_.noise > 255) bad("camera noise", "expected 0 to 255");
+  if (o_.dark_offset < 0 || o_.dark_offset > 255) bad("dark offset", "expected 0 to 255");
+  if (o_.fade_half_life_ms < 0) bad("fade half-life", "expected a half-life >= 0");
   if (o_.rotation_error_ppm < -500000 || o_.rotation_error_ppm > 500000)
-    bad("--rotation-error", "expected -500000 to 500000 ppm");
+    bad("rotation error", "expected -500000 to 500000 ppm");
   if (o_.drift_ppm_per_minute < 0 || o_.drift_ppm_per_minute > 1000000)
-    bad("--drift", "expected 0 to 10^6 ppm a minute");
+    bad("drift", "expected 0 to 10^6 ppm a minute");
   if (o_.quarter_turn_ms < 1 || o_.drive_ms < 0 || o_.capture_ms < 0)
     bad("floor", "times must be positive");
-  if (heading < 0 || heading > 3) bad("--heading", "expected 0 (E), 1 (N), 2 (W) or 3 (S)");
+  if (heading < 0 || heading > 3) bad("start heading", "expected 0 (E), 1 (N), 2 (W) or 3 (S)");
   validate(o_.optics, "optics");
   free_sub_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0);
   for (std::int32_t y = 0; y < 2 * shape_.cells_y; ++y)
@@ -59,7 +59,7 @@ FloorWorld::FloorWorld(const kernel::OccupancyGrid& map, stc::SubCell start, int
       start.y >= 2 * shape_.cells_y ||
       free_sub_[static_cast<std::size_t>(start.y) * static_cast<std::size_t>(width_) +
                 static_cast<std::size_t>(start.x)] == 0)
-    bad("--start", "the start must be a free sub-cell of the map's cell area");
+    bad("start sub-cell", "the start must be a free sub-cell of the map's cell area");
   const std::size_t slots =
       static_cast<std::size_t>(width_ + 1) * static_cast<std::size_t>(height_ + 1);
   vertical_.assign(slots, {});

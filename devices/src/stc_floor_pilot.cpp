@@ -189,7 +189,7 @@ PilotResult Pilot::result() const {
 
 PilotResult run_pilot(FloorRobot& robot, const View& view, const PilotOptions& o,
                       const std::function<void(const PilotStep&)>& on_step) {
-  check_controller(o.controller, "--controller");
+  check_controller(o.controller, "controller");
   Pilot pilot(robot, view, o);
   for (std::int64_t step = 0; step < o.max_steps && !pilot.ended(); ++step) {
     const PilotStep s = pilot.step();

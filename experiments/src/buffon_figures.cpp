@@ -25,9 +25,9 @@ namespace {
 
 void check(const BuffonFigureParams& p) {
   if (p.trials < 1 || p.trials > 100000)
-    throw InputError("--trials", "the number of trials must be in [1, 100000]");
+    throw InputError("trials", "the number of trials must be in [1, 100000]");
   if (p.steps < 1 || p.steps > 100000000)
-    throw InputError("--steps", "the number of steps must be in [1, 10^8]");
+    throw InputError("steps per visit", "the number of steps must be in [1, 10^8]");
 }
 
 const char* const kColours[] = {"#1e5bd8", "#d81e1e", "#1b9e3a", "#e08a00",
@@ -72,7 +72,7 @@ std::vector<BuffonArena> buffon_figure_arenas(int figure) {
 
 BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const algorithms::Runner& runner) {
   const auto arenas = buffon_figure_arenas(params.figure);
-  if (arenas.empty()) throw InputError("--figure", "the figure must be 5, 6, 7, 8 or 9 (or 14)");
+  if (arenas.empty()) throw InputError("figure", "the figure must be 5, 6, 7, 8 or 9 (or 14)");
   check(params);
   std::vector<geometry::Arena> shapes;
   std::vector<buffon::World> worlds;
@@ -84,7 +84,7 @@ BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const algorithm
     tp.seed = params.seed;
     tp.experiment = 4000 + 100 * static_cast<std::uint64_t>(params.figure) + k;
     tp.steps = params.steps;
-    tp.width = geometry::fixed_from_double<kernel::Fx>(arenas[k].width, "--width");
+    tp.width = geometry::fixed_from_double<kernel::Fx>(arenas[k].width, "trail width");
     trial_params.push_back(tp);
   }
   const auto trials = static_cast<std::uint64_t>(params.trials);

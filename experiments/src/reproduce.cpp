@@ -38,7 +38,8 @@ public:
     std::error_code ec;
     std::filesystem::create_directories(out_ / sub, ec);
     if (!std::filesystem::is_directory(out_ / sub))
-      throw InputError("--out", "cannot make the directory '" + (out_ / sub).string() + "'");
+      throw InputError("output directory",
+                       "cannot make the directory '" + (out_ / sub).string() + "'");
   }
   void text(const std::string& rel_path, const std::string& content) {
     geometry::write_file_atomic(out_ / rel_path, content);
@@ -157,7 +158,7 @@ Trials trials_of(Scale scale) {
 void validate(const ReproduceOptions& options) {
   for (const auto& name : options.only)
     if (std::find(kFamilies.begin(), kFamilies.end(), name) == kFamilies.end())
-      throw InputError("--only", "'" + name + "' is not one of buffon, los, stc, uniform");
+      throw InputError("families", "'" + name + "' is not one of buffon, los, stc, uniform");
 }
 
 std::string reproduce_command(const ReproduceOptions& o, const std::vector<std::string>& only) {

@@ -56,7 +56,7 @@ std::vector<StcNoisePoint> run_stc_noise(const kernel::OccupancyGrid& map, kerne
   for (const auto& name : variants) {
     const auto v = stc::parse_variant(name);
     if (!v || (*v != stc::Variant::Ant && *v != stc::Variant::AntEdge))
-      throw kernel::InputError("--variant", "marker noise applies to ant and ant-edge only");
+      throw kernel::InputError("variant", "marker noise applies to ant and ant-edge only");
     vs.push_back(*v);
   }
   // A bad start is refused here, on every rank, before any unit runs.

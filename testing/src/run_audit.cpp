@@ -404,9 +404,9 @@ CoverCheckReport check_cover_files(const std::string& map_file, const std::strin
 
 void check_sensor_range(std::optional<std::int64_t> sensor) {
   if (sensor && (*sensor < 0 || *sensor > uniform::kMaxSensorRange))
-    throw InputError("--sensor", "expected a sensor distance in [0, " +
-                                     std::to_string(uniform::kMaxSensorRange) + "] cells, not " +
-                                     std::to_string(*sensor));
+    throw InputError("sensor distance", "expected a sensor distance in [0, " +
+                                            std::to_string(uniform::kMaxSensorRange) +
+                                            "] cells, not " + std::to_string(*sensor));
 }
 
 CoverCheckReport check_cover(const kernel::OccupancyGrid& map, const CoverTrace& trace,

@@ -258,7 +258,8 @@ TEST_CASE("buffon_from_logs refuses two robots and two arenas", "[devices][buffo
   // An --arena that contradicts the headers.
   edit_header(k.v2, "circle:d=9", "circle:d=8");
   msg = refusal([&] { devices::buffon_from_logs(k.v1, k.v2, kWidth, {"circle:d=20", &area_of}); });
-  CHECK(msg.rfind("--arena: 'circle:d=20' but the logs' headers name arena 'circle:d=8'", 0) == 0);
+  CHECK(msg.rfind("arena spec: 'circle:d=20' but the logs' headers name arena 'circle:d=8'", 0) ==
+        0);
 }
 
 TEST_CASE("buffon_from_logs: the arena's true area from the headers or --arena",

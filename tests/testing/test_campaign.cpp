@@ -128,7 +128,7 @@ TEST_CASE("campaign: a time limit stops at a case boundary, and bad options are 
   auto bad = options(campaign::Family::Stc, 10, 1);
   bad.variants = {"zigzag"};
   CHECK_THROWS_WITH(campaign::run(bad),
-                    "--variants: 'zigzag' is not a stc variant; expected some of offline, online, "
+                    "variants: 'zigzag' is not a stc variant; expected some of offline, online, "
                     "ant, ant-edge, full");
   bad = options(campaign::Family::Los, 0, 1);
   CHECK_THROWS_AS(campaign::run(bad), kernel::InputError);

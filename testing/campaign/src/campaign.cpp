@@ -508,23 +508,23 @@ std::vector<std::string> family_variants(Family family) {
 
 void validate(const Options& o) {
   if (o.cases < 1 || o.cases > std::uint64_t{1} << 50)
-    throw InputError("--cases", "expected 1 to 2^50 cases, not " + std::to_string(o.cases));
+    throw InputError("cases", "expected 1 to 2^50 cases, not " + std::to_string(o.cases));
   if (o.first > std::uint64_t{1} << 62)
-    throw InputError("--first", "expected a case index below 2^62");
+    throw InputError("first case", "expected a case index below 2^62");
   if (o.max_width < 1 || o.max_height < 1 || o.max_width > kMaxSide || o.max_height > kMaxSide)
-    throw InputError("--max-size", "expected a size from 1x1 to " + std::to_string(kMaxSide) + "x" +
-                                       std::to_string(kMaxSide));
+    throw InputError("largest map", "expected a size from 1x1 to " + std::to_string(kMaxSide) +
+                                        "x" + std::to_string(kMaxSide));
   if (!(o.time_limit_s >= 0) || o.time_limit_s > 1e9)
-    throw InputError("--time", "expected a time in seconds, 0 or more");
+    throw InputError("time limit", "expected a time in seconds, 0 or more");
   if (o.threads < 1 || o.threads > 256)
-    throw InputError("--threads", "expected 1 to 256 threads, not " + std::to_string(o.threads));
+    throw InputError("threads", "expected 1 to 256 threads, not " + std::to_string(o.threads));
   const auto known = family_variants(o.family);
   for (const auto& v : o.variants)
     if (std::find(known.begin(), known.end(), v) == known.end()) {
       std::string list;
       for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-      throw InputError("--variants", "'" + v + "' is not a " + std::string(family_name(o.family)) +
-                                         " variant; expected some of " + list);
+      throw InputError("variants", "'" + v + "' is not a " + std::string(family_name(o.family)) +
+                                       " variant; expected some of " + list);
     }
 }
 

@@ -54,7 +54,9 @@ struct MapPlace {
 MapPlace read_map_place(const std::string& file);
 
 // What a run is asked to do, for every device (device.hpp); a device refuses the options it does
-// not take (kernel::InputError naming the option).
+// not take (kernel::InputError naming the option in these words: "floor map", "start sub-cell",
+// "camera calibration", "arena spec", "control period", "controller", "controller parameter",
+// "steps", "device").
 struct RecordOptions {
   std::string device = "khepera";   // a registry name (device.hpp)
   std::string port;                 // a tty or pty path, or tcp:HOST:PORT (serial.hpp)

@@ -69,7 +69,9 @@ struct PreparedRun {
 };
 
 // The emulator's options as the command line gives them; a device refuses those it does not take
-// (InputError naming the option).
+// (InputError naming the option in these words: "arena spec", "fault", "pacing", "listen address",
+// "floor map", "start sub-cell", "start heading", "camera noise", "dark offset", "fade half-life",
+// "rotation error", "drift").
 struct EmulateOptions {
   std::uint64_t seed = 1;
   std::optional<std::string> arena;     // the serial robots: the arena's spec, for the report
@@ -104,7 +106,8 @@ public:
   [[nodiscard]] virtual std::string_view name() const noexcept = 0;
   // The line the robot talks on (record's --baud and --framing go over it).
   [[nodiscard]] virtual LineSettings line() const noexcept = 0;
-  // Validates the options for this device (kernel::InputError naming the option otherwise).
+  // Validates the options for this device (kernel::InputError naming the option otherwise, in
+  // RecordOptions' words).
   [[nodiscard]] virtual PreparedRun prepare(const RecordOptions& options) const = 0;
   // The replay of a log whose header names this device (replay.hpp).
   [[nodiscard]] virtual ReplayResult replay(LogReader& reader, const std::string& path,

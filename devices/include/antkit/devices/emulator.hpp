@@ -91,7 +91,7 @@ struct FaultSpec {
 
 // Parses --fault values: `delay=P:MS`, `garbage=P`, `drop=P`, `cut=P` (P a probability in [0, 1]
 // with up to six decimals), `disconnect=N` (N >= 0 commands). Several may be given. Throws
-// kernel::InputError("--fault", ...).
+// kernel::InputError("fault", ...).
 FaultSpec parse_faults(const std::vector<std::string>& specs);
 
 struct EmulatorOptions {

@@ -159,7 +159,7 @@ struct BuffonFromLogs {
 //  * a log whose controller is not `buffon` (rs and wander walks are not Buffon visits);
 //  * a visit-1 log given as visit 2 or a visit-2 log as visit 1 (the header's params "visit");
 //  * logs of different robots, or headers naming different arenas (or an arena other than
-//    arena.spec, which is then refused at "--arena");
+//    arena.spec, which is then refused as "arena spec");
 //  * a log without odometry, or with a buffon observation that is not six readings in [0, 1].
 BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& visit2,
                                 kernel::Fx width, const TrueArena& arena = {});

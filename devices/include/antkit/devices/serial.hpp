@@ -20,7 +20,7 @@
 // as antkit does, and TIOCEXCL covers the rest for non-root users (root bypasses TIOCEXCL).
 // F_OFD_GETLK reports pid -1 for an OFD holder, so the holder's PID is found by the /proc/PID/fd
 // entries that are the same device and whose /proc/PID/fdinfo lists a lock; a classic-lock holder's
-// PID comes from F_OFD_GETLK itself. A held port: kernel::InputError("--port", "'PATH' is busy:
+// PID comes from F_OFD_GETLK itself. A held port: kernel::InputError("port", "'PATH' is busy:
 // port busy, held by process PID") (just "port busy" when the PID cannot be found, e.g. /proc not
 // readable); an open() failing with EBUSY says "port busy" too.
 //
@@ -30,7 +30,7 @@
 // apply and are ignored; flush_input drains the socket (no tcflush). End of file, ECONNRESET and
 // EPIPE are LinkError Disconnected, as a tty hang-up is; writes use send(MSG_NOSIGNAL), so a closed
 // peer cannot kill the process with SIGPIPE. A malformed spec or a host that does not resolve is
-// kernel::InputError("--port", ...) (exit 2); nothing listening, or a server that already has its
+// kernel::InputError("port", ...) (exit 2); nothing listening, or a server that already has its
 // one client (the Webots relay, `antkit emulate --listen`), is LinkError(Disconnected, "HOST:PORT:
 // connection refused"); no answer within the timeout is LinkError(Disconnected, "...: connection
 // timed out").
@@ -101,7 +101,7 @@ struct ReadResult {
 class SerialPort {
 public:
   // A tty or pty path (held exclusively), or `tcp:HOST:PORT` (settings ignored); see above.
-  // Throws kernel::InputError("--port", ...) when `path` cannot be opened, is not a terminal, is
+  // Throws kernel::InputError("port", ...) when `path` cannot be opened, is not a terminal, is
   // busy, or is a malformed or unresolvable TCP spec; LinkError Disconnected when a TCP connection
   // is refused or times out.
   static SerialPort open(const std::string& path, const LineSettings& settings,
@@ -165,7 +165,7 @@ class TcpListener {
 public:
   // Binds `at` (port 0: a free port, chosen here) and listens with a backlog of 1. Throws
   // kernel::InputError(where, ...) when the host does not resolve or the address cannot be bound.
-  static TcpListener listen(const TcpEndpoint& at, const std::string& where = "--listen");
+  static TcpListener listen(const TcpEndpoint& at, const std::string& where = "listen address");
   TcpListener(TcpListener&& other) noexcept;
   TcpListener& operator=(TcpListener&& other) noexcept;
   TcpListener(const TcpListener&) = delete;

@@ -67,7 +67,7 @@ struct BuffonFigure {
   std::uint64_t hash = 0; // every trial's trace hash, in arena then trial order
 };
 
-// Throws kernel::InputError("--figure" / "--trials" / "--steps") for parameters out of range.
+// Throws kernel::InputError("figure" / "trials" / "steps per visit") for parameters out of range.
 [[nodiscard]] BuffonFigure run_buffon_figure(const BuffonFigureParams& params,
                                              const algorithms::Runner& runner);
 [[nodiscard]] std::string buffon_figure_csv(const BuffonFigure& f);

@@ -104,7 +104,7 @@ struct ReproduceReport {
   std::vector<std::filesystem::path> files; // written, relative to `out`
 };
 
-// Throws kernel::InputError ("--only") for an unknown name.
+// Throws kernel::InputError ("families") for an unknown name.
 void validate(const ReproduceOptions& options);
 
 // Runs everything asked for. Under MPI every rank calls it (the trials are split across the ranks

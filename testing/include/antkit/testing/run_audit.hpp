@@ -106,8 +106,8 @@ struct CoverCheckReport {
   std::optional<std::uint64_t> claim_viewed, claim_viewable;
 };
 
-// `antkit check cover`: the sensor range is `sensor` when given (an InputError "--sensor" outside
-// [0, uniform::kMaxSensorRange]), else the trace's "# sensor:".
+// `antkit check cover`: the sensor range is `sensor` when given (an InputError "sensor distance"
+// outside [0, uniform::kMaxSensorRange]), else the trace's "# sensor:".
 [[nodiscard]] CoverCheckReport check_cover_files(const std::string& map_file,
                                                  const std::string& trace_file,
                                                  std::optional<std::int64_t> sensor);
@@ -116,7 +116,7 @@ struct CoverCheckReport {
                                            const CoverTrace& trace,
                                            std::optional<std::int64_t> sensor,
                                            const std::string& trace_source);
-// An InputError "--sensor" for a range outside [0, uniform::kMaxSensorRange].
+// An InputError "sensor distance" for a range outside [0, uniform::kMaxSensorRange].
 void check_sensor_range(std::optional<std::int64_t> sensor);
 
 // Reads a whole text file (at most `max_bytes`); one that cannot be read is an InputError naming

@@ -61,7 +61,8 @@ struct FloorOptions {
 class FloorWorld {
 public:
   // `start` must be a free sub-cell of the map's cell area; `heading` a direction 0..3 (E, N, W,
-  // S). Throws kernel::InputError otherwise, or for options out of range.
+  // S). Throws kernel::InputError otherwise ("start sub-cell", "start heading"), or for options out
+  // of range ("camera noise", "dark offset", "fade half-life", "rotation error", "drift").
   FloorWorld(const kernel::OccupancyGrid& map, stc::SubCell start, int heading,
              FloorOptions options);
 

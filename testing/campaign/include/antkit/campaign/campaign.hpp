@@ -62,7 +62,8 @@ struct Ranks {
   std::function<bool(bool local)> any;
 };
 
-// Throws kernel::InputError naming the option for a value out of range or an unknown variant.
+// Throws kernel::InputError naming the option for a value out of range or an unknown variant:
+// "cases", "first case", "largest map", "time limit", "threads" or "variants".
 void validate(const Options& options);
 
 struct Failure {
