@@ -1,7 +1,7 @@
 // antkit_determinism: a fixed set of scenarios over every controller family and body, each
 // printing its trace hash, for the determinism matrix (scripts/determinism.sh, issue 16). It links
-// only antkit::algorithms and antkit::kernel, plus the MovingAI reader (geometry/src/
-// map_movingai.cpp, which needs no CGAL) and the marker-floor robot's integer camera, floor and
+// only antkit::algorithms and antkit::kernel, plus the map readers (geometry/src/map_*.cpp, which
+// need no CGAL) and the marker-floor robot's integer camera, floor and
 // pilot (devices/src/stc_floor_*.cpp but its calibration file: no JSON library), so that any
 // compiler builds it and it cross-compiles to a big-endian CPU: Buffon's arenas are walls built
 // with the kernel's own sine and cosine, grid maps are real maps from data/maps/movingai or
@@ -19,6 +19,11 @@
 //                                                 a pillar; the wanderer alone) into DIR2, "name
 //                                                 file" per line
 //                                                 (the matrix's cortex-m4 configuration)
+//   antkit_determinism --maps DIR --stc-tours     every shared map's STC tours (issue 27): per map
+//                                                 of DIR/movingai and DIR/ros (name order) and
+//                                                 variant the chip runs (ant, ant-edge, online),
+//                                                 from `antkit stc`'s start: "stc-tour/<variant>/
+//                                                 <file> hash covered repeats returned_to_start"
 //   antkit_determinism --teeth native-endian [--check FILE | --trace teeth/native-endian]
 //                                                 Buffon's first trail hashed over the bytes of its
 //                                                 coordinates as this CPU stores them: FILE's hash
@@ -38,6 +43,7 @@
 #include <antkit/los/explore.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/stc/mcu_input.hpp>
+#include <antkit/stc/start.hpp>
 #include <antkit/stc/world.hpp>
 #include <antkit/uniform/coverage.hpp>
 #include <antkit/uniform/scenario.hpp>
@@ -47,6 +53,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -481,10 +488,36 @@ void write_mcu_inputs(MapShelf& shelf, const std::string& dir) {
   }
 }
 
+// `--stc-tours`: the tours `antkit stc --map F --variant V` makes on every shared map, for the
+// variants the Cortex-M image runs, so that a build for another CPU (32-bit ARM Linux under
+// qemu-user: scripts/determinism.sh) can be held to the host's on every map, not only the golden
+// scenarios' three; determinism/check_stc_tours.sh holds this listing to `antkit stc` itself.
+void print_stc_tours(const std::string& maps_dir) {
+  std::vector<std::filesystem::path> files;
+  for (const char* sub : {"movingai", "ros"})
+    for (const auto& entry : std::filesystem::directory_iterator(maps_dir + "/" + sub)) {
+      const auto ext = entry.path().extension();
+      if (ext == ".map" || ext == ".yaml") files.push_back(entry.path());
+    }
+  std::sort(files.begin(), files.end());
+  for (const auto& file : files) {
+    const maps::GridMap map = maps::load_map(file);
+    for (const auto variant : {stc::Variant::Ant, stc::Variant::AntEdge, stc::Variant::Online}) {
+      const stc::SubCell start =
+          stc::choose_start(map.cells, variant, std::nullopt, map.start, file.string());
+      const stc::RunResult r = stc::run_stc(map.cells, start, variant);
+      std::printf("stc-tour/%s/%s %s %lld %lld %s\n",
+                  std::string(stc::variant_name(variant)).c_str(), file.filename().string().c_str(),
+                  kernel::hash_hex(r.hash).c_str(), static_cast<long long>(r.covered),
+                  static_cast<long long>(r.repeats), r.returned_to_start ? "true" : "false");
+    }
+  }
+}
+
 int usage(const std::string& why) {
   std::fprintf(stderr,
                "antkit_determinism: %s\nusage: antkit_determinism --maps DIR [--threads T] "
-               "[--check FILE | --trace NAME | --list | --mcu-inputs DIR]\n       "
+               "[--check FILE | --trace NAME | --list | --mcu-inputs DIR | --stc-tours]\n       "
                "antkit_determinism --teeth "
                "native-endian [--check FILE | --trace teeth/native-endian]\n",
                why.c_str());
@@ -540,11 +573,11 @@ int check_against(const std::map<std::string, std::string>& got, const std::stri
 int main(int argc, char** argv) {
   unsigned threads = 1;
   std::string maps_dir, check, trace_name, teeth, mcu_dir;
-  bool list = false;
+  bool list = false, stc_tours = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--list") {
-      list = true;
+    if (a == "--list" || a == "--stc-tours") {
+      (a == "--list" ? list : stc_tours) = true;
       continue;
     }
     if (i + 1 >= argc) return usage(a + " needs a value");
@@ -581,6 +614,10 @@ int main(int argc, char** argv) {
       for (std::size_t k = 0; k < lines.size(); ++k) std::printf("%zu %s\n", k, lines[k].c_str());
       if (!trace_name.empty()) return 0;
     } else {
+      if (stc_tours) {
+        print_stc_tours(maps_dir);
+        return 0;
+      }
       MapShelf shelf(maps_dir);
       if (!mcu_dir.empty()) {
         write_mcu_inputs(shelf, mcu_dir);

@@ -16,7 +16,9 @@
 # Every configuration compiles with -ffp-contract=off (the kernel's rule 7, also carried by
 # antkit::kernel). A mismatch prints the scenario, the configuration, and the first step at which
 # its trace (--trace: each step's state and a chained hash of the states so far) differs from the
-# reference build's, with both states. The teeth: the s390x build's native-endian hash must differ
+# reference build's, with both states. Each configuration also prints the STC tours of every shared
+# map (--stc-tours: ant, ant-edge and online from `antkit stc`'s start, 17 maps), and must print the
+# first configuration's bytes. The teeth: the s390x build's native-endian hash must differ
 # from the little-endian golden value, and the script shows where its trace first parts.
 #
 # cortex-m4 is not a build of antkit_determinism: the chip runs the STC scenarios of ant and
@@ -168,6 +170,7 @@ cortex_m4() {
 
 failed=0
 reference=""
+tours_reference="" # the first configuration whose every-map STC listing ran
 declare -A verdict
 pending=() # "config scenario": a mismatch to locate once a reference build is known
 start_all=$SECONDS
@@ -216,6 +219,23 @@ for config in "${configs[@]}"; do
     fi
   elif [ "$tstatus" -ne 0 ]; then
     echo "   teeth: the native-endian hash should match on this little-endian build: $teeth"
+    ok=0
+  fi
+  # Every shared map's STC tours (--stc-tours; issue 27): the first configuration's listing is the
+  # reference, every later one must print the same bytes (ctest's determinism.stc_tours test holds
+  # the listing to `antkit stc`'s own on the default build).
+  tours=build/determinism/$config.stc-tours
+  if ! run "$config" --maps "$maps" --stc-tours >"$tours"; then
+    echo "   STC TOURS FAILED: the every-map listing did not run"
+    ok=0
+  elif [ -z "$tours_reference" ]; then
+    tours_reference=$config
+    echo "   stc tours: $(wc -l <"$tours") tours on every shared map (the listing the others must repeat)"
+  elif cmp -s "$tours" "build/determinism/$tours_reference.stc-tours"; then
+    echo "   stc tours: all $(wc -l <"$tours") as $tours_reference's"
+  else
+    echo "   STC TOURS MISMATCH against $tours_reference:"
+    diff "build/determinism/$tours_reference.stc-tours" "$tours" | head -10 | sed 's/^/     /'
     ok=0
   fi
   if [ $ok -eq 1 ]; then

@@ -9,7 +9,9 @@ namespace antkit::kernel {
 
 class InputError : public std::runtime_error {
 public:
-  // `where` names the input: a file, or an option such as `--width`.
+  // `where` names the input: a file (with a position), a spec, or the library's own word for a
+  // parameter such as "trail width" (the command line shows each word as the option that carries
+  // it: cli/main.cpp and each subcommand's Registration; the Python module shows it as it is).
   InputError(const std::string& where, const std::string& message)
       : std::runtime_error(where.empty() ? message : where + ": " + message), where_(where),
         message_(message) {}
