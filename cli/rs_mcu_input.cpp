@@ -43,8 +43,8 @@ struct RsInputCommand {
 };
 
 void run(const RsInputCommand& c) {
-  if (c.steps < 1 || c.steps > 10000000)
-    throw InputError("--steps", "the steps must be in [1, 10000000]");
+  if (c.steps < 1 || c.steps > buffon::kMcuMaxSteps) // --host too, so before the writer's check
+    throw InputError("--steps", buffon::describe_rs(buffon::McuBuffonError::Steps));
   antkit::cli::check_buffon_body(0.1, c.noise);
   if (c.host == !c.out.empty())
     throw InputError("--out", "give either --out FILE (the chip's input) or --host");

@@ -472,10 +472,10 @@ void write_mcu_inputs(MapShelf& shelf, const std::string& dir) {
             stc_scenario_name(variant, noisy, map),
             stc::mcu_input(grid, stc_start(grid), variant, noisy ? kStcNoise : stc::NoiseModel{}));
       }
+  const buffon::World pillar(square_with_pillar(), buffon::BodyParams{});
   for (const std::uint64_t seed : {std::uint64_t{1}, std::uint64_t{2}, std::uint64_t{3}}) {
-    const buffon::World world(square_with_pillar(), buffon::BodyParams{});
     write("buffon/square-pillar/seed" + std::to_string(seed),
-          buffon::mcu_buffon_input(world, buffon::TrialParams{}.width, seed, 3000,
+          buffon::mcu_buffon_input(pillar, buffon::TrialParams{}.width, seed, 3000,
                                    buffon::McuBuffonProgram::Digest)
               .bytes);
   }

@@ -3,7 +3,7 @@
 #include <antkit/buffon/mcu_digest_input.hpp>
 #include <antkit/buffon/mcu_encode.hpp>
 #include <antkit/buffon/mcu_input.hpp>
-#include <antkit/buffon/measurement.hpp>
+#include <antkit/buffon/pheromone_raster.hpp>
 #include <antkit/buffon/rs_mcu_input.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <iterator>
@@ -45,7 +45,10 @@ McuInput mcu_buffon_input(const World& world, Fx width, std::uint64_t seed, std:
   if (steps < 1 || steps > kMcuMaxSteps)
     throw InputError("steps per visit", describe(McuBuffonError::Steps));
   const WorldLayout layout = chip_layout(world);
-  const PheromoneRaster raster(world.lower(), world.upper(), width);
+  RasterCore raster; // its size only: the chip holds the bits, the host needs none
+  if (const RasterError e = raster.init(world.lower(), world.upper(), width);
+      e != RasterError::None)
+    throw InputError("trail width", describe(e)); // as PheromoneRaster refuses it
   const std::uint64_t walls = world.walls().size();
   const FixedTrialPlan plan = plan_fixed_trial(layout, raster, steps);
   const std::uint64_t need = mcu_buffon_bytes(walls, plan);
