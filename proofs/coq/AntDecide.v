@@ -3,15 +3,16 @@
    directions (E = 0, N = 1, W = 2, S = 3; a quadrant is named by the same four values).
 
    This function is the one AntStcWorld.v proves things about (the robot that runs it covers every
-   map), and the table at the end of this file is computed from it: tests/proofs/test_ant_decide.cpp
-   requires the shipped ant_decide to give the table's decision on every input of its domain
-   (every quadrant, both values of `done`, every 4-bit free mask, here mask and neighbour masks: the
-   observations a world can give), so the C++ cannot drift from what is proved.
+   map), and the table at the end of this file is computed from it: proofs/tie/ant_stc_tie.cpp
+   (ctest proof.tie.ant_decide) requires the shipped ant_decide to give the table's decision on
+   every input of its domain (every quadrant, both values of `done`, every 4-bit free mask, here
+   mask and neighbour masks: the observations a world can give), so the C++ cannot drift from what
+   is proved.
 
    The table has 4 x 16 x 16 x 16 x 2 entries, not 4 x 2 x 16^6: `decide` reads a neighbour's mask
    only through "is it empty" and, for the neighbour across the robot's own side, one bit.
-   `decide_factors` proves this, so the C++ test reduces each full input the same way and looks it
-   up. `done` is not in the table: `decide` answers Stop whenever it is set (decide_done).
+   `decide_reads_the_view` and `decide_view_ext` prove this, so the tie reduces each full input the
+   same way and looks it up. `done` is not in the table: `decide` answers Stop whenever it is set (decide_done).
 
    Encoding (one character per entry): '.' is Stop; Go m q is the character 'a' + 4 m + q (m the
    direction of the move, q the quadrant the robot believes it enters). One string per current

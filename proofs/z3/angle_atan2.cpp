@@ -322,10 +322,11 @@ void prove_format(Session& s, Prover& p, const std::string& fmt) {
   // The table lemmas at the code's index (instances of claims proved for every index).
   table_facts(s, t.index);
 
-  // A claim proved for every input is then kept as a fact (true: it was just proved), so that later
-  // checks need not re-derive it from the division's definition (256-bit for q31).
+  // A claim proved for every input is then kept as a fact (Prover::keep: scoped to the domain it
+  // was proved under, true since it was just proved), so that later checks need not re-derive it
+  // from the division's definition (256-bit for q31).
   const auto keep = [&](const std::string& name, const Bool& c) {
-    if (p.claim("atan2." + fmt + "." + name, c)) s.fact(c.expr());
+    p.keep("atan2." + fmt + "." + name, c);
   };
 
   // The ratio, first: everything after the division depends on its range. M = q 2D by the

@@ -71,7 +71,10 @@ std::string pow2_decimal(int k) {
 
 } // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  // --plant-false: also claim `false` in the b == 0 section (proof.teeth.q31_div_false_by_zero
+  // requires it to fail: the section's context is satisfiable, so false has a counterexample).
+  const bool plant_false = argc > 1 && std::string(argv[1]) == "--plant-false";
   Session s;
   Prover p(s);
   constexpr int F = 32;
@@ -166,17 +169,18 @@ int main() {
   // (word-level equalities between two adders), and the rounding holds for the code's own terms
   // (from the definition of division alone). Stated as one claim over the specification's t, the
   // bit-blaster had to relate the two adders inside the inequalities, and Z3 had not finished
-  // after 10 minutes; each link is proved, then kept as a fact (true: it was just proved).
-  if (p.claim("q31.div.code_divides_by_2|b|", dcode == d2)) s.fact((dcode == d2).expr());
-  if (p.claim("q31.div.code_dividend (t = 2 s a 2^32 + |b|)", tcode == t))
-    s.fact((tcode == t).expr());
+  // after 10 minutes; each link is proved, then kept (Prover::keep) as "b != 0 and the quotient in
+  // range imply the link": true, since it was just proved there. Until issue 41 they were kept
+  // unconditionally, and two of them contradict b == 0, so the b == 0 section below was proved from
+  // a contradiction; the harness now refuses such a context (proof.teeth.harness.*).
+  p.keep("q31.div.code_divides_by_2|b|", dcode == d2);
+  p.keep("q31.div.code_dividend (t = 2 s a 2^32 + |b|)", tcode == t);
   p.claim("q31.div.result_is_corrected_quotient", S(raw) == S(k) - corr);
   const Bool code_terms = RD <= tcode && tcode < RD + dcode;
-  if (p.claim("q31.div.rounds_half_up.code_terms (raw d2 <= t < raw d2 + d2 for the code's t, d2)",
-              code_terms))
-    s.fact(code_terms.expr());
+  p.keep("q31.div.rounds_half_up.code_terms (raw d2 <= t < raw d2 + d2 for the code's t, d2)",
+         code_terms);
   const Bool rounds = RD <= t && t < RD + d2;
-  if (p.claim("q31.div.rounds_half_up (floor(a 2^32 / b + 1/2))", rounds)) s.fact(rounds.expr());
+  p.keep("q31.div.rounds_half_up (floor(a 2^32 / b + 1/2))", rounds);
   // The error bound from the rounding, by linear arithmetic: stated over the bit-vectors it took
   // 75 s (the bit-blaster relates RD - 2 s a 2^32 <= d to RD <= t adder by adder); over the
   // integers it is immediate. Every value involved is below 2^130 in magnitude, so the 200-bit
@@ -205,5 +209,6 @@ int main() {
   for (const auto& ob : kept) s.oblige(ob.what, ob.holds);
   p.claim("q31.div.by_zero_saturates (max() for a >= 0, min() for a < 0; no other UB)",
           z == select(a < I64(0), I64(INT64_MIN), I64(INT64_MAX)));
+  if (plant_false) p.claim("q31.div.teeth: false, planted in the b == 0 section", Bool(false));
   return p.result();
 }

@@ -13,11 +13,23 @@
 // Each claim is checked under the domain given to `assume` (the function's documented domain), and
 // so is every obligation (no undefined behaviour) recorded since the previous claim: a claim about
 // a computation that may overflow is not proved, whatever the bit-vector says.
+//
+// No claim passes vacuously. Before a claim counts, its context -- the domain, the path condition
+// and every fact -- is checked satisfiable (an unsatisfiable context proves anything, `false`
+// included). A context whose domain and facts contradict each other fails the run ("CONTEXT
+// UNSATISFIABLE"); a path whose condition contradicts a satisfiable domain (a branch the inputs
+// cannot take, which for_each_path runs anyway) is reported and not counted, and a claim that was
+// checked on no satisfiable context at all fails at result(). A proved claim kept for later checks
+// (keep) is kept as "context implies claim", scoped to the domain and path it was proved under, so
+// a later section with another domain does not inherit it.
 #include "z3_int.hpp"
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <string>
 #include <unordered_set>
@@ -84,6 +96,24 @@ public:
     s_.clear_obligations();
     ok = check(name, c) && ok;
     return ok;
+  }
+
+  // Proves c like claim() and, when proved, keeps it as a fact for the later checks -- scoped: what
+  // is kept is "domain and path imply c", true because c was just proved under them, and harmless
+  // to a later section whose domain contradicts this one (the implication is then vacuous there,
+  // instead of a contradiction that would prove that section's claims from nothing).
+  bool keep(const std::string& name, const Bool& c) { return keep(name, c.expr()); }
+  bool keep(const std::string& name, const z3::expr& c) {
+    if (!claim(name, c)) return false;
+    s_.fact(z3::implies(context(), c));
+    return true;
+  }
+
+  // The domain and the current path as one condition.
+  z3::expr context() const {
+    z3::expr all = domain_;
+    for (const auto& p : s_.path()) all = all && p;
+    return all;
   }
 
   // A claim over Z3's mathematical integers (no bit-vectors), for the default solver.
@@ -160,9 +190,20 @@ public:
     return all;
   }
 
-  int result() const {
+  int result() {
+    // A claim every context of which was an impossible path was never checked at all.
+    for (const auto& [name, counted] : counted_) {
+      if (counted) continue;
+      ++failures_;
+      std::cout << "VACUOUS  " << name << ": every path it was checked on is impossible\n";
+    }
+    if (proved_ == 0 && refuted_ == 0) {
+      ++failures_;
+      std::cout << "FAILED   no claim was checked\n";
+    }
     std::cout << (failures_ == 0 ? "all " : "") << proved_ << " proved, " << refuted_
-              << " wrong claims refuted, " << failures_ << " failed\n";
+              << " wrong claims refuted, " << impossible_paths_
+              << " on impossible paths (not counted), " << failures_ << " failed\n";
     return failures_ == 0 ? 0 : 1;
   }
 
@@ -171,10 +212,13 @@ private:
   // refutes it. Bit-vector claims go to Z3's QF_BV solver (simplify, then bit-blast to SAT), which
   // is much faster on them than the default portfolio; claims over mathematical integers (a few
   // nonlinear lemmas) to the default solver; claim_over_reals sets its own logic.
+  z3::solver make_solver() {
+    return logic_ != nullptr ? z3::solver(s_.ctx(), logic_)
+           : integers_       ? z3::solver(s_.ctx())
+                             : bit_vector_solver();
+  }
   z3::solver negation_solver(const z3::expr& c) {
-    z3::solver solver = logic_ != nullptr ? z3::solver(s_.ctx(), logic_)
-                        : integers_       ? z3::solver(s_.ctx())
-                                          : bit_vector_solver();
+    z3::solver solver = make_solver();
     solver.add(domain_);
     for (const auto& p : s_.path()) solver.add(p);
     for (const auto& f : s_.facts()) solver.add(f);
@@ -182,9 +226,71 @@ private:
     return solver;
   }
 
+  // Whether the context (domain, path, facts) of the next check has a model: Sat; Impossible when
+  // only the path contradicts a satisfiable domain and facts; Contradiction when the domain and
+  // facts contradict each other. Each distinct context is decided once (the same context is shared
+  // by many claims in a row).
+  enum class Context { Sat, Impossible, Contradiction, Unknown };
+  Context context_status() {
+    std::vector<unsigned> key;
+    key.push_back(Z3_get_ast_id(s_.ctx(), domain_));
+    key.push_back(static_cast<unsigned>(logic_ != nullptr) * 2 + static_cast<unsigned>(integers_));
+    for (const auto& p : s_.path()) key.push_back(Z3_get_ast_id(s_.ctx(), p));
+    key.push_back(0xFFFFFFFFu);
+    for (const auto& f : s_.facts()) key.push_back(Z3_get_ast_id(s_.ctx(), f));
+    if (key == context_key_) return context_;
+    context_key_ = key;
+    const auto decide = [&](bool with_path) {
+      z3::solver solver = make_solver();
+      solver.add(domain_);
+      if (with_path)
+        for (const auto& p : s_.path()) solver.add(p);
+      for (const auto& f : s_.facts()) solver.add(f);
+      return solver.check();
+    };
+    const z3::check_result all = decide(true);
+    if (all == z3::sat)
+      context_ = Context::Sat;
+    else if (all == z3::unknown)
+      context_ = Context::Unknown;
+    else if (s_.path().empty())
+      context_ = Context::Contradiction;
+    else {
+      const z3::check_result without_path = decide(false);
+      context_ = without_path == z3::sat     ? Context::Impossible
+                 : without_path == z3::unsat ? Context::Contradiction
+                                             : Context::Unknown;
+    }
+    return context_;
+  }
+
   bool check(const std::string& name, const z3::expr& c) {
     const auto t0 = std::chrono::steady_clock::now();
+    counted_.try_emplace(name, false);
+    switch (context_status()) {
+    case Context::Sat:
+      break;
+    case Context::Impossible:
+      ++impossible_paths_;
+      std::cout << "skipped  " << name << ": this path is impossible in the domain (not counted)\n";
+      return true;
+    case Context::Contradiction:
+      ++failures_;
+      counted_[name] = true; // failed already: not also reported as vacuous
+      std::cout << "CONTEXT UNSATISFIABLE  " << name
+                << ": the domain and the kept facts contradict each other, so every claim would "
+                   "pass (false included); not proved\n";
+      return false;
+    case Context::Unknown:
+      ++failures_;
+      counted_[name] = true;
+      std::cout << "UNKNOWN  " << name
+                << ": Z3 could not decide whether the context is satisfiable\n";
+      return false;
+    }
+    counted_[name] = true;
     z3::solver solver = negation_solver(c);
+    dump_smt2(name, solver);
     const z3::check_result r = solver.check();
     const auto ms =
         std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - t0)
@@ -217,6 +323,58 @@ private:
     return false;
   }
 
+  // With ANTKIT_SMT2_DIR set, every check that counts is also written there as an SMT-LIB 2 file
+  // (NNNN.smt2, the claim's name in a comment on its first line; the negated claim, so the expected
+  // answer is unsat): proofs/cmake/run_cvc5.cmake re-solves them with a second solver, so that one
+  // solver's bug is not a single point of failure.
+  void dump_smt2(const std::string& name, z3::solver& solver) {
+    const char* dir = std::getenv("ANTKIT_SMT2_DIR");
+    if (dir == nullptr || *dir == '\0') return;
+    char file[32];
+    std::snprintf(file, sizeof file, "/%04d.smt2", dumped_++);
+    std::ofstream out(std::string(dir) + file);
+    if (!out) {
+      ++failures_;
+      std::cout << "FAILED   cannot write " << dir << file << " (ANTKIT_SMT2_DIR)\n";
+      return;
+    }
+    std::string one_line = name;
+    for (char& ch : one_line)
+      if (ch == '\n') ch = ' ';
+    out << "; " << one_line << "\n";
+    // The claims over integers mix the integers with the session's bit-vector facts: ALL.
+    const char* logic = logic_ != nullptr  ? logic_
+                        : integers_        ? "ALL"
+                        : s_.uses_arrays() ? "QF_ABV"
+                                           : "QF_BV";
+    out << "(set-logic " << logic << ")\n";
+    out << portable_smt2(solver.to_smt2());
+  }
+
+  // Z3 writes its own name for "signed multiplication does not overflow", (bvsmul_noovfl x y);
+  // SMT-LIB's (and cvc5's) is the opposite predicate, (bvsmulo x y): each term is rewritten to
+  // (not (bvsmulo x y)), the same meaning.
+  static std::string portable_smt2(const std::string& text) {
+    static const std::string z3_name = "(bvsmul_noovfl ";
+    std::string out;
+    std::size_t from = 0;
+    for (std::size_t at; (at = text.find(z3_name, from)) != std::string::npos;) {
+      out.append(text, from, at - from);
+      out += "(not (bvsmulo ";
+      // The term's closing parenthesis: where the depth returns to zero.
+      std::size_t i = at + 1;
+      for (int depth = 1; i < text.size() && depth > 0; ++i) {
+        if (text[i] == '(') ++depth;
+        if (text[i] == ')') --depth;
+      }
+      out += portable_smt2(text.substr(at + z3_name.size(), i - (at + z3_name.size())));
+      out += ")";
+      from = i;
+    }
+    out.append(text, from, std::string::npos);
+    return out;
+  }
+
   // QF_BV, or QF_ABV once a kernel has read a table as a Z3 array (z3_int.hpp, lookup): QF_BV's
   // tactic rejects array terms.
   z3::solver bit_vector_solver() {
@@ -230,6 +388,11 @@ private:
   int proved_ = 0;
   int refuted_ = 0;
   int failures_ = 0;
+  int impossible_paths_ = 0;
+  static inline int dumped_ = 0;        // process-wide: a program may run several Provers
+  std::map<std::string, bool> counted_; // claim -> checked on at least one satisfiable context
+  std::vector<unsigned> context_key_;   // the last context decided, and its status
+  Context context_ = Context::Sat;
 };
 
 } // namespace antkit::proofs
