@@ -17,6 +17,7 @@ packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm
   g++-arm-linux-gnueabihf
   libopenmpi-dev openmpi-bin
+  cvc5
   time
 )
 
