@@ -8,7 +8,7 @@ CTEST_ARGS ?=
 export CCACHE_BASEDIR := $(CURDIR)
 export CCACHE_NOHASHDIR := 1
 
-.PHONY: all bootstrap configure build demo test bench fuzz format clean
+.PHONY: all bootstrap configure build demo check test bench fuzz format clean
 
 all: build
 
@@ -21,9 +21,18 @@ configure: bootstrap
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-# The main job on a built-in default.
-demo: build
+# The main job on a built-in default. It needs the antkit command alone, so it builds that target
+# and what it links (not the tests, proofs, fuzz or benchmark programs): the demo starts minutes
+# sooner on a fresh machine.
+demo: configure
+	cmake --build $(BUILD) -j $(JOBS) --target antkit
 	@scripts/demo.sh $(BUILD)/cli/antkit
+
+# The tier for every edit: unit and property tests and the fast proofs, without what is labelled
+# slow, the Cortex-M image (mcu) or the determinism matrix. `make test` is the whole suite.
+check: build
+	@echo "rapidcheck seed: $$(grep -m1 '^ANTKIT_RC_SEED' $(BUILD)/CMakeCache.txt | cut -d= -f2)"
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE 'slow|mcu|determinism' $(CTEST_ARGS)
 
 # The whole test suite (unit, property, proof, fuzz-regression, slow).
 test: build
