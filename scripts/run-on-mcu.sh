@@ -46,6 +46,16 @@
 # run on the chip, in the same 112 KiB arena: 2 bits per map cell and the footprint, refused with
 # the sizes and the limit when they exceed it.
 #
+#   scripts/run-on-mcu.sh decide [--first N] [--count N] [--flip K]
+#
+# runs the ant-like STC decision as the chip compiles it (the C API's antkit_ant_stc_step) on
+# inputs [N, N + COUNT) of its whole domain (default: all 134 217 728, 4 quadrants x 2 done x 16^6
+# masks, numbered as proofs/tie/ant_stc_tie.cpp enumerates them) and prints one JSON object whose
+# digest of every answer equals that of `proof_tie_ant_decide_digest AntDecide.out` with the same
+# range, computed from the Coq table (mcu/src/decide_run.cpp). --flip K changes the chip's answer
+# on input K (the tooth). Nothing is read from the host but the command line; a full run takes
+# about 20 s (15.5 G emulated instructions).
+#
 # Options before the subcommand:
 #   --icount   run QEMU with -icount shift=0 (its virtual clock advances 1 ns per instruction, and
 #              the emulated STM32F405's SysTick counts 168 per us of it) and add to the JSON
@@ -67,6 +77,7 @@ usage() {
   echo "       scripts/run-on-mcu.sh [--icount] rs --arena SPEC --steps N [--seed S] [--noise X]" >&2
   echo "       scripts/run-on-mcu.sh [--icount] wanderer (--map F | --size WxH --density P) [--seed S]" \
     "[--trial K] [--sensor R] [--limit T]" >&2
+  echo "       scripts/run-on-mcu.sh [--icount] decide [--first N] [--count N] [--flip K]" >&2
   exit 2
 }
 
@@ -82,9 +93,9 @@ done
 command=$1
 shift
 case "$command" in
-stc | buffon | rs | wanderer) ;;
+stc | buffon | rs | wanderer | decide) ;;
 *)
-  echo "run-on-mcu.sh: unknown command '$command' (stc, buffon, rs, wanderer)" >&2
+  echo "run-on-mcu.sh: unknown command '$command' (stc, buffon, rs, wanderer, decide)" >&2
   exit 2
   ;;
 esac
@@ -114,7 +125,7 @@ if [ -z "${ANTKIT_MCU_IMAGE:-}" ]; then
 fi
 
 antkit=${ANTKIT_EXE:-$here/build/release/cli/antkit}
-if [ -z "${ANTKIT_EXE:-}" ]; then
+if [ -z "${ANTKIT_EXE:-}" ] && [ "$command" != decide ]; then
   if [ ! -f "$here/build/release/build.ninja" ]; then
     (cd "$here" && cmake --preset release) >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
   fi
@@ -123,12 +134,30 @@ fi
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# Bad input: antkit's located message on stderr and its exit status 2, nothing on stdout.
-"$antkit" "$command-mcu-input" "$@" --out "$work/input.bin" >/dev/null
+if [ "$command" = decide ]; then
+  # No input file: the range (and the tooth's input) on the semihosting command line.
+  first=0 count="" flip=""
+  while [ $# -gt 0 ]; do
+    [ $# -ge 2 ] || usage
+    [[ "$2" =~ ^[0-9]+$ ]] || usage
+    case "$1" in
+    --first) first=$2 ;;
+    --count) count=$2 ;;
+    --flip) flip=",arg=$2" ;;
+    *) usage ;;
+    esac
+    shift 2
+  done
+  count=${count:-$((134217728 - first))}
+  config="enable=on,target=native,arg=antkit_mcu,arg=decide,arg=$first,arg=$count$flip"
+else
+  # Bad input: antkit's located message on stderr and its exit status 2, nothing on stdout.
+  "$antkit" "$command-mcu-input" "$@" --out "$work/input.bin" >/dev/null
+  config="enable=on,target=native,arg=antkit_mcu,arg=$work/input.bin"
+fi
 
 qemu=(qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none
-  -semihosting-config "enable=on,target=native,arg=antkit_mcu,arg=$work/input.bin"
-  -kernel "$image")
+  -semihosting-config "$config" -kernel "$image")
 [ $icount -eq 1 ] && qemu+=(-icount shift=0)
 status=0
 timeout 600 "${qemu[@]}" >"$work/out" 2>"$work/err" || status=$?
@@ -143,8 +172,9 @@ fi
 if [ $icount -eq 1 ]; then
   ticks=$(jq -r .ticks "$work/out")
   # A tour's moves (stc: its positions less the start), the steps (buffon: both visits', rs: the
-  # walk's; "moves") or the ticks (wanderer: "movements").
-  moves=$(jq -r 'if .movements then .movements elif .moves then .moves else .positions - 1 end' \
+  # walk's; "moves"), the ticks (wanderer: "movements") or the inputs (decide).
+  moves=$(jq -r 'if .movements then .movements elif .moves then .moves
+    elif .inputs then .inputs else .positions - 1 end' \
     "$work/out")
   instructions=$((ticks * 125 / 21))
   jq -c --argjson i "$instructions" --argjson m "$moves" \

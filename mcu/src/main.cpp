@@ -1,6 +1,7 @@
 // The Cortex-M image (issue 27): one run of ant-like STC (`ant`, `ant-edge` or `online`), one
 // Buffon trial (buffon_run.cpp, when the input is a Buffon one), one Randomized Search walk
-// (rs_run.cpp) or one step-turn wanderer run (wanderer_run.cpp) on the robot's own processor. It
+// (rs_run.cpp) or one step-turn wanderer run (wanderer_run.cpp) on the robot's own processor, or
+// the ant-like STC decision over a range of its whole input domain (decide_run.cpp). It
 // reads its input (stc/mcu_input.hpp: the map's free sub-cells, the start, the marker and the
 // noise) from the host file named on its semihosting command line, runs the controller through the
 // C API (antkit/c/antkit.h) over the floor of floor.hpp — the host's StcWorld steps the same floor
@@ -10,6 +11,7 @@
 // Exit status (through semihosting): 0 the tour ran (whatever it found), 2 bad input (the message
 // on the host's standard output, "error: ..."), 3 a processor fault (startup.cpp).
 #include "buffon_run.hpp"
+#include "decide_run.hpp"
 #include "semihost.hpp"
 #include "text.hpp"
 #include "ticks.hpp"
@@ -88,6 +90,13 @@ int main() {
   while (*path != 0 && *path != ' ') ++path;
   while (*path == ' ') ++path;
   if (*path == 0) return refuse("command line", "no input file (antkit_mcu INPUT)");
+  // "antkit_mcu decide FIRST COUNT [FLIP]": the ant-like STC decision over a range of its whole
+  // input domain (decide_run.cpp); no input file.
+  if (__builtin_memcmp(path, "decide", 6) == 0 && (path[6] == ' ' || path[6] == 0)) {
+    const char* args = path + 6;
+    while (*args == ' ') ++args;
+    return mcu::run_decide(args);
+  }
   const std::int32_t file = mcu::open_read(path);
   if (file < 0) return refuse(path, "cannot be opened");
   const std::int32_t size = mcu::file_length(file);

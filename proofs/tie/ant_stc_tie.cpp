@@ -26,6 +26,8 @@
 // changes the shipped decision on the K-th input, --drop-mark K makes the shipped world forget the
 // mark of its K-th move. Each must make the check fail (exit 1, "MISMATCH ..."); the tests pass
 // only then.
+#include "ant_decide_table.hpp"
+
 #include <antkit/kernel/grid.hpp>
 #include <antkit/stc/ant.hpp>
 #include <antkit/stc/floor.hpp>
@@ -49,53 +51,12 @@ using antkit::kernel::OccupancyGrid;
 
 // ---- the decision table -----------------------------------------------------------------------
 
-// The four strings coqc prints for `Compute table E/N/W/S` (one per current quadrant).
-std::optional<std::array<std::string, 4>> read_table(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return std::nullopt;
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
-  std::array<std::string, 4> out;
-  std::size_t pos = 0;
-  for (auto& s : out) {
-    const std::size_t open = text.find('"', pos);
-    if (open == std::string::npos) return std::nullopt;
-    const std::size_t close = text.find('"', open + 1);
-    if (close == std::string::npos) return std::nullopt;
-    s = text.substr(open + 1, close - open - 1);
-    if (s.size() != 16 * 16 * 16 * 2) return std::nullopt;
-    pos = close + 1;
-  }
-  return out;
-}
-
-// What an entry says ant_decide returns: '.' Stop (and done set), else Go m q: move m, mark, q.
-struct Expected {
-  bool stop = true;
-  int move = 0;
-  int q = 0;
-};
-
-Expected decode(char c) {
-  if (c == '.') return {};
-  const int v = c - 'a';
-  return {false, v / 4, v % 4};
-}
+// The table and the reduction: ant_decide_table.hpp.
+using namespace antkit::proofs;
 
 char flipped(char c) {
   // Any other valid entry: Stop becomes a walk east into quadrant 0, a move becomes Stop.
   return c == '.' ? 'a' : '.';
-}
-
-// AntDecide.v's reduction: is_new d = free d && the neighbour's mask is 0; entry = the mark of the
-// neighbour across side cur on its sub-cell cur - 1.
-std::size_t table_index(int here, int free, const std::array<std::uint8_t, 4>& nb, int cur) {
-  int is_new = 0;
-  for (int d = 0; d < 4; ++d)
-    if (((free >> d) & 1) != 0 && nb[static_cast<std::size_t>(d)] == 0) is_new |= 1 << d;
-  const int entry = (nb[static_cast<std::size_t>(cur)] >> dir_add(cur, 3)) & 1;
-  return static_cast<std::size_t>(((here * 16 + free) * 16 + is_new) * 2 + entry);
 }
 
 int check_decide(const std::string& golden, long long flip_table, long long flip_code) {
