@@ -1,20 +1,13 @@
 # The layers and what each may use: the one statement of the layer order, which the build holds.
+# ANTKIT_LAYER_USES_<layer> below is the table; README.md's "layer | may use" table must say the
+# same (ctest layers.docs, cmake/check_layer_docs.cmake). Notes the table cannot carry:
+#   geometry is the only layer that includes CGAL (and Eigen besides experiments and devices);
+#   c is the C API for firmware (the Cortex-M image builds its source); mpi uses MPI alone;
+#   devices uses geometry for the map files; testing uses mpi for the campaign's ranks.
 #
-#   kernel        the C++ standard library only
-#   geometry      kernel (and CGAL, Eigen: the only layer that includes CGAL)
-#   algorithms    kernel
-#   c             kernel, algorithms (the C API for firmware; the Cortex-M image builds its source)
-#   mpi           (MPI only)
-#   devices       kernel, geometry (the map files), algorithms
-#   testing       kernel, geometry, algorithms, mpi (the campaign's ranks)
-#   experiments   kernel, geometry, algorithms, devices, testing
-#   reports       kernel, geometry, algorithms, devices, testing
-#   python        kernel, geometry, algorithms, devices, testing, reports
-#   cli           every layer
-#
-# DESIGN.md draws experiments and devices side by side; here experiments sits above devices (paper
-# 002's marker-floor experiment runs the robot's pilot and camera from devices/stc_floor). Tools
-# (tests/, bench/, fuzz/, determinism/, proofs/, mcu/, examples/) may use any layer.
+# DESIGN.md draws experiments above devices and testing (paper 002's marker-floor experiment runs
+# the robot's pilot and camera from devices/stc_floor). Tools (tests/, bench/, fuzz/, determinism/,
+# proofs/, mcu/, examples/) may use any layer.
 #
 # Held three ways: antkit_check_layer_links() below refuses, at configure time, a layer target's
 # link line against this table; the ctest layers.includes (cmake/check_layers.cmake) reads every
