@@ -24,6 +24,7 @@
 // a later section with another domain does not inherit it.
 #include "z3_int.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -351,25 +352,54 @@ private:
     out << portable_smt2(solver.to_smt2());
   }
 
-  // Z3 writes its own name for "signed multiplication does not overflow", (bvsmul_noovfl x y);
-  // SMT-LIB's (and cvc5's) is the opposite predicate, (bvsmulo x y): each term is rewritten to
-  // (not (bvsmulo x y)), the same meaning.
+  // Z3 writes its own names for "signed multiplication does not overflow upwards / downwards",
+  // (bvsmul_noovfl x y) and (bvsmul_noudfl x y); SMT-LIB's (and cvc5's) predicate is "overflows
+  // either way", (bvsmulo x y). The product of two signed words overflows upwards only when their
+  // signs agree and downwards only when they differ (with a zero factor nothing overflows), so
+  //   (bvsmul_noovfl x y) = (not (and (bvsmulo x y) (= (bvslt x 0) (bvslt y 0))))
+  //   (bvsmul_noudfl x y) = (not (and (bvsmulo x y) (distinct (bvslt x 0) (bvslt y 0))))
+  // exactly, 0 written (bvsub x x) so that it has x's width.
   static std::string portable_smt2(const std::string& text) {
-    static const std::string z3_name = "(bvsmul_noovfl ";
+    const auto space = [&](std::size_t k) {
+      return k < text.size() && (text[k] == ' ' || text[k] == '\n' || text[k] == '\t');
+    };
+    // The end of the s-expression that starts at k: an atom (|quoted| or plain) or a term.
+    const auto sexp_end = [&](std::size_t k) {
+      if (k < text.size() && text[k] == '|') return text.find('|', k + 1) + 1;
+      if (k >= text.size() || text[k] != '(') {
+        while (k < text.size() && !space(k) && text[k] != '(' && text[k] != ')') ++k;
+        return k;
+      }
+      for (int depth = 0; k < text.size(); ++k) {
+        if (text[k] == '|') k = text.find('|', k + 1);
+        if (text[k] == '(') ++depth;
+        if (text[k] == ')' && --depth == 0) return k + 1;
+      }
+      return k;
+    };
     std::string out;
     std::size_t from = 0;
-    for (std::size_t at; (at = text.find(z3_name, from)) != std::string::npos;) {
+    for (;;) {
+      const std::size_t over = text.find("(bvsmul_noovfl ", from);
+      const std::size_t under = text.find("(bvsmul_noudfl ", from);
+      const std::size_t at = std::min(over, under);
+      if (at == std::string::npos) break;
       out.append(text, from, at - from);
-      out += "(not (bvsmulo ";
-      // The term's closing parenthesis: where the depth returns to zero.
-      std::size_t i = at + 1;
-      for (int depth = 1; i < text.size() && depth > 0; ++i) {
-        if (text[i] == '(') ++depth;
-        if (text[i] == ')') --depth;
-      }
-      out += portable_smt2(text.substr(at + z3_name.size(), i - (at + z3_name.size())));
-      out += ")";
-      from = i;
+      std::size_t k = at + 15; // after "(bvsmul_noXXfl "
+      while (space(k)) ++k;
+      const std::size_t x_end = sexp_end(k);
+      const std::string x = portable_smt2(text.substr(k, x_end - k));
+      k = x_end;
+      while (space(k)) ++k;
+      const std::size_t y_end = sexp_end(k);
+      const std::string y = portable_smt2(text.substr(k, y_end - k));
+      k = y_end;
+      while (space(k)) ++k;
+      const std::string signs = "(bvslt " + x + " (bvsub " + x + " " + x + ")) (bvslt " + y +
+                                " (bvsub " + y + " " + y + "))";
+      out += "(not (and (bvsmulo " + x + " " + y + ") (" + (at == over ? "=" : "distinct") + " " +
+             signs + ")))";
+      from = k + 1; // past the term's closing parenthesis
     }
     out.append(text, from, std::string::npos);
     return out;
