@@ -1,4 +1,4 @@
-// `antkit wanderer-mcu-input` (plumbing for scripts/run-on-mcu.sh wanderer, issue 27): one
+// `antkit dev wanderer-mcu-input` (plumbing for scripts/run-on-mcu.sh wanderer, issue 27): one
 // step-turn wanderer run's input for the Cortex-M image (uniform/wanderer_mcu_input.hpp), with
 // `antkit cover --algo rw --robots 1`'s options: the map is read (or generated), the robot placed
 // and the world built and checked here as `antkit cover` does (exit 2, located); the viewable
@@ -6,8 +6,8 @@
 // encoded with the map's Free cells as bits by uniform::mcu_wanderer_input, which refuses a run
 // whose bits and footprint exceed the chip's arena (the sizes and the limit in the message).
 //
-//   antkit wanderer-mcu-input (--map FILE | --size WxH --density P) [--seed S] [--trial K]
-//                             [--sensor R] [--limit T] --out FILE
+//   antkit dev wanderer-mcu-input (--map FILE | --size WxH --density P) [--seed S] [--trial K]
+//                                 [--sensor R] [--limit T] --out FILE
 #include "commands.hpp"
 
 #include <antkit/geometry/atomic_file.hpp>
@@ -100,6 +100,6 @@ void register_wanderer_mcu_input(CLI::App& app) {
   sub->callback([o] { run(*o); });
 }
 
-const antkit::cli::Registration reg{"wanderer-mcu-input", &register_wanderer_mcu_input};
+const antkit::cli::DevRegistration reg{"wanderer-mcu-input", &register_wanderer_mcu_input};
 
 } // namespace

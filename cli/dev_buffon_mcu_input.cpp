@@ -1,11 +1,11 @@
-// `antkit buffon-mcu-input` (plumbing for scripts/run-on-mcu.sh buffon, issue 27): one Buffon
+// `antkit dev buffon-mcu-input` (plumbing for scripts/run-on-mcu.sh buffon, issue 27): one Buffon
 // trial's input for the Cortex-M image (buffon/mcu_input.hpp). The arena is read and built here,
 // with CGAL, as `antkit buffon` builds it, and travels as its Q15.16 walls; the options are checked
 // as `antkit buffon` checks them (exit 2, located), and a trial whose memory plan exceeds the
 // chip's arena is refused with the plan and the limit in the message.
 //
-//   antkit buffon-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--width W] [--noise X]
-//                           --out FILE
+//   antkit dev buffon-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--width W]
+//                               [--noise X] --out FILE
 #include "buffon_options.hpp"
 #include "commands.hpp"
 
@@ -69,6 +69,6 @@ void register_buffon_mcu_input(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{"buffon-mcu-input", &register_buffon_mcu_input};
+const antkit::cli::DevRegistration reg{"buffon-mcu-input", &register_buffon_mcu_input};
 
 } // namespace

@@ -1,12 +1,12 @@
-// `antkit rs-mcu-input` (plumbing for scripts/run-on-mcu.sh rs, issue 27): one Randomized Search
-// walk (paper 000, Section 8.1; buffon/checkpoints.hpp) for the Cortex-M image
+// `antkit dev rs-mcu-input` (plumbing for scripts/run-on-mcu.sh rs, issue 27): one Randomized
+// Search walk (paper 000, Section 8.1; buffon/checkpoints.hpp) for the Cortex-M image
 // (buffon/rs_mcu_input.hpp). The arena is read and built here, with CGAL, as `antkit buffon`
 // builds it, and travels as its Q15.16 walls; the options are checked as `antkit buffon` checks
 // them (exit 2, located), and a walk whose memory plan exceeds the chip's arena is refused with
 // the plan and the limit in the message.
 //
-//   antkit rs-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X] --out FILE
-//   antkit rs-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X] --host
+//   antkit dev rs-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X] --out FILE
+//   antkit dev rs-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X] --host
 //
 // With --host it writes no input and runs the same walk on the host instead
 // (buffon::run_rs: run_visit over the host's World, the raster in a vector), printing
@@ -100,6 +100,6 @@ void register_rs_mcu_input(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{"rs-mcu-input", &register_rs_mcu_input};
+const antkit::cli::DevRegistration reg{"rs-mcu-input", &register_rs_mcu_input};
 
 } // namespace
