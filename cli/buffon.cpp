@@ -41,17 +41,14 @@
 // "self_crossings" and "area_pilot" (length1^2 / (pi S)); the summary has "rule",
 // "length1_median", "length_total_median", with online "first_visit_reached", and when trials ran
 // out of steps a "budget_note", also written to stderr. Without --precision the output is
-// unchanged.
+// unchanged. The JSON is reports::buffon_json's (reports/src/buffon.cpp).
 #include "buffon_options.hpp"
 #include "commands.hpp"
 #include "output.hpp"
 
 #include <antkit/buffon/area_measurement.hpp>
 #include <antkit/experiments/buffon_figures.hpp>
-#include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
-#include <antkit/geometry/wkt.hpp>
-#include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/reports/reports.hpp>
 #include <iostream>
@@ -83,65 +80,6 @@ struct BuffonCommand {
   Format format = Format::Table;
 };
 
-nlohmann::json optional_json(const std::optional<double>& v) {
-  return v ? nlohmann::json(*v) : nlohmann::json();
-}
-
-const char* stop_name(buffon::TrialStop stop) {
-  switch (stop) {
-  case buffon::TrialStop::precision:
-    return "precision";
-  case buffon::TrialStop::visit1_cap:
-    return "visit 1 cap";
-  case buffon::TrialStop::visit2_cap:
-    return "visit 2 cap";
-  case buffon::TrialStop::budget:
-    return "budget";
-  }
-  return "";
-}
-
-// One trial's JSON (the keys are documented at the top of this file).
-nlohmann::json trial_json(const buffon::AreaTrial& a, bool budgeted, bool online1) {
-  const buffon::TrialResult& t = a.run;
-  const auto& cf = a.closed_form;
-  nlohmann::json j = {
-      {"trial", t.trial},
-      {"bc", t.bc},
-      {"nbc", a.nbc},
-      {"length1", a.length1},
-      {"length2", a.length2},
-      {"crossings_exact", t.crossings_exact},
-      {"area_closed_form", cf.area ? nlohmann::json(*cf.area) : nlohmann::json()},
-      {"area_closed_form_ci", {cf.lower, cf.upper ? nlohmann::json(*cf.upper) : nlohmann::json()}},
-      {"blocked", t.blocked},
-      {"hash", antkit::kernel::hash_hex(t.hash)}};
-  if (a.precision) {
-    const buffon::PrecisionEstimate& estimate = *a.precision;
-    j["reached_precision"] = t.reached_precision;
-    j["precision_ci"] = {optional_json(estimate.ci.lower), optional_json(estimate.ci.upper)};
-    j["variance_visit1"] = t.variance_visit1;
-    j["variance_visit2"] = t.variance_visit2;
-    j["wall_encounters"] = t.wall_encounters;
-    j["area_corrected"] = optional_json(estimate.area_corrected);
-    j["area_corrected_ci"] = {optional_json(estimate.corrected_ci.lower),
-                              optional_json(estimate.corrected_ci.upper)};
-    if (budgeted) j["precision_reached"] = optional_json(estimate.precision_reached);
-  }
-  if (budgeted) {
-    j["steps1"] = t.steps1;
-    j["steps2"] = t.steps2;
-    j["length_total"] = a.length1 + a.length2;
-    if (a.stopped) j["stopped"] = stop_name(*a.stopped);
-  }
-  if (online1) {
-    j["first_visit_reached"] = t.first_visit_reached;
-    j["self_crossings"] = t.self_crossings;
-    j["area_pilot"] = optional_json(a.area_pilot);
-  }
-  return j;
-}
-
 void run(const BuffonCommand& c) {
   antkit::cli::check_buffon_run_size(c.trials, c.steps, c.threads);
   if (c.max_steps2 != 0 && !c.precision_given)
@@ -165,10 +103,8 @@ void run(const BuffonCommand& c) {
     throw InputError("--max-steps", "the budget for both visits must be in [2, 100000000]");
   antkit::cli::check_buffon_body(c.width, c.noise);
 
-  geometry::Arena arena = antkit::cli::read_buffon_arena(c.arena);
-  buffon::BodyParams body;
-  body.noise = geometry::fixed_from_double<antkit::kernel::Fx>(c.noise, "--noise");
-  const buffon::World world(arena.walls_fx(), body);
+  const geometry::Arena arena = antkit::cli::read_buffon_arena(c.arena);
+  const buffon::World world = antkit::cli::buffon_world(arena, c.noise);
   buffon::AreaMeasurementParams params;
   params.trials = static_cast<std::uint64_t>(c.trials);
   params.threads = static_cast<unsigned>(c.threads);
@@ -184,40 +120,16 @@ void run(const BuffonCommand& c) {
   params.keep_first_trails = !c.svg.empty() || !c.png.empty();
   const buffon::AreaMeasurement m = buffon::measure_area(world, params);
 
-  const bool online = c.precision_given;
-  const bool budgeted = buffon::budgeted(params);
-  nlohmann::json trials = nlohmann::json::array();
-  for (const auto& a : m.trials) trials.push_back(trial_json(a, budgeted, online1));
-  const buffon::AreaSummary& s = m.summary;
-  nlohmann::json result;
-  result["arena"] = {{"spec", c.arena}, {"area", arena.area()}};
-  result["trials"] = trials;
-  result["summary"] = {{"nbc_median", s.nbc_median},
-                       {"nbc_q1", s.nbc_q1},
-                       {"nbc_q3", s.nbc_q3},
-                       {"area_closed_form_median", optional_json(s.area_closed_form_median)}};
-  if (online) {
-    result["summary"]["precision"] =
-        static_cast<double>(params.precision_millionths) / buffon::kPrecisionDenominator;
-    result["summary"]["reached_precision"] = s.reached_precision;
-    result["summary"]["length2_median"] = s.length2_median;
-    result["summary"]["area_corrected_median"] = optional_json(s.area_corrected_median);
-  }
-  if (budgeted) {
-    result["summary"]["rule"] = c.rule;
-    result["summary"]["length1_median"] = s.length1_median;
-    result["summary"]["length_total_median"] = s.length_total_median;
-  }
-  if (online1) result["summary"]["first_visit_reached"] = s.first_visit_reached;
-  if (budgeted && s.out_of_steps > 0) {
+  nlohmann::json result = antkit::reports::buffon_json(m, params, c.arena, arena.area());
+  if (buffon::budgeted(params) && m.summary.out_of_steps > 0) {
     // Said on stderr too, where a table reader looks for trouble.
-    const std::string note = std::to_string(s.out_of_steps) + " of " + std::to_string(c.trials) +
+    const std::string note = std::to_string(m.summary.out_of_steps) + " of " +
+                             std::to_string(c.trials) +
                              " trials ran out of steps before reaching P = " + c.precision +
                              "; their precision_reached says what they reached (raise --max-steps)";
     result["summary"]["budget_note"] = note;
     std::cerr << "antkit: note: " << note << '\n';
   }
-  result["hash"] = antkit::kernel::hash_hex(s.hash);
   if (!c.svg.empty() || !c.png.empty())
     antkit::experiments::save_trial_trails_figure(c.arena, arena, m.trials[0].run, c.steps, c.svg,
                                                   c.png);

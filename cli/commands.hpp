@@ -4,7 +4,15 @@
 //   namespace { const antkit::cli::Registration reg{"arena", &register_arena}; }
 //
 // main() adds the registered subcommands in name order, so `antkit --help` is stable and no file
-// but the subcommand's own changes when a subcommand is added.
+// but the subcommand's own changes when a subcommand is added. The file is named for the command
+// it registers (`explore-tables` in explore_tables.cpp); one command, one file.
+//
+// Plumbing that only the project's own scripts and tests call (the Cortex-M image's input writers
+// for scripts/run-on-mcu.sh) registers under `antkit dev` (dev.cpp), out of the user's list:
+//
+//   namespace { const antkit::cli::DevRegistration reg{"stc-mcu-input", &register_fn}; }
+//
+// in dev_stc_mcu_input.cpp. Names are unique across both groups (one registry).
 //
 // The library names its inputs in its own words (kernel::InputError::where(): "baud rate",
 // "largest map"); the command line shows each as the option that carries it. The same word can be
@@ -31,9 +39,13 @@ using Registrar = void (*)(CLI::App& app);
 // A library's word for an input -> the option that carries it, e.g. "baud rate" -> "--baud".
 using FlagWords = std::map<std::string, std::string, std::less<>>;
 
+// Where a subcommand is added: beside the user's commands, or under `antkit dev`.
+enum class Group { user, dev };
+
 struct Command {
   Registrar registrar = nullptr;
   FlagWords flags; // the words of the subcommand named as registered
+  Group group = Group::user;
 };
 
 // The registered subcommands, by name.
@@ -41,7 +53,14 @@ std::map<std::string, Command>& registry();
 
 struct Registration {
   Registration(const std::string& name, Registrar registrar, FlagWords flags = {}) {
-    registry()[name] = Command{registrar, std::move(flags)};
+    registry()[name] = Command{registrar, std::move(flags), Group::user};
+  }
+};
+
+// A plumbing subcommand: `antkit dev NAME`, listed by `antkit dev --help` only.
+struct DevRegistration {
+  DevRegistration(const std::string& name, Registrar registrar, FlagWords flags = {}) {
+    registry()[name] = Command{registrar, std::move(flags), Group::dev};
   }
 };
 

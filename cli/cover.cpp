@@ -7,6 +7,7 @@
 // Maps: Blocked and Unknown cells both block sight and movement, and only Free cells count for
 // coverage. A map's start cell ('S' in ASCII maps) is robot 0's start.
 #include "commands.hpp"
+#include "cover_options.hpp"
 #include "output.hpp"
 
 #include <algorithm>
@@ -26,22 +27,9 @@ using antkit::cli::Format;
 using antkit::kernel::InputError;
 namespace uniform = antkit::uniform;
 
-// Generated maps: a side of at most 8192 cells and at most 2^26 cells in all, like map files
-// (antkit/maps/map_io.hpp), so that no option can ask for more memory than a map file could.
-constexpr std::int32_t kMaxSide = 8192;
-constexpr std::int64_t kMaxCells = std::int64_t{1} << 26;
-constexpr std::int64_t kMaxRobots = 1024;
-
-struct CoverOptions {
-  std::string map;
-  std::string size;
-  std::string density;
-  std::uint64_t seed = 1;
-  std::uint64_t trial = 0;
+struct CoverOptions : antkit::cli::CoverMapOptions { // --map or --size and --density, --seed, ...
   std::string algo;
   std::int64_t robots = 1;
-  std::int64_t sensor = 5;
-  std::int64_t limit = -1; // default: 10 * W * H
   std::string svg, png;
   std::string trace;
   Format format = Format::Table;
@@ -52,43 +40,17 @@ nlohmann::json run_cover(const CoverOptions& o) {
   if (!algo)
     throw InputError("--algo", "unknown algorithm '" + o.algo +
                                    "'; expected rw, pm, astar, astar-coord or frontier");
-  if (o.map.empty() == o.size.empty())
-    throw InputError("", "give either --map FILE or --size WxH --density P");
-  if (!o.map.empty() && !o.density.empty())
-    throw InputError("--density", "a map file has its own obstacles; --density goes with --size");
-  if (!o.size.empty() && o.density.empty())
-    throw InputError("--density", "--size needs an obstacle density, such as --density 0.2");
-  if (o.robots < 1 || o.robots > kMaxRobots)
-    throw InputError("--robots", "expected 1 to " + std::to_string(kMaxRobots) + " robots, not " +
-                                     std::to_string(o.robots));
-  if (o.sensor < 0 || o.sensor > uniform::kMaxSensorRange)
-    throw InputError("--sensor", "expected a sensor distance in [0, " +
-                                     std::to_string(uniform::kMaxSensorRange) + "] cells, not " +
-                                     std::to_string(o.sensor));
-  if (o.limit < -1) throw InputError("--limit", "expected a number of ticks >= 0");
-
-  antkit::kernel::OccupancyGrid grid;
-  std::optional<antkit::kernel::Cell> start;
+  antkit::cli::check_cover_options(o, o.robots);
+  antkit::cli::CoverGrid grid = antkit::cli::read_cover_grid(o);
   nlohmann::json source;
-  if (!o.map.empty()) {
-    auto loaded = antkit::maps::load_map(o.map);
-    grid = std::move(loaded.cells);
-    start = loaded.start;
+  if (grid.density_ppm)
+    source["density_ppm"] = *grid.density_ppm;
+  else
     source["map"] = o.map;
-  } else {
-    const auto [w, h] = uniform::parse_size(o.size, kMaxSide);
-    if (std::int64_t{w} * h > kMaxCells)
-      throw InputError("--size", "at most " + std::to_string(kMaxCells) + " cells, not " +
-                                     std::to_string(std::int64_t{w} * h));
-    const auto ppm = uniform::parse_density_ppm(o.density);
-    grid = uniform::random_obstacles(w, h, ppm, o.seed, o.trial);
-    source["density_ppm"] = ppm;
-  }
-  const auto poses =
-      uniform::place_robots(grid, static_cast<std::size_t>(o.robots), start, o.seed, o.trial);
-  const std::int64_t cells = std::int64_t{grid.width()} * grid.height();
-  const auto limit = static_cast<std::uint64_t>(o.limit >= 0 ? o.limit : 10 * cells);
-  uniform::CoverageWorld world(std::move(grid), poses, static_cast<std::int32_t>(o.sensor));
+  const auto poses = uniform::place_robots(grid.cells, static_cast<std::size_t>(o.robots),
+                                           grid.start, o.seed, o.trial);
+  const auto limit = antkit::cli::cover_limit(o, grid.cells);
+  uniform::CoverageWorld world(std::move(grid.cells), poses, static_cast<std::int32_t>(o.sensor));
   uniform::CoverageResult r;
   if (o.trace.empty()) {
     r = uniform::run_coverage(world, *algo, o.seed, o.trial, limit);

@@ -31,6 +31,21 @@ void refuse_empty_values(CLI::App& app) {
   for (CLI::App* sub : app.get_subcommands({})) refuse_empty_values(*sub);
 }
 
+// The registered subcommand that ran: the top-level one, or under `antkit dev` the plumbing one
+// (dev.cpp). Null before parsing.
+const antkit::cli::Command* ran(const CLI::App& app) {
+  const auto& commands = antkit::cli::registry();
+  for (const CLI::App* sub : app.get_subcommands()) {
+    for (const CLI::App* inner : sub->get_subcommands()) {
+      const auto it = commands.find(inner->get_name());
+      if (it != commands.end() && it->second.group == antkit::cli::Group::dev) return &it->second;
+    }
+    const auto it = commands.find(sub->get_name());
+    if (it != commands.end()) return &it->second;
+  }
+  return nullptr;
+}
+
 // The library names its inputs in its own words (InputError::where(): "trail width", "stopping
 // rule"); the command line shows each as the option that carries it (commands.hpp): the words the
 // subcommand that ran registered, then the words below, which every command shows as the same
@@ -43,14 +58,28 @@ std::string shown(const antkit::kernel::InputError& e, const CLI::App& app) {
       {"sensor distance", "--sensor"},  {"map size", "--size"},         {"robots", "--robots"},
       {"obstacle density", "--density"}};
   const std::string& where = e.where();
-  for (const CLI::App* sub : app.get_subcommands()) { // the one that ran (none before parsing)
-    const auto command = antkit::cli::registry().find(sub->get_name());
-    if (command == antkit::cli::registry().end()) continue;
-    const auto it = command->second.flags.find(where);
-    if (it != command->second.flags.end()) return it->second + ": " + e.message();
+  if (const antkit::cli::Command* command = ran(app)) {
+    const auto it = command->flags.find(where);
+    if (it != command->flags.end()) return it->second + ": " + e.message();
   }
   const auto it = common.find(where);
   return it == common.end() ? std::string(e.what()) : it->second + ": " + e.message();
+}
+
+// Throws the InputError that names `word` when it is none of `parent`'s subcommands, and says
+// where a plumbing command lives when it is one given without `dev`.
+void refuse_unknown(const CLI::App& parent, const std::string& word) {
+  std::string names;
+  for (const CLI::App* sub : parent.get_subcommands({})) {
+    if (sub->get_name() == word) return;
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  const auto command = antkit::cli::registry().find(word);
+  if (command != antkit::cli::registry().end() && command->second.group == antkit::cli::Group::dev)
+    throw antkit::kernel::InputError(
+        "", "'" + word + "' is plumbing for the project's scripts: antkit dev " + word);
+  throw antkit::kernel::InputError("",
+                                   "unknown subcommand '" + word + "'; expected one of " + names);
 }
 
 } // namespace
@@ -61,23 +90,17 @@ int main(int argc, char** argv) {
                "antkit"};
   app.set_version_flag("--version", std::string("antkit ") + ANTKIT_VERSION);
   app.require_subcommand(1);
-  for (const auto& entry : antkit::cli::registry()) entry.second.registrar(app);
+  // The user's commands; the plumbing ones are added under `antkit dev` by dev.cpp.
+  for (const auto& [name, command] : antkit::cli::registry())
+    if (command.group == antkit::cli::Group::user) command.registrar(app);
   refuse_empty_values(app);
 
   try {
     // A first word that is neither an option nor a subcommand: name it (CLI11 would only say that
-    // a subcommand is required).
-    if (argc > 1 && argv[1][0] != '-') {
-      std::string names;
-      bool known = false;
-      for (const CLI::App* sub : app.get_subcommands({})) {
-        known = known || sub->get_name() == argv[1];
-        names += (names.empty() ? "" : ", ") + sub->get_name();
-      }
-      if (!known)
-        throw antkit::kernel::InputError("", "unknown subcommand '" + std::string(argv[1]) +
-                                                 "'; expected one of " + names);
-    }
+    // a subcommand is required); the same for the word after `dev`.
+    if (argc > 1 && argv[1][0] != '-') refuse_unknown(app, argv[1]);
+    if (argc > 2 && argv[1] == std::string("dev") && argv[2][0] != '-')
+      refuse_unknown(*app.get_subcommand("dev"), argv[2]);
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

@@ -1,5 +1,5 @@
-// `antkit stc`: Spanning Tree Coverage of a grid map (issue 3), and `antkit stc-noise`, the
-// marker-noise experiment (coverage and repeats against the probability that a mark is misread).
+// `antkit stc`: Spanning Tree Coverage of a grid map (issue 3). The marker-noise experiment is
+// `antkit stc-noise` (stc_noise.cpp); the Cortex-M image's input, `antkit dev stc-mcu-input`.
 //
 //   antkit stc --map FILE --variant offline|online|ant|ant-edge|full [--start X,Y]
 //              [--noise P --seed S] [--format table|json] [--path-out FILE.csv|FILE.bin]
@@ -12,8 +12,6 @@
 // the run's own counts on one bit per sub-cell. Offline takes the library's fast path. JSON keys,
 // in order: variant, width, height, start, path, reachable_subcells, covered, repeats,
 // returned_to_start, hash (and noise_ppm, seed with --noise).
-//   antkit stc-noise --map FILE [--variant ant|ant-edge] [--start X,Y] [--levels P,P,...]
-//              [--trials N] [--seed S] [--format table|json]
 //
 // Coordinates are in sub-cells (one map cell = one robot-sized sub-cell), x to the right and y
 // downward from the file's first row. Exit status: 0, 2 for bad input (a malformed map, no free
@@ -21,37 +19,24 @@
 // its invariants (it never should: that is a failed check, not bad input).
 #include "commands.hpp"
 #include "output.hpp"
+#include "stc_options.hpp"
 
-#include <algorithm>
-#include <antkit/algorithms/options.hpp>
 #include <antkit/experiments/stc_tour.hpp>
-#include <antkit/experiments/stc_tours.hpp>
-#include <antkit/geometry/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/maps/map_io.hpp>
 #include <antkit/reports/reports.hpp>
-#include <antkit/stc/start.hpp>
 #include <antkit/stc/world.hpp>
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
-#include <string_view>
-#include <utility>
-#include <vector>
 
 namespace {
 
 using antkit::cli::Format;
-namespace algorithms = antkit::algorithms;
 using antkit::kernel::Cell;
 using antkit::kernel::InputError;
-using antkit::kernel::Occupancy;
-using antkit::kernel::OccupancyGrid;
 using namespace antkit::stc;
 
 struct StcOptions {
@@ -64,30 +49,8 @@ struct StcOptions {
   Format format = Format::Table;
 };
 
-// What `antkit stc` and `antkit stc-mcu-input` read from the same options, refused the same way:
-// the variant, the marker noise, the map and the start.
-struct StcRequest {
-  Variant variant;
-  NoiseModel noise;
-  antkit::maps::GridMap map;
-  Cell start;
-};
-
-StcRequest read_stc_request(const std::string& map_file, const std::string& variant_text,
-                            const std::string& start, const std::string& noise,
-                            std::uint64_t seed) {
-  StcRequest r{antkit::reports::stc_variant(variant_text, "--variant"), {}, {}, {}};
-  if (!noise.empty()) r.noise = antkit::reports::stc_noise(r.variant, noise, seed, "--noise");
-  r.map = antkit::maps::load_map(map_file);
-  r.start = choose_start(r.map.cells, r.variant,
-                         start.empty() ? std::nullopt
-                                       : std::optional(algorithms::parse_cell("--start", start)),
-                         r.map.start, map_file);
-  return r;
-}
-
 void run_stc_command(const StcOptions& o) {
-  const StcRequest request = read_stc_request(o.map, o.variant, o.start, o.noise, o.seed);
+  const auto request = antkit::cli::read_stc_request(o.map, o.variant, o.start, o.noise, o.seed);
   const Variant variant = request.variant;
   const auto& map = request.map;
   const Cell start = request.start;
@@ -128,91 +91,6 @@ void run_stc_command(const StcOptions& o) {
   }
 }
 
-struct NoiseOptions {
-  std::string map;
-  std::string variant = "ant";
-  std::string start;
-  std::string levels = "0,0.0001,0.001,0.005,0.01,0.02,0.05,0.1,0.2";
-  std::int32_t trials = 20;
-  std::uint64_t seed = 1;
-  Format format = Format::Table;
-};
-
-void run_noise_command(const NoiseOptions& o) {
-  const Variant variant = antkit::reports::stc_variant(o.variant, "--variant");
-  if (variant != Variant::Ant && variant != Variant::AntEdge)
-    throw InputError("--variant", "marker noise applies to ant and ant-edge only");
-  if (o.trials < 1 || o.trials > 100000)
-    throw InputError("--trials", std::to_string(o.trials) + " is outside [1, 100000]");
-  std::vector<std::pair<std::string, std::uint32_t>> levels;
-  std::size_t from = 0;
-  while (from <= o.levels.size()) {
-    const auto comma = std::min(o.levels.find(',', from), o.levels.size());
-    const std::string item = o.levels.substr(from, comma - from);
-    levels.emplace_back(item, algorithms::parse_probability_ppm("--levels", item));
-    from = comma + 1;
-  }
-  const auto map = antkit::maps::load_map(o.map);
-  const Cell start = choose_start(
-      map.cells, variant,
-      o.start.empty() ? std::nullopt : std::optional(algorithms::parse_cell("--start", o.start)),
-      map.start, o.map);
-  std::vector<std::uint32_t> ppm;
-  for (const auto& level : levels) ppm.push_back(level.second);
-  std::int64_t reachable = 0;
-  std::vector<antkit::experiments::StcNoisePoint> points;
-  try {
-    // Trials run in order, each with its own keyed stream (trial = its index): the curve does
-    // not depend on anything but the seed (experiments/stc_tours.hpp).
-    points = antkit::experiments::run_stc_noise(map.cells, start, {o.variant}, ppm, o.trials,
-                                                o.seed, antkit::algorithms::Runner{}, &reachable);
-  } catch (const InputError& e) {
-    throw InputError(o.start.empty() ? o.map : "--start", e.message());
-  }
-  nlohmann::json curve = nlohmann::json::array();
-  for (std::size_t k = 0; k < points.size(); ++k)
-    curve.push_back({{"noise", levels[k].first},
-                     {"coverage", points[k].coverage},
-                     {"repeats_per_subcell", points[k].repeats_per_subcell},
-                     {"complete_tours", points[k].complete},
-                     {"mean_positions", points[k].mean_positions}});
-  nlohmann::json j;
-  j["variant"] = std::string(variant_name(variant));
-  j["map"] = o.map;
-  j["start"] = {start.x, start.y};
-  j["reachable_subcells"] = reachable;
-  j["trials"] = o.trials;
-  j["seed"] = o.seed;
-  j["curve"] = std::move(curve);
-  antkit::cli::emit(j, o.format, std::cout);
-}
-
-struct McuInputOptions {
-  std::string map, variant, start, noise, out;
-  std::uint64_t seed = 0;
-};
-
-// The Cortex-M image's input (stc/mcu_input.hpp) for scripts/run-on-mcu.sh: the same options, the
-// same start and the same refusals as `antkit stc`, and a map too large for the chip refused.
-void run_mcu_input_command(const McuInputOptions& o) {
-  const StcRequest r = read_stc_request(o.map, o.variant, o.start, o.noise, o.seed);
-  const Cell start = r.start;
-  std::vector<std::uint8_t> bytes;
-  try {
-    bytes = mcu_input(r.map.cells, start, r.variant, r.noise);
-  } catch (const InputError& e) {
-    const std::string where = e.where() == "variant" ? "--variant"
-                              : e.where() == "map"   ? o.map
-                              : o.start.empty()      ? o.map
-                                                     : "--start";
-    throw InputError(where, e.message());
-  }
-  antkit::geometry::write_file_atomic(
-      o.out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-  std::cout << o.out << ": " << bytes.size() << " bytes, start " << start.x << "," << start.y
-            << "\n";
-}
-
 void register_stc(CLI::App& app) {
   auto o = std::make_shared<StcOptions>();
   auto* cmd = app.add_subcommand(
@@ -238,34 +116,8 @@ void register_stc(CLI::App& app) {
                   "stc/path_format.hpp); antkit check stc reads both");
   antkit::cli::add_format_option(*cmd, o->format);
   cmd->callback([o] { run_stc_command(*o); });
-
-  auto m = std::make_shared<McuInputOptions>();
-  auto* mcu = app.add_subcommand("stc-mcu-input",
-                                 "Write one ant or ant-edge STC run as the Cortex-M image's input "
-                                 "(scripts/run-on-mcu.sh runs it under QEMU; stc/mcu_input.hpp)");
-  mcu->add_option("--map", m->map, "The map (.map, .yaml or .txt)")->required();
-  mcu->add_option("--variant", m->variant, "ant or ant-edge")->required();
-  mcu->add_option("--start", m->start, "Start sub-cell X,Y (default as for `antkit stc`)");
-  mcu->add_option("--noise", m->noise, "Mark misread probability (as for `antkit stc`)");
-  mcu->add_option("--seed", m->seed, "Seed of the keyed noise stream (default 0)");
-  mcu->add_option("--out", m->out, "The input file to write")->required();
-  mcu->callback([m] { run_mcu_input_command(*m); });
-
-  auto n = std::make_shared<NoiseOptions>();
-  auto* noise = app.add_subcommand(
-      "stc-noise", "Marker noise experiment: coverage and repeats of ant-like STC against the "
-                   "probability that a mark is misread, averaged over keyed trials");
-  noise->add_option("--map", n->map, "The map (.map, .yaml or .txt)")->required();
-  noise->add_option("--variant", n->variant, "ant (default) or ant-edge");
-  noise->add_option("--start", n->start, "Start sub-cell X,Y (default as for `antkit stc`)");
-  noise->add_option("--levels", n->levels, "Comma-separated misread probabilities")
-      ->default_str(n->levels);
-  noise->add_option("--trials", n->trials, "Trials per level (default 20)");
-  noise->add_option("--seed", n->seed, "Seed of the keyed noise streams (default 1)");
-  antkit::cli::add_format_option(*noise, n->format);
-  noise->callback([n] { run_noise_command(*n); });
 }
 
-const antkit::cli::Registration reg_stc{"stc", &register_stc};
+const antkit::cli::Registration reg{"stc", &register_stc};
 
 } // namespace

@@ -13,14 +13,14 @@
 #
 # prints one JSON object whose trials[0] has the hash, bc, crossings_exact and blocked of
 # `antkit buffon --trials 1 --format json`'s trial with the same arguments. The host prepares the
-# input (`antkit buffon-mcu-input`: the arena built with CGAL and sent as its Q15.16 walls, the
+# input (`antkit dev buffon-mcu-input`: the arena built with CGAL and sent as its Q15.16 walls, the
 # options checked as `antkit buffon` checks them); the exploration behaviour, the world's steps,
 # the pheromone raster, the detector, the exact crossing count and the hash run on the chip. A
 # trial whose walls, buckets, raster, visit 1's trail and crossing index exceed the image's
 # 112 KiB arena is refused (exit 2) with the sizes and the limit in the message: the paper's
 # circles (256 walls, about 130 KiB of wall buckets) do not fit; squares and polygons of a few
 # dozen walls do, with a few thousand steps per visit. The host prepares the input (`antkit
-# stc-mcu-input`: the map read, the start chosen and checked, the map's free sub-cells as bits);
+# dev stc-mcu-input`: the map read, the start chosen and checked, the map's free sub-cells as bits);
 # the controller, the floor's steps and the hash run on the emulated chip. Bad input is refused by
 # the host as `antkit stc` refuses it, exit 2 with a located message; a map whose floor exceeds the
 # image's 112 KiB arena (online: with its memory of the cells seen) is refused with both sizes in
@@ -28,12 +28,13 @@
 #
 #   scripts/run-on-mcu.sh rs --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X]
 #
-# runs one Randomized Search walk (paper 000, Section 8.1: visit 3 of trial 0's streams, marking
-# the 0.1 x 0.1 cells under the body) and prints one JSON object whose hash, cells, length_raw and
-# blocked equal those of `antkit rs-mcu-input --host` with the same arguments (the host's run_rs).
-# The host sends the arena's walls (`antkit rs-mcu-input`); the behaviour, the world's steps, RS's
-# raster and the hash run on the chip, in the same 112 KiB arena: walls, wall buckets and a byte
-# per raster cell of the walls' box, refused with the sizes and the limit when they exceed it.
+# runs one Randomized Search walk (paper 000, Section 8.1: visit 3 of trial 0's streams, marking the
+# 0.1 x 0.1 cells under the body) and prints one JSON object whose hash, cells, length_raw and
+# blocked equal those of `antkit dev rs-mcu-input --host` with the same arguments (the host's
+# run_rs). The host sends the arena's walls (`antkit dev rs-mcu-input`); the behaviour, the world's
+# steps, RS's raster and the hash run on the chip, in the same 112 KiB arena: walls, wall buckets
+# and a byte per raster cell of the walls' box, refused with the sizes and the limit when they
+# exceed it.
 #
 #   scripts/run-on-mcu.sh wanderer (--map F | --size WxH --density P) [--seed S] [--trial K]
 #                         [--sensor R] [--limit T]
@@ -41,7 +42,7 @@
 # runs paper 004's Random Wanderer for one robot that only steps and turns (uniform/step_turn.hpp)
 # and prints one JSON object whose hash, viewed, viewable, movements, moves and stop equal those of
 # `antkit cover --algo rw --robots 1 --format json` with the same arguments. The host reads the map,
-# places the robot, counts the viewable cells and computes the sensor's footprint (`antkit
+# places the robot, counts the viewable cells and computes the sensor's footprint (`antkit dev
 # wanderer-mcu-input`); the wanderer, the world's ticks (moves, line-of-sight views) and the hash
 # run on the chip, in the same 112 KiB arena: 2 bits per map cell and the footprint, refused with
 # the sizes and the limit when they exceed it.
@@ -152,7 +153,7 @@ if [ "$command" = decide ]; then
   config="enable=on,target=native,arg=antkit_mcu,arg=decide,arg=$first,arg=$count$flip"
 else
   # Bad input: antkit's located message on stderr and its exit status 2, nothing on stdout.
-  "$antkit" "$command-mcu-input" "$@" --out "$work/input.bin" >/dev/null
+  "$antkit" dev "$command-mcu-input" "$@" --out "$work/input.bin" >/dev/null
   config="enable=on,target=native,arg=antkit_mcu,arg=$work/input.bin"
 fi
 

@@ -1,4 +1,4 @@
-// One Randomized Search walk on the robot's own processor (issue 27): what `antkit rs-mcu-input
+// One Randomized Search walk on the robot's own processor (issue 27): what `antkit dev rs-mcu-input
 // --host` runs on the host (buffon/checkpoints.hpp run_rs), from the same sources. The host sends
 // the arena as its Q15.16 walls (buffon/rs_mcu_input.hpp); the chip reads them into its arena and
 // runs run_fixed_rs (buffon/randomized_search.hpp: the world's buckets, the behaviour's visit 3,

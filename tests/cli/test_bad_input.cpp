@@ -229,13 +229,13 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"stc-noise --map {M} --levels 0,abc", "--levels:", "'abc'"},
       {"stc-noise --map {M} --trials 0", "--trials:", "outside"},
       {"stc-noise --map {M} --variant online", "--variant:", "ant and ant-edge"},
-      // stc-mcu-input (scripts/run-on-mcu.sh): antkit stc's refusals, and the chip's limits
-      {"stc-mcu-input --map {M} --variant offline --out {D}/in.bin", "--variant:", "host only"},
-      {"stc-mcu-input --map {M} --variant ant --start 99,0 --out {D}/in.bin",
+      // dev stc-mcu-input (scripts/run-on-mcu.sh): antkit stc's refusals, and the chip's limits
+      {"dev stc-mcu-input --map {M} --variant offline --out {D}/in.bin", "--variant:", "host only"},
+      {"dev stc-mcu-input --map {M} --variant ant --start 99,0 --out {D}/in.bin",
        "--start:", "outside"},
-      {"stc-mcu-input --map {M} --variant ant --noise 2 --out {D}/in.bin", "--noise:", ""},
-      {"stc-mcu-input --map {D}/junk.map --variant ant --out {D}/in.bin", "{D}/junk.map:1:1:", ""},
-      {"stc-mcu-input --map {B} --variant ant-edge --out {D}/in.bin", "{B}:", "which has 114688"},
+      {"dev stc-mcu-input --map {M} --variant ant --noise 2 --out {D}/in.bin", "--noise:", ""},
+      {"dev stc-mcu-input --map {D}/junk.map --variant ant --out {D}/in.bin", "{D}/junk.map:1:1:", ""},
+      {"dev stc-mcu-input --map {B} --variant ant-edge --out {D}/in.bin", "{B}:", "which has 114688"},
       // cover and cover-experiment
       {"cover --algo rw --size 0x5 --density 0.1 --svg {D}/out.svg", "--size:", "'0x5'"},
       {"cover --algo rw --size 5 --density 0.1", "--size:", "'5'"},

@@ -52,18 +52,18 @@ chip() { # chip FILE: the image on FILE, its exit status and output
     -semihosting-config "enable=on,target=native,arg=antkit_mcu,arg=$1" -kernel "$ANTKIT_MCU_IMAGE"
 }
 printf 'this is not an antkit input, but it is long enough to hold a header\n' >"$work/text"
-"$ANTKIT_EXE" stc-mcu-input --map "$den" --variant ant --out "$work/good" >/dev/null
+"$ANTKIT_EXE" dev stc-mcu-input --map "$den" --variant ant --out "$work/good" >/dev/null
 head -c 100 "$work/good" >"$work/short"
 # A Buffon input cut inside its walls, and one whose header asks for 0 steps.
-"$ANTKIT_EXE" buffon-mcu-input --arena square:area=25 --steps 100 --out "$work/buffon" >/dev/null
+"$ANTKIT_EXE" dev buffon-mcu-input --arena square:area=25 --steps 100 --out "$work/buffon" >/dev/null
 head -c 60 "$work/buffon" >"$work/buffon-short"
 { head -c 16 "$work/buffon"; printf '\0\0\0\0\0\0\0\0'; tail -c +25 "$work/buffon"; } >"$work/buffon-steps"
 # An RS input cut inside its walls, and one whose header asks for 0 steps.
-"$ANTKIT_EXE" rs-mcu-input --arena square:area=25 --steps 100 --out "$work/rs" >/dev/null
+"$ANTKIT_EXE" dev rs-mcu-input --arena square:area=25 --steps 100 --out "$work/rs" >/dev/null
 head -c 60 "$work/rs" >"$work/rs-short"
 { head -c 16 "$work/rs"; printf '\0\0\0\0\0\0\0\0'; tail -c +25 "$work/rs"; } >"$work/rs-steps"
 # A wanderer input cut inside its map, and one whose start lies off the map.
-"$ANTKIT_EXE" wanderer-mcu-input --map "$den" --out "$work/wanderer" >/dev/null
+"$ANTKIT_EXE" dev wanderer-mcu-input --map "$den" --out "$work/wanderer" >/dev/null
 head -c 200 "$work/wanderer" >"$work/wanderer-short"
 { head -c 48 "$work/wanderer"; printf '\377\377\0\0'; tail -c +53 "$work/wanderer"; } >"$work/wanderer-start"
 for f in text short buffon-short buffon-steps rs-short rs-steps wanderer-short wanderer-start; do

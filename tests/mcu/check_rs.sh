@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # check_rs.sh ARENA STEPS SEED [options...]: scripts/run-on-mcu.sh rs's Randomized Search walk
-# against the host's (`antkit rs-mcu-input --host`, buffon::run_rs) for the same arguments (hash,
-# cells, length_raw, blocked), both the chip's walk through the core and through the C API. With ARENA prefixed by "refused:", the run must instead be refused
-# (exit 2, nothing on stdout) with the chip's limit (114688 bytes) in the message.
+# against the host's (`antkit dev rs-mcu-input --host`, buffon::run_rs) for the same arguments
+# (hash, cells, length_raw, blocked), both the chip's walk through the core and through the C API.
+# With ARENA prefixed by "refused:", the run must instead be refused (exit 2, nothing on stdout)
+# with the chip's limit (114688 bytes) in the message.
 set -euo pipefail
 [ -z "${ANTKIT_MCU_MISSING:-}" ] || { echo "skipped: no arm-none-eabi-g++ or qemu-system-arm"; exit 77; }
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -20,7 +21,7 @@ if [ "${arena#refused:}" != "$arena" ]; then
   exit
 fi
 fields='{hash, cells, length_raw, blocked}'
-host=$("$ANTKIT_EXE" rs-mcu-input --arena "$arena" --steps "$steps" --seed "$seed" "$@" --host |
+host=$("$ANTKIT_EXE" dev rs-mcu-input --arena "$arena" --steps "$steps" --seed "$seed" "$@" --host |
   jq -c "$fields")
 echo "host: $host"
 status=0

@@ -2,8 +2,9 @@
 // The JSON of a result, as `antkit ... --format json` prints it and the Python package returns it
 // (python/: each result object is this JSON as a dict). One function per result; the key lists and
 // meanings are documented at the command (cli/check.cpp, cli/stc.cpp, cli/replay.cpp,
-// cli/buffon_from_logs.cpp). Numbers stay integers where the result counts, and absent values are
-// null, never left out.
+// cli/buffon.cpp, cli/buffon_from_logs.cpp). Numbers stay integers where the result counts, and
+// absent values are null, never left out.
+#include <antkit/buffon/area_measurement.hpp>
 #include <antkit/devices/odometry.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/maps/map_io.hpp>
@@ -57,6 +58,14 @@ struct StcNoiseFields {
 [[nodiscard]] nlohmann::json stc_json(const stc::RunResult& result, std::int32_t width,
                                       std::int32_t height, kernel::Cell start,
                                       std::optional<StcNoiseFields> noise = std::nullopt);
+
+// `antkit buffon`: a measurement's JSON, "arena" ({"spec", "area"}: the arena as given and its
+// exact area), "trials", "summary" and "hash", with the keys the measurement's params ask for
+// (precision, rule). The command adds the summary's "budget_note" itself (it quotes the precision
+// as typed).
+[[nodiscard]] nlohmann::json buffon_json(const buffon::AreaMeasurement& measurement,
+                                         const buffon::AreaMeasurementParams& params,
+                                         const std::string& spec, double area);
 
 // `antkit replay`.
 [[nodiscard]] nlohmann::json replay_json(const devices::ReplayResult& result);

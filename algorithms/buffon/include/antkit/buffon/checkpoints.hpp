@@ -62,7 +62,7 @@ RsCost rs_cost_to_precision(const World& world, const TrialParams& params, std::
 
 // RS for a fixed number of steps (issue 27): visit 3 of `trial`'s streams for params.steps steps
 // (from the start: params.steps + 1 positions), marking as run_checkpoints does; the cells marked,
-// the walk's length and blocked steps, and its trace hash (randomized_search.hpp). What `antkit
+// the walk's length and blocked steps, and its trace hash (randomized_search.hpp). What `antkit dev
 // rs-mcu-input --host` prints, and what the Cortex-M image's run_fixed_rs must reproduce.
 struct RsRun {
   std::uint64_t cells = 0;

@@ -2,7 +2,7 @@
 // The host's writers of the Cortex-M image's Buffon and Randomized Search inputs: the bytes that
 // mcu_input.hpp, mcu_digest_input.hpp and rs_mcu_input.hpp read on the chip, with the same memory
 // plan checked first, so a run too large for the chip is refused on the host before QEMU starts.
-// Used by `antkit buffon-mcu-input` and `antkit rs-mcu-input` (scripts/run-on-mcu.sh) and by the
+// Used by `antkit dev buffon-mcu-input` and `dev rs-mcu-input` (scripts/run-on-mcu.sh) and by the
 // determinism matrix's cortex-m4 configuration (determinism/scenarios.cpp). Host only.
 //
 // Errors (kernel::InputError, in the library's words): "steps per visit" ("steps" for RS) outside

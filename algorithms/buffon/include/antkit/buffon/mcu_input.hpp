@@ -1,8 +1,8 @@
 #pragma once
 // The input of the Cortex-M image for one Buffon trial (mcu/, scripts/run-on-mcu.sh buffon), as
-// bytes the host prepares (`antkit buffon-mcu-input`: the arena built with CGAL and turned into its
-// Q15.16 walls, as `antkit buffon` does) and the chip reads through semihosting. Freestanding: the
-// chip's reader and the memory plan are this header; the host writes the same layout.
+// bytes the host prepares (`antkit dev buffon-mcu-input`: the arena built with CGAL and turned into
+// its Q15.16 walls, as `antkit buffon` does) and the chip reads through semihosting. Freestanding:
+// the chip's reader and the memory plan are this header; the host writes the same layout.
 //
 // Little-endian, 40 bytes of header, then the walls:
 //   0  char[8] "ANTKBUF1"

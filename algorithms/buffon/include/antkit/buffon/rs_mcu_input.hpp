@@ -1,6 +1,6 @@
 #pragma once
 // The input of the Cortex-M image for one Randomized Search walk (mcu/src/rs_run.cpp,
-// scripts/run-on-mcu.sh rs), as bytes the host prepares (`antkit rs-mcu-input`: the arena built
+// scripts/run-on-mcu.sh rs), as bytes the host prepares (`antkit dev rs-mcu-input`: the arena built
 // with CGAL and sent as its Q15.16 walls, as for Buffon, mcu_input.hpp) and the chip reads through
 // semihosting. Freestanding.
 //

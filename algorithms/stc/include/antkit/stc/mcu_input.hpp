@@ -1,6 +1,6 @@
 #pragma once
-// The input of the Cortex-M image (mcu/, scripts/run-on-mcu.sh): one STC run, as bytes the
-// host prepares (`antkit stc-mcu-input`) and the chip reads through semihosting. Freestanding: the
+// The input of the Cortex-M image (mcu/, scripts/run-on-mcu.sh): one STC run, as bytes the host
+// prepares (`antkit dev stc-mcu-input`) and the chip reads through semihosting. Freestanding: the
 // chip's reader is this header; the host's writer is mcu_input() in world.hpp.
 //
 // Little-endian, 48 bytes of header, then the map:

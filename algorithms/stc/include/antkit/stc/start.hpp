@@ -1,6 +1,6 @@
 #pragma once
 // Where an STC run starts when the caller does not say (`antkit stc`, `stc-noise`,
-// `stc-mcu-input` and the Python package): the rule, and its refusal when a map has no place.
+// `dev stc-mcu-input` and the Python package): the rule, and its refusal when a map has no place.
 #include <antkit/kernel/grid.hpp>
 #include <antkit/stc/subcell.hpp>
 #include <antkit/stc/world.hpp>

@@ -1,7 +1,7 @@
 #pragma once
 // The host's writer of the Cortex-M image's step-turn wanderer input: the bytes
 // wanderer_mcu_input.hpp reads on the chip, with its memory plan checked first, so a run too large
-// for the chip is refused on the host before QEMU starts. Used by `antkit wanderer-mcu-input`
+// for the chip is refused on the host before QEMU starts. Used by `antkit dev wanderer-mcu-input`
 // (scripts/run-on-mcu.sh wanderer) and by the determinism matrix's cortex-m4 configuration
 // (determinism/scenarios.cpp's uniform/rw/1robots scenarios). Host only.
 #include <antkit/uniform/world.hpp>

@@ -1,7 +1,7 @@
 #pragma once
 // The input of the Cortex-M image for one step-turn wanderer run (mcu/src/wanderer_run.cpp,
-// scripts/run-on-mcu.sh wanderer), as bytes the host prepares (`antkit wanderer-mcu-input`: the
-// map read or generated, the robot placed and the world checked as `antkit cover --algo rw
+// scripts/run-on-mcu.sh wanderer), as bytes the host prepares (`antkit dev wanderer-mcu-input`:
+// the map read or generated, the robot placed and the world checked as `antkit cover --algo rw
 // --robots 1` does, the viewable cells counted and the sensor's footprint computed by
 // SensorFootprint) and the chip reads through semihosting. Freestanding.
 //

@@ -1,12 +1,12 @@
-// `antkit rs-mcu-input` (plumbing for scripts/run-on-mcu.sh rs, issue 27): one Randomized Search
-// walk (paper 000, Section 8.1; buffon/checkpoints.hpp) for the Cortex-M image
+// `antkit dev rs-mcu-input` (plumbing for scripts/run-on-mcu.sh rs, issue 27): one Randomized
+// Search walk (paper 000, Section 8.1; buffon/checkpoints.hpp) for the Cortex-M image
 // (buffon/rs_mcu_input.hpp). The arena is read and built here, with CGAL, as `antkit buffon`
-// builds it, and travels as its Q15.16 walls; the options are checked as `antkit buffon` checks
-// them (exit 2, located), and a walk whose memory plan exceeds the chip's arena is refused with
-// the plan and the limit in the message.
+// builds it, and travels as its Q15.16 walls; the options are checked by `antkit buffon`'s own
+// checks (buffon_options.hpp: exit 2, located; the steps against the chip's bound), and a walk
+// whose memory plan exceeds the chip's arena is refused with the plan and the limit in the message.
 //
-//   antkit rs-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X] --out FILE
-//   antkit rs-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X] --host
+//   antkit dev rs-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X] --out FILE
+//   antkit dev rs-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--noise X] --host
 //
 // With --host it writes no input and runs the same walk on the host instead
 // (buffon::run_rs: run_visit over the host's World, the raster in a vector), printing
@@ -45,13 +45,11 @@ struct RsInputCommand {
 void run(const RsInputCommand& c) {
   if (c.steps < 1 || c.steps > buffon::kMcuMaxSteps) // --host too, so before the writer's check
     throw InputError("--steps", buffon::describe_rs(buffon::McuBuffonError::Steps));
-  antkit::cli::check_buffon_body(0.1, c.noise);
+  antkit::cli::check_buffon_noise(c.noise);
   if (c.host == !c.out.empty())
     throw InputError("--out", "give either --out FILE (the chip's input) or --host");
   const antkit::geometry::Arena arena = antkit::cli::read_buffon_arena(c.arena);
-  buffon::BodyParams body;
-  body.noise = antkit::geometry::fixed_from_double<antkit::kernel::Fx>(c.noise, "--noise");
-  const buffon::World world(arena.walls_fx(), body); // refuses as `antkit buffon` does
+  const buffon::World world = antkit::cli::buffon_world(arena, c.noise);
   if (c.host) {
     buffon::TrialParams params;
     params.seed = c.seed;
@@ -87,7 +85,7 @@ void run(const RsInputCommand& c) {
 void register_rs_mcu_input(CLI::App& app) {
   auto c = std::make_shared<RsInputCommand>();
   auto* sub = app.add_subcommand("rs-mcu-input",
-                                 "Plumbing: one Randomized Search walk's input for the Cortex-M "
+                                 "One Randomized Search walk's input for the Cortex-M "
                                  "image (scripts/run-on-mcu.sh rs; buffon/rs_mcu_input.hpp), or "
                                  "with --host the same walk run on the host");
   sub->add_option("--arena", c->arena, "A named arena spec (square:area=25, ...) or FILE.wkt")
@@ -100,6 +98,6 @@ void register_rs_mcu_input(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{"rs-mcu-input", &register_rs_mcu_input};
+const antkit::cli::DevRegistration reg{"rs-mcu-input", &register_rs_mcu_input};
 
 } // namespace

@@ -1,11 +1,11 @@
-// `antkit buffon-mcu-input` (plumbing for scripts/run-on-mcu.sh buffon, issue 27): one Buffon
+// `antkit dev buffon-mcu-input` (plumbing for scripts/run-on-mcu.sh buffon, issue 27): one Buffon
 // trial's input for the Cortex-M image (buffon/mcu_input.hpp). The arena is read and built here,
 // with CGAL, as `antkit buffon` builds it, and travels as its Q15.16 walls; the options are checked
-// as `antkit buffon` checks them (exit 2, located), and a trial whose memory plan exceeds the
-// chip's arena is refused with the plan and the limit in the message.
+// by `antkit buffon`'s own checks (buffon_options.hpp: exit 2, located), and a trial whose memory
+// plan exceeds the chip's arena is refused with the plan and the limit in the message.
 //
-//   antkit buffon-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--width W] [--noise X]
-//                           --out FILE
+//   antkit dev buffon-mcu-input --arena SPEC|FILE.wkt --steps N [--seed S] [--width W]
+//                               [--noise X] --out FILE
 #include "buffon_options.hpp"
 #include "commands.hpp"
 
@@ -36,10 +36,8 @@ void run(const McuInputCommand& c) {
   antkit::cli::check_buffon_run_size(1, c.steps, 1);
   antkit::cli::check_buffon_body(c.width, c.noise);
   const antkit::geometry::Arena arena = antkit::cli::read_buffon_arena(c.arena);
-  buffon::BodyParams body;
-  body.noise = antkit::geometry::fixed_from_double<antkit::kernel::Fx>(c.noise, "--noise");
+  const buffon::World world = antkit::cli::buffon_world(arena, c.noise);
   const auto width = antkit::geometry::fixed_from_double<antkit::kernel::Fx>(c.width, "--width");
-  const buffon::World world(arena.walls_fx(), body); // refuses as `antkit buffon` does
   buffon::McuInput in;
   try {
     in = buffon::mcu_buffon_input(world, width, c.seed, c.steps);
@@ -57,7 +55,7 @@ void run(const McuInputCommand& c) {
 void register_buffon_mcu_input(CLI::App& app) {
   auto c = std::make_shared<McuInputCommand>();
   auto* sub = app.add_subcommand("buffon-mcu-input",
-                                 "Plumbing: one Buffon trial's input for the Cortex-M image "
+                                 "One Buffon trial's input for the Cortex-M image "
                                  "(scripts/run-on-mcu.sh buffon; buffon/mcu_input.hpp)");
   sub->add_option("--arena", c->arena, "A named arena spec (circle:d=10, ...) or FILE.wkt")
       ->required();
@@ -69,6 +67,6 @@ void register_buffon_mcu_input(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{"buffon-mcu-input", &register_buffon_mcu_input};
+const antkit::cli::DevRegistration reg{"buffon-mcu-input", &register_buffon_mcu_input};
 
 } // namespace
