@@ -14,9 +14,9 @@
 # run_coqc.cmake.
 #
 # The directories are seen under the empty logical prefix: TABLES_DIR holds AntkitAngleTables.vo
-# (the build writes and compiles it), LIB_DIR IntervalAngle.vo (compiled by the build), OUT_DIR the
-# .vo of the parts a file builds on (SineEntries.vo ..., written by the tests that check them,
-# which ctest runs first: fixtures) and receives this file's.
+# (the build writes and compiles it), LIB_DIR IntervalAngle.vo and AngleBounds.vo (compiled by the
+# build), OUT_DIR the .vo of the parts a file builds on (SineEntries.vo ..., written by the tests
+# that check them, which ctest runs first: fixtures) and receives this file's.
 #
 # A tooth (proof.teeth.interval_*) runs the same check on a broken input and passes only when coqc
 # refuses it with Interval's own failure, MUST_FAIL (a regular expression):

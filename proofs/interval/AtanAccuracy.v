@@ -2,14 +2,14 @@
 
    proofs/z3/angle_atan2.cpp proves that the shipped atan2_raw computes exactly "fold (x, y) to the
    first octant (0 <= n <= d), ratio = floor(2^30 n/d + 1/2), interpolate kAtanUnits at the ratio
-   (exact), round half up to a unit, unfold with exact binary-angle arithmetic": IntervalAngle.v's
+   (exact), round half up to a unit, unfold with exact binary-angle arithmetic": AngleBounds.v's
    interpolate and the shift below; the unfold (2^30 - base, 2^31 - octant, -half, mod 2^32) is
    exact and maps the true angle the same way. AtanEntries.v and AtanInterpolant.v check, with Coq
    Interval, every entry of the shipped table and every real point of every interval; this file
    adds the terms: 1/2 (the result's rounding) + 53.4 (interpolant and entries) + 1/pi (the
    ratio's rounding) = 54.22 <= 55, the documented bound. *)
 From Coq Require Import Reals ZArith List.
-Require Import AntkitAngleTables IntervalAngle AtanEntries AtanInterpolant.
+Require Import AntkitAngleTables IntervalAngle AngleBounds AtanEntries AtanInterpolant.
 Open Scope R_scope.
 
 Lemma kAtanUnits_length : length kAtanUnits = 1026%nat.

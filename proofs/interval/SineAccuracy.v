@@ -2,14 +2,14 @@
 
    proofs/z3/angle_sine.cpp proves that the shipped sin_raw computes exactly "fold the angle to the
    quarter wave, interpolate kSineQ30 at u (index u >> 20, weight u mod 2^20, exact), round half up
-   by 50 - F bits, apply the sign": IntervalAngle.v's fold_position, interpolate and the shift
+   by 50 - F bits, apply the sign": AngleBounds.v's fold_position, interpolate and the shift
    below. SineEntries.v and SineInterpolant.v check, with Coq Interval, every entry of the shipped
    table and every real point of every interval; this file adds the terms. The result is the
    documented bound |sin(a) - sin_exact(a)| <= 2^-(F+1) + 2.947e-7 for every 32-bit angle and
    every F <= 49, with no step on paper but the Z3 proof's "a W-bit term proved not to wrap equals
    its integer". *)
 From Coq Require Import Reals ZArith List.
-Require Import AntkitAngleTables IntervalAngle SineEntries SineInterpolant.
+Require Import AntkitAngleTables IntervalAngle AngleBounds SineEntries SineInterpolant.
 Open Scope R_scope.
 
 Lemma kSineQ30_length : length kSineQ30 = 1026%nat.
