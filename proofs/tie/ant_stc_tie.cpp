@@ -18,10 +18,15 @@
 //     the Coq table's decisions rather than the shipped ant_decide. On every cell map of up to 12
 //     cells in a box of up to 4 x 4 cells, from every start sub-cell, they must agree on every
 //     position, on the marks of every cell after every move (for world-edge: what the edge rule
-//     reads from the lit edges) and on how the run ends. AntStcWorld.v proves what its world does
-//     on every map; that the shipped Floor steps as that world does is this tested
-//     correspondence on that domain, not a proof.
-//
+//     reads from the lit edges), on the covered and repeat counts after every move, on how the run
+//     ends and on the trace hash (the model hashes the stream floor.hpp documents, field by field).
+//     Each map and start is run four times: as it is, with an odd last column, an odd last row,
+//     and both (outside the cell area: floor.hpp's layout then differs from a plain width x height
+//     one); in about half the runs (a fixed function of the map, the start and the size) every
+//     cell that is not free has a random set of free sub-cells, never all four (a partly free
+//     cell, which the floor must treat as not free). proofs/z3/stc_floor.cpp proves the step about
+//     the same source on every map; this tie is the correspondence run end to end, reset()
+//     included.
 // The teeth (ctest proof.teeth.*): --flip-table K changes the K-th table entry, --flip-code K
 // changes the shipped decision on the K-th input, --drop-mark K makes the shipped world forget the
 // mark of its K-th move. Each must make the check fail (exit 1, "MISMATCH ..."); the tests pass
@@ -123,10 +128,20 @@ enum class Outcome { Moved, Stopped, Refused };
 
 class ModelWorld {
 public:
-  ModelWorld(int cells_x, int cells_y, std::uint32_t free_mask, SubCell start,
-             const std::array<std::string, 4>& table)
-      : cx_(cells_x), cy_(cells_y), free_(free_mask), pos_(start), q_(quadrant_of(start)),
-        table_(table), marks_(static_cast<std::size_t>(cells_x * cells_y), 0) {}
+  // A map of cells_x x cells_y cells inside a width x height sub-cell map (an odd last column or
+  // row lies outside the cell area); free_mask: the free cells (bit y * cells_x + x).
+  ModelWorld(int width, int height, int cells_x, int cells_y, std::uint32_t free_mask,
+             SubCell start, const std::array<std::string, 4>& table)
+      : cx_(cells_x), cy_(cells_y), width_(width), free_(free_mask), pos_(start),
+        q_(quadrant_of(start)), table_(table),
+        marks_(static_cast<std::size_t>(cells_x * cells_y), 0),
+        entered_(static_cast<std::size_t>(width * height), 0) {
+    // The trace hash as floor.hpp documents it: u32 width, u32 height, i32 start.x, i32 start.y,
+    // then i32 x, i32 y per position, the start first (written here field by field).
+    hash_.add_u32(static_cast<std::uint32_t>(width)).add_u32(static_cast<std::uint32_t>(height));
+    hash_.add_i32(start.x).add_i32(start.y);
+    enter(start);
+  }
 
   bool free_cell(Cell c) const {
     return c.x >= 0 && c.y >= 0 && c.x < cx_ && c.y < cy_ && ((free_ >> (c.y * cx_ + c.x)) & 1);
@@ -137,6 +152,10 @@ public:
     return marks_[static_cast<std::size_t>(c.y * cx_ + c.x)];
   }
   SubCell position() const { return pos_; }
+  // Sub-cells entered at least once, entries into one entered before, and the trace hash.
+  std::int64_t covered() const { return covered_; }
+  std::int64_t repeats() const { return repeats_; }
+  std::uint64_t hash() const { return hash_.finish(); }
 
   // One step of `run`: Stop ends the run; a move into a cell that is not free is refused (before
   // anything is marked); otherwise the sub-cell left is marked and the robot moves.
@@ -159,26 +178,44 @@ public:
         static_cast<std::uint8_t>(marks(c) | (1u << quadrant_of(pos_)));
     pos_ = target;
     q_ = x.q;
+    enter(target);
     return Outcome::Moved;
   }
   int believed_quadrant() const { return q_; }
 
 private:
-  int cx_, cy_;
+  void enter(SubCell s) {
+    hash_.add_i32(s.x).add_i32(s.y);
+    auto& e = entered_[static_cast<std::size_t>(s.y * width_ + s.x)];
+    if (e != 0) {
+      ++repeats_;
+    } else {
+      ++covered_;
+      e = 1;
+    }
+  }
+
+  int cx_, cy_, width_;
   std::uint32_t free_;
   SubCell pos_;
   int q_;
   const std::array<std::string, 4>& table_;
   std::vector<std::uint8_t> marks_;
+  std::vector<std::uint8_t> entered_;
+  std::int64_t covered_ = 0, repeats_ = 0;
+  antkit::kernel::TraceHash hash_;
 };
 
 // The shipped floor (the one StcWorld, the C API and the Cortex-M image run), over a buffer of
 // our own so that the teeth can reach into its marks. drive_tour calls apply() and position().
 class ShippedWorld {
 public:
-  ShippedWorld(int cells_x, int cells_y, std::uint32_t free_mask, SubCell start, Marker marker,
-               long long drop_mark)
-      : width_(2 * cells_x), height_(2 * cells_y), marker_(marker),
+  // The map: width x height sub-cells (2 cells_x + 0 or 1 by 2 cells_y + 0 or 1); the cells in
+  // free_mask are free; every other cell of the grid has the free sub-cells of its 4-bit pattern
+  // in `partial` (bit q: sub-cell q; never all four), so it is not free but may be partly.
+  ShippedWorld(int width, int height, int cells_x, int cells_y, std::uint32_t free_mask,
+               std::uint64_t partial, SubCell start, Marker marker, long long drop_mark)
+      : width_(width), height_(height), marker_(marker),
         buffer_((floor_bytes(width_, height_, marker) + 7) / 8),
         storage_(floor_storage(buffer_.data(), width_, height_, marker)),
         stride_(static_cast<std::size_t>(cells_x) + 2), drop_mark_(drop_mark) {
@@ -186,10 +223,14 @@ public:
     for (std::size_t i = 0; i < size.bit_bytes; ++i) storage_.free_bits[i] = 0;
     for (int cy = 0; cy < cells_y; ++cy)
       for (int cx = 0; cx < cells_x; ++cx) {
-        if (((free_mask >> (cy * cells_x + cx)) & 1) == 0) continue;
+        const int j = cy * cells_x + cx;
+        const unsigned free_subcells =
+            ((free_mask >> j) & 1) != 0 ? 15u : static_cast<unsigned>((partial >> (4 * j)) & 15);
         for (int q = 0; q < 4; ++q) {
+          if (((free_subcells >> q) & 1) == 0) continue;
+          // floor.hpp's layout of free_bits: row-major over the cell area, 2 cells_x bits a row.
           const SubCell s = subcell_of({cx, cy}, q);
-          const auto k = static_cast<std::size_t>(s.y * width_ + s.x);
+          const auto k = static_cast<std::size_t>(s.y * 2 * cells_x + s.x);
           storage_.free_bits[k >> 3] =
               static_cast<std::uint8_t>(storage_.free_bits[k >> 3] | (1u << (k & 7)));
         }
@@ -222,6 +263,8 @@ public:
     return moved;
   }
   SubCell position() const { return floor_.position(); }
+  std::int64_t covered() const { return floor_.covered(); }
+  std::int64_t repeats() const { return floor_.repeats(); }
   // The sub-cells of cell c that count as covered (bit q): their marks, or (edges) what the
   // edge rule reads from the cell's lit edges.
   std::uint8_t marks(Cell c) const {
@@ -240,13 +283,29 @@ private:
   long long moves_ = 0;
 };
 
+// A map of the world tie: its cells (free_mask over a cells_x x cells_y grid), and how it is
+// dressed: an odd last column and row (outside the cell area) and partly free cells.
+struct WorldMap {
+  int cells_x = 1, cells_y = 1;
+  std::uint32_t free_mask = 1;
+  int odd_x = 0, odd_y = 0;  // width = 2 cells_x + odd_x, height = 2 cells_y + odd_y
+  std::uint64_t partial = 0; // free sub-cells of the cells that are not free (4 bits a cell)
+  int width() const { return 2 * cells_x + odd_x; }
+  int height() const { return 2 * cells_y + odd_y; }
+};
+
 // One run of each world from one start; returns a description of the first difference.
-std::optional<std::string> compare_run(int cw, int ch, std::uint32_t mask, SubCell start,
+std::optional<std::string> compare_run(const WorldMap& map, SubCell start,
                                        const std::array<std::string, 4>& table, Marker marker,
                                        long long drop_mark) {
-  ShippedWorld shipped(cw, ch, mask, start, marker, drop_mark);
-  ModelWorld model(cw, ch, mask, start, table);
-  antkit::kernel::TraceHash hash = tour_hash_begin(2 * cw, 2 * ch, start);
+  const int cw = map.cells_x, ch = map.cells_y;
+  ShippedWorld shipped(map.width(), map.height(), cw, ch, map.free_mask, map.partial, start, marker,
+                       drop_mark);
+  ModelWorld model(map.width(), map.height(), cw, ch, map.free_mask, start, table);
+  // As run_stc and the Cortex-M image hash a tour: the header, then the start as its first
+  // position, then drive_tour adds each position entered.
+  antkit::kernel::TraceHash hash = tour_hash_begin(map.width(), map.height(), start);
+  tour_hash_add(hash, start);
   std::optional<std::string> diff;
   long long move = 0;
   const std::int64_t max_moves = 4LL * 4 * cw * ch + 4;
@@ -262,6 +321,13 @@ std::optional<std::string> compare_run(int cw, int ch, std::uint32_t mask, SubCe
       diff = "move " + std::to_string(move) + ": positions differ";
       return;
     }
+    if (model.covered() != shipped.covered() || model.repeats() != shipped.repeats()) {
+      diff = "move " + std::to_string(move) + ": covered/repeats " +
+             std::to_string(shipped.covered()) + "/" + std::to_string(shipped.repeats()) +
+             ", the model's " + std::to_string(model.covered()) + "/" +
+             std::to_string(model.repeats());
+      return;
+    }
     for (int y = 0; y < ch; ++y)
       for (int x = 0; x < cw; ++x)
         if (model.marks({x, y}) != shipped.marks({x, y})) {
@@ -270,6 +336,8 @@ std::optional<std::string> compare_run(int cw, int ch, std::uint32_t mask, SubCe
           return;
         }
   };
+  if (model.covered() != shipped.covered() || model.repeats() != shipped.repeats())
+    return "the counts after entering the start differ";
   TourEnd end;
   if (marker == Marker::WholeSubCell) {
     AntStc controller(quadrant_of(start));
@@ -288,7 +356,16 @@ std::optional<std::string> compare_run(int cw, int ch, std::uint32_t mask, SubCe
     return "the shipped floor refuses a move, the model does not";
   // Both refusing would be agreement on the world step, and a failure of the theorem.
   if (end.refused) return "both worlds refuse a move";
+  if (hash.finish() != model.hash()) return "the trace hashes differ";
   return std::nullopt;
+}
+
+// splitmix64: the dressing of each run, a fixed function of the map and the start.
+std::uint64_t mix(std::uint64_t z) {
+  z += 0x9E3779B97F4A7C15ULL;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
 }
 
 int check_world(const std::string& golden, Marker marker, long long drop_mark) {
@@ -297,25 +374,53 @@ int check_world(const std::string& golden, Marker marker, long long drop_mark) {
     std::fprintf(stderr, "error: %s: expected four strings of 8192 entries\n", golden.c_str());
     return 2;
   }
-  long long runs = 0, mismatches = 0;
+  long long runs = 0, mismatches = 0, odd = 0, partly = 0;
   for (int cw = 1; cw <= 4; ++cw)
     for (int ch = 1; ch <= 4; ++ch) {
       if (cw * ch > 12) continue;
       for (std::uint32_t mask = 1; mask < (1u << (cw * ch)); ++mask)
         for (int i = 0; i < cw * ch; ++i) {
           if (((mask >> i) & 1) == 0) continue;
-          for (int q = 0; q < 4; ++q) {
-            const SubCell start = subcell_of({i % cw, i / cw}, q);
-            const auto diff = compare_run(cw, ch, mask, start, *table, marker, drop_mark);
-            ++runs;
-            if (diff && ++mismatches <= 5)
-              std::printf("MISMATCH world: %d x %d cells, free mask %u, start (%d, %d): %s\n", cw,
-                          ch, mask, start.x, start.y, diff->c_str());
-          }
+          for (int q = 0; q < 4; ++q)
+            for (int v = 0; v < 4; ++v) {
+              // Each map and start is run four times: the cell area alone, with an odd last column,
+              // with an odd last row, with both. In about half the runs (a fixed function of the
+              // map, the start and v) every cell that is not free has a random set of free
+              // sub-cells, never all four.
+              const std::uint64_t h =
+                  mix((std::uint64_t{mask} << 16) ^ (std::uint64_t(cw * 4 + ch) << 8) ^
+                      static_cast<std::uint64_t>(i * 4 + q));
+              WorldMap map;
+              map.cells_x = cw;
+              map.cells_y = ch;
+              map.free_mask = mask;
+              map.odd_x = v & 1;
+              map.odd_y = v >> 1;
+              if (((h >> v) & 1) != 0) {
+                const std::uint64_t bits = mix(h + static_cast<std::uint64_t>(v));
+                for (int j = 0; j < cw * ch; ++j) {
+                  std::uint64_t pattern = (bits >> (4 * j)) & 15;
+                  if (pattern == 15) pattern = 7; // never all four: the cell is not free
+                  if (((mask >> j) & 1) == 0) map.partial |= pattern << (4 * j);
+                }
+              }
+              odd += (map.odd_x | map.odd_y) != 0 ? 1 : 0;
+              partly += map.partial != 0 ? 1 : 0;
+              const SubCell start = subcell_of({i % cw, i / cw}, q);
+              const auto diff = compare_run(map, start, *table, marker, drop_mark);
+              ++runs;
+              if (diff && ++mismatches <= 5)
+                std::printf(
+                    "MISMATCH world: %d x %d sub-cells (%d x %d cells), free mask %u, partly "
+                    "free %llx, start (%d, %d): %s\n",
+                    map.width(), map.height(), cw, ch, mask,
+                    static_cast<unsigned long long>(map.partial), start.x, start.y, diff->c_str());
+            }
         }
     }
-  std::printf("world (%s): %lld runs, %lld mismatches\n",
-              marker == Marker::Edge ? "ant-edge" : "ant", runs, mismatches);
+  std::printf("world (%s): %lld runs (%lld with an odd width or height, %lld with partly free "
+              "cells), %lld mismatches\n",
+              marker == Marker::Edge ? "ant-edge" : "ant", runs, odd, partly, mismatches);
   return mismatches == 0 ? 0 : 1;
 }
 

@@ -20,6 +20,10 @@
 //     (never lit: marks use bits 0-3, edges 0-11), so an observation reads the neighbours' freedom
 //     from the words it loads anyway. Either array may be absent (null) when the run does not
 //     need it; the freedom bit is then read from the other.
+// The floor is one template, BasicFloor<P>, over the integer and memory types it computes with;
+// what ships is Floor = BasicFloor<FloorMachine> (plain C++ types: the machine code is the
+// non-template floor's). proofs/z3/stc_floor.cpp instantiates the same source with Z3 words and Z3
+// arrays and proves its step on every map up to kMaxGridSide (issue 41).
 // Marker noise lives here, on the sensing side: each mark bit the robot reads is misread (a missed
 // mark or a phantom) with probability noise.ppm / 1'000'000, drawn from the keyed stream
 // (seed, kNoiseExperiment, trial, robot 0, kNoisePurpose). The controllers stay deterministic
@@ -48,21 +52,65 @@ struct NoiseModel {
 // the lit edge behind it (`ant-edge`, the paper's real robot).
 enum class Marker : std::uint8_t { WholeSubCell, Edge };
 
-// Sizes of the floor's arrays for a map of width x height sub-cells.
-struct FloorSize {
-  CellGridShape shape{};
-  std::size_t bit_bytes = 0; // free_bits and entered_bits, each
-  std::size_t cells = 0;     // entries of marks and of edges (the cells and their border)
+struct FloorStorage {
+  std::uint8_t* free_bits = nullptr;    // bit_bytes, filled in by the caller
+  std::uint8_t* entered_bits = nullptr; // bit_bytes
+  std::uint8_t* marks = nullptr;        // cells entries, or null
+  std::uint16_t* edges = nullptr;       // cells entries, or null
 };
 
-[[nodiscard]] constexpr FloorSize floor_size(std::int32_t width, std::int32_t height) noexcept {
-  FloorSize s;
+// The types the floor computes with. The floor is written once, over a policy P, and shipped as
+// Floor = BasicFloor<FloorMachine>: the plain C++ types below, so the machine code is what it was
+// before the template. proofs/z3/stc_floor.cpp instantiates the very same source with Z3 words and
+// Z3 arrays for memory and proves one step of it, for every map up to kMaxGridSide (issue 41). A
+// policy gives:
+//   Bool      a truth value (`if` on it: the Z3 instantiation forks the run, one path per outcome)
+//   Coord     sub-cell and cell coordinates (int32)
+//   Index     indices into the arrays (size_t: the stride arithmetic wraps modulo 2^64)
+//   Byte      an element of free_bits, entered_bits and marks; Word: an element of edges
+//   Bits      a mask being assembled (unsigned); Count: the covered and repeat counts (int64)
+//   SubCell   {Coord x, y} (also used for cells); Shape: {Coord cells_x, cells_y}
+//   Storage   FloorStorage's four arrays, each indexed by Index and testable for presence
+//   MarkObservation, EdgeObservation: what the controllers read
+struct FloorMachine {
+  using Bool = bool;
+  using Coord = std::int32_t;
+  using Index = std::size_t;
+  using Byte = std::uint8_t;
+  using Word = std::uint16_t;
+  using Bits = unsigned;
+  using Count = std::int64_t;
+  using SubCell = stc::SubCell;
+  using Shape = CellGridShape;
+  using Storage = FloorStorage;
+  using MarkObservation = stc::MarkObservation;
+  using EdgeObservation = stc::EdgeObservation;
+};
+
+// Sizes of the floor's arrays for a map of width x height sub-cells.
+template <class P>
+struct BasicFloorSize {
+  typename P::Shape shape{};
+  typename P::Index bit_bytes = 0; // free_bits and entered_bits, each
+  typename P::Index cells = 0;     // entries of marks and of edges (the cells and their border)
+};
+using FloorSize = BasicFloorSize<FloorMachine>;
+
+template <class P>
+[[nodiscard]] constexpr BasicFloorSize<P> basic_floor_size(typename P::Coord width,
+                                                           typename P::Coord height) noexcept {
+  using Index = typename P::Index;
+  BasicFloorSize<P> s;
   s.shape = {width / 2, height / 2};
-  const auto cx = static_cast<std::size_t>(s.shape.cells_x);
-  const auto cy = static_cast<std::size_t>(s.shape.cells_y);
+  const auto cx = static_cast<Index>(s.shape.cells_x);
+  const auto cy = static_cast<Index>(s.shape.cells_y);
   s.bit_bytes = (4 * cx * cy + 7) / 8;
   s.cells = (cx + 2) * (cy + 2);
   return s;
+}
+
+[[nodiscard]] constexpr FloorSize floor_size(std::int32_t width, std::int32_t height) noexcept {
+  return basic_floor_size<FloorMachine>(width, height);
 }
 
 // The bytes a run of one marker needs in one buffer (floor_storage's layout): both bit arrays,
@@ -72,13 +120,6 @@ struct FloorSize {
   const FloorSize s = floor_size(width, height);
   return ((2 * s.bit_bytes + 7) & ~std::size_t{7}) + s.cells * (marker == Marker::Edge ? 2 : 1);
 }
-
-struct FloorStorage {
-  std::uint8_t* free_bits = nullptr;    // bit_bytes, filled in by the caller
-  std::uint8_t* entered_bits = nullptr; // bit_bytes
-  std::uint8_t* marks = nullptr;        // cells entries, or null
-  std::uint16_t* edges = nullptr;       // cells entries, or null
-};
 
 // Lays a floor's storage out in `buffer` (8-byte aligned, floor_bytes long): free bits, entered
 // bits, then the marker's array (marks for WholeSubCell, edges for Edge). Nothing is written.
@@ -97,101 +138,119 @@ struct FloorStorage {
   return f;
 }
 
-class Floor {
+template <class P>
+class BasicFloor {
 public:
+  using Bool = typename P::Bool;
+  using Coord = typename P::Coord;
+  using Index = typename P::Index;
+  using Byte = typename P::Byte;
+  using Word = typename P::Word;
+  using Bits = typename P::Bits;
+  using Count = typename P::Count;
+  using SubCell = typename P::SubCell;
+  using Cell = typename P::SubCell;
+  using Shape = typename P::Shape;
+  using Storage = typename P::Storage;
+  using MarkObservation = typename P::MarkObservation;
+  using EdgeObservation = typename P::EdgeObservation;
+
   static constexpr unsigned kMarkFreeBit = 7;
   static constexpr unsigned kEdgeFreeBit = 15;
 
   // Starts a run on a map of width x height sub-cells whose free sub-cells are already in
   // storage.free_bits: derives the cells' freedom, clears marks, edges and entries, and enters
   // `start` (a free sub-cell of the cell area: the runners check). At least one of marks and edges.
-  void reset(std::int32_t width, std::int32_t height, FloorStorage storage, SubCell start,
-             NoiseModel noise, Marker marker) noexcept {
-    width_ = width;
-    height_ = height;
-    const FloorSize size = floor_size(width, height);
-    shape_ = size.shape;
-    bit_stride_ = static_cast<std::size_t>(2 * shape_.cells_x);
-    stride_ = static_cast<std::size_t>(shape_.cells_x) + 2;
-    offset_ = {1, 0 - stride_, 0 - std::size_t{1}, stride_};
-    s_ = storage;
-    marker_ = marker;
-    for (std::size_t i = 0; i < size.bit_bytes; ++i) s_.entered_bits[i] = 0;
-    for (std::size_t i = 0; i < size.cells; ++i) {
+  void reset(Coord width, Coord height, Storage storage, SubCell start, NoiseModel noise,
+             Marker marker) noexcept {
+    const BasicFloorSize<P> size = layout(width, height, storage, noise, marker);
+    for (Index i = 0; i < size.bit_bytes; ++i) s_.entered_bits[i] = 0;
+    for (Index i = 0; i < size.cells; ++i) {
       if (s_.marks) s_.marks[i] = 0;
       if (s_.edges) s_.edges[i] = 0;
     }
-    for (std::int32_t cy = 0; cy < shape_.cells_y; ++cy)
-      for (std::int32_t cx = 0; cx < shape_.cells_x; ++cx) {
+    for (Coord cy = 0; cy < shape_.cells_y; ++cy)
+      for (Coord cx = 0; cx < shape_.cells_x; ++cx) {
         bool all = true;
         for (int q = 0; q < 4; ++q) all = all && bit(s_.free_bits, subcell_of({cx, cy}, q));
         if (!all) continue;
-        const std::size_t i = cell_index({cx, cy});
-        if (s_.marks) s_.marks[i] = std::uint8_t{1} << kMarkFreeBit;
-        if (s_.edges) s_.edges[i] = std::uint16_t{1} << kEdgeFreeBit;
+        const Index i = cell_index({cx, cy});
+        if (s_.marks) s_.marks[i] = Byte{1} << kMarkFreeBit;
+        if (s_.edges) s_.edges[i] = Word{1} << kEdgeFreeBit;
       }
     position_ = start;
-    noise_ = noise;
-    stream_ = kernel::Stream(noise.seed, kNoiseExperiment, noise.trial, 0, kNoisePurpose);
     covered_ = 0;
     repeats_ = 0;
     enter(start);
   }
 
-  [[nodiscard]] std::int32_t width() const noexcept { return width_; }
-  [[nodiscard]] std::int32_t height() const noexcept { return height_; }
-  [[nodiscard]] CellGridShape shape() const noexcept { return shape_; }
+  // Takes up a run where it stands: the layout of a width x height floor over `storage`, whose
+  // arrays already hold the run's marks, edges and entries (nothing is read or written), the robot
+  // at `position`, with `covered` and `repeats` so far. reset() is the same layout, then a clean
+  // floor and the start; the Z3 proof (proofs/z3/stc_floor.cpp) steps the floor from here, from
+  // any state that keeps the floor's invariant.
+  void restore(Coord width, Coord height, Storage storage, SubCell position, Count covered,
+               Count repeats, NoiseModel noise, Marker marker) noexcept {
+    layout(width, height, storage, noise, marker);
+    position_ = position;
+    covered_ = covered;
+    repeats_ = repeats;
+  }
+
+  [[nodiscard]] Coord width() const noexcept { return width_; }
+  [[nodiscard]] Coord height() const noexcept { return height_; }
+  [[nodiscard]] Shape shape() const noexcept { return shape_; }
   [[nodiscard]] SubCell position() const noexcept { return position_; }
   // Sub-cells entered at least once, and entries into a sub-cell entered before.
-  [[nodiscard]] std::int64_t covered() const noexcept { return covered_; }
-  [[nodiscard]] std::int64_t repeats() const noexcept { return repeats_; }
+  [[nodiscard]] Count covered() const noexcept { return covered_; }
+  [[nodiscard]] Count repeats() const noexcept { return repeats_; }
 
-  [[nodiscard]] bool inside(SubCell s) const noexcept {
+  [[nodiscard]] Bool inside(SubCell s) const noexcept {
     return s.x >= 0 && s.y >= 0 && s.x < 2 * shape_.cells_x && s.y < 2 * shape_.cells_y;
   }
-  [[nodiscard]] bool sub_free(SubCell s) const noexcept {
-    return inside(s) && bit(s_.free_bits, s);
+  [[nodiscard]] Bool sub_free(SubCell s) const noexcept {
+    // Not `inside(s) && bit(...)`: written so that the bit is read only inside, for the Z3
+    // instantiation too (whose && evaluates both sides; the proof checks every index read).
+    if (!inside(s)) return false;
+    return bit(s_.free_bits, s);
   }
   // Every sub-cell of c is free (false outside the map).
   [[nodiscard]] bool cell_free(Cell c) const noexcept {
-    return shape_.in_bounds(c) && free_at(cell_index(c));
+    return in_cells(c) && free_at(cell_index(c));
   }
   [[nodiscard]] bool marked(SubCell s) const noexcept {
     return ((cell_marks(cell_of(s)) >> quadrant_of(s)) & 1) != 0;
   }
-  [[nodiscard]] std::uint8_t cell_marks(Cell c) const noexcept {
-    return shape_.in_bounds(c) && s_.marks
-               ? static_cast<std::uint8_t>(s_.marks[cell_index(c)] & 0x0Fu)
-               : std::uint8_t{0};
+  [[nodiscard]] Byte cell_marks(Cell c) const noexcept {
+    return in_cells(c) && s_.marks ? static_cast<Byte>(s_.marks[cell_index(c)] & 0x0Fu) : Byte{0};
   }
   // The 12-bit edge mask of a cell (bits as documented in ant.hpp).
-  [[nodiscard]] std::uint16_t cell_edges(Cell c) const noexcept {
-    return shape_.in_bounds(c) && s_.edges
-               ? static_cast<std::uint16_t>(s_.edges[cell_index(c)] & 0x0FFFu)
-               : std::uint16_t{0};
+  [[nodiscard]] Word cell_edges(Cell c) const noexcept {
+    return in_cells(c) && s_.edges ? static_cast<Word>(s_.edges[cell_index(c)] & 0x0FFFu) : Word{0};
   }
 
   [[nodiscard]] CellObservation observe_cells() const noexcept {
-    const std::size_t i = cell_index(cell_of(position_));
+    const Index i = cell_index(cell_containing(position_));
     unsigned bits = 0;
     for (std::size_t d = 0; d < 4; ++d) bits |= static_cast<unsigned>(free_at(i + offset_[d])) << d;
     return {static_cast<std::uint8_t>(bits)};
   }
 
   [[nodiscard]] MarkObservation observe_marks() noexcept {
-    const std::size_t i = cell_index(cell_of(position_));
+    const Index i = cell_index(cell_containing(position_));
     MarkObservation o;
-    o.here = static_cast<std::uint8_t>(s_.marks[i] & 0x0Fu);
-    unsigned free = 0;
+    const Byte here = s_.marks[i];
+    o.here = static_cast<Byte>(here & 0x0Fu);
+    Bits free = 0;
     for (std::size_t d = 0; d < 4; ++d) {
-      const std::uint8_t m = s_.marks[i + offset_[d]];
-      o.neighbour[d] = static_cast<std::uint8_t>(m & 0x0Fu);
-      free |= static_cast<unsigned>(m >> kMarkFreeBit) << d;
+      const Byte m = s_.marks[i + offset_[d]];
+      o.neighbour[d] = static_cast<Byte>(m & 0x0Fu);
+      free |= static_cast<Bits>(m >> kMarkFreeBit) << d;
     }
-    o.free_neighbours = static_cast<std::uint8_t>(free);
+    o.free_neighbours = static_cast<Byte>(free);
     if (noise_.ppm != 0) {
-      o.here = static_cast<std::uint8_t>(misread(o.here, 4));
-      for (auto& m : o.neighbour) m = static_cast<std::uint8_t>(misread(m, 4));
+      o.here = misread(o.here, 4);
+      for (auto& m : o.neighbour) m = misread(m, 4);
     }
     return o;
   }
@@ -200,19 +259,20 @@ public:
   // shared form measured 12 % slower for ant-edge on 4096^2 (21.2 -> 18.7 M sub-cells/s, same
   // quiet run).
   [[nodiscard]] EdgeObservation observe_edges() noexcept {
-    const std::size_t i = cell_index(cell_of(position_));
+    const Index i = cell_index(cell_containing(position_));
     EdgeObservation o;
-    o.here = static_cast<std::uint16_t>(s_.edges[i] & 0x0FFFu);
-    unsigned free = 0;
+    const Word here = s_.edges[i];
+    o.here = static_cast<Word>(here & 0x0FFFu);
+    Bits free = 0;
     for (std::size_t d = 0; d < 4; ++d) {
-      const std::uint16_t e = s_.edges[i + offset_[d]];
-      o.neighbour[d] = static_cast<std::uint16_t>(e & 0x0FFFu);
-      free |= static_cast<unsigned>(e >> kEdgeFreeBit) << d;
+      const Word e = s_.edges[i + offset_[d]];
+      o.neighbour[d] = static_cast<Word>(e & 0x0FFFu);
+      free |= static_cast<Bits>(e >> kEdgeFreeBit) << d;
     }
-    o.free_neighbours = static_cast<std::uint8_t>(free);
+    o.free_neighbours = static_cast<Byte>(free);
     if (noise_.ppm != 0) {
-      o.here = static_cast<std::uint16_t>(misread(o.here, 12));
-      for (auto& m : o.neighbour) m = static_cast<std::uint16_t>(misread(m, 12));
+      o.here = misread(o.here, 12);
+      for (auto& m : o.neighbour) m = misread(m, 12);
     }
     return o;
   }
@@ -222,38 +282,40 @@ public:
   // exterior edge in both cells it separates.
   void light_edge(SubCell s, int d) noexcept {
     d &= 3;
-    const Cell c = cell_of(s);
-    const int e = quadrant_of(s);
-    if (!shape_.in_bounds(c) || !s_.edges) return;
+    const Cell c = cell_containing(s);
+    if (!s_.edges) return;
+    if (!in_cells(c)) return;
+    const int e = quadrant_in_cell(s);
     auto light = [&](Cell cell, int b) {
-      if (shape_.in_bounds(cell)) s_.edges[cell_index(cell)] |= static_cast<std::uint16_t>(1u << b);
+      if (in_cells(cell)) s_.edges[cell_index(cell)] |= static_cast<Word>(1u << b);
     };
     if (d == dir_add(e, 2)) {
       light(c, e); // the cross box of e: interior, between e and e - 1
     } else if (d == dir_add(e, 1)) {
       light(c, dir_add(e, 1)); // interior, between e + 1 and e: the cross box of e + 1
     } else if (d == dir_add(e, 3)) {
-      light(c, 4 + e);                      // the turn box of e...
-      light(step(c, d), 8 + dir_add(e, 1)); // ...the own exterior edge of the sub-cell across
+      light(c, 4 + e); // the turn box of e...
+      light(step_towards(c, d),
+            8 + dir_add(e, 1)); // ...the own exterior edge of the sub-cell across
     } else {
-      light(c, 8 + e);                      // e's own exterior edge (direction e)...
-      light(step(c, d), 4 + dir_add(e, 3)); // ...the turn box of the sub-cell across
+      light(c, 8 + e);                              // e's own exterior edge (direction e)...
+      light(step_towards(c, d), 4 + dir_add(e, 3)); // ...the turn box of the sub-cell across
     }
   }
 
   // Carries out a command: leaves the mark, then moves. Returns false, without moving, for Stop
   // and for a move off the cell area or into a sub-cell that is not free.
-  bool apply(const Command& command) noexcept {
+  Bool apply(const Command& command) noexcept {
     if (command.move == Move::Stop) return false;
     const int d = static_cast<int>(command.move);
-    const SubCell target = step(position_, d);
+    const SubCell target = step_towards(position_, d);
     if (!sub_free(target)) return false;
     if (command.mark) {
       if (marker_ == Marker::Edge)
         light_edge(position_, opposite(d)); // the LEDs at the robot's back
       else if (s_.marks)
-        s_.marks[cell_index(cell_of(position_))] |=
-            static_cast<std::uint8_t>(1u << quadrant_of(position_));
+        s_.marks[cell_index(cell_containing(position_))] |=
+            static_cast<Byte>(1u << quadrant_in_cell(position_));
     }
     position_ = target;
     enter(target);
@@ -261,50 +323,91 @@ public:
   }
 
 private:
-  [[nodiscard]] std::size_t bit_index(SubCell s) const noexcept {
-    return static_cast<std::size_t>(s.y) * bit_stride_ + static_cast<std::size_t>(s.x);
+  // The layout of a width x height floor over `storage`: the cell grid, the strides and the four
+  // neighbour offsets of the cell arrays. Nothing in the arrays is read or written.
+  BasicFloorSize<P> layout(Coord width, Coord height, Storage storage, NoiseModel noise,
+                           Marker marker) noexcept {
+    width_ = width;
+    height_ = height;
+    const BasicFloorSize<P> size = basic_floor_size<P>(width, height);
+    shape_ = size.shape;
+    bit_stride_ = static_cast<Index>(2 * shape_.cells_x);
+    stride_ = static_cast<Index>(shape_.cells_x) + 2;
+    offset_ = {Index{1}, 0 - stride_, 0 - Index{1}, stride_};
+    s_ = storage;
+    marker_ = marker;
+    noise_ = noise;
+    stream_ = kernel::Stream(noise.seed, kNoiseExperiment, noise.trial, 0, kNoisePurpose);
+    return size;
   }
-  [[nodiscard]] bool bit(const std::uint8_t* bits, SubCell s) const noexcept {
-    const std::size_t k = bit_index(s);
-    return ((bits[k >> 3] >> (k & 7)) & 1) != 0;
+
+  // subcell.hpp's cell_of, quadrant_of and step, written over the policy's types (the same
+  // arithmetic; the quadrant's two tests fork the Z3 run into its four quadrants).
+  [[nodiscard]] static Cell cell_containing(SubCell s) noexcept { return {s.x >> 1, s.y >> 1}; }
+  [[nodiscard]] static int quadrant_in_cell(SubCell s) noexcept {
+    const Bool dx = (s.x & 1) != 0, dy = (s.y & 1) != 0;
+    // (1,1) SE 0, (1,0) NE 1, (0,0) NW 2, (0,1) SW 3
+    return dx ? (dy ? 0 : 1) : (dy ? 3 : 2);
+  }
+  [[nodiscard]] static SubCell step_towards(SubCell s, int d) noexcept {
+    const kernel::Cell o = kernel::kNeighbours4[static_cast<std::size_t>(d)];
+    return {s.x + o.x, s.y + o.y};
+  }
+  [[nodiscard]] Bool in_cells(Cell c) const noexcept {
+    return c.x >= 0 && c.y >= 0 && c.x < shape_.cells_x && c.y < shape_.cells_y;
+  }
+
+  [[nodiscard]] Index bit_index(SubCell s) const noexcept {
+    return static_cast<Index>(s.y) * bit_stride_ + static_cast<Index>(s.x);
+  }
+  template <class Bytes>
+  [[nodiscard]] Bool bit(const Bytes& bits, SubCell s) const noexcept {
+    const Index k = bit_index(s);
+    const Byte b = bits[k >> 3];
+    return ((b >> (k & 7)) & 1) != 0;
   }
   // Index into the cell arrays, which have a one-cell border.
-  [[nodiscard]] std::size_t cell_index(Cell c) const noexcept {
-    return static_cast<std::size_t>(c.y + 1) * stride_ + static_cast<std::size_t>(c.x + 1);
+  [[nodiscard]] Index cell_index(Cell c) const noexcept {
+    return static_cast<Index>(c.y + 1) * stride_ + static_cast<Index>(c.x + 1);
   }
-  [[nodiscard]] unsigned free_at(std::size_t i) const noexcept {
+  [[nodiscard]] unsigned free_at(Index i) const noexcept {
     return s_.marks ? static_cast<unsigned>(s_.marks[i] >> kMarkFreeBit)
                     : static_cast<unsigned>(s_.edges[i] >> kEdgeFreeBit);
   }
-  std::uint32_t misread(std::uint32_t bits, int count) noexcept {
+  template <class W>
+  W misread(W bits, int count) noexcept {
     for (int i = 0; i < count; ++i)
-      if (stream_.chance(noise_.ppm, 1'000'000)) bits ^= 1u << i;
+      if (stream_.chance(noise_.ppm, 1'000'000)) bits = static_cast<W>(bits ^ W(1u << i));
     return bits;
   }
   void enter(SubCell s) noexcept {
-    const std::size_t k = bit_index(s);
-    std::uint8_t& byte = s_.entered_bits[k >> 3];
-    const auto mask = static_cast<std::uint8_t>(1u << (k & 7));
-    if ((byte & mask) == 0) {
-      ++covered_;
-      byte = static_cast<std::uint8_t>(byte | mask);
+    const Index k = bit_index(s);
+    auto&& byte = s_.entered_bits[k >> 3];
+    const Byte old = byte;
+    const auto mask = static_cast<Byte>(1u << (k & 7));
+    if ((old & mask) == 0) {
+      covered_ += 1;
+      byte = static_cast<Byte>(old | mask);
     } else {
-      ++repeats_;
+      repeats_ += 1;
     }
   }
 
-  std::int32_t width_ = 0, height_ = 0;
-  CellGridShape shape_{};
-  std::size_t bit_stride_ = 0;
-  std::size_t stride_ = 2;
-  std::array<std::size_t, 4> offset_{}; // cell index steps E, N, W, S
-  FloorStorage s_{};
+  Coord width_ = 0, height_ = 0;
+  Shape shape_{};
+  Index bit_stride_ = 0;
+  Index stride_ = 2;
+  std::array<Index, 4> offset_{}; // cell index steps E, N, W, S
+  Storage s_{};
   Marker marker_ = Marker::WholeSubCell;
-  std::int64_t covered_ = 0, repeats_ = 0;
+  Count covered_ = 0, repeats_ = 0;
   SubCell position_{};
   NoiseModel noise_{};
   kernel::Stream stream_{0};
 };
+
+// The floor every runner steps (StcWorld, the C API, the Cortex-M image).
+using Floor = BasicFloor<FloorMachine>;
 
 // ---- the tour's trace hash and the loop that drives a controller --------------------------------
 //
