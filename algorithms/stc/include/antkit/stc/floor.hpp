@@ -283,9 +283,9 @@ public:
   void light_edge(SubCell s, int d) noexcept {
     d &= 3;
     const Cell c = cell_containing(s);
-    if (!s_.edges) return;
-    if (!in_cells(c)) return;
     const int e = quadrant_in_cell(s);
+    if (!in_cells(c)) return; // two ifs, not ||: the Z3 instantiation's Bool has its own ||
+    if (!s_.edges) return;
     auto light = [&](Cell cell, int b) {
       if (in_cells(cell)) s_.edges[cell_index(cell)] |= static_cast<Word>(1u << b);
     };
@@ -345,9 +345,9 @@ private:
   // arithmetic; the quadrant's two tests fork the Z3 run into its four quadrants).
   [[nodiscard]] static Cell cell_containing(SubCell s) noexcept { return {s.x >> 1, s.y >> 1}; }
   [[nodiscard]] static int quadrant_in_cell(SubCell s) noexcept {
-    const Bool dx = (s.x & 1) != 0, dy = (s.y & 1) != 0;
+    const auto dx = s.x & 1, dy = s.y & 1;
     // (1,1) SE 0, (1,0) NE 1, (0,0) NW 2, (0,1) SW 3
-    return dx ? (dy ? 0 : 1) : (dy ? 3 : 2);
+    return dx != 0 ? (dy != 0 ? 0 : 1) : (dy != 0 ? 3 : 2);
   }
   [[nodiscard]] static SubCell step_towards(SubCell s, int d) noexcept {
     const kernel::Cell o = kernel::kNeighbours4[static_cast<std::size_t>(d)];
@@ -375,19 +375,20 @@ private:
                     : static_cast<unsigned>(s_.edges[i] >> kEdgeFreeBit);
   }
   template <class W>
-  W misread(W bits, int count) noexcept {
+  W misread(W word, int count) noexcept {
+    auto bits = static_cast<Bits>(word);
     for (int i = 0; i < count; ++i)
-      if (stream_.chance(noise_.ppm, 1'000'000)) bits = static_cast<W>(bits ^ W(1u << i));
-    return bits;
+      if (stream_.chance(noise_.ppm, 1'000'000)) bits ^= static_cast<Bits>(1u << i);
+    return static_cast<W>(bits);
   }
+
   void enter(SubCell s) noexcept {
     const Index k = bit_index(s);
     auto&& byte = s_.entered_bits[k >> 3];
-    const Byte old = byte;
     const auto mask = static_cast<Byte>(1u << (k & 7));
-    if ((old & mask) == 0) {
+    if ((byte & mask) == 0) {
       covered_ += 1;
-      byte = static_cast<Byte>(old | mask);
+      byte = static_cast<Byte>(byte | mask);
     } else {
       repeats_ += 1;
     }
