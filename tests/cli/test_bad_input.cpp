@@ -234,8 +234,10 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"dev stc-mcu-input --map {M} --variant ant --start 99,0 --out {D}/in.bin",
        "--start:", "outside"},
       {"dev stc-mcu-input --map {M} --variant ant --noise 2 --out {D}/in.bin", "--noise:", ""},
-      {"dev stc-mcu-input --map {D}/junk.map --variant ant --out {D}/in.bin", "{D}/junk.map:1:1:", ""},
-      {"dev stc-mcu-input --map {B} --variant ant-edge --out {D}/in.bin", "{B}:", "which has 114688"},
+      {"dev stc-mcu-input --map {D}/junk.map --variant ant --out {D}/in.bin",
+       "{D}/junk.map:1:1:", ""},
+      {"dev stc-mcu-input --map {B} --variant ant-edge --out {D}/in.bin",
+       "{B}:", "which has 114688"},
       // cover and cover-experiment
       {"cover --algo rw --size 0x5 --density 0.1 --svg {D}/out.svg", "--size:", "'0x5'"},
       {"cover --algo rw --size 5 --density 0.1", "--size:", "'5'"},
