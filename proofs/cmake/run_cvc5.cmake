@@ -37,7 +37,9 @@ endif()
 set(failed 0)
 set(left 0)
 foreach(f IN LISTS files)
-  file(STRINGS ${f} first LIMIT_COUNT 1)
+  # The claim's name, from the file's first line "; NAME" (file(STRINGS) keeps the ';' escaped).
+  file(READ ${f} first LIMIT 4096)
+  string(REGEX REPLACE "\n.*" "" first "${first}")
   string(REGEX REPLACE "^; " "" claim "${first}")
   execute_process(COMMAND ${CVC5} --lang=smt2 --tlimit-per=${TLIMIT_MS} ${f}
                   OUTPUT_VARIABLE answer ERROR_VARIABLE answer_err RESULT_VARIABLE crc)
