@@ -36,6 +36,8 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
+# ccache keys on paths relative to the checkout, so a clean clone (CI) reuses earlier compiles.
+export CCACHE_BASEDIR=$here CCACHE_NOHASHDIR=1
 
 golden=determinism/golden.txt
 maps=${ANTKIT_MAPS:-$here/data/maps}

@@ -1,5 +1,7 @@
 // The marker-floor robot (issue 14) through its rendered camera: optics, calibration file, the
 // five cells' reading, and whole noise-free runs against the simulated ant-edge controller.
+#include "test_paths.hpp"
+
 #include <antkit/devices/stc_floor/floor.hpp>
 #include <antkit/devices/stc_floor/optics.hpp>
 #include <antkit/devices/stc_floor/pilot.hpp>
@@ -235,7 +237,7 @@ TEST_CASE("stc floor: on every shared map cut to 24 x 24 cells the rendered robo
   std::vector<std::filesystem::path> files;
   for (const auto& dir : {"movingai", "ros"})
     for (const auto& e :
-         std::filesystem::directory_iterator(std::filesystem::path(ANTKIT_MAPS_DIR) / dir))
+         std::filesystem::directory_iterator(std::filesystem::path(antkit::test::maps_dir()) / dir))
       if (e.path().extension() == ".map" || e.path().extension() == ".yaml")
         files.push_back(e.path());
   std::sort(files.begin(), files.end());

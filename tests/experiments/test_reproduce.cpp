@@ -1,5 +1,7 @@
 // antkit::experiments::reproduce, called as a library: the files, the claims, their agreement
 // with the tables they are decided from, and byte-identical output for any number of threads.
+#include "test_paths.hpp"
+
 #include <antkit/experiments/explore_tables.hpp>
 #include <antkit/experiments/reproduce.hpp>
 #include <antkit/kernel/hash.hpp>
@@ -36,7 +38,7 @@ ex::ReproduceOptions options(const fs::path& out) {
   ex::ReproduceOptions o;
   o.only = {"los", "stc"};
   o.out = out;
-  o.maps_dir = fs::path(ANTKIT_MAPS_DIR);
+  o.maps_dir = fs::path(antkit::test::maps_dir());
   return o;
 }
 

@@ -4,6 +4,7 @@
 // code to give the same answer on every input of both rules. Tested correspondence between the
 // model and the code, not a proof about the C++ code itself.
 #include "coq_golden.hpp"
+#include "test_paths.hpp"
 
 #include <antkit/stc/ant.hpp>
 #include <catch2/catch.hpp>
@@ -47,7 +48,7 @@ int observed_parent(int cur, std::uint8_t here) {
 TEST_CASE("the shipped parent-from-marks rule equals the Coq model's golden table, every input",
           "[proofs][stc]") {
   const auto vectors =
-      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/AntStc.out");
+      antkit::test::coq_golden_vectors(antkit::test::source_path("proofs/golden/AntStc.out"));
   REQUIRE(vectors.size() >= 2);
   const std::vector<int>& table = vectors[0]; // current quadrant 0..3 x here-mask 0..15
   REQUIRE(table.size() == 64);
@@ -75,7 +76,7 @@ TEST_CASE("the reading of ant_decide's step 1 can fail: a walk where w == cur is
 TEST_CASE("the shipped edge rule equals the Coq model's golden table for every 12-bit mask",
           "[proofs][stc]") {
   const auto vectors =
-      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/AntStc.out");
+      antkit::test::coq_golden_vectors(antkit::test::source_path("proofs/golden/AntStc.out"));
   REQUIRE(vectors.size() >= 2);
   const std::vector<int>& table = vectors[1];
   REQUIRE(table.size() == 4096);
@@ -88,7 +89,7 @@ TEST_CASE("the shipped edge rule equals the Coq model's golden table for every 1
 TEST_CASE("the shipped paper rule and five boxes equal the Coq model's golden tables",
           "[proofs][stc]") {
   const auto vectors =
-      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/AntStc.out");
+      antkit::test::coq_golden_vectors(antkit::test::source_path("proofs/golden/AntStc.out"));
   REQUIRE(vectors.size() >= 4);
   const std::vector<int>& rule = vectors[2]; // paper_rule, box states 0..31
   REQUIRE(rule.size() == 32);

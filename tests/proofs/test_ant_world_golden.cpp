@@ -6,6 +6,7 @@
 // maps, beside the exhaustive ties of proof_tie_ant_stc (the decision on its whole domain, the
 // world step on every map of up to 12 cells).
 #include "coq_golden.hpp"
+#include "test_paths.hpp"
 
 #include <antkit/kernel/grid.hpp>
 #include <antkit/stc/world.hpp>
@@ -68,7 +69,7 @@ int stopped_results(const std::string& path) {
 TEST_CASE("the shipped ant and ant-edge runs equal the proved marks world's golden runs - an L a "
           "2 x 3 block a ring and two components",
           "[proofs][stc]") {
-  const std::string path = ANTKIT_SOURCE_DIR "/proofs/golden/AntStcWorld.out";
+  const std::string path = antkit::test::source_path("proofs/golden/AntStcWorld.out");
   const auto vectors = antkit::test::coq_golden_vectors(path);
   const auto& maps = golden_maps();
   // ant_run on each map, then ant_edge_run on each map.

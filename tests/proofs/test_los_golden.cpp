@@ -3,6 +3,7 @@
 // output to equal proofs/golden/LosStates.out, and this test requires the shipped code to produce
 // the same transition table and order. Tested correspondence, not a proof about the C++ code.
 #include "coq_golden.hpp"
+#include "test_paths.hpp"
 
 #include <antkit/los/cell_state.hpp>
 #include <antkit/los/exploration_map.hpp>
@@ -59,7 +60,7 @@ const std::array<std::vector<Event>, 6> kReach{{
 TEST_CASE("the shipped LOS cell-state transitions equal the Coq model's golden table",
           "[proofs][los]") {
   const auto vectors =
-      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/LosStates.out");
+      antkit::test::coq_golden_vectors(antkit::test::source_path("proofs/golden/LosStates.out"));
   REQUIRE(vectors.size() >= 2);
   const std::vector<int>& table = vectors[0]; // 6 states x 4 events
   REQUIRE(table.size() == 24);
@@ -77,7 +78,7 @@ TEST_CASE("the shipped LOS cell-state transitions equal the Coq model's golden t
 
 TEST_CASE("the shipped cell-state order equals the Coq model's golden order", "[proofs][los]") {
   const auto vectors =
-      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/LosStates.out");
+      antkit::test::coq_golden_vectors(antkit::test::source_path("proofs/golden/LosStates.out"));
   REQUIRE(vectors.size() >= 2);
   const std::vector<int>& order = vectors[1]; // 6 x 6
   REQUIRE(order.size() == 36);

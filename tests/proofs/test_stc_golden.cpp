@@ -7,6 +7,7 @@
 // spanning tree and requires SpanningTree::advance to walk the same tour on every cell map of up
 // to 12 cells (4 x 3, 3 x 4 and smaller) from every start sub-cell.
 #include "coq_golden.hpp"
+#include "test_paths.hpp"
 
 #include <algorithm>
 #include <antkit/stc/offline.hpp>
@@ -129,7 +130,7 @@ TEST_CASE("every cell map of up to 12 cells in a 4 x 4 box - every start: the sh
 TEST_CASE("the shipped offline STC tour equals the Coq model's golden tours - an L a T a plus and "
           "a 2 x 3 block",
           "[proofs][stc]") {
-  const auto tours = golden_tours(ANTKIT_SOURCE_DIR "/proofs/golden/StcTour.out");
+  const auto tours = golden_tours(antkit::test::source_path("proofs/golden/StcTour.out"));
   REQUIRE(tours.size() == 4);
   for (std::size_t i = 0; i < tours.size(); ++i) {
     const std::vector<Cell>& model = tours[i];

@@ -5,6 +5,7 @@
 // which RasterFrame maps onto the same local walk). Tested correspondence between the model and
 // the code on these vectors, not a proof about the C++ code itself.
 #include "coq_golden.hpp"
+#include "test_paths.hpp"
 
 #include <antkit/kernel/raster.hpp>
 #include <array>
@@ -29,7 +30,7 @@ constexpr std::array<std::pair<int, int>, 9> kWalks{
 TEST_CASE("the shipped supercover emits the Coq model's golden walks, cell by cell",
           "[proofs][raster]") {
   const auto vectors =
-      antkit::test::coq_golden_vectors(ANTKIT_SOURCE_DIR "/proofs/golden/Supercover.out");
+      antkit::test::coq_golden_vectors(antkit::test::source_path("proofs/golden/Supercover.out"));
   REQUIRE(vectors.size() == kWalks.size());
   // The model's local walk from (0, 0) to (dx, dy) is the shipped walk from a to
   // a + (sx dx, sy dy) with each cell mapped by a + (sx i, sy j): check all four reflections at

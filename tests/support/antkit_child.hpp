@@ -2,6 +2,8 @@
 // The real `antkit` executable in a child process, its standard output read through a pipe: the
 // emulators (`antkit emulate` prints its port on the first line and serves until a signal) and
 // recorders that the CLI tests run beside one another. And a scratch directory per test.
+#include "test_paths.hpp"
+
 #include <catch2/catch.hpp>
 #include <csignal>
 #include <cstdio>
@@ -35,12 +37,12 @@ public:
       ::dup2(fds[1], STDOUT_FILENO);
       ::close(fds[0]);
       ::close(fds[1]);
-      std::vector<std::string> all{ANTKIT_EXE};
+      std::vector<std::string> all{antkit::test::antkit_exe()};
       all.insert(all.end(), args.begin(), args.end());
       std::vector<char*> argv;
       for (auto& a : all) argv.push_back(a.data());
       argv.push_back(nullptr);
-      ::execv(ANTKIT_EXE, argv.data());
+      ::execv(antkit::test::antkit_exe(), argv.data());
       ::_exit(127);
     }
     ::close(fds[1]);

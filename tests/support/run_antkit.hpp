@@ -1,5 +1,7 @@
 #pragma once
 // Runs the real `antkit` executable from a test and captures what it printed and its exit status.
+#include "test_paths.hpp"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -21,7 +23,7 @@ inline RunResult run_antkit(const std::string& args) {
   const auto err_path =
       std::filesystem::temp_directory_path() /
       ("antkit-test-stderr-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-  const std::string cmd = std::string(ANTKIT_EXE) + " " + args + " 2>" + err_path.string();
+  const std::string cmd = std::string(antkit_exe()) + " " + args + " 2>" + err_path.string();
   RunResult r;
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (!pipe) return r;
@@ -40,7 +42,7 @@ inline RunResult run_antkit(const std::string& args) {
 
 // A real map file by its path below the repository's data/maps.
 inline std::string shared_map(const std::string& relative) {
-  return std::string(ANTKIT_MAPS_DIR) + "/" + relative;
+  return std::string(maps_dir()) + "/" + relative;
 }
 
 } // namespace antkit::test
