@@ -3,7 +3,12 @@
 #   "the N scenarios of `determinism/scenarios.cpp`"  the golden lines of determinism/golden.txt
 #                                                    (teeth/ lines aside)
 #   "(N maps, `antkit_determinism"                   data/maps/movingai/*.map + data/maps/ros/*.yaml
-#   cmake -DROOT=<checkout> [-DREADME=<file>] -P check_readme_counts.cmake
+#   "configuration runs the N scenarios that fit"    the scenarios `antkit_determinism --mcu-inputs`
+#                                                    writes for the Cortex-M4 (given DETERMINISM)
+#   "cvc5 re-solves the checks of N of the Z3"       the names in proofs/CMakeLists.txt's
+#                                                    set(ANTKIT_CVC5_RECHECK ...)
+#   cmake -DROOT=<checkout> [-DREADME=<file>] [-DDETERMINISM=<antkit_determinism> -DWORK=<dir>]
+#         -P check_readme_counts.cmake
 if(NOT DEFINED README)
   set(README ${ROOT}/README.md)
 endif()
@@ -25,7 +30,28 @@ expect("golden scenarios" "the ([0-9]+) scenarios of `determinism/scenarios.cpp`
 file(GLOB maps ${ROOT}/data/maps/movingai/*.map ${ROOT}/data/maps/ros/*.yaml)
 list(LENGTH maps map_count)
 expect("shared maps" "\\(([0-9]+) maps, `antkit_determinism" ${map_count})
+set(chip "")
+if(DEFINED DETERMINISM)
+  file(REMOVE_RECURSE ${WORK})
+  file(MAKE_DIRECTORY ${WORK})
+  execute_process(COMMAND ${DETERMINISM} --maps ${ROOT}/data/maps --mcu-inputs ${WORK}
+                  OUTPUT_VARIABLE listing RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${DETERMINISM} --mcu-inputs failed (${rc})")
+  endif()
+  string(REGEX MATCHALL "[^\n]+" lines "${listing}")
+  list(LENGTH lines chip_count)
+  expect("Cortex-M4 scenarios" "configuration runs the ([0-9]+) scenarios that fit the chip" ${chip_count})
+  set(chip ", ${chip_count} scenarios on the chip")
+endif()
+file(READ ${ROOT}/proofs/CMakeLists.txt proofs_cmake)
+if(NOT proofs_cmake MATCHES "set\\(ANTKIT_CVC5_RECHECK([^)]*)\\)")
+  message(FATAL_ERROR "proofs/CMakeLists.txt no longer sets ANTKIT_CVC5_RECHECK")
+endif()
+string(REGEX MATCHALL "[a-z0-9_]+" recheck "${CMAKE_MATCH_1}")
+list(LENGTH recheck recheck_count)
+expect("proofs cvc5 re-solves" "cvc5 re-solves the checks of ([0-9]+) of the Z3 proofs" ${recheck_count})
 if(errors)
   message(FATAL_ERROR "${README}'s counts disagree with their sources:\n${errors}")
 endif()
-message(STATUS "README counts: ${scenarios} golden scenarios, ${map_count} shared maps")
+message(STATUS "README counts: ${scenarios} golden scenarios, ${map_count} shared maps${chip}, ${recheck_count} proofs re-solved by cvc5")
