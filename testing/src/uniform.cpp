@@ -1,6 +1,7 @@
 #include <antkit/kernel/raster.hpp>
 #include <antkit/testing/uniform.hpp>
 #include <antkit/uniform/controllers.hpp>
+#include <antkit/uniform/coverage_ticks.hpp>
 #include <antkit/uniform/frontier_coverage.hpp>
 #include <sstream>
 #include <vector>
@@ -32,6 +33,21 @@ std::string where(std::uint64_t tick, std::size_t robot, Cell c) {
   return s.str();
 }
 
+// run_ticks' team (as run_coverage's) over a controller that takes an Observation, which also
+// keeps the pose robot i had before its command, for after_action to compare with.
+template <class Team>
+struct WatchedTeam {
+  Team& team;
+  const CoverageWorld& world;
+  Pose before{};
+  Command command(std::size_t i) {
+    before = world.robot(i);
+    return team.step(Observation{i, &world});
+  }
+};
+
+// The run is run_coverage's own loop (coverage_ticks.hpp's run_ticks), so the counts and the hash
+// are the run's by construction; the checks hang on its after_action hook.
 template <class Team>
 UniformRunCheck check_team(CoverageWorld& world, Team& team, Algorithm algorithm,
                            std::uint64_t limit) {
@@ -39,9 +55,6 @@ UniformRunCheck check_team(CoverageWorld& world, Team& team, Algorithm algorithm
   auto& res = out.result;
   res.algorithm = algorithm;
   res.robots = world.robot_count();
-  kernel::TraceHash hash;
-  hash.add_u8(static_cast<std::uint8_t>(algorithm)).add_u64(world.robot_count());
-  world.hash_state(hash);
   std::vector<std::uint8_t> viewed_before = world.viewed().cells();
   const auto fail = [&](const std::string& what) {
     if (out.ok) {
@@ -72,61 +85,30 @@ UniformRunCheck check_team(CoverageWorld& world, Team& team, Algorithm algorithm
           fail(where(tick, i, c) + "a cell in view is not viewed");
     }
   };
-  check_world(0, 0);
-  for (;;) {
-    if (world.complete()) {
-      res.stop = StopReason::Complete;
-      break;
+  // Robot i has acted in tick `tick` (counted from 0).
+  WatchedTeam<Team> watched{team, world};
+  const auto after_action = [&](std::uint64_t tick, std::size_t i) {
+    const Pose before = watched.before;
+    const Pose after = world.robot(i);
+    if (after.cell != before.cell) {
+      const Cell d = after.cell - before.cell;
+      if (d != kernel::kNeighbours8[after.bearing])
+        fail(where(tick, i, after.cell) + "moved other than one step along its bearing");
+      if (d.x != 0 && d.y != 0 &&
+          (!world.is_free({before.cell.x + d.x, before.cell.y}) ||
+           !world.is_free({before.cell.x, before.cell.y + d.y})))
+        fail(where(tick, i, after.cell) + "cut a corner");
+    } else if (after.bearing != before.bearing) {
+      const int turn = (after.bearing - before.bearing + 8) % 8;
+      if (turn != 1 && turn != 7) fail(where(tick, i, after.cell) + "turned too far");
     }
-    if (res.movements >= limit) {
-      res.stop = StopReason::TimeLimit;
-      break;
-    }
-    bool acted = false;
-    for (std::size_t i = 0; i < world.robot_count(); ++i) {
-      const Pose before = world.robot(i);
-      const Command cmd = team.step(Observation{i, &world});
-      bool done = false;
-      switch (cmd.action) {
-      case Action::TurnLeft:
-        done = world.turn(i, 1);
-        break;
-      case Action::TurnRight:
-        done = world.turn(i, -1);
-        break;
-      case Action::Forward:
-        done = world.move(i, world.robot(i).bearing);
-        if (done) world.view(i);
-        break;
-      case Action::Step:
-        done = world.move(i, cmd.bearing);
-        if (done) world.view(i);
-        break;
-      default:
-        break;
-      }
-      const Pose after = world.robot(i);
-      if (done) ++res.moves;
-      if (cmd.action != Action::Stop) acted = true;
-      if (after.cell != before.cell) {
-        const Cell d = after.cell - before.cell;
-        if (d != kernel::kNeighbours8[after.bearing])
-          fail(where(res.movements, i, after.cell) + "moved other than one step along its bearing");
-        if (d.x != 0 && d.y != 0 &&
-            (!world.is_free({before.cell.x + d.x, before.cell.y}) ||
-             !world.is_free({before.cell.x, before.cell.y + d.y})))
-          fail(where(res.movements, i, after.cell) + "cut a corner");
-      } else if (after.bearing != before.bearing) {
-        const int turn = (after.bearing - before.bearing + 8) % 8;
-        if (turn != 1 && turn != 7) fail(where(res.movements, i, after.cell) + "turned too far");
-      }
-      check_world(res.movements, i);
-    }
+    check_world(tick, i);
     if constexpr (std::is_same_v<Team, AStarCoverage>) {
+      if (i + 1 != world.robot_count()) return; // the goals once a tick, after the last robot
       bool clash = false;
-      for (std::size_t i = 0; i < world.robot_count(); ++i)
-        for (std::size_t j = i + 1; j < world.robot_count(); ++j)
-          clash = clash || (team.goal(i) && team.goal(i) == team.goal(j));
+      for (std::size_t a = 0; a < world.robot_count(); ++a)
+        for (std::size_t b = a + 1; b < world.robot_count(); ++b)
+          clash = clash || (team.goal(a) && team.goal(a) == team.goal(b));
       if (clash) {
         ++out.goal_clashes;
         bool all_taken = true;
@@ -134,22 +116,22 @@ UniformRunCheck check_team(CoverageWorld& world, Team& team, Algorithm algorithm
           const Cell c = world.map().cell_at(k);
           if (!world.is_viewable(c) || world.is_viewed(c)) continue;
           bool taken = false;
-          for (std::size_t i = 0; i < world.robot_count(); ++i) taken = taken || team.goal(i) == c;
+          for (std::size_t a = 0; a < world.robot_count(); ++a) taken = taken || team.goal(a) == c;
           all_taken = taken;
         }
         if (!all_taken) ++out.unjustified_clashes;
       }
     }
-    if (!acted) {
-      res.stop = StopReason::NoMove;
-      break;
-    }
-    ++res.movements;
-    world.hash_state(hash);
-  }
+  };
+  check_world(0, 0);
+  const TickRun run = run_ticks(world, watched, static_cast<std::uint8_t>(algorithm), limit,
+                                after_action, [](std::uint64_t) {});
+  res.movements = run.movements;
+  res.moves = run.moves;
+  res.stop = static_cast<StopReason>(run.stop);
   res.viewed = world.viewed_free();
   res.viewable = world.viewable();
-  res.hash = hash.finish();
+  res.hash = run.hash;
   return out;
 }
 

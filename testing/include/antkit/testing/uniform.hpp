@@ -25,8 +25,10 @@ struct UniformRunCheck {
 //   * no viewed cell becomes unviewed; the world's counts of viewed free cells equals a recount;
 //     viewed free cells are viewable;
 //   * every cell a robot stands on has been viewed, and so has every cell in view of it.
-// The result (movements, moves, hash, stop) is the checker's own count, to be compared with
-// run_coverage's.
+// The run is run_coverage's own tick loop (uniform/coverage_ticks.hpp's run_ticks) with the checks
+// after every action, so the result (movements, moves, hash, stop) is run_coverage's for the same
+// world, algorithm, seed and trial: the checker checks the rules of the run users get, not of a
+// copy of its loop.
 UniformRunCheck check_uniform_run(uniform::CoverageWorld& world, uniform::Algorithm algorithm,
                                   std::uint64_t seed, std::uint64_t trial, std::uint64_t limit);
 

@@ -28,10 +28,14 @@ struct TickRun {
 // state before the first tick and after every tick. Before every tick the run stops when the world
 // is complete or `limit` ticks have run; in a tick every robot, in index order, takes its team's
 // command (a forward move or a step views from the new cell); a tick in which every robot stops
-// ends the run (NoMove). after_tick(movements) after the start (0) and every tick.
-template <class World, class Team, class AfterTick>
+// ends the run (NoMove). after_action(movements, i) after robot i's command is applied, in every
+// tick including the last (NoMove) one, `movements` being the ticks completed before it; and
+// after_tick(movements) after the start (0) and every tick that counts. testing/'s
+// check_uniform_run checks the world after every action through after_action, so the checker
+// replays this loop rather than a copy of it.
+template <class World, class Team, class AfterAction, class AfterTick>
 TickRun run_ticks(World& world, Team& team, std::uint8_t algorithm, std::uint64_t limit,
-                  AfterTick&& after_tick) {
+                  AfterAction&& after_action, AfterTick&& after_tick) {
   TickRun out;
   kernel::TraceHash hash;
   hash.add_u8(algorithm).add_u64(world.robot_count());
@@ -71,6 +75,7 @@ TickRun run_ticks(World& world, Team& team, std::uint8_t algorithm, std::uint64_
       }
       if (done) ++out.moves;
       if (cmd.action != Action::Stop) acted = true;
+      after_action(out.movements, i);
     }
     if (!acted) {
       out.stop = TickStop::NoMove;
@@ -82,6 +87,14 @@ TickRun run_ticks(World& world, Team& team, std::uint8_t algorithm, std::uint64_
   }
   out.hash = hash.finish();
   return out;
+}
+
+// The same run, with nothing to do after an action.
+template <class World, class Team, class AfterTick>
+TickRun run_ticks(World& world, Team& team, std::uint8_t algorithm, std::uint64_t limit,
+                  AfterTick&& after_tick) {
+  return run_ticks(
+      world, team, algorithm, limit, [](std::uint64_t, std::size_t) {}, after_tick);
 }
 
 } // namespace antkit::uniform
