@@ -126,7 +126,7 @@ private:
              static_cast<std::uint64_t>(c.x);
     }
     [[nodiscard]] static bool bit(const std::uint8_t* bits, std::uint64_t k) noexcept {
-      return ((bits[k / 8] >> (k % 8)) & 1u) != 0;
+      return ((static_cast<unsigned>(bits[k / 8]) >> (k % 8)) & 1u) != 0;
     }
   };
 
