@@ -5,9 +5,10 @@
 #   c is the C API for firmware (the Cortex-M image builds its source); mpi uses MPI alone;
 #   devices uses geometry for the map files; testing uses mpi for the campaign's ranks.
 #
-# DESIGN.md draws experiments above devices and testing (paper 002's marker-floor experiment runs
-# the robot's pilot and camera from devices/stc_floor). Tools (tests/, bench/, fuzz/, determinism/,
-# proofs/, mcu/, examples/) may use any layer.
+# DESIGN.md draws experiments above devices and testing: some experiments drive a robot and audit
+# what it did (paper 002's run the marker-floor robot's pilot and camera from devices/stc_floor, and
+# audit STC tours with testing's stc_audit). Tools (tests/, bench/, fuzz/, determinism/, proofs/,
+# mcu/, examples/) may use any layer.
 #
 # Held three ways: antkit_check_layer_links() below refuses, at configure time, a layer target's
 # link line against this table; the ctest layers.includes (cmake/check_layers.cmake) reads every

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The determinism matrix (issue 16): builds antkit_determinism (determinism/scenarios.cpp: the
-# kernel and the algorithms only, ANTKIT_DETERMINISM_ONLY) in several configurations and requires
+# The determinism matrix (issue 16): builds antkit_determinism (determinism/main.cpp running the
+# scenarios of determinism/scenarios.cpp: the kernel and the algorithms only,
+# ANTKIT_DETERMINISM_ONLY) in several configurations and requires
 # every one of them to print every golden hash of determinism/golden.txt at 1, 2 and 8 threads.
 #
 #   scripts/determinism.sh            the whole matrix: gcc-12 -O0 and -O3, clang-14 -O0 and -O3,
