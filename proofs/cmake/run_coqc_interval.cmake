@@ -25,6 +25,17 @@
 #   -DPATCH_FROM=... -DPATCH_TO=...                            IntervalAngle.v with one text
 #                                                              replaced (a tightened bound),
 #                                                              compiled in OUT_DIR
+#   -DFROM_INDEX=n                                             the file's theorem stated on a
+#                                                              window from index n: eight
+#                                                              entries or eight intervals
+#                                                              (`each_... P n (List.firstn k
+#                                                              (List.skipn n table))`), the same
+#                                                              predicate and tactic
+# A tooth's window starts at the planted fault (the bumped entry, the worst interval), and the
+# window is first proved on the shipped input (the control), so the refusal is the fault's and
+# comes in seconds instead of after the whole table, which proof.coq.interval.* checks anyway.
+# That the whole-table theorem covers every index is the kernel's business (each_pair and
+# each_entry are Fixpoints over the whole list).
 cmake_policy(SET CMP0057 NEW) # if(... IN_LIST ...)
 get_filename_component(name ${SRC} NAME_WE)
 get_filename_component(src_dir ${SRC} DIRECTORY)
@@ -64,6 +75,33 @@ if(DEFINED PATCH_FROM)
                   ERROR_VARIABLE err RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "coqc failed on the tooth's IntervalAngle.v:\n${err}")
+  endif()
+endif()
+
+if(DEFINED FROM_INDEX)
+  file(READ ${SRC} text)
+  # Eight entries, or the eight intervals between nine.
+  string(REGEX REPLACE "(each_entry [a-z_]+) 0 (k[A-Za-z0-9]+)[.]"
+                       "\\1 ${FROM_INDEX} (List.firstn 8 (List.skipn ${FROM_INDEX} \\2))."
+                       windowed "${text}")
+  string(REGEX REPLACE "(each_pair [a-z_]+) 0 (k[A-Za-z0-9]+)[.]"
+                       "\\1 ${FROM_INDEX} (List.firstn 9 (List.skipn ${FROM_INDEX} \\2))."
+                       windowed "${windowed}")
+  if(windowed STREQUAL text)
+    message(FATAL_ERROR "no `each_pair P 0 table.` or `each_entry P 0 table.` in ${SRC} to start "
+                        "at ${FROM_INDEX}: update the tooth")
+  endif()
+  set(SRC ${OUT_DIR}/window/${name}.v)
+  file(WRITE ${SRC} "${windowed}")
+  if(DEFINED MUST_FAIL)
+    # The control: on the shipped tables and bounds the window is proved, so the refusal below is
+    # the planted fault's and nothing else's.
+    execute_process(COMMAND ${COQC} -q -no-glob -Q ${TABLES_DIR} "" -Q ${LIB_DIR} ""
+                            -o ${OUT_DIR}/window/${name}.vo ${SRC}
+                    OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "the tooth's window fails on the shipped input too:\n${out}\n${err}")
+    endif()
   endif()
 endif()
 

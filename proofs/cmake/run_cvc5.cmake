@@ -6,9 +6,9 @@
 # and names the claim. A check cvc5 does not decide within TLIMIT_MS fails too, unless the claim is
 # listed in UNSOLVED (proofs/cvc5_unsolved.txt: "proof: claim" lines, each with why), where the
 # ones cvc5 leaves to Z3 alone are written down; a listed claim that cvc5 now decides is reported,
-# so the list can shrink. A listed claim gets LISTED_TLIMIT_MS (5 s), not the full limit: the list
+# so the list can shrink. A listed claim gets LISTED_TLIMIT_MS (2 s), not the full limit: the list
 # already records that cvc5 does not decide it within 60 s, and spending that minute again on each
-# listed claim was most of these tests' time (495 of 925 s); 5 s still notices one that became easy.
+# listed claim was most of these tests' time (495 of 925 s); 2 s still notices one that became easy.
 # Without PROOF it re-solves the files a passing run of proof.z3.<name> left in DIR
 # (run_z3_dump.cmake, its fixture, so that the proof does not run twice).
 #   cmake [-DPROOF=exe [-DARGS=...]] -DNAME=name -DDIR=dir -DCVC5=cvc5 [-DTLIMIT_MS=n]
@@ -18,7 +18,7 @@ if(NOT DEFINED TLIMIT_MS)
   set(TLIMIT_MS 60000)
 endif()
 if(NOT DEFINED LISTED_TLIMIT_MS)
-  set(LISTED_TLIMIT_MS 5000)
+  set(LISTED_TLIMIT_MS 2000)
 endif()
 set(unsolved "")
 if(DEFINED UNSOLVED AND EXISTS ${UNSOLVED})

@@ -43,6 +43,9 @@ Proof.
   exact atan_octant_documented.
 Qed.
 
-Print Assumptions atan_table_correctly_rounded.
-Print Assumptions atan_interpolant_accuracy.
-Print Assumptions atan_documented_bound.
+(* The three theorems' assumptions, in one traversal (each `Print Assumptions` walks the
+   entries' and intervals' proofs again: about 9 s apiece); the ctest driver requires each
+   name it prints to be on the allow-list. *)
+Definition atan_accuracy_theorems := (atan_table_correctly_rounded, atan_interpolant_accuracy,
+  atan_documented_bound).
+Print Assumptions atan_accuracy_theorems.
