@@ -20,6 +20,7 @@ int run_on_ranks(const std::string& out, unsigned threads, algorithms::Progress 
     runner.rank = session.rank();
     runner.ranks = session.size();
     runner.gather = [&session](const std::string& mine) { return session.gather_to_root(mine); };
+    runner.any = [&session](bool local) { return session.any(local); };
     if (!runner.root()) runner.progress = {};
     run(runner);
     return runner.root() ? runner.ranks : 0;

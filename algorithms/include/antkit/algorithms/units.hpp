@@ -7,7 +7,7 @@
 //
 // It sits in the algorithms layer so that the algorithms' own parallel runs use it; it knows
 // nothing of MPI. A command that runs under `mpirun` (cli/, over antkit/mpi/session.hpp) fills a
-// Runner's rank, ranks and gather, and every layer above passes the Runner down.
+// Runner's rank, ranks, gather and any, and every layer above passes the Runner down.
 //
 // A unit's result travels as a Payload: 64-bit words (integers as they are, doubles by their bit
 // patterns), so that nothing is rounded on the way from a rank to rank 0. Ranks of one run must
@@ -73,11 +73,15 @@ using Progress =
     std::function<void(std::string_view stage, std::uint64_t done, std::uint64_t total)>;
 
 // Where the units run. A plain process: rank 0 of 1. Under MPI, the command that made the session
-// sets rank, ranks and gather (every rank's packed part on rank 0, in rank order; a collective).
+// sets rank, ranks, gather (every rank's packed part on rank 0, in rank order; a collective) and
+// any (true on every rank when any rank passes true, so that the ranks agree on a decision such
+// as a time limit's; a collective every rank calls at the same point). Without MPI, any is the
+// local value.
 struct Runner {
   unsigned threads = 1;
   int rank = 0, ranks = 1;
   std::function<std::vector<std::string>(const std::string& mine)> gather;
+  std::function<bool(bool local)> any = [](bool local) { return local; };
   Progress progress;
   [[nodiscard]] bool root() const noexcept { return rank == 0; }
 };
