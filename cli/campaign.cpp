@@ -14,19 +14,16 @@
 #if ANTKIT_HAVE_CAMPAIGN
 #include "commands.hpp"
 #include "output.hpp"
+#include "ranks.hpp"
 
 #include <antkit/algorithms/options.hpp>
 #include <antkit/campaign/campaign.hpp>
-#if ANTKIT_HAVE_MPI
-#include <antkit/campaign/mpi.hpp>
-#endif
 #include <antkit/kernel/input_error.hpp>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <string>
 #include <unistd.h>
 
@@ -74,7 +71,6 @@ campaign::Options options_of(const CampaignCommand& c) {
   o.time_limit_s = c.time;
   if (c.threads < 1 || c.threads > 256)
     throw InputError("--threads", "expected 1 to 256 threads, not " + std::to_string(c.threads));
-  o.threads = static_cast<unsigned>(c.threads);
   if (!c.plant.empty() && o.family == campaign::Family::Buffon)
     throw InputError("--plant", "a planted rule is about grid maps: stc, los or uniform");
   if (!c.plant.empty()) { // a planted failure: maps wider than N break it
@@ -100,7 +96,8 @@ void run(const CampaignCommand& c) {
   auto seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   };
-  const campaign::Progress progress = [&](std::uint64_t done, std::uint64_t total) {
+  const antkit::algorithms::Progress progress = [&](std::string_view, std::uint64_t done,
+                                                    std::uint64_t total) {
     if (!tty) return;
     const double s = seconds(), rate = static_cast<double>(done) / std::max(s, 1e-9);
     const int filled =
@@ -112,23 +109,13 @@ void run(const CampaignCommand& c) {
               << static_cast<double>(total - done) / std::max(rate, 1e-9) << " s left   "
               << std::defaultfloat << std::setprecision(6) << std::flush;
   };
+  const auto threads = static_cast<unsigned>(c.threads);
   campaign::Result result;
-  int ranks = 1;
-#if ANTKIT_HAVE_MPI
-  // Under mpirun: every rank runs its share, rank 0 gathers, writes and prints (mpi.hpp).
-  std::optional<campaign::mpi::Session> session;
-  if (campaign::mpi::launched()) {
-    session.emplace();
-    ranks = session->size();
-    if (!antkit::cli::make_out_dir_on_rank0(*session, c.out)) return;
-    result = campaign::mpi::run(*session, o, progress);
-    if (session->rank() != 0) return;
-  } else
-#endif
-  {
-    antkit::cli::make_out_dir(c.out);
-    result = campaign::run(o, progress);
-  }
+  // Under mpirun every rank runs its share and rank 0 gathers, writes and prints.
+  const int ranks = antkit::cli::run_on_ranks(
+      c.out, threads, progress,
+      [&](const antkit::algorithms::Runner& runner) { result = campaign::run(o, runner); });
+  if (ranks == 0) return; // another rank than 0: rank 0 writes and prints
   const double elapsed = seconds();
   if (tty) std::cerr << '\n';
   campaign::write_outputs(o, result, c.out);
@@ -142,7 +129,7 @@ void run(const CampaignCommand& c) {
   j["seconds"] = elapsed;
   j["cases_per_second"] = static_cast<double>(result.cases_run) / std::max(elapsed, 1e-9);
   j["moves_per_second"] = static_cast<double>(result.moves) / std::max(elapsed, 1e-9);
-  j["threads"] = o.threads;
+  j["threads"] = threads;
   j["ranks"] = ranks;
   j["summary"] = (std::filesystem::path(c.out) / "summary.json").string();
   antkit::cli::emit(j, c.format, std::cout);
@@ -187,7 +174,6 @@ const antkit::cli::Registration reg{"campaign",
                                      {"first case", "--first"},
                                      {"largest map", "--max-size"},
                                      {"time limit", "--time"},
-                                     {"threads", "--threads"},
                                      {"variants", "--variants"}}};
 
 } // namespace

@@ -19,14 +19,20 @@ namespace {
 using namespace antkit;
 namespace fs = std::filesystem;
 
-campaign::Options options(campaign::Family f, std::uint64_t cases, unsigned threads) {
+campaign::Options options(campaign::Family f, std::uint64_t cases) {
   campaign::Options o;
   o.family = f;
   o.cases = cases;
-  o.threads = threads;
   o.max_width = 10;
   o.max_height = 10;
   return o;
+}
+
+// One process on `threads` threads.
+algorithms::Runner on(unsigned threads) {
+  algorithms::Runner runner;
+  runner.threads = threads;
+  return runner;
 }
 
 std::string slurp(const fs::path& p) {
@@ -44,8 +50,8 @@ TEST_CASE("campaign: every family's cases keep their invariants, the same for an
                        campaign::Family::Buffon}) {
     INFO(campaign::family_name(f));
     const std::uint64_t n = f == campaign::Family::Buffon ? 24 : 150; // buffon's cases are long
-    const auto one = campaign::run(options(f, n, 1));
-    const auto three = campaign::run(options(f, n, 3));
+    const auto one = campaign::run(options(f, n), on(1));
+    const auto three = campaign::run(options(f, n), on(3));
     CHECK(one.failures.empty());
     CHECK(one.cases_run == n);
     CHECK(one.moves > 0u);
@@ -54,21 +60,21 @@ TEST_CASE("campaign: every family's cases keep their invariants, the same for an
     CHECK(one.vacuous == three.vacuous);
     // Case i is case i: the first n cases are cases 0..k-1 and k..n-1 run apart.
     const std::uint64_t k = n * 3 / 5;
-    auto head = options(f, k, 2);
-    auto tail = options(f, n - k, 1);
+    const auto head = options(f, k);
+    auto tail = options(f, n - k);
     tail.first = k;
-    CHECK(campaign::run(head).moves + campaign::run(tail).moves == one.moves);
+    CHECK(campaign::run(head, on(2)).moves + campaign::run(tail, on(1)).moves == one.moves);
   }
 }
 
 TEST_CASE("campaign: a failing rule shrinks to the smallest map that breaks it",
           "[testing][campaign]") {
   // A rule about the width alone: the shrunk map is the narrowest that breaks it, one row high.
-  auto o = options(campaign::Family::Los, 40, 2);
+  auto o = options(campaign::Family::Los, 40);
   o.extra_rule = [](const kernel::OccupancyGrid& m) {
     return m.width() > 3 ? "wider than 3 cells" : "";
   };
-  const auto r = campaign::run(o);
+  const auto r = campaign::run(o, on(2));
   REQUIRE(!r.failures.empty());
   for (const auto& f : r.failures) {
     CHECK(f.variant == "extra rule");
@@ -77,9 +83,7 @@ TEST_CASE("campaign: a failing rule shrinks to the smallest map that breaks it",
     CHECK(f.map.height() == 1);
   }
   // The failures are reduced in case order, and are the same with one thread.
-  auto o1 = o;
-  o1.threads = 1;
-  const auto r1 = campaign::run(o1);
+  const auto r1 = campaign::run(o, on(1));
   REQUIRE(r1.failures.size() == r.failures.size());
   for (std::size_t i = 0; i < r.failures.size(); ++i) {
     CHECK(r1.failures[i].case_index == r.failures[i].case_index);
@@ -102,7 +106,7 @@ TEST_CASE("campaign: a failing rule shrinks to the smallest map that breaks it",
 
 TEST_CASE("campaign: STC cases shrink too, and their command names the variant and the start",
           "[testing][campaign]") {
-  auto o = options(campaign::Family::Stc, 30, 1);
+  auto o = options(campaign::Family::Stc, 30);
   o.variants = {"ant-edge"};
   o.extra_rule = [](const kernel::OccupancyGrid& m) {
     return m.height() >= 6 ? "six sub-cells high or more" : "";
@@ -119,26 +123,33 @@ TEST_CASE("campaign: STC cases shrink too, and their command names the variant a
 
 TEST_CASE("campaign: a time limit stops at a case boundary, and bad options are refused",
           "[testing][campaign]") {
-  auto o = options(campaign::Family::Uniform, 100000, 1);
+  auto o = options(campaign::Family::Uniform, 100000);
   o.time_limit_s = 1e-9;
   const auto r = campaign::run(o);
   CHECK(r.stopped_by_time);
   CHECK(r.cases_run < o.cases);
   CHECK(r.cases_run % 64 == 0);
-  auto bad = options(campaign::Family::Stc, 10, 1);
+  // The ranks stop together: the runner's any (MPI's under mpirun) says whether any rank is late,
+  // here another rank at the third batch boundary while this one has time left.
+  o.time_limit_s = 1e9;
+  algorithms::Runner runner;
+  int boundaries = 0;
+  runner.any = [&](bool late) { return late || ++boundaries == 3; };
+  const auto told = campaign::run(o, runner);
+  CHECK(told.stopped_by_time);
+  CHECK(told.cases_run == 2 * 64);
+  auto bad = options(campaign::Family::Stc, 10);
   bad.variants = {"zigzag"};
   CHECK_THROWS_WITH(campaign::run(bad),
                     "variants: 'zigzag' is not a stc variant; expected some of offline, online, "
                     "ant, ant-edge, full");
-  bad = options(campaign::Family::Los, 0, 1);
-  CHECK_THROWS_AS(campaign::run(bad), kernel::InputError);
-  bad = options(campaign::Family::Los, 10, 0);
+  bad = options(campaign::Family::Los, 0);
   CHECK_THROWS_AS(campaign::run(bad), kernel::InputError);
 }
 
 TEST_CASE("campaign: ranks split the cases and rank 0 returns the one-process result",
           "[testing][campaign]") {
-  auto o = options(campaign::Family::Los, 200, 1);
+  auto o = options(campaign::Family::Los, 200);
   o.extra_rule = [](const kernel::OccupancyGrid& m) { return m.width() > 8 ? "wide" : ""; };
   const auto whole = campaign::run(o);
   REQUIRE(!whole.failures.empty());
@@ -152,10 +163,10 @@ TEST_CASE("campaign: ranks split the cases and rank 0 returns the one-process re
   std::vector<std::thread> pool;
   for (int r = 0; r < kRanks; ++r)
     pool.emplace_back([&, r] {
-      campaign::Ranks ranks;
-      ranks.rank = r;
-      ranks.ranks = kRanks;
-      ranks.gather = [&, r](const std::string& mine) {
+      algorithms::Runner runner;
+      runner.rank = r;
+      runner.ranks = kRanks;
+      runner.gather = [&, r](const std::string& mine) {
         {
           const std::lock_guard<std::mutex> held(lock);
           texts[static_cast<std::size_t>(r)] = mine;
@@ -166,7 +177,7 @@ TEST_CASE("campaign: ranks split the cases and rank 0 returns the one-process re
         sync.arrive_and_wait(); // nobody writes the next batch's text before rank 0 has read
         return all;
       };
-      results[static_cast<std::size_t>(r)] = campaign::run(o, ranks);
+      results[static_cast<std::size_t>(r)] = campaign::run(o, runner);
     });
   for (auto& t : pool) t.join();
   for (const auto& part : results) CHECK(part.cases_run == 200u);
@@ -187,7 +198,7 @@ TEST_CASE("campaign: ranks split the cases and rank 0 returns the one-process re
     CHECK(f.shrink_steps == whole.failures[i].shrink_steps);
   }
   // Several ranks without a gather is a programming error, not a silent partial result.
-  campaign::Ranks lonely;
+  algorithms::Runner lonely;
   lonely.ranks = 2;
   CHECK_THROWS_AS(campaign::run(o, lonely), std::logic_error);
 }

@@ -15,30 +15,30 @@
 namespace antkit::campaign::detail {
 
 template <class F>
-Result run_family(const F& family, const Options& o, const Ranks& ranks, const Progress& progress) {
+Result run_family(const F& family, const Options& o, const algorithms::Runner& given) {
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
-  const unsigned threads = std::max(1u, o.threads);
+  // The engine's runner: the given threads and ranks, its progress reported here for the whole
+  // campaign rather than by run_units for each batch. A batch is the units 0..span-1, unit u being
+  // case first + done + u; this rank's are rank, rank + ranks, ... (units_on_rank).
+  algorithms::Runner runner = given;
+  runner.threads = std::max(1u, given.threads);
+  runner.ranks = std::max(1, given.ranks);
+  runner.progress = {};
+  const unsigned threads = runner.threads;
   const std::uint64_t batch = 64 * std::uint64_t{threads};
   const auto gen = F::generator(o);
   Result out;
   std::vector<typename F::Context> contexts(threads);
   std::vector<std::optional<typename F::Value>> values;
   auto last_report = started;
-  // The engine's runner: these threads, these ranks. A batch is the units 0..span-1, unit u being
-  // case first + done + u; this rank's are rank, rank + ranks, ... (units_on_rank).
-  algorithms::Runner runner;
-  runner.threads = threads;
-  runner.rank = ranks.rank;
-  runner.ranks = std::max(1, ranks.ranks);
-  runner.gather = ranks.gather;
   const auto rank = static_cast<std::uint64_t>(runner.rank);
   const auto step = static_cast<std::uint64_t>(runner.ranks);
   for (std::uint64_t done = 0; done < o.cases;) {
     if (o.time_limit_s > 0) {
       const bool late =
           std::chrono::duration<double>(Clock::now() - started).count() >= o.time_limit_s;
-      if (ranks.any ? ranks.any(late) : late) {
+      if (runner.any ? runner.any(late) : late) {
         out.stopped_by_time = true;
         break;
       }
@@ -88,9 +88,9 @@ Result run_family(const F& family, const Options& o, const Ranks& ranks, const P
     }
     done += span;
     out.cases_run = done;
-    if (progress && runner.root() &&
+    if (given.progress && runner.root() &&
         (Clock::now() - last_report > std::chrono::milliseconds(250) || done == o.cases)) {
-      progress(done, o.cases);
+      given.progress("cases", done, o.cases);
       last_report = Clock::now();
     }
   }

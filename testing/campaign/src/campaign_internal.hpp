@@ -57,6 +57,6 @@ Broken check_with_extra(const F& family, const Options& o, const typename F::Val
 
 // The batch loop over the family options.family names, with the variants options.variants names
 // (all of them when empty); the options validated and the ranks checked (run.cpp, families.cpp).
-Result run_family_of(const Options& options, const Ranks& ranks, const Progress& progress);
+Result run_family_of(const Options& options, const algorithms::Runner& runner);
 
 } // namespace antkit::campaign::detail

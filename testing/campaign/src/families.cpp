@@ -300,17 +300,17 @@ std::string arena_text<BuffonFamily>(const BuffonCase& c) {
   return c.arena.wkt;
 }
 
-Result run_family_of(const Options& options, const Ranks& ranks, const Progress& progress) {
+Result run_family_of(const Options& options, const algorithms::Runner& runner) {
   const auto names = options.variants.empty() ? family_variants(options.family) : options.variants;
   switch (options.family) {
   case Family::Stc:
-    return run_family(StcFamily(names), options, ranks, progress);
+    return run_family(StcFamily(names), options, runner);
   case Family::Los:
-    return run_family(LosFamily(names), options, ranks, progress);
+    return run_family(LosFamily(names), options, runner);
   case Family::Uniform:
-    return run_family(UniformFamily(names), options, ranks, progress);
+    return run_family(UniformFamily(names), options, runner);
   case Family::Buffon:
-    return run_family(BuffonFamily(names), options, ranks, progress);
+    return run_family(BuffonFamily(names), options, runner);
   }
   return {};
 }

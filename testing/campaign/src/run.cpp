@@ -60,8 +60,6 @@ void validate(const Options& o) {
                                         "x" + std::to_string(kMaxSide));
   if (!(o.time_limit_s >= 0) || o.time_limit_s > 1e9)
     throw InputError("time limit", "expected a time in seconds, 0 or more");
-  if (o.threads < 1 || o.threads > 256)
-    throw InputError("threads", "expected 1 to 256 threads, not " + std::to_string(o.threads));
   const auto known = family_variants(o.family);
   for (const auto& v : o.variants)
     if (std::find(known.begin(), known.end(), v) == known.end()) {
@@ -72,16 +70,12 @@ void validate(const Options& o) {
     }
 }
 
-Result run(const Options& options, const Progress& progress) {
-  return run(options, Ranks{}, progress);
-}
-
-Result run(const Options& options, const Ranks& ranks, const Progress& progress) {
+Result run(const Options& options, const algorithms::Runner& runner) {
   validate(options);
-  if (ranks.ranks < 1 || ranks.rank < 0 || ranks.rank >= ranks.ranks ||
-      (ranks.ranks > 1 && !ranks.gather))
+  if (runner.ranks < 1 || runner.rank < 0 || runner.rank >= runner.ranks ||
+      (runner.ranks > 1 && !runner.gather))
     throw std::logic_error("campaign: rank out of range, or several ranks and no gather");
-  return detail::run_family_of(options, ranks, progress);
+  return detail::run_family_of(options, runner);
 }
 
 } // namespace antkit::campaign

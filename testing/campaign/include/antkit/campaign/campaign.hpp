@@ -5,13 +5,15 @@
 //
 // Determinism. Case i is drawn from rapidcheck's generator seeded by the keyed stream (seed,
 // experiment 18, trial i, robot 0, purpose = the family): case i is case i whatever runs it (any
-// thread count, any MPI rank, a campaign started at --first i). Cases run in parallel and the
-// results are reduced in case order, so the outputs depend on the options only. The one exception
+// thread count, any MPI rank, a campaign started at --first i). Cases run as units of the one
+// engine (antkit/algorithms/units.hpp) on the threads and ranks of its Runner and the results are
+// reduced in case order, so the outputs depend on the options only. The one exception
 // is a time limit, which stops at a case boundary: then how many cases ran depends on the machine
 // (the summary says so and how many ran; the cases that ran are always the first ones).
 //
 // Shrinking is rapidcheck's: a failing case is replaced by the first of its shrinks that still
 // fails (the same variant breaking any rule), until none does.
+#include <antkit/algorithms/units.hpp>
 #include <antkit/kernel/grid.hpp>
 #include <cstdint>
 #include <filesystem>
@@ -43,27 +45,14 @@ struct Options {
   std::int32_t max_width = 32, max_height = 32;
   std::vector<std::string> variants; // empty: all of the family's
   double time_limit_s = 0;           // 0: none
-  unsigned threads = 1;
   // An extra rule every case must keep (empty string: it holds): a planted failure, to see the
   // shrinking and the failure outputs at work (tests; `--plant max-width=N` of the command).
   std::function<std::string(const kernel::OccupancyGrid&)> extra_rule;
   std::string extra_rule_name; // what the summary calls it (empty: none)
 };
 
-// One process of several (MPI ranks; mpi.hpp fills it from a session). The cases run as units of
-// the engine (antkit/algorithms/units.hpp) in batches: rank r checks the cases whose index,
-// counted from `first`, is r modulo ranks, and after each batch `gather` (a collective: every
-// rank's text, in rank order, on rank 0) brings every rank's verdicts to rank 0, which shrinks the
-// failures. `any(local)` (a collective) says whether any rank wants to stop; every rank calls it
-// at every batch boundary when there is a time limit.
-struct Ranks {
-  int rank = 0, ranks = 1;
-  std::function<std::vector<std::string>(const std::string& mine)> gather;
-  std::function<bool(bool local)> any;
-};
-
 // Throws kernel::InputError naming the option for a value out of range or an unknown variant:
-// "cases", "first case", "largest map", "time limit", "threads" or "variants".
+// "cases", "first case", "largest map", "time limit" or "variants".
 void validate(const Options& options);
 
 struct Failure {
@@ -86,15 +75,17 @@ struct Result {
   std::vector<Failure> failures; // in case order
 };
 
-// `progress(done, total)` is called from the calling thread a few times a second and at the end.
-using Progress = std::function<void(std::uint64_t done, std::uint64_t total)>;
-
-[[nodiscard]] Result run(const Options& options, const Progress& progress = {});
-
-// The campaign as one rank of several. Rank 0 returns the whole campaign's result, the same as
-// run() in one process; the other ranks return only cases_run and stopped_by_time (and call no
-// progress).
-[[nodiscard]] Result run(const Options& options, const Ranks& ranks, const Progress& progress = {});
+// Runs the campaign on `runner`'s threads and ranks (a plain Runner: one thread, one process;
+// under mpirun, the one cli/ranks.hpp's run_on_ranks makes). The cases run in batches of
+// 64 x threads per rank: rank r checks the cases whose index, counted from `first`, is r modulo
+// ranks, and after each batch the runner's gather brings every rank's verdicts to rank 0, which
+// shrinks the failures; with a time limit every rank calls the runner's any at every batch
+// boundary, so that they stop together. Rank 0 returns the whole campaign's result, the same for
+// any number of threads and ranks; the other ranks return only cases_run and stopped_by_time. On
+// rank 0, runner.progress("cases", done, total) is called from the calling thread a few times a
+// second and at the end. Throws std::logic_error for a rank out of range or several ranks without
+// a gather.
+[[nodiscard]] Result run(const Options& options, const algorithms::Runner& runner = {});
 
 // A failure as one line of text and back (summary.json's lines; tests).
 [[nodiscard]] std::string serialize(const Failure& failure);
