@@ -2,8 +2,9 @@
 # ANTKIT_LAYER_USES_<layer> below is the table; README.md's "layer | may use" table must say the
 # same (ctest layers.docs, cmake/check_layer_docs.cmake). Notes the table cannot carry:
 #   geometry is the only layer that includes CGAL (and Eigen besides experiments and devices);
-#   c is the C API for firmware (the Cortex-M image builds its source); mpi uses MPI alone;
-#   devices uses geometry for the map files; testing uses mpi for the campaign's ranks.
+#   c is the C API for firmware (the Cortex-M image builds its source); mpi uses MPI alone, and
+#   only cli uses mpi (cli/ranks.hpp hands the layers below a Runner that carries the ranks);
+#   devices uses geometry for the map files.
 #
 # DESIGN.md draws experiments above devices and testing: some experiments drive a robot and audit
 # what it did (paper 002's run the marker-floor robot's pilot and camera from devices/stc_floor, and
@@ -23,7 +24,7 @@ set(ANTKIT_LAYER_USES_algorithms kernel)
 set(ANTKIT_LAYER_USES_c kernel algorithms)
 set(ANTKIT_LAYER_USES_mpi "")
 set(ANTKIT_LAYER_USES_devices kernel geometry algorithms)
-set(ANTKIT_LAYER_USES_testing kernel geometry algorithms mpi)
+set(ANTKIT_LAYER_USES_testing kernel geometry algorithms)
 set(ANTKIT_LAYER_USES_experiments kernel geometry algorithms devices testing)
 set(ANTKIT_LAYER_USES_reports kernel geometry algorithms devices testing)
 set(ANTKIT_LAYER_USES_python kernel geometry algorithms devices testing reports)
