@@ -1,5 +1,6 @@
 // Hardware logs: the JSON Lines writer and a strict, allocation-free (in the steady state) reader
-// (log.hpp).
+// (log.hpp). The reader's lexer is its own, for replay's speed, and is held to nlohmann-json by a
+// property test and the fuzz target (tests/support/log_json_oracle.hpp says why and how).
 #include <antkit/devices/log.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
