@@ -6,8 +6,8 @@
 #include <antkit/geometry/arena.hpp>
 #include <antkit/geometry/arena_raster.hpp>
 #include <antkit/geometry/arena_spec.hpp>
-#include <antkit/geometry/atomic_file.hpp>
 #include <antkit/geometry/wkt.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/reports/reports.hpp>
@@ -69,8 +69,8 @@ void run(const ArenaOptions& o) {
   std::optional<std::string> wkt_text;
   if (!o.out_wkt.empty()) wkt_text = write_wkt(*arena) + "\n";
 
-  if (map_text) write_file_atomic(o.out, *map_text);
-  if (wkt_text) write_file_atomic(o.out_wkt, *wkt_text);
+  if (map_text) antkit::io::write_file_atomic(o.out, *map_text);
+  if (wkt_text) antkit::io::write_file_atomic(o.out_wkt, *wkt_text);
   antkit::cli::emit(result, o.format, std::cout);
 }
 

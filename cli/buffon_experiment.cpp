@@ -10,7 +10,7 @@
 #include "ranks.hpp"
 
 #include <antkit/experiments/buffon_figures.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <chrono>
@@ -59,7 +59,7 @@ void run(const ExperimentCommand& c) {
         }
       });
   if (ranks == 0) return; // another rank than 0: rank 0 writes and prints
-  antkit::geometry::write_file_atomic(dir / (stem + ".csv"), csv);
+  antkit::io::write_file_atomic(dir / (stem + ".csv"), csv);
   ex::save_figure(figure, dir / (stem + ".svg"), dir / (stem + ".png"));
   ex::release_drawing_caches();
   const double seconds =

@@ -12,8 +12,8 @@
 #include <antkit/buffon/mcu_encode.hpp>
 #include <antkit/buffon/mcu_input.hpp>
 #include <antkit/buffon/measurement.hpp>
-#include <antkit/geometry/atomic_file.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -46,7 +46,7 @@ void run(const McuInputCommand& c) {
     throw InputError(c.arena, e.message());
   }
   const auto& bytes = in.bytes;
-  antkit::geometry::write_file_atomic(
+  antkit::io::write_file_atomic(
       c.out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   std::cout << c.out << ": " << bytes.size() << " bytes, " << in.walls << " walls, plan " << in.plan
             << " of " << buffon::kMcuArenaBytes << " bytes\n";

@@ -8,7 +8,7 @@
 #include "commands.hpp"
 #include "stc_options.hpp"
 
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/stc/world.hpp>
 #include <cstdint>
@@ -41,7 +41,7 @@ void run(const McuInputOptions& o) {
                                                      : "--start";
     throw InputError(where, e.message());
   }
-  antkit::geometry::write_file_atomic(
+  antkit::io::write_file_atomic(
       o.out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   std::cout << o.out << ": " << bytes.size() << " bytes, start " << r.start.x << "," << r.start.y
             << "\n";

@@ -12,7 +12,7 @@
 #include "commands.hpp"
 #include "cover_options.hpp"
 
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/uniform/scenario.hpp>
 #include <antkit/uniform/wanderer_mcu_encode.hpp>
@@ -48,7 +48,7 @@ void run(const WandererInputCommand& c) {
     throw InputError(o.map.empty() ? "--size" : o.map, e.message());
   }
   const auto& bytes = in.bytes;
-  antkit::geometry::write_file_atomic(
+  antkit::io::write_file_atomic(
       c.out, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   std::cout << c.out << ": " << bytes.size() << " bytes, " << grid.cells.width() << " x "
             << grid.cells.height() << " cells, plan " << in.plan << " of "

@@ -11,7 +11,7 @@
 #include "output.hpp"
 
 #include <antkit/devices/stc_floor/optics.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <iostream>
 #include <memory>
@@ -65,7 +65,7 @@ void run(const CalibrateOptions& o) {
       corners[i] = sf::parse_point("--corner " + std::to_string(i + 1), o.corners[i]);
     c = sf::clicked_calibration(optics, centre, o.unwarped_size, o.pixels_per_subcell, corners);
   }
-  antkit::geometry::write_file_atomic(o.out, sf::calibration_json(c));
+  antkit::io::write_file_atomic(o.out, sf::calibration_json(c));
   nlohmann::json j;
   j["out"] = o.out;
   j["panorama"] = {optics.panorama_width, optics.panorama_height};

@@ -1,15 +1,15 @@
 include(CMakePackageConfigHelpers)
 
-install(TARGETS antkit_kernel antkit_geometry antkit_algorithms antkit_c antkit_devices
-                antkit_testing antkit_experiments
+install(TARGETS antkit_kernel antkit_io antkit_maps antkit_geometry antkit_algorithms antkit_c
+                antkit_devices antkit_testing antkit_experiments
         EXPORT antkitTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS antkit RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-foreach(dir IN ITEMS kernel/include geometry/include algorithms/include c/include devices/include
-                    testing/include experiments/include)
+foreach(dir IN ITEMS kernel/include io/include maps/include geometry/include algorithms/include
+                    c/include devices/include testing/include experiments/include)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
 file(GLOB _antkit_family_includes LIST_DIRECTORIES true ${PROJECT_SOURCE_DIR}/algorithms/*/include)

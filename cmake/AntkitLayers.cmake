@@ -1,10 +1,12 @@
 # The layers and what each may use: the one statement of the layer order, which the build holds.
 # ANTKIT_LAYER_USES_<layer> below is the table; README.md's "layer | may use" table must say the
 # same (ctest layers.docs, cmake/check_layer_docs.cmake). Notes the table cannot carry:
-#   geometry is the only layer that includes CGAL (and Eigen besides experiments and devices);
-#   c is the C API for firmware (the Cortex-M image builds its source); mpi uses MPI alone, and
-#   only cli uses mpi (cli/ranks.hpp hands the layers below a Runner that carries the ranks);
-#   devices uses geometry for the map files.
+#   io writes output files whole or not at all (atomic_file.hpp), for every layer that writes one;
+#   maps reads and writes the grid map files (MovingAI, ROS, ASCII) into kernel grids, without CGAL
+#   (the determinism matrix's builds link it); geometry is the only layer that includes CGAL (and
+#   Eigen besides experiments); c is the C API for firmware (the Cortex-M image builds its source);
+#   mpi uses MPI alone, and only cli uses mpi (cli/ranks.hpp hands the layers below a Runner that
+#   carries the ranks).
 #
 # DESIGN.md draws experiments above devices and testing: some experiments drive a robot and audit
 # what it did (paper 002's run the marker-floor robot's pilot and camera from devices/stc_floor, and
@@ -17,25 +19,30 @@
 # layers.includes.teeth, plants two); and the compiler: every layer has include roots of its own
 # (the kernel's is kernel/include, holding antkit/kernel/ alone), so a layer's target cannot find
 # the header of a layer it does not link (the fences layers.fence.*, tests/layers/CMakeLists.txt).
-set(ANTKIT_LAYERS kernel geometry algorithms c mpi devices testing experiments reports python cli)
+set(ANTKIT_LAYERS kernel io maps geometry algorithms c mpi devices testing experiments reports python
+                  cli)
 set(ANTKIT_LAYER_USES_kernel "")
+set(ANTKIT_LAYER_USES_io kernel)
+set(ANTKIT_LAYER_USES_maps kernel io)
 set(ANTKIT_LAYER_USES_geometry kernel)
 set(ANTKIT_LAYER_USES_algorithms kernel)
 set(ANTKIT_LAYER_USES_c kernel algorithms)
 set(ANTKIT_LAYER_USES_mpi "")
-set(ANTKIT_LAYER_USES_devices kernel geometry algorithms)
-set(ANTKIT_LAYER_USES_testing kernel geometry algorithms)
-set(ANTKIT_LAYER_USES_experiments kernel geometry algorithms devices testing)
-set(ANTKIT_LAYER_USES_reports kernel geometry algorithms devices testing)
-set(ANTKIT_LAYER_USES_python kernel geometry algorithms devices testing reports)
-set(ANTKIT_LAYER_USES_cli kernel geometry algorithms mpi devices testing experiments reports)
+set(ANTKIT_LAYER_USES_devices kernel io maps algorithms)
+set(ANTKIT_LAYER_USES_testing kernel io maps geometry algorithms)
+set(ANTKIT_LAYER_USES_experiments kernel io maps geometry algorithms devices testing)
+set(ANTKIT_LAYER_USES_reports kernel io maps geometry algorithms devices testing)
+set(ANTKIT_LAYER_USES_python kernel io maps geometry algorithms devices testing reports)
+set(ANTKIT_LAYER_USES_cli kernel io maps geometry algorithms mpi devices testing experiments reports)
 # The source folders of each layer (a file belongs to the layer of the longest folder that holds it).
-foreach(layer IN ITEMS kernel geometry algorithms c mpi devices testing experiments reports python cli)
+foreach(layer IN LISTS ANTKIT_LAYERS)
   set(ANTKIT_LAYER_DIRS_${layer} ${layer})
 endforeach()
 # The header folders (antkit/<name>/) each layer owns.
 set(ANTKIT_LAYER_HEADERS_kernel kernel)
-set(ANTKIT_LAYER_HEADERS_geometry geometry maps)
+set(ANTKIT_LAYER_HEADERS_io io)
+set(ANTKIT_LAYER_HEADERS_maps maps)
+set(ANTKIT_LAYER_HEADERS_geometry geometry)
 set(ANTKIT_LAYER_HEADERS_algorithms algorithms buffon frontier los stc uniform)
 set(ANTKIT_LAYER_HEADERS_c c)
 set(ANTKIT_LAYER_HEADERS_mpi mpi)
@@ -47,6 +54,8 @@ set(ANTKIT_LAYER_HEADERS_python "")
 set(ANTKIT_LAYER_HEADERS_cli "")
 # The layer targets (for the link check).
 set(ANTKIT_LAYER_TARGETS_kernel antkit_kernel)
+set(ANTKIT_LAYER_TARGETS_io antkit_io)
+set(ANTKIT_LAYER_TARGETS_maps antkit_maps)
 set(ANTKIT_LAYER_TARGETS_geometry antkit_geometry)
 set(ANTKIT_LAYER_TARGETS_algorithms antkit_algorithms)
 set(ANTKIT_LAYER_TARGETS_c antkit_c)

@@ -1,7 +1,7 @@
 // antkit_determinism: the determinism matrix's program (scripts/determinism.sh, issue 16). It runs
 // the golden scenarios of scenarios.cpp, one per controller family and body, in the mode below. It
-// links only antkit::algorithms and antkit::kernel, plus the map readers (geometry/src/map_*.cpp,
-// which need no CGAL) and the marker-floor robot's integer camera, floor and pilot
+// links only antkit::algorithms and antkit::kernel, plus the map readers (antkit::maps, which
+// needs no CGAL) and the marker-floor robot's integer camera, floor and pilot
 // (devices/src/stc_floor_*.cpp but its calibration file: no JSON library), so that any compiler
 // builds it and it cross-compiles to a big-endian CPU.
 //

@@ -3,7 +3,7 @@
 #include <antkit/experiments/buffon_cost.hpp>
 #include <antkit/experiments/format.hpp>
 #include <antkit/geometry/arena_spec.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <cmath>
 #include <iomanip>
@@ -144,8 +144,8 @@ std::array<std::filesystem::path, 4> write_buffon_cost(const BuffonCost& c,
       dir / "precision_cost.csv", dir / "precision_cost_fits.csv", dir / "precision_cost.svg",
       dir / "precision_cost.png"};
   save_figure(buffon_cost_plot(c), files[2], files[3]);
-  geometry::write_file_atomic(files[0], buffon_cost_csv(c));
-  geometry::write_file_atomic(files[1], buffon_cost_fits_csv(c));
+  io::write_file_atomic(files[0], buffon_cost_csv(c));
+  io::write_file_atomic(files[1], buffon_cost_fits_csv(c));
   return files;
 }
 

@@ -1,7 +1,7 @@
 #include "cairo_output.hpp"
 
 #include <antkit/experiments/plot.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <atomic>
 #include <cairo-svg.h>
@@ -116,7 +116,7 @@ void render(double width, double height, const std::function<void(cairo_t*)>& dr
   (void)at_exit;
   drawn = true;
   // Each file is written under a temporary name and renamed into place when whole
-  // (geometry::write_file_atomic_at): a failed drawing leaves neither.
+  // (io::write_file_atomic_at): a failed drawing leaves neither.
   const auto write_svg = [&](const std::filesystem::path& svg_tmp) {
     std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
         cairo_svg_surface_create(svg_tmp.c_str(), width, height), &cairo_surface_destroy);
@@ -142,14 +142,14 @@ void render(double width, double height, const std::function<void(cairo_t*)>& dr
     check(cairo_surface_write_to_png(surface.get(), png_tmp.c_str()), png);
   };
   if (!svg.empty() && !png.empty())
-    geometry::write_file_atomic_at(svg, [&](const std::filesystem::path& svg_tmp) {
+    io::write_file_atomic_at(svg, [&](const std::filesystem::path& svg_tmp) {
       write_svg(svg_tmp);
-      geometry::write_file_atomic_at(png, write_png);
+      io::write_file_atomic_at(png, write_png);
     });
   else if (!svg.empty())
-    geometry::write_file_atomic_at(svg, write_svg);
+    io::write_file_atomic_at(svg, write_svg);
   else if (!png.empty())
-    geometry::write_file_atomic_at(png, write_png);
+    io::write_file_atomic_at(png, write_png);
 }
 
 } // namespace detail

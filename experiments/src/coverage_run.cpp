@@ -1,6 +1,6 @@
 #include <antkit/experiments/coverage_run.hpp>
 #include <antkit/experiments/drawing.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <cstdio>
 #include <ostream>
 
@@ -12,7 +12,7 @@ uniform::CoverageResult run_coverage_traced(uniform::CoverageWorld& world,
                                             std::int64_t sensor,
                                             const std::filesystem::path& trace) {
   uniform::CoverageResult r;
-  geometry::write_file_atomic(trace, [&](std::ostream& out) {
+  io::write_file_atomic(trace, [&](std::ostream& out) {
     out << "# antkit cover trace: the poses after each tick (tick 0: the start)\n"
         << "# sensor: " << sensor << "\ntick,robot,x,y,bearing\n";
     const uniform::TickObserver observer = [&out](const uniform::CoverageWorld& w,

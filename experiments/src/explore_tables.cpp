@@ -3,7 +3,7 @@
 #include <antkit/experiments/drawing.hpp>
 #include <antkit/experiments/explore_tables.hpp>
 #include <antkit/experiments/format.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/los/explore.hpp>
@@ -289,10 +289,10 @@ std::array<std::filesystem::path, 4> write_explore_tables(const ExploreTables& t
     throw kernel::InputError(dir.string(), "cannot make the directory");
   const std::array<std::filesystem::path, 4> files{dir / "table2.csv", dir / "table2.md",
                                                    dir / "table3.csv", dir / "table3.md"};
-  geometry::write_file_atomic(files[0], table2_csv(t));
-  geometry::write_file_atomic(files[1], table2_markdown(t));
-  geometry::write_file_atomic(files[2], table3_csv(t));
-  geometry::write_file_atomic(files[3], table3_markdown(t));
+  io::write_file_atomic(files[0], table2_csv(t));
+  io::write_file_atomic(files[1], table2_markdown(t));
+  io::write_file_atomic(files[2], table3_csv(t));
+  io::write_file_atomic(files[3], table3_markdown(t));
   return files;
 }
 

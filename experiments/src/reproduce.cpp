@@ -9,8 +9,8 @@
 #include <antkit/experiments/stc_tours.hpp>
 #include <antkit/experiments/uniform_tables.hpp>
 #include <antkit/geometry/arena_spec.hpp>
-#include <antkit/geometry/atomic_file.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/stc/world.hpp>
@@ -42,7 +42,7 @@ public:
                        "cannot make the directory '" + (out_ / sub).string() + "'");
   }
   void text(const std::string& rel_path, const std::string& content) {
-    geometry::write_file_atomic(out_ / rel_path, content);
+    io::write_file_atomic(out_ / rel_path, content);
     files_.emplace_back(rel_path);
   }
   void figure(const std::string& stem, const Figure& f) {

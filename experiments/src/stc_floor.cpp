@@ -4,7 +4,7 @@
 #include <antkit/experiments/format.hpp>
 #include <antkit/experiments/plot.hpp>
 #include <antkit/experiments/stc_floor.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/stc/world.hpp>
 #include <antkit/uniform/scenario.hpp>
@@ -172,8 +172,8 @@ std::string floor_boards_csv(const FloorCurves& c) {
 }
 
 void write_floor_curves(const FloorCurves& c, const std::filesystem::path& dir) {
-  geometry::write_file_atomic(dir / "floor_curves.csv", floor_curves_csv(c));
-  geometry::write_file_atomic(dir / "floor_boards.csv", floor_boards_csv(c));
+  io::write_file_atomic(dir / "floor_curves.csv", floor_curves_csv(c));
+  io::write_file_atomic(dir / "floor_boards.csv", floor_boards_csv(c));
 
   struct Panel {
     const char* file;

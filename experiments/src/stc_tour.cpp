@@ -1,6 +1,6 @@
 #include <antkit/experiments/drawing.hpp>
 #include <antkit/experiments/stc_tour.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/stc/path_format.hpp>
@@ -80,7 +80,7 @@ stc::RunResult write_stc_tour(const kernel::OccupancyGrid& map, kernel::Cell sta
   if (o.path_file.empty()) {
     tour();
   } else {
-    geometry::write_file_atomic(o.path_file, [&](std::ostream& file) {
+    io::write_file_atomic(o.path_file, [&](std::ostream& file) {
       stc::path_format::TourWriter writer(file, o.binary_path, map.width(), map.height(), start);
       path_file = &writer;
       tour();

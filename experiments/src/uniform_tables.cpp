@@ -1,6 +1,6 @@
 #include <algorithm>
 #include <antkit/experiments/uniform_tables.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <cstdio>
 #include <sstream>
 
@@ -205,8 +205,8 @@ TablesSummary write_tables(const std::vector<TablesRow>& rows, const TablesConfi
                            const std::filesystem::path& dir) {
   const auto csv = dir / "uniform_tables.csv";
   const auto md = dir / "uniform_tables.md";
-  geometry::write_file_atomic(csv, tables_csv(rows, c));
-  geometry::write_file_atomic(md, tables_markdown(rows, c));
+  io::write_file_atomic(csv, tables_csv(rows, c));
+  io::write_file_atomic(md, tables_markdown(rows, c));
   TablesSummary s = tables_summary(rows, c);
   s.csv = csv;
   s.markdown = md;

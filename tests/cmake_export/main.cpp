@@ -9,6 +9,7 @@
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/random.hpp>
 #include <antkit/kernel/raster.hpp>
+#include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
 #include <cmath>
 #include <cstdio>
@@ -73,6 +74,14 @@ int main() {
   std::filesystem::remove(dir / "antkit-consumer.png");
   std::printf("consumer: antkit::experiments, empty room %.1f steps: %s\n", empty_room,
               experiments_ok ? "ok" : "FAILED");
+  // The maps layer (no CGAL) and the file writer under it (antkit::io): an ASCII map saved whole
+  // and read back.
+  const auto map = antkit::maps::parse_ascii("S.#\n...\n", "consumer.txt");
+  antkit::maps::save_map(dir / "antkit-consumer.txt", map);
+  const bool maps_ok =
+      antkit::maps::load_map(dir / "antkit-consumer.txt") == map && map.cells.size() == 6;
+  std::filesystem::remove(dir / "antkit-consumer.txt");
+  std::printf("consumer: antkit::maps, a map saved and read back: %s\n", maps_ok ? "ok" : "FAILED");
   const bool property_ok = consumer_property() && experiments_ok;
   std::printf("consumer: antkit::testing property: %s\n", property_ok ? "ok" : "FAILED");
   // The C API (antkit::c) from C: the same tour, hash and coverage as the C++ run.
@@ -84,5 +93,5 @@ int main() {
   const bool c_ok = c_hash == cpp.hash && c_covered == 24 && cpp.covered == 24;
   std::printf("consumer: antkit::c from C, tour hash %s: %s\n",
               antkit::kernel::hash_hex(c_hash).c_str(), c_ok ? "ok" : "FAILED");
-  return ok && property_ok && c_ok ? 0 : 1;
+  return ok && property_ok && c_ok && maps_ok ? 0 : 1;
 }

@@ -1,7 +1,7 @@
 // A failure as text (serialize, deserialize) and a campaign's output directory: summary.json and a
 // map (or arena) per failure.
 #include <antkit/campaign/campaign.hpp>
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <nlohmann/json.hpp>
@@ -73,7 +73,7 @@ std::string write_outputs(const Options& o, const Result& r, const std::filesyst
     const bool arena = !f.arena_wkt.empty();
     const std::string name = "case-" + std::to_string(f.case_index) + (arena ? ".wkt" : ".map");
     if (arena) {
-      geometry::write_file_atomic(dir / name, f.arena_wkt + "\n");
+      io::write_file_atomic(dir / name, f.arena_wkt + "\n");
     } else {
       maps::GridMap m;
       m.cells = f.map;
@@ -93,7 +93,7 @@ std::string write_outputs(const Options& o, const Result& r, const std::filesyst
   }
   j["failures"] = std::move(failures);
   const std::string text = j.dump(2) + "\n";
-  geometry::write_file_atomic(dir / "summary.json", text);
+  io::write_file_atomic(dir / "summary.json", text);
   return text;
 }
 

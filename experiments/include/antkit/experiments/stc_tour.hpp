@@ -7,7 +7,7 @@
 // The JSON document's keys, in order: variant, width, height, start, path (eight positions to a
 // line), reachable_subcells, covered, repeats, returned_to_start, hash, and with marker noise
 // noise_ppm and seed. Its first byte is written after run_stc has accepted the start, so a bad
-// start leaves no output; the path file goes through geometry::write_file_atomic (whole or not at
+// start leaves no output; the path file goes through io::write_file_atomic (whole or not at
 // all).
 #include <antkit/kernel/grid.hpp>
 #include <antkit/stc/world.hpp>

@@ -169,7 +169,7 @@ struct TablesSummary {
 [[nodiscard]] TablesSummary tables_summary(const std::vector<TablesRow>& rows,
                                            const TablesConfig& c);
 // Writes dir/uniform_tables.csv and dir/uniform_tables.md (tables_csv, tables_markdown), each whole
-// or not at all (geometry::write_file_atomic; InputError(the file) when one cannot be written), and
+// or not at all (io::write_file_atomic; InputError(the file) when one cannot be written), and
 // returns the summary with their paths.
 TablesSummary write_tables(const std::vector<TablesRow>& rows, const TablesConfig& c,
                            const std::filesystem::path& dir);

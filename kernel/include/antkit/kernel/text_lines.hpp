@@ -1,6 +1,6 @@
 #pragma once
-// The one line scanner of antkit's text readers (the map files in geometry, the tours, traces and
-// cell files of antkit::testing): a text's lines with their numbers and offsets, and a byte
+// The one line scanner of antkit's text readers (the map files of antkit::maps, the tours, traces
+// and cell files of antkit::testing): a text's lines with their numbers and offsets, and a byte
 // offset as the LINE:COL a located InputError (input_error.hpp) names. Here, in the lowest layer,
 // so that every reader above uses the same one.
 #include <cstddef>

@@ -1,7 +1,7 @@
-// write_file_atomic and write_file_atomic_at (geometry/atomic_file.hpp): an output file appears
+// write_file_atomic and write_file_atomic_at (io/atomic_file.hpp): an output file appears
 // whole or not at all (DESIGN.md, Errors). A writer that throws, a file that cannot be opened or a
 // directory that does not exist leave the target as it was and no temporary file beside it.
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
-namespace geometry = antkit::geometry;
+namespace io = antkit::io;
 
 namespace {
 
@@ -30,36 +30,36 @@ std::size_t entries(const fs::path& dir) {
 
 } // namespace
 
-TEST_CASE("write_file_atomic: whole or not at all", "[geometry]") {
+TEST_CASE("write_file_atomic: whole or not at all", "[io]") {
   const fs::path dir = fs::temp_directory_path() / ("antkit-atomic-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path target = dir / "out.txt";
 
-  geometry::write_file_atomic(target, "first\n");
+  io::write_file_atomic(target, "first\n");
   CHECK(slurp(target) == "first\n");
-  geometry::write_file_atomic(target, [](std::ostream& out) { out << "second\n"; });
+  io::write_file_atomic(target, [](std::ostream& out) { out << "second\n"; });
   CHECK(slurp(target) == "second\n");
   CHECK(entries(dir) == 1);
 
   SECTION("a writer that throws leaves the old file and no temporary") {
-    CHECK_THROWS_AS(geometry::write_file_atomic(target,
-                                                [](std::ostream& out) {
-                                                  out << "half";
-                                                  throw std::runtime_error("stop");
-                                                }),
+    CHECK_THROWS_AS(io::write_file_atomic(target,
+                                          [](std::ostream& out) {
+                                            out << "half";
+                                            throw std::runtime_error("stop");
+                                          }),
                     std::runtime_error);
-    CHECK_THROWS_AS(geometry::write_file_atomic_at(target,
-                                                   [](const fs::path& tmp) {
-                                                     std::ofstream(tmp) << "half";
-                                                     throw std::runtime_error("stop");
-                                                   }),
+    CHECK_THROWS_AS(io::write_file_atomic_at(target,
+                                             [](const fs::path& tmp) {
+                                               std::ofstream(tmp) << "half";
+                                               throw std::runtime_error("stop");
+                                             }),
                     std::runtime_error);
     CHECK(slurp(target) == "second\n");
     CHECK(entries(dir) == 1);
   }
   SECTION("write_file_atomic_at: the writer opens the temporary beside the target by its name") {
     fs::path seen;
-    geometry::write_file_atomic_at(target, [&](const fs::path& tmp) {
+    io::write_file_atomic_at(target, [&](const fs::path& tmp) {
       seen = tmp;
       CHECK(tmp.parent_path() == dir);
       CHECK(tmp != target);
@@ -71,7 +71,7 @@ TEST_CASE("write_file_atomic: whole or not at all", "[geometry]") {
   }
   SECTION("a directory that does not exist: InputError naming the file, nothing made") {
     try {
-      geometry::write_file_atomic(dir / "absent" / "out.txt", "x");
+      io::write_file_atomic(dir / "absent" / "out.txt", "x");
       FAIL("written into a missing directory");
     } catch (const antkit::kernel::InputError& e) {
       CHECK(e.where() == (dir / "absent" / "out.txt").string());
@@ -81,7 +81,7 @@ TEST_CASE("write_file_atomic: whole or not at all", "[geometry]") {
   }
   SECTION("a writer that leaves no file: the rename fails, named by the target") {
     try {
-      geometry::write_file_atomic_at(dir / "never.txt", [](const fs::path&) {});
+      io::write_file_atomic_at(dir / "never.txt", [](const fs::path&) {});
       FAIL("a file that was never written appeared");
     } catch (const antkit::kernel::InputError& e) {
       CHECK(e.where() == (dir / "never.txt").string());

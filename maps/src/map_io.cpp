@@ -1,5 +1,5 @@
 // Map files by extension: reading a whole file, choosing the format, loading and saving.
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/detail/text_scan.hpp>
 #include <antkit/maps/map_io.hpp>
@@ -80,7 +80,7 @@ void save_map(const std::filesystem::path& path, const GridMap& map) {
                                                 ", " + std::to_string(map.start->y) +
                                                 ") is not a free cell of the map");
   const auto text = format == MapFormat::MovingAI ? write_movingai(map) : write_ascii(map);
-  geometry::write_file_atomic(path, text);
+  io::write_file_atomic(path, text);
 }
 
 } // namespace antkit::maps

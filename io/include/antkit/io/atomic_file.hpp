@@ -7,7 +7,7 @@
 #include <ostream>
 #include <string_view>
 
-namespace antkit::geometry {
+namespace antkit::io {
 
 // Throws antkit::kernel::InputError (where = the path) when the file cannot be written.
 void write_file_atomic(const std::filesystem::path& path,
@@ -21,4 +21,4 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
 void write_file_atomic_at(const std::filesystem::path& path,
                           const std::function<void(const std::filesystem::path& temporary)>& write);
 
-} // namespace antkit::geometry
+} // namespace antkit::io

@@ -1,4 +1,4 @@
-#include <antkit/geometry/atomic_file.hpp>
+#include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <atomic>
 #include <fstream>
@@ -6,7 +6,7 @@
 #include <system_error>
 #include <unistd.h>
 
-namespace antkit::geometry {
+namespace antkit::io {
 
 namespace {
 std::filesystem::path temporary_beside(const std::filesystem::path& path) {
@@ -49,4 +49,4 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
   });
 }
 
-} // namespace antkit::geometry
+} // namespace antkit::io
