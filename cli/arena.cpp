@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "output.hpp"
 
+#include <antkit/commands/options.hpp>
 #include <antkit/geometry/arena.hpp>
 #include <antkit/geometry/arena_raster.hpp>
 #include <antkit/geometry/arena_spec.hpp>
@@ -10,7 +11,6 @@
 #include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
-#include <antkit/reports/reports.hpp>
 #include <cctype>
 #include <iostream>
 #include <memory>
@@ -32,7 +32,7 @@ void run(const ArenaOptions& o) {
   nlohmann::json result;
   std::optional<Arena> arena;
   std::optional<double> ideal;
-  if (antkit::reports::is_wkt_path(o.source)) {
+  if (antkit::commands::is_wkt_path(o.source)) {
     arena = read_wkt_file(o.source);
   } else {
     auto named = build_arena_spec(o.source, "SPEC");

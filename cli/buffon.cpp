@@ -41,16 +41,16 @@
 // "self_crossings" and "area_pilot" (length1^2 / (pi S)); the summary has "rule",
 // "length1_median", "length_total_median", with online "first_visit_reached", and when trials ran
 // out of steps a "budget_note", also written to stderr. Without --precision the output is
-// unchanged. The JSON is reports::buffon_json's (reports/src/buffon.cpp).
+// unchanged. The JSON is commands::buffon_json's (commands/src/buffon.cpp).
 #include "buffon_options.hpp"
 #include "commands.hpp"
 #include "output.hpp"
 
 #include <antkit/buffon/area_measurement.hpp>
+#include <antkit/commands/json.hpp>
 #include <antkit/experiments/buffon_figures.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/reports/reports.hpp>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -120,7 +120,7 @@ void run(const BuffonCommand& c) {
   params.keep_first_trails = !c.svg.empty() || !c.png.empty();
   const buffon::AreaMeasurement m = buffon::measure_area(world, params);
 
-  nlohmann::json result = antkit::reports::buffon_json(m, params, c.arena, arena.area());
+  nlohmann::json result = antkit::commands::buffon_json(m, params, c.arena, arena.area());
   if (buffon::budgeted(params) && m.summary.out_of_steps > 0) {
     // Said on stderr too, where a table reader looks for trouble.
     const std::string note = std::to_string(m.summary.out_of_steps) + " of " +

@@ -38,8 +38,9 @@
 #include "commands.hpp"
 #include "output.hpp"
 
+#include <antkit/commands/json.hpp>
+#include <antkit/commands/options.hpp>
 #include <antkit/devices/odometry.hpp>
-#include <antkit/reports/reports.hpp>
 #include <iostream>
 #include <memory>
 
@@ -55,8 +56,9 @@ struct FromLogsCommand {
 };
 
 void run(const FromLogsCommand& c) {
-  const auto r = antkit::reports::buffon_from_logs(c.visit1, c.visit2, c.width, c.arena, "--width");
-  antkit::cli::emit(antkit::reports::buffon_from_logs_json(r, c.width), c.format, std::cout);
+  const auto r =
+      antkit::commands::buffon_from_logs(c.visit1, c.visit2, c.width, c.arena, "--width");
+  antkit::cli::emit(antkit::commands::buffon_from_logs_json(r, c.width), c.format, std::cout);
 }
 
 void register_from_logs(CLI::App& app) {

@@ -4,11 +4,11 @@
 // so the commands reject the same values the same way (exit 2), and one reading of the arena and
 // the body.
 #include <antkit/buffon/world.hpp>
+#include <antkit/commands/options.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
 #include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/reports/reports.hpp>
 #include <cstdint>
 #include <string>
 
@@ -39,8 +39,8 @@ inline void check_buffon_body(double width, double noise) {
 
 // --arena: a WKT file or a named spec, read as `antkit buffon` reads it.
 inline geometry::Arena read_buffon_arena(const std::string& spec) {
-  return reports::is_wkt_path(spec) ? geometry::read_wkt_file(spec)
-                                    : geometry::build_arena_spec(spec, "--arena").arena;
+  return commands::is_wkt_path(spec) ? geometry::read_wkt_file(spec)
+                                     : geometry::build_arena_spec(spec, "--arena").arena;
 }
 
 // The world of one run: the arena's walls in Q15.16 and a body whose IR noise is --noise (checked

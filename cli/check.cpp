@@ -1,5 +1,5 @@
 // `antkit check`: an oracle for any planner's output (issue 18). The checks are antkit::testing's
-// (testing/include/antkit/testing/), their JSON reports/; this file parses options, calls one
+// (testing/include/antkit/testing/), their JSON commands/; this file parses options, calls one
 // function and prints.
 //
 //   antkit check stc --map F --path P [--start X,Y] [--coverage] [--order xy|rc] [--cells]
@@ -13,7 +13,7 @@
 #include "output.hpp"
 
 #include <antkit/algorithms/options.hpp>
-#include <antkit/reports/reports.hpp>
+#include <antkit/commands/json.hpp>
 #include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
 #include <iostream>
@@ -42,7 +42,7 @@ void run_stc(const StcCheckCommand& c) {
   request.cells = c.cells;
   const testing::StcCheckReport r = testing::check_stc_files(request);
   const testing::StcAudit& a = r.audit;
-  const nlohmann::json j = antkit::reports::check_stc_json(r, c.map);
+  const nlohmann::json j = antkit::commands::check_stc_json(r, c.map);
   antkit::cli::emit(j, c.format, std::cout);
   if (!a.ok()) throw antkit::cli::CheckFailed(c.path + ": " + a.first.describe());
 }
@@ -55,7 +55,7 @@ struct ExploreCheckCommand {
 void run_explore(const ExploreCheckCommand& c) {
   const auto r = testing::check_explore_files(c.map, c.cells);
   const auto& a = r.audit;
-  const nlohmann::json j = antkit::reports::check_explore_json(r, c.map);
+  const nlohmann::json j = antkit::commands::check_explore_json(r, c.map);
   antkit::cli::emit(j, c.format, std::cout);
   if (!a.ok()) throw antkit::cli::CheckFailed(c.cells + ": " + a.first);
 }
@@ -71,7 +71,7 @@ void run_cover(const CoverCheckCommand& c) {
   if (c.sensor != -1) sensor = c.sensor;
   const auto r = testing::check_cover_files(c.map, c.log, sensor);
   const auto& a = r.audit;
-  const nlohmann::json j = antkit::reports::check_cover_json(r, c.map);
+  const nlohmann::json j = antkit::commands::check_cover_json(r, c.map);
   antkit::cli::emit(j, c.format, std::cout);
   if (!a.ok()) throw antkit::cli::CheckFailed(c.log + ": " + a.first);
 }

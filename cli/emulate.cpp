@@ -21,11 +21,11 @@
 #include "output.hpp"
 
 #include <antkit/algorithms/options.hpp>
+#include <antkit/commands/options.hpp>
 #include <antkit/devices/device.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/wkt.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/reports/reports.hpp>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -60,7 +60,7 @@ void run(const EmulateCommand& c) {
   devices::EmulateOptions o;
   o.seed = c.seed;
   o.arena = given(c.arena_opt, c.arena);
-  const auto arena = antkit::reports::is_wkt_path(c.arena)
+  const auto arena = antkit::commands::is_wkt_path(c.arena)
                          ? antkit::geometry::read_wkt_file(c.arena)
                          : antkit::geometry::build_arena_spec(c.arena, "--arena").arena;
   o.walls = arena.walls_fx();

@@ -25,11 +25,11 @@
 #include "output.hpp"
 
 #include <antkit/algorithms/options.hpp>
+#include <antkit/commands/json.hpp>
 #include <antkit/devices/device.hpp>
 #include <antkit/experiments/recorded_run.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/reports/reports.hpp>
 #include <iostream>
 #include <memory>
 #include <unistd.h>
@@ -129,7 +129,7 @@ void run(const RecordCommand& c) {
     j["turn_ms"] = t.turn_ms;
     j["tour_ok"] = r.tour_ok;
     j["first_violation"] =
-        r.audit ? antkit::reports::first_violation_json(*r.audit) : nlohmann::json(nullptr);
+        r.audit ? antkit::commands::first_violation_json(*r.audit) : nlohmann::json(nullptr);
   } else {
     j["hash"] = antkit::kernel::hash_hex(s.hash);
   }

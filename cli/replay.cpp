@@ -9,9 +9,9 @@
 #include "commands.hpp"
 #include "output.hpp"
 
+#include <antkit/commands/json.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/reports/reports.hpp>
 #include <iostream>
 #include <memory>
 
@@ -30,7 +30,7 @@ void run(const ReplayCommand& c) {
   if (c.until < -1) throw antkit::kernel::InputError("--until", "expected a step number >= 0");
   const auto r =
       devices::replay(c.log, c.until >= 0 ? std::optional<std::int64_t>(c.until) : std::nullopt);
-  const nlohmann::json j = antkit::reports::replay_json(r);
+  const nlohmann::json j = antkit::commands::replay_json(r);
   antkit::cli::emit(j, c.format, std::cout);
   if (r.truncated)
     std::cerr << "antkit: warning: " << c.log

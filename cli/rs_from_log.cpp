@@ -6,8 +6,8 @@
 #include "commands.hpp"
 #include "output.hpp"
 
+#include <antkit/commands/json.hpp>
 #include <antkit/devices/odometry.hpp>
-#include <antkit/reports/reports.hpp>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -33,7 +33,7 @@ void register_rs(CLI::App& app) {
     nlohmann::json j;
     j["robot"] = r.walk.robot;
     j["diameter_m"] = r.diameter_m;
-    j["walk"] = antkit::reports::trail_json(r.walk);
+    j["walk"] = antkit::commands::trail_json(r.walk);
     j["cells"] = r.cells;
     j["area"] = r.area;
     j["area_m2"] = r.area * r.diameter_m * r.diameter_m;

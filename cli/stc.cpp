@@ -21,9 +21,9 @@
 #include "output.hpp"
 #include "stc_options.hpp"
 
+#include <antkit/commands/json.hpp>
 #include <antkit/experiments/stc_tour.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/reports/reports.hpp>
 #include <antkit/stc/world.hpp>
 #include <cstdint>
 #include <filesystem>
@@ -74,11 +74,11 @@ void run_stc_command(const StcOptions& o) {
     antkit::experiments::save_stc_tour_figure(
         map.cells, r, std::filesystem::path(o.map).filename().string(), o.svg, o.png);
   if (!json) {
-    nlohmann::json j = antkit::reports::stc_json(
+    nlohmann::json j = antkit::commands::stc_json(
         r, map.cells.width(), map.cells.height(), start,
         o.noise.empty()
             ? std::nullopt
-            : std::optional(antkit::reports::StcNoiseFields{request.noise.ppm, o.seed}));
+            : std::optional(antkit::commands::StcNoiseFields{request.noise.ppm, o.seed}));
     j["path"] = "(" + std::to_string(r.positions) + " items; use --format json)";
     antkit::cli::emit(j, o.format, std::cout);
   }

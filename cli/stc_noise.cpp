@@ -40,7 +40,7 @@ struct NoiseOptions {
 };
 
 void run_noise_command(const NoiseOptions& o) {
-  const Variant variant = antkit::reports::stc_variant(o.variant, "--variant");
+  const Variant variant = antkit::commands::stc_variant(o.variant, "--variant");
   if (variant != Variant::Ant && variant != Variant::AntEdge)
     throw InputError("--variant", "marker noise applies to ant and ant-edge only");
   if (o.trials < 1 || o.trials > 100000)

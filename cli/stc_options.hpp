@@ -3,9 +3,9 @@
 // (--map, --variant, --start, --noise, --seed), refused the same way (exit 2, located): one
 // reading, so the plumbing refuses what `antkit stc` refuses.
 #include <antkit/algorithms/options.hpp>
+#include <antkit/commands/options.hpp>
 #include <antkit/kernel/grid.hpp>
 #include <antkit/maps/map_io.hpp>
-#include <antkit/reports/reports.hpp>
 #include <antkit/stc/start.hpp>
 #include <antkit/stc/world.hpp>
 #include <cstdint>
@@ -35,8 +35,8 @@ struct StcRequest {
 inline StcRequest read_stc_request(const std::string& map_file, const std::string& variant,
                                    const std::string& start, const std::string& noise,
                                    std::uint64_t seed) {
-  StcRequest r{reports::stc_variant(variant, "--variant"), {}, {}, {}};
-  if (!noise.empty()) r.noise = reports::stc_noise(r.variant, noise, seed, "--noise");
+  StcRequest r{commands::stc_variant(variant, "--variant"), {}, {}, {}};
+  if (!noise.empty()) r.noise = commands::stc_noise(r.variant, noise, seed, "--noise");
   r.map = maps::load_map(map_file);
   r.start = read_stc_start(r.map, r.variant, start, map_file);
   return r;

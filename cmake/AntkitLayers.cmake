@@ -6,7 +6,8 @@
 #   (the determinism matrix's builds link it); geometry is the only layer that includes CGAL (and
 #   Eigen besides experiments); c is the C API for firmware (the Cortex-M image builds its source);
 #   mpi uses MPI alone, and only cli uses mpi (cli/ranks.hpp hands the layers below a Runner that
-#   carries the ranks).
+#   carries the ranks); commands is what the two shells (cli, the `antkit` command, and python, the
+#   Python package) share: each result's JSON and the choices a command makes from its options.
 #
 # DESIGN.md draws experiments above devices and testing: some experiments drive a robot and audit
 # what it did (paper 002's run the marker-floor robot's pilot and camera from devices/stc_floor, and
@@ -19,8 +20,8 @@
 # layers.includes.teeth, plants two); and the compiler: every layer has include roots of its own
 # (the kernel's is kernel/include, holding antkit/kernel/ alone), so a layer's target cannot find
 # the header of a layer it does not link (the fences layers.fence.*, tests/layers/CMakeLists.txt).
-set(ANTKIT_LAYERS kernel io maps geometry algorithms c mpi devices testing experiments reports python
-                  cli)
+set(ANTKIT_LAYERS kernel io maps geometry algorithms c mpi devices testing experiments commands
+                  python cli)
 set(ANTKIT_LAYER_USES_kernel "")
 set(ANTKIT_LAYER_USES_io kernel)
 set(ANTKIT_LAYER_USES_maps kernel io)
@@ -31,9 +32,9 @@ set(ANTKIT_LAYER_USES_mpi "")
 set(ANTKIT_LAYER_USES_devices kernel io maps algorithms)
 set(ANTKIT_LAYER_USES_testing kernel io maps geometry algorithms)
 set(ANTKIT_LAYER_USES_experiments kernel io maps geometry algorithms devices testing)
-set(ANTKIT_LAYER_USES_reports kernel io maps geometry algorithms devices testing)
-set(ANTKIT_LAYER_USES_python kernel io maps geometry algorithms devices testing reports)
-set(ANTKIT_LAYER_USES_cli kernel io maps geometry algorithms mpi devices testing experiments reports)
+set(ANTKIT_LAYER_USES_commands kernel io maps geometry algorithms devices testing)
+set(ANTKIT_LAYER_USES_python kernel io maps geometry algorithms devices testing commands)
+set(ANTKIT_LAYER_USES_cli kernel io maps geometry algorithms mpi devices testing experiments commands)
 # The source folders of each layer (a file belongs to the layer of the longest folder that holds it).
 foreach(layer IN LISTS ANTKIT_LAYERS)
   set(ANTKIT_LAYER_DIRS_${layer} ${layer})
@@ -49,7 +50,7 @@ set(ANTKIT_LAYER_HEADERS_mpi mpi)
 set(ANTKIT_LAYER_HEADERS_devices devices)
 set(ANTKIT_LAYER_HEADERS_testing testing campaign)
 set(ANTKIT_LAYER_HEADERS_experiments experiments)
-set(ANTKIT_LAYER_HEADERS_reports reports)
+set(ANTKIT_LAYER_HEADERS_commands commands)
 set(ANTKIT_LAYER_HEADERS_python "")
 set(ANTKIT_LAYER_HEADERS_cli "")
 # The layer targets (for the link check).
@@ -63,7 +64,7 @@ set(ANTKIT_LAYER_TARGETS_mpi antkit_mpi)
 set(ANTKIT_LAYER_TARGETS_devices antkit_devices)
 set(ANTKIT_LAYER_TARGETS_testing antkit_testing antkit_campaign)
 set(ANTKIT_LAYER_TARGETS_experiments antkit_experiments)
-set(ANTKIT_LAYER_TARGETS_reports antkit_reports)
+set(ANTKIT_LAYER_TARGETS_commands antkit_commands)
 set(ANTKIT_LAYER_TARGETS_python antkit_python)
 set(ANTKIT_LAYER_TARGETS_cli antkit)
 

@@ -2,10 +2,12 @@
 // arrays and plain Python types. The pure-Python half (antkit/__init__.py) wraps the results in
 // objects; its docstrings and antkit/__init__.pyi document the API.
 //
-// Results are the JSON the command prints (reports/), converted to dicts, so that a field means the
-// same in Python as in `antkit ... --format json`. Bad input raises antkit.InputError (a
+// Results are the JSON the command prints (commands/), converted to dicts, so that a field means
+// the same in Python as in `antkit ... --format json`. Bad input raises antkit.InputError (a
 // ValueError) carrying the command's located message ("FILE:LINE:COL: ...", "--start: ..."). Every
 // call that runs a tour, a check or a replay releases the GIL while it runs.
+#include <antkit/commands/json.hpp>
+#include <antkit/commands/options.hpp>
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/odometry.hpp>
 #include <antkit/devices/replay.hpp>
@@ -15,7 +17,6 @@
 #include <antkit/kernel/segment.hpp>
 #include <antkit/los/cell_state.hpp>
 #include <antkit/maps/map_io.hpp>
-#include <antkit/reports/reports.hpp>
 #include <antkit/stc/world.hpp>
 #include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
@@ -184,12 +185,12 @@ void write_map(const PyMap& m, const std::string& path) {
 py::tuple run_stc(const PyMap& m, const std::string& variant_name,
                   const std::optional<std::pair<std::int64_t, std::int64_t>>& start_xy,
                   const std::optional<std::string>& noise, std::uint64_t seed) {
-  const auto variant = antkit::reports::stc_variant(variant_name, "variant");
+  const auto variant = antkit::commands::stc_variant(variant_name, "variant");
   antkit::stc::RunOptions run;
-  std::optional<antkit::reports::StcNoiseFields> noise_fields;
+  std::optional<antkit::commands::StcNoiseFields> noise_fields;
   if (noise) {
-    run.noise = antkit::reports::stc_noise(variant, *noise, seed, "noise");
-    noise_fields = antkit::reports::StcNoiseFields{run.noise.ppm, seed};
+    run.noise = antkit::commands::stc_noise(variant, *noise, seed, "noise");
+    noise_fields = antkit::commands::StcNoiseFields{run.noise.ppm, seed};
   }
   const auto name = m.source.empty() ? std::string("map") : m.source;
   nlohmann::json j;
@@ -197,14 +198,14 @@ py::tuple run_stc(const PyMap& m, const std::string& variant_name,
   {
     py::gil_scoped_release release;
     const Cell start =
-        antkit::reports::choose_stc_start(m.map, variant, optional_cell(start_xy, "start"), name);
+        antkit::commands::choose_stc_start(m.map, variant, optional_cell(start_xy, "start"), name);
     try {
       r = antkit::stc::run_stc(m.map.cells, start, variant, run);
     } catch (const InputError& e) { // name the argument or the map the start came from
       throw InputError(start_xy ? "start" : name, e.message());
     }
-    j = antkit::reports::stc_json(r, m.map.cells.width(), m.map.cells.height(), start,
-                                  noise_fields);
+    j = antkit::commands::stc_json(r, m.map.cells.width(), m.map.cells.height(), start,
+                                   noise_fields);
     j["closed"] = r.closed;
     j["positions"] = r.positions;
   }
@@ -258,7 +259,7 @@ py::object check_stc(const PyMap& m, const py::object& path,
   {
     py::gil_scoped_release release;
     const auto report = antkit::testing::check_stc(m.map, tour, request);
-    j = antkit::reports::check_stc_json(report, m.source);
+    j = antkit::commands::check_stc_json(report, m.source);
   }
   return to_python(j);
 }
@@ -268,7 +269,7 @@ py::object check_explore_text(const PyMap& m, const std::string& text, const std
   {
     py::gil_scoped_release release;
     const auto states = antkit::testing::read_los_cells(text, source);
-    j = antkit::reports::check_explore_json(
+    j = antkit::commands::check_explore_json(
         antkit::testing::check_explore(m.map.cells, states, source), m.source);
   }
   return to_python(j);
@@ -281,7 +282,7 @@ py::object check_cover_text(const PyMap& m, const std::string& text, const std::
     py::gil_scoped_release release;
     antkit::testing::check_sensor_range(sensor);
     const auto trace = antkit::testing::read_cover_trace(text, source);
-    j = antkit::reports::check_cover_json(
+    j = antkit::commands::check_cover_json(
         antkit::testing::check_cover(m.map.cells, trace, sensor, source), m.source);
   }
   return to_python(j);
@@ -294,8 +295,8 @@ py::object buffon_from_logs(const std::string& visit1, const std::string& visit2
   nlohmann::json j;
   {
     py::gil_scoped_release release;
-    j = antkit::reports::buffon_from_logs_json(
-        antkit::reports::buffon_from_logs(visit1, visit2, width, arena.value_or(""), "width"),
+    j = antkit::commands::buffon_from_logs_json(
+        antkit::commands::buffon_from_logs(visit1, visit2, width, arena.value_or(""), "width"),
         width);
   }
   return to_python(j);
@@ -374,7 +375,7 @@ py::object replay(const std::string& path, std::optional<std::int64_t> until) {
   nlohmann::json j;
   {
     py::gil_scoped_release release;
-    j = antkit::reports::replay_json(antkit::devices::replay(path, until));
+    j = antkit::commands::replay_json(antkit::devices::replay(path, until));
   }
   return to_python(j);
 }

@@ -5,4 +5,4 @@
 #include <antkit/experiments/verdict.hpp>
 #include <antkit/testing/stc.hpp>
 // Of a layer this one may not use:
-#include <antkit/reports/reports.hpp>
+#include <antkit/commands/json.hpp>

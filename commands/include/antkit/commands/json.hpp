@@ -3,11 +3,11 @@
 // (python/: each result object is this JSON as a dict). One function per result; the key lists and
 // meanings are documented at the command (cli/check.cpp, cli/stc.cpp, cli/replay.cpp,
 // cli/buffon.cpp, cli/buffon_from_logs.cpp). Numbers stay integers where the result counts, and
-// absent values are null, never left out.
+// absent values are null, never left out. (The choices a command makes from its options, which
+// the two shells share too, are options.hpp.)
 #include <antkit/buffon/area_measurement.hpp>
 #include <antkit/devices/odometry.hpp>
 #include <antkit/devices/replay.hpp>
-#include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
 #include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
@@ -16,7 +16,7 @@
 #include <optional>
 #include <string>
 
-namespace antkit::reports {
+namespace antkit::commands {
 
 // A sub-cell or cell as [x, y].
 [[nodiscard]] nlohmann::json cell_json(kernel::Cell c);
@@ -32,21 +32,6 @@ namespace antkit::reports {
                                                 const std::string& map);
 [[nodiscard]] nlohmann::json check_cover_json(const testing::CoverCheckReport& report,
                                               const std::string& map);
-
-// `antkit stc`'s variant by name, or an InputError(where) listing the variants.
-[[nodiscard]] stc::Variant stc_variant(const std::string& name, const std::string& where);
-// Marker noise for `variant`: `probability` as the command takes it (a decimal in [0, 1], at most
-// six decimals: algorithms::parse_probability_ppm), drawn from `seed`'s stream; an
-// InputError(where) for a variant that reads no marks (ant and ant-edge do).
-[[nodiscard]] stc::NoiseModel stc_noise(stc::Variant variant, const std::string& probability,
-                                        std::uint64_t seed, const std::string& where);
-
-// The STC start: `given` if any (sub-cells), else the map's own start ('S' in an ASCII map), else
-// stc::default_start (the largest region's first place). Throws InputError(map_name) when the map
-// has no place to start.
-[[nodiscard]] kernel::Cell choose_stc_start(const maps::GridMap& map, stc::Variant variant,
-                                            std::optional<kernel::Cell> given,
-                                            const std::string& map_name);
 
 // `antkit stc`'s fields other than "path" (which the command streams): variant, width, height,
 // start, reachable_subcells, covered, repeats, returned_to_start, hash, and with marker noise
@@ -70,25 +55,12 @@ struct StcNoiseFields {
 // `antkit replay`.
 [[nodiscard]] nlohmann::json replay_json(const devices::ReplayResult& result);
 
-// `antkit buffon-from-logs`: the measurement from two logs (devices::buffon_from_logs) with the
-// pheromone band `width` in body diameters, in [0.01, 10] (else an InputError(width_where)), and
-// the arena's true area from its spec or WKT file (arena_spec_area) when `arena` or the headers
-// name one.
-[[nodiscard]] devices::BuffonFromLogs buffon_from_logs(const std::string& visit1,
-                                                       const std::string& visit2, double width,
-                                                       const std::string& arena,
-                                                       const std::string& width_where);
-// Its JSON; `width` the band width in body diameters.
+// `antkit buffon-from-logs`'s JSON (the result of options.hpp's buffon_from_logs); `width` the band
+// width in body diameters.
 [[nodiscard]] nlohmann::json buffon_from_logs_json(const devices::BuffonFromLogs& result,
                                                    double width);
-// An arena argument names a WKT file when it ends in ".wkt" (any case), else it is a named spec:
-// the rule is the name's, not the file system's, so a typo in a spec never silently reads a stray
-// file. arena_spec_area: its exact area (the WKT polygon's or the built spec's); `where` names the
-// option in an InputError.
-[[nodiscard]] double arena_spec_area(const std::string& spec, const std::string& where);
-[[nodiscard]] bool is_wkt_path(const std::string& name);
 
 // One visit's {"steps", "length", "truncated", "hash"} (buffon-from-logs, rs-from-log).
 [[nodiscard]] nlohmann::json trail_json(const devices::LoggedTrail& trail);
 
-} // namespace antkit::reports
+} // namespace antkit::commands

@@ -1,11 +1,11 @@
-// The exact area of an arena named by a spec or a WKT file (reports.hpp), for the Buffon estimate's
+// The exact area of an arena named by a spec or a WKT file (options.hpp), for the Buffon estimate's
 // relative error.
+#include <antkit/commands/options.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/wkt.hpp>
-#include <antkit/reports/reports.hpp>
 #include <cctype>
 
-namespace antkit::reports {
+namespace antkit::commands {
 
 bool is_wkt_path(const std::string& s) {
   if (s.size() < 4) return false;
@@ -19,4 +19,4 @@ double arena_spec_area(const std::string& spec, const std::string& where) {
                            : geometry::build_arena_spec(spec, where).arena.area();
 }
 
-} // namespace antkit::reports
+} // namespace antkit::commands

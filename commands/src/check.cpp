@@ -1,8 +1,8 @@
-// The JSON of `antkit check stc|explore|cover` (reports.hpp).
+// The JSON of `antkit check stc|explore|cover` (json.hpp).
+#include <antkit/commands/json.hpp>
 #include <antkit/los/cell_state.hpp>
-#include <antkit/reports/reports.hpp>
 
-namespace antkit::reports {
+namespace antkit::commands {
 
 nlohmann::json cell_json(kernel::Cell c) {
   return nlohmann::json::array({c.x, c.y});
@@ -98,4 +98,4 @@ nlohmann::json check_cover_json(const testing::CoverCheckReport& r, const std::s
   return j;
 }
 
-} // namespace antkit::reports
+} // namespace antkit::commands

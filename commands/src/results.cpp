@@ -1,12 +1,14 @@
-// The JSON of `antkit stc`, `antkit replay` and `antkit buffon-from-logs` (reports.hpp).
+// The JSON of `antkit stc`, `antkit replay` and `antkit buffon-from-logs` (json.hpp), and the
+// choices `antkit stc` and `antkit buffon-from-logs` make from their options (options.hpp).
 #include <antkit/algorithms/options.hpp>
+#include <antkit/commands/json.hpp>
+#include <antkit/commands/options.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/reports/reports.hpp>
 #include <antkit/stc/start.hpp>
 
-namespace antkit::reports {
+namespace antkit::commands {
 
 stc::Variant stc_variant(const std::string& name, const std::string& where) {
   if (const auto v = stc::parse_variant(name)) return *v;
@@ -130,4 +132,4 @@ nlohmann::json buffon_from_logs_json(const devices::BuffonFromLogs& r, double wi
   return j;
 }
 
-} // namespace antkit::reports
+} // namespace antkit::commands

@@ -1,9 +1,9 @@
-// The JSON of `antkit buffon` (reports.hpp; the keys are documented at cli/buffon.cpp).
+// The JSON of `antkit buffon` (json.hpp; the keys are documented at cli/buffon.cpp).
+#include <antkit/commands/json.hpp>
 #include <antkit/kernel/hash.hpp>
-#include <antkit/reports/reports.hpp>
 #include <string>
 
-namespace antkit::reports {
+namespace antkit::commands {
 
 namespace {
 
@@ -101,4 +101,4 @@ nlohmann::json buffon_json(const buffon::AreaMeasurement& m,
   return result;
 }
 
-} // namespace antkit::reports
+} // namespace antkit::commands
