@@ -4,9 +4,9 @@
 // commands a step sends (N, D, H) over the same kind of link without the loop. The ratio of the two
 // per-step times is the loop's overhead (the log, the controller, the drains and classification);
 // compare them in one run, as ratios.
-#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/emulator.hpp>
 #include <antkit/devices/link.hpp>
+#include <antkit/devices/record_loop.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <atomic>
 #include <benchmark/benchmark.h>

@@ -201,7 +201,7 @@ void register_record(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-// devices::record()'s words for its inputs (adapter.hpp, serial.hpp), as this command's options.
+// devices::record()'s words for its inputs (record_loop.hpp, serial.hpp) as this command's options.
 const antkit::cli::Registration reg{
     "record",
     &register_record,

@@ -1,5 +1,5 @@
 #pragma once
-// The robot body under the controller contract, shared by record() (adapter.cpp) and replay()
+// The robot body under the controller contract, shared by record() (record_loop.cpp) and replay()
 // (replay.cpp): both run exactly this code, the first over a RobotLink to the robot, the second
 // over the log's exchanges, so that a replay re-derives every byte a recording sent (internal).
 #include <antkit/devices/controllers.hpp>
@@ -55,7 +55,7 @@ private:
   WheelTravel baseline_;
 };
 
-// Carries a controller's command out (adapter.hpp, step 3).
+// Carries a controller's command out (record_loop.hpp, step 3).
 void act(Body& body, bool wander, std::span<const std::int64_t> cmd, std::vector<Exchange>& io);
 
 // The replay of a serial robot's log (replay.hpp): the body above over the log's exchanges.

@@ -2,7 +2,7 @@
 // hemisson and epuck, each a RobotDescription (robot.hpp) driven by the body (body.hpp) over a
 // RobotLink (link.hpp) under a controller of controllers.hpp.
 //
-// A session's step (adapter.hpp, "One control step"): the proximity read, the controller, the
+// A session's step (record_loop.hpp, "One control step"): the proximity read, the controller, the
 // command carried out, the odometry. Its record: obs and cmd as controllers.hpp writes them, odo
 // the wheel travel [left, right] (counters less the start's baseline; the Hemisson's commanded
 // travel in micrometres), state the controller's state hash.

@@ -1,11 +1,11 @@
 // Replay of a hardware log through its controller (replay.hpp).
 #include "body.hpp"
 
-#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/device.hpp>
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/protocol.hpp>
+#include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/devices/robot.hpp>
 #include <antkit/kernel/hash.hpp>

@@ -1,8 +1,8 @@
 #pragma once
 // A firmware emulator serving a real pseudo-terminal from a thread of the test, and a temporary
-// directory for logs: the end-to-end tests run the real adapter code against it over the tty.
-#include <antkit/devices/adapter.hpp>
+// directory for logs: the end-to-end tests run the real record loop against it over the tty.
 #include <antkit/devices/emulator.hpp>
+#include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/serial.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <atomic>

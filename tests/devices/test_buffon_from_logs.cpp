@@ -9,9 +9,9 @@
 #include <antkit/buffon/estimate.hpp>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/stopping.hpp>
-#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/odometry.hpp>
+#include <antkit/devices/record_loop.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/kernel/segment.hpp>

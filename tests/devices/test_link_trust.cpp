@@ -5,10 +5,10 @@
 #include "emulated_robot.hpp"
 
 #include <antkit/buffon/world.hpp>
-#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/odometry.hpp>
 #include <antkit/devices/protocol.hpp>
+#include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
@@ -359,7 +359,7 @@ TEST_CASE("a robot without encoders is read once per model period and reckons it
           "the logged times",
           "[devices]") {
   // The Hemisson's odometry is the travel the motion model gives the speeds in force, per model
-  // period, times the time they were in force (adapter.hpp, step 4). The model's step is
+  // period, times the time they were in force (record_loop.hpp, step 4). The model's step is
   // kDefaultSpeed body diameters at unit speed: 11031 / 65536 x 120 mm at 9 x 20 mm/s =
   // 112.213135 ms; its recordings default to reading once per such period.
   using namespace std::chrono_literals;

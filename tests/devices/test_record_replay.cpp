@@ -3,9 +3,9 @@
 // every way a run can end leaves a complete, replayable log (issue 13).
 #include "emulated_robot.hpp"
 
-#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/odometry.hpp>
+#include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/devices/stop_signals.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -84,9 +84,10 @@ TEST_CASE("dead reckoning from the logged odometry recovers the emulated body's 
   // frames are aligned (dead reckoning starts at the origin heading +x; the body starts where the
   // arena says, heading about +y).
   //
-  // The Hemisson reckons its travel from the times its commands were sent (adapter.hpp, step 4),
-  // while the emulator is lock-stepped (a model period per read): the two agree when the reads come
-  // once per model period, the Hemisson's default pacing, so it runs paced here, 60 steps (7 s).
+  // The Hemisson reckons its travel from the times its commands were sent (step 4 of
+  // record_loop.hpp), while the emulator is lock-stepped (a model period per read): the two agree
+  // when the reads come once per model period, the Hemisson's default pacing, so it runs paced
+  // here, 60 steps (7 s).
   for (const RobotKind robot : kRobots) {
     INFO(devices::robot_name(robot));
     const bool reckoned = robot == RobotKind::Hemisson;

@@ -5,9 +5,9 @@
 #include "emulated_robot.hpp"
 #include "webots_relay.hpp"
 
-#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/emulator.hpp>
 #include <antkit/devices/protocol.hpp>
+#include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/devices/robot.hpp>
 #include <antkit/devices/serial.hpp>
@@ -292,7 +292,7 @@ TEST_CASE("tcp: record drives the emulator served over TCP, and the log replays"
 }
 
 // Waits for the record loop's H baseline (odometry_set == 0: no G sent), in
-// devices/src/adapter.cpp.
+// devices/src/record_loop.cpp.
 TEST_CASE("khepera-webots: record against the relay and against the emulator, both replay",
           "[devices]") {
   TempDir dir;

@@ -1,8 +1,8 @@
 #pragma once
 // The controllers a robot runs under antkit, as a log sees them: built from a name, integer
 // parameters and a seed (the log header), fed integer observations, answering integer commands and
-// a state hash (the log records). record() (adapter.hpp) and replay() (replay.hpp) build them the
-// same way, so a replay is the recorded run's controller fed the recorded observations.
+// a state hash (the log records). record() (record_loop.hpp) and replay() (replay.hpp) build them
+// the same way, so a replay is the recorded run's controller fed the recorded observations.
 //
 //   buffon   paper 000's exploration behaviour (algorithms/buffon/exploration.hpp), one visit of a
 //            Buffon measurement: params trial, visit (1 lays the trail, 2 counts crossings; the

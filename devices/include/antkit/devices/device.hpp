@@ -2,7 +2,7 @@
 // One robot model for every robot antkit drives (DESIGN.md, devices/): a Device is a robot as the
 // command line names it (`--device khepera`), with what record(), replay() and emulate() need of
 // it; a registry lists them. The loops are written once, for every device:
-//   record()   (adapter.hpp) opens the port, asks the device for a Session, and runs
+//   record()   (record_loop.hpp) opens the port, asks the device for a Session, and runs
 //              start, then step after step (each step's record written and flushed before the
 //              next), then the safe stop and the stop record, on every way out;
 //   replay()   (replay.hpp) reads the log's header, finds its device by the header's robot and
@@ -20,8 +20,8 @@
 //                                              ant or ant-edge through the camera pipeline
 // Adding a robot is one set of files (its description or codec, its Session, its Device) and one
 // line in registry.cpp: CONTRIBUTING.md walks through it.
-#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/log.hpp>
+#include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/devices/serial.hpp>
 #include <antkit/kernel/grid.hpp>

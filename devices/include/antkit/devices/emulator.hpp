@@ -1,8 +1,8 @@
 #pragma once
 // Firmware emulators: a Khepera, a Hemisson, an e-puck or the Khepera in Webots (its TCP/IP relay)
 // answering its own protocol on a pseudo-terminal or over TCP, its body simulated in the Buffon
-// world (algorithms/buffon/world.hpp), so that the real adapter code (link.hpp, adapter.hpp) runs
-// end to end over a real tty.
+// world (algorithms/buffon/world.hpp), so that the real record loop (link.hpp, record_loop.hpp)
+// runs end to end over a real tty.
 //
 // The body, at the robot's own scale: the arena's unit of length is the robot's diameter (as in
 // paper 000, where the Khepera's diameter is the unit and Figure 13 scales the arenas with the
@@ -16,12 +16,13 @@
 // Time: the emulator is lock-stepped, not clocked. Each proximity read (`N`) is one control period:
 // the body first moves one simulation step at the wheel speeds in force, then senses. Every other
 // command takes no time (setting speeds, reading counters, LEDs). So a run does not depend on how
-// fast the host is, and the adapter's loop -- read sensors, decide, set speeds, read odometry -- is
+// fast the host is, and the record loop -- read sensors, decide, set speeds, read odometry -- is
 // the simulator's step. A resent `N` is a second period (on a real robot a resend costs time too).
-// A robot without encoders (the Hemisson) reckons its travel from real time (adapter.hpp, step 4):
-// the emulated body matches it when the reads come once per model period, the recording's default
-// for such a robot; read faster, the body moves a period per read while the robot reckons less (a
-// choice: lock-step keeps every emulated run independent of the host's speed).
+// A robot without encoders (the Hemisson) reckons its travel from real time (step 4 of
+// record_loop.hpp): the emulated body matches it when the reads come once per model period, the
+// recording's default for such a robot; read faster, the body moves a period per read while the
+// robot reckons less (a choice: lock-step keeps every emulated run independent of the host's
+// speed).
 //
 // Odometry: the wheel counters (Khepera H/G, e-puck Q/P) count what the wheels really turned, in
 // the robot's pulses (RobotDescription::odometry_pulse_nm) from the exact running total, so there

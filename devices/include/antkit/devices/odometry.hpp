@@ -5,7 +5,7 @@
 // Dead reckoning: the logged odometry of each step is the two wheels' cumulative travel in the
 // robot's odometry units (RobotDescription::odometry_pulse_nm: Khepera and e-puck encoder pulses;
 // for a robot without encoders, the Hemisson, micrometres of travel reckoned from the logged
-// times, see adapter.hpp).
+// times, see record_loop.hpp).
 // The heading after a step comes from the totals, not from a sum of increments:
 //     theta = theta_0 + ((R - R_0) - (L - L_0)) pulse / wheel_base,
 // so it does not drift with the number of steps (only the position integrates), and each step

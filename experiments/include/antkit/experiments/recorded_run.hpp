@@ -3,7 +3,7 @@
 // device) and, when the run is a tour (the marker-floor robot), its verdict by the oracle of
 // `antkit check stc` (testing/stc_audit.hpp). It sits here, above the devices and the checkers,
 // because it needs both (DESIGN.md, the layers).
-#include <antkit/devices/adapter.hpp>
+#include <antkit/devices/record_loop.hpp>
 #include <antkit/testing/stc_audit.hpp>
 #include <optional>
 #include <string>

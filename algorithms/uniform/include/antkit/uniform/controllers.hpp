@@ -59,10 +59,10 @@ private:
 };
 
 // The Random Wanderer for one robot that only steps and turns and sees only whether the cell ahead
-// is free: a real robot (devices/adapter.hpp), whose own sensors answer that question, and whose
-// body turns a command into a 45-degree turn or a step of one cell. Its draws are RandomWanderer's
-// for robot `robot` (the same keyed stream, purpose RandomWanderer), so fed the front-free flags
-// the simulated robot would see, it emits the simulated robot's commands.
+// is free: a real robot (devices/record_loop.hpp), whose own sensors answer that question, and
+// whose body turns a command into a 45-degree turn or a step of one cell. Its draws are
+// RandomWanderer's for robot `robot` (the same keyed stream, purpose RandomWanderer), so fed the
+// front-free flags the simulated robot would see, it emits the simulated robot's commands.
 class StepTurnWanderer {
 public:
   struct Observation {

@@ -14,8 +14,8 @@
 // (this build's codec), and the believed position and heading must follow from the commands and
 // the robot's F replies. T depends on the frames, which the log does not hold, so it is not
 // re-derived.
-#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/link.hpp>
+#include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/devices/stc_floor/link.hpp>
 #include <antkit/devices/stc_floor/pilot.hpp>

@@ -1,7 +1,8 @@
 #pragma once
-// Adapters: the bodies that carry a controller's commands out on a real robot (or an emulator)
-// over a serial link, and record(), which runs one and writes its log (DESIGN.md: a log recorded on
-// a robot replays through the same controller and must reproduce every command it recorded).
+// The record loop: the bodies (adapters) that carry a controller's commands out on a real robot
+// (or an emulator) over a serial link, and record(), which runs one and writes its log (DESIGN.md:
+// a log recorded on a robot replays through the same controller and must reproduce every command
+// it recorded).
 //
 // One control step, for every robot:
 //   1. read the proximity sensors (`N`) and decode them; the controller's observation comes from

@@ -1,11 +1,11 @@
-// The robot bodies under the controller contract, and record() (adapter.hpp).
+// The robot bodies under the controller contract, and record() (record_loop.hpp).
 #include "body.hpp"
 
 #include <antkit/buffon/world.hpp>
-#include <antkit/devices/adapter.hpp>
 #include <antkit/devices/device.hpp>
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/odometry.hpp>
+#include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/stop_signals.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
