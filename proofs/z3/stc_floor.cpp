@@ -483,13 +483,12 @@ std::string command_name(const stc::Command& c) {
 int main(int argc, char** argv) {
   std::optional<stc::Marker> only_marker;
   for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
+    const std::string arg = argv[i], value = i + 1 < argc ? argv[i + 1] : "";
     if (arg == "--first-failure") {
       first_failure_ends = true;
-    } else if (arg == "--marker" && i + 1 < argc &&
-               (std::string(argv[i + 1]) == "marks" || std::string(argv[i + 1]) == "edges")) {
-      only_marker =
-          std::string(argv[++i]) == "edges" ? stc::Marker::Edge : stc::Marker::WholeSubCell;
+    } else if (arg == "--marker" && (value == "marks" || value == "edges")) {
+      only_marker = value == "edges" ? stc::Marker::Edge : stc::Marker::WholeSubCell;
+      ++i;
     } else {
       std::cerr << "usage: " << argv[0] << " [--first-failure] [--marker marks|edges]\n";
       return 2;
