@@ -95,6 +95,6 @@ void register_arena(CLI::App& app) {
   sub->callback([options] { run(*options); });
 }
 
-const antkit::cli::Registration reg{"arena", &register_arena};
+const antkit::cli::Registration arena_registration{"arena", &register_arena};
 
 } // namespace

@@ -174,6 +174,6 @@ void register_buffon(CLI::App& app) {
   });
 }
 
-const antkit::cli::Registration reg{"buffon", &register_buffon};
+const antkit::cli::Registration buffon_registration{"buffon", &register_buffon};
 
 } // namespace

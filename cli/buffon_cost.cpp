@@ -119,6 +119,6 @@ void register_buffon_cost(CLI::App& app) {
   });
 }
 
-const antkit::cli::Registration reg{"buffon-cost", &register_buffon_cost};
+const antkit::cli::Registration buffon_cost_registration{"buffon-cost", &register_buffon_cost};
 
 } // namespace

@@ -95,7 +95,7 @@ void register_buffon_experiment(CLI::App& app) {
 }
 
 // "trials" and "steps per visit" are main.cpp's words every command shows alike.
-const antkit::cli::Registration reg{
+const antkit::cli::Registration buffon_experiment_registration{
     "buffon-experiment", &register_buffon_experiment, {{"figure", "--figure"}}};
 
 } // namespace

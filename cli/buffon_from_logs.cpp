@@ -81,7 +81,7 @@ void register_from_logs(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{
+const antkit::cli::Registration buffon_from_logs_registration{
     "buffon-from-logs", &register_from_logs, {{"arena spec", "--arena"}}};
 
 } // namespace

@@ -168,13 +168,13 @@ void register_campaign(CLI::App& app) {
 }
 
 // campaign::validate()'s words for its inputs, as this command's options.
-const antkit::cli::Registration reg{"campaign",
-                                    &register_campaign,
-                                    {{"cases", "--cases"},
-                                     {"first case", "--first"},
-                                     {"largest map", "--max-size"},
-                                     {"time limit", "--time"},
-                                     {"variants", "--variants"}}};
+const antkit::cli::Registration campaign_registration{"campaign",
+                                                      &register_campaign,
+                                                      {{"cases", "--cases"},
+                                                       {"first case", "--first"},
+                                                       {"largest map", "--max-size"},
+                                                       {"time limit", "--time"},
+                                                       {"variants", "--variants"}}};
 
 } // namespace
 #endif

@@ -138,6 +138,6 @@ void register_check(CLI::App& app) {
   cover->callback([v] { run_cover(*v); });
 }
 
-const antkit::cli::Registration reg{"check", &register_check};
+const antkit::cli::Registration check_registration{"check", &register_check};
 
 } // namespace

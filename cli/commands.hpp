@@ -1,7 +1,11 @@
 #pragma once
 // Each subcommand lives in its own file and registers itself at static-initialisation time:
 //
-//   namespace { const antkit::cli::Registration reg{"arena", &register_arena}; }
+//   namespace { const antkit::cli::Registration arena_registration{"arena", &register_arena}; }
+//
+// The registration is named for its file: cli/ compiles as a unity build (several files in one
+// translation unit, cli/CMakeLists.txt), so names in a file's anonymous namespace must not repeat
+// another file's.
 //
 // main() adds the registered subcommands in name order, so `antkit --help` is stable and no file
 // but the subcommand's own changes when a subcommand is added. The file is named for the command
@@ -10,7 +14,8 @@
 // Plumbing that only the project's own scripts and tests call (the Cortex-M image's input writers
 // for scripts/run-on-mcu.sh) registers under `antkit dev` (dev.cpp), out of the user's list:
 //
-//   namespace { const antkit::cli::DevRegistration reg{"stc-mcu-input", &register_fn}; }
+//   namespace { const antkit::cli::DevRegistration dev_stc_mcu_input_registration{"stc-mcu-input",
+//   &register_fn}; }
 //
 // in dev_stc_mcu_input.cpp. Names are unique across both groups (one registry).
 //
@@ -20,8 +25,9 @@
 // is --size), so a subcommand whose library calls throw words of their own registers its words
 // with it:
 //
-//   const antkit::cli::Registration reg{"campaign", &register_campaign,
-//                                       {{"largest map", "--max-size"}, {"time limit", "--time"}}};
+//   const antkit::cli::Registration campaign_registration{"campaign", &register_campaign,
+//                                                         {{"largest map", "--max-size"}, {"time
+//                                                         limit", "--time"}}};
 //
 // main.cpp's shown() looks up where() in the words of the subcommand that ran, then in the words
 // every command shows alike (main.cpp), and otherwise shows where() as it is (a file position, a

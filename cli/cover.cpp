@@ -110,6 +110,6 @@ void register_cover(CLI::App& app) {
   sub->callback([o] { antkit::cli::emit(run_cover(*o), o->format, std::cout); });
 }
 
-const antkit::cli::Registration reg{"cover", &register_cover};
+const antkit::cli::Registration cover_registration{"cover", &register_cover};
 
 } // namespace

@@ -119,6 +119,7 @@ void register_cover_experiment(CLI::App& app) {
   });
 }
 
-const antkit::cli::Registration reg{"cover-experiment", &register_cover_experiment};
+const antkit::cli::Registration cover_experiment_registration{"cover-experiment",
+                                                              &register_cover_experiment};
 
 } // namespace

@@ -25,6 +25,6 @@ void register_dev(CLI::App& app) {
     if (command.group == antkit::cli::Group::dev) command.registrar(*dev);
 }
 
-const antkit::cli::Registration reg{"dev", &register_dev};
+const antkit::cli::Registration dev_registration{"dev", &register_dev};
 
 } // namespace

@@ -67,6 +67,7 @@ void register_buffon_mcu_input(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::DevRegistration reg{"buffon-mcu-input", &register_buffon_mcu_input};
+const antkit::cli::DevRegistration dev_buffon_mcu_input_registration{"buffon-mcu-input",
+                                                                     &register_buffon_mcu_input};
 
 } // namespace

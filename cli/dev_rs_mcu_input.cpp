@@ -98,6 +98,7 @@ void register_rs_mcu_input(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::DevRegistration reg{"rs-mcu-input", &register_rs_mcu_input};
+const antkit::cli::DevRegistration dev_rs_mcu_input_registration{"rs-mcu-input",
+                                                                 &register_rs_mcu_input};
 
 } // namespace

@@ -61,6 +61,7 @@ void register_stc_mcu_input(CLI::App& app) {
   mcu->callback([m] { run(*m); });
 }
 
-const antkit::cli::DevRegistration reg{"stc-mcu-input", &register_stc_mcu_input};
+const antkit::cli::DevRegistration dev_stc_mcu_input_registration{"stc-mcu-input",
+                                                                  &register_stc_mcu_input};
 
 } // namespace

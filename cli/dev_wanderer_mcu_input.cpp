@@ -72,6 +72,7 @@ void register_wanderer_mcu_input(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::DevRegistration reg{"wanderer-mcu-input", &register_wanderer_mcu_input};
+const antkit::cli::DevRegistration dev_wanderer_mcu_input_registration{
+    "wanderer-mcu-input", &register_wanderer_mcu_input};
 
 } // namespace

@@ -144,19 +144,19 @@ void register_emulate(CLI::App& app) {
 }
 
 // devices::emulate()'s words for its inputs (device.hpp, emulator.hpp), as this command's options.
-const antkit::cli::Registration reg{"emulate",
-                                    &register_emulate,
-                                    {{"arena spec", "--arena"},
-                                     {"fault", "--fault"},
-                                     {"pacing", "--pace"},
-                                     {"listen address", "--listen"},
-                                     {"floor map", "--map"},
-                                     {"start sub-cell", "--start"},
-                                     {"start heading", "--heading"},
-                                     {"camera noise", "--noise"},
-                                     {"dark offset", "--dark-offset"},
-                                     {"fade half-life", "--fade"},
-                                     {"rotation error", "--rotation-error"},
-                                     {"drift", "--drift"}}};
+const antkit::cli::Registration emulate_registration{"emulate",
+                                                     &register_emulate,
+                                                     {{"arena spec", "--arena"},
+                                                      {"fault", "--fault"},
+                                                      {"pacing", "--pace"},
+                                                      {"listen address", "--listen"},
+                                                      {"floor map", "--map"},
+                                                      {"start sub-cell", "--start"},
+                                                      {"start heading", "--heading"},
+                                                      {"camera noise", "--noise"},
+                                                      {"dark offset", "--dark-offset"},
+                                                      {"fade half-life", "--fade"},
+                                                      {"rotation error", "--rotation-error"},
+                                                      {"drift", "--drift"}}};
 
 } // namespace

@@ -195,6 +195,6 @@ void register_explore(CLI::App& app) {
   sub->callback([opts] { antkit::cli::emit(run(*opts), opts->format, std::cout); });
 }
 
-const antkit::cli::Registration reg{"explore", &register_explore};
+const antkit::cli::Registration explore_registration{"explore", &register_explore};
 
 } // namespace

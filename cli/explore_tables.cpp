@@ -82,6 +82,7 @@ void register_explore_tables(CLI::App& app) {
   });
 }
 
-const antkit::cli::Registration reg{"explore-tables", &register_explore_tables};
+const antkit::cli::Registration explore_tables_registration{"explore-tables",
+                                                            &register_explore_tables};
 
 } // namespace

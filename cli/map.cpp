@@ -98,6 +98,6 @@ void register_map(CLI::App& app) {
   });
 }
 
-const antkit::cli::Registration reg{"map", &register_map};
+const antkit::cli::Registration map_registration{"map", &register_map};
 
 } // namespace

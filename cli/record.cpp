@@ -202,7 +202,7 @@ void register_record(CLI::App& app) {
 }
 
 // devices::record()'s words for its inputs (record_loop.hpp, serial.hpp) as this command's options.
-const antkit::cli::Registration reg{
+const antkit::cli::Registration record_registration{
     "record",
     &register_record,
     {{"device", "--device"},

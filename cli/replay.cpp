@@ -60,6 +60,6 @@ void register_replay(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{"replay", &register_replay};
+const antkit::cli::Registration replay_registration{"replay", &register_replay};
 
 } // namespace

@@ -115,7 +115,7 @@ void register_reproduce(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{
+const antkit::cli::Registration reproduce_registration{
     "reproduce", &register_reproduce, {{"output directory", "--out"}, {"families", "--only"}}};
 
 } // namespace

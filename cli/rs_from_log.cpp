@@ -41,6 +41,6 @@ void register_rs(CLI::App& app) {
   });
 }
 
-const antkit::cli::Registration reg{"rs-from-log", &register_rs};
+const antkit::cli::Registration rs_from_log_registration{"rs-from-log", &register_rs};
 
 } // namespace

@@ -118,6 +118,6 @@ void register_stc(CLI::App& app) {
   cmd->callback([o] { run_stc_command(*o); });
 }
 
-const antkit::cli::Registration reg{"stc", &register_stc};
+const antkit::cli::Registration stc_registration{"stc", &register_stc};
 
 } // namespace

@@ -100,6 +100,7 @@ void register_calibrate(CLI::App& app) {
   sub->callback([o] { run(*o); });
 }
 
-const antkit::cli::Registration reg{"stc-floor-calibrate", &register_calibrate};
+const antkit::cli::Registration stc_floor_calibrate_registration{"stc-floor-calibrate",
+                                                                 &register_calibrate};
 
 } // namespace

@@ -77,6 +77,7 @@ void register_floor_experiment(CLI::App& app) {
   sub->callback([c] { run(*c); });
 }
 
-const antkit::cli::Registration reg{"stc-floor-experiment", &register_floor_experiment};
+const antkit::cli::Registration stc_floor_experiment_registration{"stc-floor-experiment",
+                                                                  &register_floor_experiment};
 
 } // namespace

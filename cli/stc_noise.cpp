@@ -101,6 +101,6 @@ void register_stc_noise(CLI::App& app) {
   noise->callback([n] { run_noise_command(*n); });
 }
 
-const antkit::cli::Registration reg{"stc-noise", &register_stc_noise};
+const antkit::cli::Registration stc_noise_registration{"stc-noise", &register_stc_noise};
 
 } // namespace

@@ -1,6 +1,6 @@
 # Compile flags every antkit target gets, through the INTERFACE target antkit_options (not exported:
 # a consumer of the installed package keeps its own flags, but the kernel's headers still carry
-# -ffp-contract=off through antkit::kernel, see geometry/CMakeLists.txt).
+# -ffp-contract=off through antkit::kernel, see kernel/CMakeLists.txt).
 add_library(antkit_options INTERFACE)
 target_compile_options(antkit_options INTERFACE
   -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion -Wnon-virtual-dtor

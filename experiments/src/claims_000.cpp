@@ -73,7 +73,7 @@ std::vector<Part> fig5_pairs(const ClaimInputs& in, double from, double to, doub
   return parts;
 }
 
-const std::vector<ClaimSpec> kClaims = {
+const std::vector<ClaimSpec> kPaper000Claims = {
     {"000-1", "buffon", "Figure 5, section 6.1",
      "nBC of square and circular arenas of equal area agree for all but the two smallest sizes.",
      "nBC values for square and circular arenas are approximately the same for all sizes except "
@@ -494,7 +494,7 @@ const std::vector<ClaimSpec> kClaims = {
 } // namespace
 
 const std::vector<ClaimSpec>& claims_000() {
-  return kClaims;
+  return kPaper000Claims;
 }
 
 } // namespace antkit::experiments

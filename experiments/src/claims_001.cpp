@@ -45,7 +45,7 @@ std::vector<Part> magnitude_parts(const ClaimInputs& in, std::size_t method, boo
 const char* kShengNote = "\"Sheng et al.\" is our frontier baseline without sweeping (the "
                          "original method; explore_tables.hpp)";
 
-const std::vector<ClaimSpec> kClaims = {
+const std::vector<ClaimSpec> kPaper001Claims = {
     {"001-1",
      "los",
      "Table 2, section III",
@@ -190,7 +190,7 @@ const std::vector<ClaimSpec> kClaims = {
 } // namespace
 
 const std::vector<ClaimSpec>& claims_001() {
-  return kClaims;
+  return kPaper001Claims;
 }
 
 } // namespace antkit::experiments

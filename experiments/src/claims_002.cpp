@@ -45,7 +45,7 @@ std::string failures(const ClaimInputs& in) {
   return out;
 }
 
-const std::vector<ClaimSpec> kClaims = {
+const std::vector<ClaimSpec> kPaper002Claims = {
     {"002-1", "stc", "Task description, the ant-like STC algorithm",
      "Ant-like STC passes exactly once over every sub-cell and returns to the cell where it "
      "started.",
@@ -153,7 +153,7 @@ const std::vector<ClaimSpec> kClaims = {
 } // namespace
 
 const std::vector<ClaimSpec>& claims_002() {
-  return kClaims;
+  return kPaper002Claims;
 }
 
 } // namespace antkit::experiments

@@ -29,7 +29,7 @@ double mean_minus_mean(const Samples& s) {
   return mean(s[0]) - mean(s[1]);
 }
 
-const std::vector<ClaimSpec> kClaims = {
+const std::vector<ClaimSpec> kPaper004Claims = {
     {"004-2", "uniform", "Tables 1-4, results", "A* reaches 100 % coverage in every row.",
      "It is obvious that A* produces superior coverage in all four control studies. (Tables 1-4: "
      "100.0 % in every row.)",
@@ -279,7 +279,7 @@ const std::vector<ClaimSpec> kClaims = {
 } // namespace
 
 const std::vector<ClaimSpec>& claims_004() {
-  return kClaims;
+  return kPaper004Claims;
 }
 
 } // namespace antkit::experiments

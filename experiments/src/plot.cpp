@@ -33,7 +33,7 @@ using detail::text;
 
 // One axis: its data range, then its drawn range (decades on a log axis, or 1, 2, 5 times a power
 // of ten when it spans little, "nice" round steps on a linear one) and its ticks.
-struct Scale {
+struct AxisRange {
   bool log = false;
   bool fine = false; // a log axis short enough to label 2 and 5 times a decade too
   double lo = std::numeric_limits<double>::infinity(),
@@ -130,7 +130,7 @@ std::string log_label(int m, int k) {
 // The ticks of an axis: (value, labelled) pairs; a log axis has its decades labelled (and 2 and 5
 // when it is fine) and the others as light lines, a linear one its steps; categories label 0, 1, 2.
 std::vector<std::pair<double, std::string>>
-ticks(const Scale& sc, const std::vector<std::string>& categories, std::vector<double>& minor) {
+ticks(const AxisRange& sc, const std::vector<std::string>& categories, std::vector<double>& minor) {
   std::vector<std::pair<double, std::string>> major;
   if (!categories.empty()) {
     for (std::size_t i = 0; i < categories.size(); ++i)
@@ -291,8 +291,8 @@ Layout layout(const Figure& f) {
 }
 
 // The y scale of the panels that share the figure's axis (own = false), or of one panel's own.
-Scale y_scale(const Figure& f, const PlotPanel* own) {
-  Scale yr;
+AxisRange y_scale(const Figure& f, const PlotPanel* own) {
+  AxisRange yr;
   yr.log = (own != nullptr ? *own->y_axis : f.y_axis) == Axis::Log;
   const auto add_panel = [&](const PlotPanel& panel) {
     for (const auto& s : panel.series)
@@ -319,7 +319,7 @@ Scale y_scale(const Figure& f, const PlotPanel* own) {
 void draw(cairo_t* cr, const Figure& f, const Layout& l) {
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
-  Scale xr;
+  AxisRange xr;
   xr.log = f.x_axis == Axis::Log;
   for (const auto& panel : f.panels)
     for (const auto& s : panel.series)
@@ -331,7 +331,7 @@ void draw(cairo_t* cr, const Figure& f, const Layout& l) {
     xr.finish(false);
     xr.pad(true);
   }
-  const Scale shared_y = y_scale(f, nullptr);
+  const AxisRange shared_y = y_scale(f, nullptr);
   cairo_set_source_rgb(cr, 0, 0, 0);
   text(cr, l.width / 2, 22, f.title, 17, 0.5, 0.5, true);
   // The caption at 12 px, smaller if its longest line would not fit the picture's width.
@@ -352,7 +352,7 @@ void draw(cairo_t* cr, const Figure& f, const Layout& l) {
   const auto x_major = ticks(xr, f.x_categories, x_minor);
   for (std::size_t k = 0; k < f.panels.size(); ++k) {
     const PlotPanel& panel = f.panels[k];
-    const Scale yr = panel.y_axis ? y_scale(f, &panel) : shared_y;
+    const AxisRange yr = panel.y_axis ? y_scale(f, &panel) : shared_y;
     std::vector<double> y_minor;
     const auto y_major = ticks(yr, {}, y_minor);
     const std::size_t column = k % l.columns, row = k / l.columns;
