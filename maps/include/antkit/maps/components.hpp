@@ -1,11 +1,11 @@
 #pragma once
 // Cell counts and 4-connected components of the free cells of an occupancy grid.
 //
-// Header-only, integers and the standard library only, so that the algorithms layer (which may not
-// link the geometry library) can ask the same question a map's `antkit map info` answers: how much
-// free space is reachable from where. Unknown cells are not free: a component is a maximal set of
-// Free cells joined through E, N, W, S neighbours (kernel::kNeighbours4), and cells outside the
-// grid are blocked.
+// Header-only, integers and the standard library only (no CGAL): it answers the question
+// `antkit map info` asks of a map (how much free space is reachable from where) wherever maps may
+// be used (the layer table in cmake/AntkitLayers.cmake; the map fuzz targets check their maps with
+// it). Unknown cells are not free: a component is a maximal set of Free cells joined through E, N,
+// W, S neighbours (kernel::kNeighbours4), and cells outside the grid are blocked.
 //
 // The search is iterative (an explicit stack of cell indices), so a 1000 x 1000 serpentine corridor
 // cannot overflow the call stack, and it visits cells in one fixed order, so labels are the same on
