@@ -42,18 +42,18 @@ double sample_deviation(const std::vector<double>& v) {
 }
 
 ExploreTables run_explore_tables(std::uint64_t seed, const algorithms::Runner& runner) {
-  struct Unit {
+  struct WorkUnit {
     std::size_t env, method;
     int trial;
   };
-  std::vector<Unit> units;
+  std::vector<WorkUnit> units;
   for (std::size_t e = 0; e < kExploreEnvironments.size(); ++e)
     for (std::size_t m = 0; m < kExploreMethods; ++m)
       for (int t = 1; t <= kExploreEnvironments[e].repetitions; ++t) units.push_back({e, m, t});
   const kernel::Cell corner{0, 24};
   const auto payloads =
       algorithms::run_units(runner, "paper 001, tables 2-3", units.size(), [&](std::uint64_t u) {
-        const Unit& unit = units[u];
+        const WorkUnit& unit = units[u];
         const auto& env = kExploreEnvironments[unit.env];
         const auto trial = static_cast<std::uint64_t>(unit.trial);
         const auto grid =
