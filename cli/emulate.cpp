@@ -120,7 +120,8 @@ void register_emulate(CLI::App& app) {
                   "Seed of the emulator's keyed streams (start, faults; stc-floor: noise)");
   sub->add_option("--fault", o->faults,
                   "A fault: delay=P:MS, garbage=P, drop=P, cut=P (P per command) or "
-                  "disconnect=N (after N commands); may be repeated");
+                  "disconnect=N (after N commands) or silent=N (no answer after N commands); may "
+                  "be repeated");
   sub->add_flag("--pace", o->pace, "Pace replies at the robot's baud rate and command latency");
   o->listen_opt = sub->add_option("--listen", o->listen,
                                   "Serve over TCP on HOST:PORT instead of a pty (PORT 0: any free "

@@ -117,6 +117,9 @@ int main(int argc, char** argv) {
   } catch (const antkit::cli::CheckFailed& e) {
     std::cerr << "antkit: check failed: " << e.what() << '\n';
     return 1;
+  } catch (const antkit::cli::Interrupted& e) {
+    std::cerr << "antkit: " << e.what() << '\n';
+    return e.status();
   } catch (const std::exception& e) {
     // Not a bad input we recognised, and not a crash: report it as an internal error.
     std::cerr << "antkit: internal error: " << e.what() << '\n';

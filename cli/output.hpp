@@ -43,4 +43,16 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// A run a stop signal ended (after its safe stop, with the robot known to be stopped): exit status
+// 128 + the signal's number, as a shell reports a process the signal killed (130 for SIGINT, 143
+// SIGTERM, 129 SIGHUP, 131 SIGQUIT), so that `record ... && record ...` stops at the first.
+class Interrupted : public std::runtime_error {
+public:
+  Interrupted(int signal, const std::string& what) : std::runtime_error(what), signal_(signal) {}
+  [[nodiscard]] int status() const noexcept { return 128 + signal_; }
+
+private:
+  int signal_;
+};
+
 } // namespace antkit::cli

@@ -3,7 +3,7 @@
 //                 --controller buffon|rs|wander
 //                 [--seed S] [--trial T] [--visit V] [--param KEY=VALUE ...] [--steps N]
 //                 [--baud B] [--framing 8N1|8N2|...] [--timeout MS] [--tries N] [--period MS]
-//                 [--arena SPEC] --out LOG [--force] [--format table|json]
+//                 [--stop-within MS] [--arena SPEC] --out LOG [--force] [--format table|json]
 //   antkit record --device stc-floor --port PATH --controller ant|ant-edge [--map F] [--start X,Y]
 //                 [--heading D] [--calibration F.json] [--turn-ms T] [--led-ms L] [--steps N]
 //                 [--baud B] [--framing F] [--timeout MS] [--tries N] --out LOG [--force]
@@ -46,7 +46,7 @@ struct RecordCommand {
   std::uint64_t seed = 1;
   std::int64_t trial = -1, visit = -1;
   std::vector<std::string> params;
-  std::int64_t steps = 1000, timeout_ms = 250, tries = 12, period_ms = -1;
+  std::int64_t steps = 1000, timeout_ms = 250, tries = 12, period_ms = -1, stop_within_ms = 10000;
   Format format = Format::Table;
   // stc-floor
   std::string map, start, calibration;
@@ -68,6 +68,11 @@ void line_and_link(const RecordCommand& c, devices::RecordOptions& o) {
   if (c.tries < 1 || c.tries > 100) throw InputError("--tries", "expected 1 to 100 sends");
   o.link.timeout = std::chrono::milliseconds(c.timeout_ms);
   o.link.tries = static_cast<std::uint32_t>(c.tries);
+  if (c.stop_within_ms < 1 || c.stop_within_ms > 600000)
+    throw InputError("--stop-within", "expected milliseconds in [1, 600000]");
+  o.link.stop_within = std::chrono::milliseconds(c.stop_within_ms);
+  // A safe stop that takes long says what it is doing (on every stderr: the user may be waiting).
+  o.link.on_stop_notice = [](const std::string& what) { std::cerr << "antkit: " << what << '\n'; };
 }
 
 void run(const RecordCommand& c) {
@@ -146,6 +151,8 @@ void run(const RecordCommand& c) {
   if (r.succeeded()) return;
   if (!s.safe_stop.stopped)
     throw antkit::cli::CheckFailed("the robot may still be moving: " + s.safe_stop.failure);
+  if (s.kind == devices::StopKind::Interrupted)
+    throw antkit::cli::Interrupted(s.signal, s.stop + " (the robot is stopped)");
   if (s.kind != devices::StopKind::Done)
     throw antkit::cli::CheckFailed("the run stopped early: " + s.stop);
   throw antkit::cli::CheckFailed("the tour is not a coverage tour: " + r.tour_broken);
@@ -185,6 +192,9 @@ void register_record(CLI::App& app) {
   sub->add_option("--baud", c->baud, "Baud rate (default the robot's)");
   sub->add_option("--framing", c->framing, "Framing such as 8N1 or 8N2 (default the robot's)");
   sub->add_option("--timeout", c->timeout_ms, "Reply timeout in milliseconds (default 250)");
+  sub->add_option("--stop-within", c->stop_within_ms,
+                  "The safe stop gives up after this many milliseconds (default 10000; Ctrl-C "
+                  "again gives up at once)");
   sub->add_option("--tries", c->tries,
                   "Sends of a command before giving up (default 12, see devices/link.hpp)");
   sub->add_option("--period", c->period_ms,

@@ -81,8 +81,8 @@ FaultSpec parse_faults(const std::vector<std::string>& specs) {
     const auto eq = spec.find('=');
     if (eq == std::string::npos)
       throw InputError("fault", "'" + spec +
-                                    "': expected delay=P:MS, garbage=P, drop=P, cut=P or "
-                                    "disconnect=N");
+                                    "': expected delay=P:MS, garbage=P, drop=P, cut=P, "
+                                    "disconnect=N or silent=N");
     const std::string kind = spec.substr(0, eq);
     const std::string_view value = std::string_view(spec).substr(eq + 1);
     if (kind == "delay") {
@@ -99,9 +99,11 @@ FaultSpec parse_faults(const std::vector<std::string>& specs) {
       f.cut_ppm = parse_probability(value, spec);
     } else if (kind == "disconnect") {
       f.disconnect_after = parse_count(value, spec, 1000000000);
+    } else if (kind == "silent") {
+      f.silent_after = parse_count(value, spec, 1000000000);
     } else {
       throw InputError("fault", "unknown fault '" + kind +
-                                    "': expected delay, garbage, drop, cut or disconnect");
+                                    "': expected delay, garbage, drop, cut, disconnect or silent");
     }
   }
   return f;
@@ -261,6 +263,10 @@ FirmwareEmulator::Response FirmwareEmulator::handle(std::string_view line) {
       session_commands_ > static_cast<std::uint64_t>(f.disconnect_after)) {
     ++faults_;
     out.hang_up = true;
+    return out;
+  }
+  if (f.silent_after >= 0 && session_commands_ > static_cast<std::uint64_t>(f.silent_after)) {
+    ++faults_; // read, never answered, never acted on: the line stays open
     return out;
   }
   std::string reply;

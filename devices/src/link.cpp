@@ -1,6 +1,7 @@
 // One command, one validated reply, with resends; the confirmed safe stop (link.hpp).
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/stop_signals.hpp>
+#include <functional>
 #include <thread>
 
 namespace antkit::devices {
@@ -94,6 +95,15 @@ std::string RobotLink::transact(const std::string& command, std::vector<Exchange
       ++stats_.retries;
       std::this_thread::sleep_for(backoff_for(options_, attempt));
     }
+    // A stop signal that came between two waits (a blocked wait returns EINTR at once): no new
+    // send after it.
+    if (StopSignals::requested())
+      throw LinkError(LinkError::Kind::Interrupted,
+                      port_.name() + ": interrupted by a stop signal");
+    if (deadline_ && Clock::now() >= *deadline_)
+      throw LinkError(LinkError::Kind::Timeout,
+                      port_.name() + ": the safe stop's time is up" +
+                          (why.empty() ? std::string() : " (last: " + why + ")"));
     const auto silent =
         std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - last_ok_);
     if (options_.watchdog.count() > 0 && silent > options_.watchdog)
@@ -161,64 +171,113 @@ namespace detail {
 
 SafeStopResult safe_stop_steps(CommandLink& link, std::vector<Exchange>& io) {
   SafeStopResult out;
-  {
-    const Codec& codec = link.codec();
-    const auto& o = link.options();
-    const auto rounds = std::max<std::uint32_t>(1, o.stop_rounds);
-    const auto commands = codec.safe_stop();
-    bool wheels_acknowledged = false, gone = false;
-    for (std::size_t i = 0; i < commands.size() && !gone; ++i) {
-      bool acknowledged = false;
-      std::string why;
-      for (std::uint32_t round = 0; round < rounds && !acknowledged; ++round) {
-        if (round > 0) link.pause(o.backoff_max);
-        StopSignals::reset(); // a second Ctrl-C must not cut the stop short
-        link.rearm();
-        try {
-          link.transact(commands[i], io);
-          acknowledged = true;
-        } catch (const LinkError& e) {
-          why = e.what();
-          gone = e.kind() == LinkError::Kind::Disconnected;
-          if (gone) break;
+  const Codec& codec = link.codec();
+  const auto& o = link.options();
+  const auto rounds = std::max<std::uint32_t>(1, o.stop_rounds);
+  const auto commands = codec.safe_stop();
+  const auto began = Clock::now();
+  const auto deadline = began + o.stop_within;
+  link.set_deadline(deadline);
+  const auto notice = [&](const std::string& what) {
+    if (o.on_stop_notice) o.on_stop_notice(what);
+  };
+  const auto time_up = [&] { return Clock::now() >= deadline; };
+  const auto add = [&](const std::string& what) {
+    out.failure += (out.failure.empty() ? "" : "; ") + what;
+  };
+  const auto gave_up = [&] {
+    return "gave up after " + std::to_string(o.stop_within.count()) + " ms (--stop-within)";
+  };
+  // A stop signal during the stop (a second Ctrl-C; the record loop took the first) ends it here.
+  bool cut = false, gone = false, late = false;
+  // One command until acknowledged: its rounds of tries, with a word between rounds when the
+  // robot has not answered.
+  const auto until_acknowledged = [&](const std::string& command, const std::string& name,
+                                      const std::function<bool(const std::string&)>& accept,
+                                      std::string& why) {
+    for (std::uint32_t round = 0; round < rounds; ++round) {
+      if (round > 0) {
+        if (time_up()) {
+          late = true;
+          return false;
+        }
+        notice("no acknowledgement of " + name + " yet (" + why + "); round " +
+               std::to_string(round + 1) + " of " + std::to_string(rounds) +
+               " (Ctrl-C again to give up)");
+        link.pause(o.backoff_max);
+      }
+      link.rearm();
+      try {
+        if (accept(link.transact(command, io))) return true;
+      } catch (const LinkError& e) {
+        why = e.what();
+        if (e.kind() == LinkError::Kind::Interrupted) {
+          cut = true;
+          return false;
+        }
+        if (e.kind() == LinkError::Kind::Disconnected) {
+          gone = true;
+          return false;
+        }
+        if (time_up()) {
+          late = true;
+          return false;
         }
       }
-      if (i == 0) wheels_acknowledged = acknowledged;
-      if (!acknowledged)
-        out.failure += (out.failure.empty() ? "" : "; ") + printable(commands[i]) +
-                       " not acknowledged (" + why + ")";
     }
-    out.acknowledged = out.stopped = wheels_acknowledged;
-    // Confirmed by the robot's own state: the speeds read back as zero.
-    if (wheels_acknowledged && !gone && codec.robot().reads_speed) {
-      out.stopped = false;
+    return false;
+  };
+
+  bool wheels_acknowledged = false;
+  for (std::size_t i = 0; i < commands.size(); ++i) {
+    if (i > 0 && (!wheels_acknowledged || cut || gone || late)) {
+      // The wheels' stop was not acknowledged (the rest, LEDs off, would only cost more time), or
+      // the stop ended.
+      std::string rest;
+      for (std::size_t k = i; k < commands.size(); ++k)
+        rest += (rest.empty() ? "" : ", ") + printable(commands[k]);
+      add(rest + " not sent" +
+          (wheels_acknowledged ? "" : " (the wheels' stop was not acknowledged)"));
+      break;
+    }
+    std::string why;
+    const bool acknowledged = until_acknowledged(
+        commands[i], "'" + printable(commands[i]) + "'", [](const std::string&) { return true; },
+        why);
+    if (i == 0) wheels_acknowledged = acknowledged;
+    if (!acknowledged) add(printable(commands[i]) + " not acknowledged (" + why + ")");
+  }
+  out.acknowledged = out.stopped = wheels_acknowledged;
+  // Confirmed by the robot's own state: the speeds read back as zero.
+  if (wheels_acknowledged && codec.robot().reads_speed) {
+    out.stopped = false;
+    if (cut || gone || late) {
+      add("wheels not confirmed at 0 (not read back)");
+    } else {
       std::string why = "no reading";
-      for (std::uint32_t round = 0; round < rounds && !out.stopped; ++round) {
-        if (round > 0) link.pause(o.backoff_max);
-        StopSignals::reset();
-        link.rearm();
-        try {
-          const auto speeds = codec.decode_speed(link.transact(codec.read_speed(), io));
-          if (speeds && speeds.value->left == 0 && speeds.value->right == 0) {
-            out.stopped = true;
-          } else {
+      out.stopped = until_acknowledged(
+          codec.read_speed(), "the wheels at 0, 0",
+          [&](const std::string& reply) {
+            const auto speeds = codec.decode_speed(reply);
+            if (speeds && speeds.value->left == 0 && speeds.value->right == 0) return true;
             why = speeds ? "the robot reads back speeds " + std::to_string(speeds.value->left) +
                                ", " + std::to_string(speeds.value->right)
                          : "a bad speed reply";
             // Not at zero: the wheels command again before the next reading.
             link.transact(commands[0], io);
-          }
-        } catch (const LinkError& e) {
-          why = e.what();
-          if (e.kind() == LinkError::Kind::Disconnected) break;
-        }
-      }
-      if (!out.stopped)
-        out.failure += (out.failure.empty() ? "" : "; ") +
-                       std::string("wheels not confirmed at 0 (") + why + ")";
+            return false;
+          },
+          why);
+      if (!out.stopped) add("wheels not confirmed at 0 (" + why + ")");
     }
-    out.complete = out.failure.empty();
   }
+  if (cut) add("cut short by a stop signal");
+  if (late) {
+    add(gave_up());
+    notice("the safe stop " + gave_up());
+  }
+  link.set_deadline(std::nullopt);
+  out.complete = out.failure.empty();
   return out;
 }
 

@@ -60,7 +60,18 @@ void wander_move(detail::Body& body, uniform::Action action, std::vector<Exchang
 }
 
 std::string signal_name(int sig) {
-  return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "signal " + std::to_string(sig);
+  switch (sig) {
+  case SIGINT:
+    return "SIGINT";
+  case SIGTERM:
+    return "SIGTERM";
+  case SIGHUP:
+    return "SIGHUP";
+  case SIGQUIT:
+    return "SIGQUIT";
+  default:
+    return "signal " + std::to_string(sig);
+  }
 }
 
 } // namespace
@@ -253,7 +264,8 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
   } catch (const LinkError& e) {
     if (e.kind() == LinkError::Kind::Interrupted) {
       summary.kind = StopKind::Interrupted;
-      detail = signal_name(StopSignals::signal());
+      summary.signal = StopSignals::signal();
+      detail = signal_name(summary.signal);
     } else {
       summary.kind = StopKind::Link;
       detail = std::string(link_error_name(e.kind())) + ": " + e.what();
@@ -262,10 +274,14 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
     summary.kind = StopKind::Error;
     detail = e.what();
   }
-  // The safe stop: a pending stop signal would interrupt it, so it is taken first (the stop
-  // reason already says it came).
+  // The safe stop: the signal that ended the run is taken first (the stop reason already says it
+  // came), so that only a second one cuts the stop short (link.hpp).
   StopSignals::reset();
+  if (summary.kind == StopKind::Interrupted && link_options.on_stop_notice)
+    link_options.on_stop_notice("interrupted by " + detail +
+                                ": stopping the robot (Ctrl-C again to give up)");
   summary.safe_stop = session->safe_stop(pending);
+  StopSignals::reset();
   summary.stop = stop_reason(summary.kind, detail, summary.safe_stop);
   log.finish({summary.steps, summary.stop, std::move(pending)});
   summary.link = session->stats();

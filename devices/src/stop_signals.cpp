@@ -1,14 +1,18 @@
-// SIGINT / SIGTERM as a stop request (stop_signals.hpp).
+// The signals that end a run, as a stop request (stop_signals.hpp).
 #include <antkit/devices/stop_signals.hpp>
 #include <atomic>
 #include <csignal>
+#include <cstddef>
+#include <iterator>
 
 namespace antkit::devices {
 
 namespace {
 volatile std::sig_atomic_t g_signal = 0;
 std::atomic<int> g_installs{0};
-struct sigaction g_old_int, g_old_term;
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+struct sigaction g_old[std::size(kStopSignals)];
+struct sigaction g_old_pipe;
 
 extern "C" void on_stop_signal(int sig) {
   g_signal = sig;
@@ -21,14 +25,21 @@ void StopSignals::install() {
   sa.sa_handler = on_stop_signal;
   sigemptyset(&sa.sa_mask);
   sa.sa_flags = 0; // no SA_RESTART: a blocked poll returns EINTR
-  ::sigaction(SIGINT, &sa, &g_old_int);
-  ::sigaction(SIGTERM, &sa, &g_old_term);
+  for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
+    ::sigaction(kStopSignals[i], &sa, &g_old[i]);
+  // A write to a TCP peer that hung up is EPIPE (a disconnect the link reports), not the end of
+  // the process with the robot driving on.
+  struct sigaction ignore {};
+  ignore.sa_handler = SIG_IGN;
+  sigemptyset(&ignore.sa_mask);
+  ::sigaction(SIGPIPE, &ignore, &g_old_pipe);
 }
 
 void StopSignals::uninstall() {
   if (g_installs.fetch_sub(1) != 1) return;
-  ::sigaction(SIGINT, &g_old_int, nullptr);
-  ::sigaction(SIGTERM, &g_old_term, nullptr);
+  for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
+    ::sigaction(kStopSignals[i], &g_old[i], nullptr);
+  ::sigaction(SIGPIPE, &g_old_pipe, nullptr);
 }
 
 bool StopSignals::requested() noexcept {

@@ -89,7 +89,7 @@ TEST_CASE("a second antkit record on a port a first one holds exits 2: port busy
   REQUIRE(pty.rfind("/dev/pts/", 0) == 0);
   const auto first_log = dir / "first.jsonl";
   Child first({"record", "--device", "khepera", "--port", pty, "--controller", "buffon", "--steps",
-               "1000000000", "--out", first_log.string()});
+               "1000000000", "--out", first_log.string(), "--format", "json"});
   // The first holds the port once it has written a step.
   for (int i = 0; i < 3000 && lines_in(first_log) < 2; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -104,8 +104,9 @@ TEST_CASE("a second antkit record on a port a first one holds exits 2: port busy
   CHECK(r.err.find("held by process " + std::to_string(first.pid())) != std::string::npos);
   CHECK(!std::filesystem::exists(second_log));
 
-  // The first run goes on and stops cleanly on SIGINT.
+  // The first run goes on and stops cleanly on SIGINT: the robot stopped, exit 128 + 2.
   const auto [status, out] = first.finish(SIGINT);
-  CHECK(status == 0);
+  CHECK(status == 130);
+  CHECK(nlohmann::json::parse(out)["robot_stopped"] == true);
   emu.finish(SIGTERM);
 }

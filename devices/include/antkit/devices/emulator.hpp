@@ -57,7 +57,9 @@
 //
 // Faults (FaultSpec), each decided per command from the emulator's keyed streams, so a faulty run
 // is itself reproducible: a delay before the reply, garbage bytes before it, the reply dropped, the
-// reply cut in half (no terminator), and a disconnect (hang-up) after N commands.
+// reply cut in half (no terminator), a disconnect (hang-up) after N commands, and silence after N
+// commands (a robot whose firmware hangs behind a live USB adapter: commands read, nothing answered
+// or done, the line open).
 // `pace`: replies are paced at the robot's baud rate (10 or 11 bit times a byte) plus a command
 // latency (kCommandLatency), as the real firmware would; by default it answers as fast as the pty
 // allows.
@@ -87,12 +89,13 @@ struct FaultSpec {
   std::uint32_t drop_ppm = 0;
   std::uint32_t cut_ppm = 0;
   std::int64_t disconnect_after = -1; // hang up after this many commands (-1: never)
+  std::int64_t silent_after = -1; // after this many commands, answer nothing, line open (-1: never)
   friend bool operator==(const FaultSpec&, const FaultSpec&) = default;
 };
 
 // Parses --fault values: `delay=P:MS`, `garbage=P`, `drop=P`, `cut=P` (P a probability in [0, 1]
-// with up to six decimals), `disconnect=N` (N >= 0 commands). Several may be given. Throws
-// kernel::InputError("fault", ...).
+// with up to six decimals), `disconnect=N`, `silent=N` (N >= 0 commands). Several may be given.
+// Throws kernel::InputError("fault", ...).
 FaultSpec parse_faults(const std::vector<std::string>& specs);
 
 struct EmulatorOptions {

@@ -52,11 +52,21 @@
 // must be 0, 0 -- the stop is confirmed by the robot's own state, not only by an acknowledgement
 // that could be stale. It never throws; its result says whether the wheels are known to be
 // stopped, which a run's exit status follows (a robot that may still be driving is not a success).
+// It is bounded (issue 43): it gives up `stop_within` after it began (no send starts after that, so
+// it ends within stop_within plus one reply's timeout); the commands after the wheels' (LEDs off)
+// are not sent when the wheels' stop was not acknowledged (a robot that did not answer the one
+// command that matters is not asked for the others: with a silent robot that was 20 s of resends);
+// and a stop signal during it (a second Ctrl-C) cuts it short at once. Each way it ends short, the
+// result says so and claims nothing it did not see: the wheels are stopped only when acknowledged
+// and, where they can be, read back at 0, 0. `on_stop_notice` hears what it is doing while it takes
+// long (a round without an acknowledgement, giving up), for a person waiting at a terminal.
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/protocol.hpp>
 #include <antkit/devices/serial.hpp>
 #include <chrono>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -70,6 +80,8 @@ struct LinkOptions {
   std::chrono::milliseconds backoff_max{40}; // ...up to this
   std::chrono::milliseconds watchdog{0};     // 0: none (each command's tries bound it, above)
   std::uint32_t stop_rounds = 3;             // the safe stop: rounds of `tries` sends per command
+  std::chrono::milliseconds stop_within{10000}; // the safe stop gives up after this (see above)
+  std::function<void(const std::string&)> on_stop_notice{}; // what a long safe stop is doing
   // The run's clock origin: every exchange is stamped with its send's time since it (Exchange::
   // t_ns). record() sets it to the run's start, the origin of its records' t_ns.
   std::chrono::steady_clock::time_point origin{};
@@ -110,6 +122,12 @@ public:
   virtual void pause(std::chrono::milliseconds d) = 0;
   // Re-arms the watchdog: the safe stop is tried in full even after the link went quiet.
   virtual void rearm() noexcept = 0;
+  // No send starts after `deadline` (transact throws Timeout instead); nullopt: none. The safe
+  // stop's bound; a replay does not wait, so its link has none.
+  virtual void
+  set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) noexcept {
+    (void)deadline;
+  }
   // Commands sent so far, resends included.
   [[nodiscard]] virtual std::uint64_t sends() const noexcept = 0;
   // The time of the last send (of the command whose reply transact() returned last), ns since
@@ -130,6 +148,10 @@ public:
   std::string transact(const std::string& command, std::vector<Exchange>& io) override;
   void pause(std::chrono::milliseconds d) override;
   void rearm() noexcept override { last_ok_ = std::chrono::steady_clock::now(); }
+  void
+  set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) noexcept override {
+    deadline_ = deadline;
+  }
   [[nodiscard]] std::uint64_t sends() const noexcept override { return stats_.exchanges; }
   [[nodiscard]] std::int64_t last_send_ns() const noexcept override { return last_send_ns_; }
 
@@ -142,6 +164,7 @@ private:
   LinkOptions options_;
   LinkStats stats_;
   std::chrono::steady_clock::time_point last_ok_;
+  std::optional<std::chrono::steady_clock::time_point> deadline_;
 };
 
 struct SafeStopResult {
@@ -152,7 +175,7 @@ struct SafeStopResult {
   std::string failure;       // "" when complete, else what was not done
 };
 
-// See above. Never throws (a stop signal during it is ignored: it is the stop).
+// See above. Never throws (a stop signal during it cuts it short, and the result says so).
 SafeStopResult safe_stop(CommandLink& link, std::vector<Exchange>& io) noexcept;
 
 namespace detail {

@@ -28,8 +28,8 @@
 // and read back as zero, LEDs off; when that cannot be confirmed the stop record and the summary
 // say the robot may still be moving, and the run is not a success) and ends
 // the log with its stop record, which also holds the exchanges of an unfinished step: the run's
-// steps, a stop signal (SIGINT / SIGTERM), a link failure (resends exhausted, the watchdog, a
-// disconnect), or any other error. No record is lost.
+// steps, a stop signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT), a link failure (resends exhausted, the
+// watchdog, a disconnect), or any other error. No record is lost.
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/robot.hpp>
@@ -96,7 +96,7 @@ std::chrono::nanoseconds default_period(const RobotDescription& robot);
 // How a run ended, typed (the log's stop record says it in words: stop_reason()).
 enum class StopKind : std::uint8_t {
   Done,        // every requested step ran
-  Interrupted, // SIGINT / SIGTERM between steps
+  Interrupted, // a stop signal between steps (SIGINT, SIGTERM, SIGHUP, SIGQUIT: stop_signals.hpp)
   Link,        // resends exhausted, the watchdog, a disconnect, a refused connection
   Error        // anything else
 };
@@ -112,6 +112,7 @@ struct RecordSummary {
   std::int64_t steps = 0; // completed steps (records written)
   LinkStats link;
   StopKind kind = StopKind::Error;
+  int signal = 0;         // the stop signal, when kind is Interrupted
   std::string stop;       // the stop record's reason
   bool completed = false; // all the requested steps ran
   SafeStopResult safe_stop;
@@ -130,10 +131,11 @@ struct RecordSummary {
     std::shared_ptr<const MapPlace> map; // the map read for the run, when one was given
   };
   std::optional<Tour> tour;
-  // What the run's exit status follows: it did what it set out to do (every step, or stopped on
-  // request) and the robot is known to be stopped.
+  // The run did what it set out to do (every step) and the robot is known to be stopped. A run
+  // stopped by a signal did not: `antkit record` exits 128 + the signal's number then (a script's
+  // `record ... && record ...` must not drive the second visit after the user stopped the first).
   [[nodiscard]] bool succeeded() const noexcept {
-    return (kind == StopKind::Done || kind == StopKind::Interrupted) && safe_stop.stopped;
+    return kind == StopKind::Done && safe_stop.stopped;
   }
 };
 

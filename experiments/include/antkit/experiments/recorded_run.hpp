@@ -19,13 +19,10 @@ struct RecordedRun {
   bool tour_ok = true;
   std::string tour_broken; // the broken rule in words ("" when the tour passes or there is none)
 
-  // What the exit status follows: the robot is known to be stopped, and the run did what it set
-  // out to do (every step, or stopped on request; a tour closed and passed its verdict).
-  [[nodiscard]] bool succeeded() const noexcept {
-    if (!summary.safe_stop.stopped) return false;
-    if (summary.kind == devices::StopKind::Interrupted) return true;
-    return summary.kind == devices::StopKind::Done && tour_ok;
-  }
+  // What exit status 0 follows: the robot is known to be stopped, and the run did what it set out
+  // to do (every step; a tour closed and passed its verdict). A run stopped by a signal did not
+  // (record_loop.hpp, RecordSummary::succeeded()).
+  [[nodiscard]] bool succeeded() const noexcept { return summary.succeeded() && tour_ok; }
 };
 
 // Throws kernel::InputError for bad options (devices::record()).
