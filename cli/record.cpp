@@ -140,7 +140,10 @@ void run(const RecordCommand& c) {
   }
   j["stopped"] = s.stop;
   j["robot_stopped"] = s.safe_stop.stopped;
-  j["safe_stop"] = s.safe_stop.failure.empty() ? "acknowledged" : s.safe_stop.failure;
+  j["safe_stop"] = !s.connected                  ? "not needed: never connected"
+                   : s.safe_stop.failure.empty() ? "acknowledged"
+                                                 : s.safe_stop.failure;
+  if (!s.connected) j["hash"] = nullptr; // no run to hash
   j["exchanges"] = s.link.exchanges;
   j["retries"] = s.link.retries;
   j["faults"] = {{"timeouts", s.link.timeouts},

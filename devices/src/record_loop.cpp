@@ -224,6 +224,7 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
   } catch (const LinkError& e) {
     LogWriter log(options.out, header, 0, options.force);
     summary.kind = StopKind::Link;
+    summary.connected = false;
     summary.safe_stop = {.stopped = true, .complete = true, .failure = {}}; // never driven by us
     summary.stop =
         stop_reason(StopKind::Link, std::string(link_error_name(e.kind())) + ": " + e.what(),

@@ -68,6 +68,22 @@ TEST_CASE("antkit emulate --listen + record --port tcp: + replay, end to end", "
 
 TEST_CASE("antkit record to a refused TCP port and with a bad spec", "[cli][devices]") {
   const auto dir = scratch_dir("bad");
+  {
+    // Nothing listens: a link failure (exit 1), and the summary claims no stop it never made.
+    Child emu({"emulate", "khepera", "--listen", "127.0.0.1:0"});
+    const std::string port = emu.first_line();
+    emu.finish(SIGTERM);
+    const auto refused = run_antkit("record --device khepera --port " + port +
+                                    " --controller buffon --steps 5 --format json --out " +
+                                    (dir / "refused.jsonl").string());
+    INFO(refused.err);
+    CHECK(refused.status == 1);
+    const auto j = nlohmann::json::parse(refused.out);
+    CHECK(j["safe_stop"] == "not needed: never connected");
+    CHECK(j["hash"].is_null());
+    CHECK(j["steps"] == 0);
+    CHECK(j["stopped"].get<std::string>().rfind("link: disconnected", 0) == 0);
+  }
   const auto bad = run_antkit("record --device khepera --port tcp:127.0.0.1:x --controller buffon "
                               "--steps 5 --out " +
                               (dir / "a.jsonl").string());

@@ -113,6 +113,7 @@ struct RecordSummary {
   LinkStats link;
   StopKind kind = StopKind::Error;
   int signal = 0;         // the stop signal, when kind is Interrupted
+  bool connected = true;  // the link opened (false: nothing was sent, no safe stop was needed)
   std::string stop;       // the stop record's reason
   bool completed = false; // all the requested steps ran
   SafeStopResult safe_stop;
