@@ -94,7 +94,7 @@ devices::BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::s
     throw kernel::InputError(width_where, "the trail width must be in [0.01, 10] units");
   return devices::buffon_from_logs(visit1, visit2,
                                    geometry::fixed_from_double<kernel::Fx>(width, width_where),
-                                   {arena, &arena_spec_area});
+                                   {arena, &arena_spec_area, &same_arena});
 }
 
 nlohmann::json buffon_from_logs_json(const devices::BuffonFromLogs& r, double width) {

@@ -8,6 +8,7 @@
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/stopping.hpp>
 #include <antkit/devices/odometry.hpp>
+#include <antkit/devices/replay.hpp>
 #include <antkit/devices/run_hash.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -259,13 +260,34 @@ BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& vi
                          "short); two copies of one run are not two visits");
   check_visit_header(visit1, h1, 1);
   check_visit_header(visit2, h2, 2);
+  // A visit is measured only as it was recorded: its log must replay (every byte, replay.hpp) and
+  // end with its stop record (a log cut short is not the visit the robot walked).
+  for (const auto* path : {&visit1, &visit2}) {
+    const ReplayResult r = replay(*path);
+    if (!r.identical && r.first_divergence) {
+      const auto& d = *r.first_divergence;
+      throw InputError(*path, static_cast<std::size_t>(d.step + 2), 1,
+                       "does not replay at step " + std::to_string(d.step) + ", " + d.field +
+                           ": the log holds " + d.expected + ", this build derives " + d.actual +
+                           " (a visit is measured only as recorded; antkit replay says more)");
+    }
+    if (!r.complete)
+      throw InputError(*path, static_cast<std::size_t>(r.steps + 2), 1,
+                       std::string(r.truncated ? "its last line is cut" : "no stop record") +
+                           " after " + std::to_string(r.steps) +
+                           " steps: the visit's log is not whole (a visit is measured only as "
+                           "recorded)");
+  }
   if (out.visit1.robot != out.visit2.robot)
     throw InputError(visit2, 1, header_column(visit2, "robot"),
                      "robot '" + out.visit2.robot + "' but visit 1 was recorded on '" +
                          out.visit1.robot + "'");
 
   // The arena: the headers', which must agree with each other and with arena.spec.
-  if (!h1.arena.empty() && !h2.arena.empty() && h1.arena != h2.arena)
+  const auto same_arena = [&](const std::string& a, const std::string& b) {
+    return arena.same ? arena.same(a, b) : a == b;
+  };
+  if (!h1.arena.empty() && !h2.arena.empty() && !same_arena(h1.arena, h2.arena))
     throw InputError(visit2, 1, header_column(visit2, "arena"),
                      "arena '" + h2.arena + "' but visit 1 was recorded in '" + h1.arena +
                          "': both visits of one measurement walk the same arena");
@@ -277,7 +299,7 @@ BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& vi
     out.arena_source = ArenaSource::visit2;
   }
   if (!arena.spec.empty()) {
-    if (!out.arena.empty() && arena.spec != out.arena)
+    if (!out.arena.empty() && !same_arena(arena.spec, out.arena))
       throw InputError("arena spec",
                        "'" + arena.spec + "' but the logs' headers name arena '" + out.arena + "'");
     if (out.arena.empty()) out.arena = arena.spec, out.arena_source = ArenaSource::option;

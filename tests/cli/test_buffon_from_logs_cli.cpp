@@ -117,6 +117,27 @@ TEST_CASE("antkit buffon-from-logs: refusals exit 2 with the file and why, a mea
     check_refused(a1 + " " + a2 + " --arena circle:d=20",
                   "--arena:", "'circle:d=20' but the logs' headers name arena 'circle:d=8'");
     check_refused(v1 + " " + v2 + " --arena circle:d=0", "--arena:", "");
+    // One arena written two ways is one arena (compared as arenas, not as text).
+    const auto same =
+        run_antkit("buffon-from-logs " + a1 + " " + a2 + " --arena circle:d=8.0 --format json");
+    INFO(same.err);
+    CHECK(same.status == 0);
+
+    // A visit is measured only as recorded: a log that does not replay, and one cut short.
+    auto lines = lines_of(v2);
+    REQUIRE(lines.size() > 102);
+    const auto state = lines[101].find("\"state\":\"");
+    REQUIRE(state != std::string::npos);
+    char& digit = lines[101][state + 9];
+    digit = digit == '0' ? '1' : '0'; // step 100's controller state hash, edited
+    const auto edited = path("edited.jsonl");
+    write_lines(edited, lines);
+    check_refused(v1 + " " + edited, edited + ":102:1:", "does not replay at step 100, state");
+    lines = lines_of(v2);
+    lines.pop_back(); // its stop record
+    const auto cut = path("cut.jsonl");
+    write_lines(cut, lines);
+    check_refused(v1 + " " + cut, cut + ":1502:1:", "no stop record after 1500 steps");
   }
 
   SECTION("the measurement: corrected area and interval, the raw one beside it") {

@@ -32,7 +32,7 @@ namespace antkit::commands {
 // `antkit buffon-from-logs`: the measurement from two logs (devices::buffon_from_logs) with the
 // pheromone band `width` in body diameters, in [0.01, 10] (else an InputError(width_where)), and
 // the arena's true area from its spec or WKT file (arena_spec_area) when `arena` or the headers
-// name one.
+// name one; specs are compared as arenas (same_arena).
 [[nodiscard]] devices::BuffonFromLogs buffon_from_logs(const std::string& visit1,
                                                        const std::string& visit2, double width,
                                                        const std::string& arena,
@@ -44,5 +44,9 @@ namespace antkit::commands {
 // option in an InputError.
 [[nodiscard]] double arena_spec_area(const std::string& spec, const std::string& where);
 [[nodiscard]] bool is_wkt_path(const std::string& name);
+// Whether two arena arguments name one arena: two specs of one family with the same parameters as
+// numbers (`circle:d=20` and `circle:d=20.0`), or one WKT file (the same file, or the same text).
+// Anything that does not parse is compared as text.
+[[nodiscard]] bool same_arena(const std::string& a, const std::string& b);
 
 } // namespace antkit::commands

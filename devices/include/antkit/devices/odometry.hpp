@@ -124,9 +124,12 @@ BuffonEstimate estimate_area(const BuffonCounts& counts);
 // squared (a named spec or a WKT file; the caller's geometry: this library does not link the CGAL
 // arenas, so the CLI passes geometry's builder); `where` names the spec's origin for its error
 // messages. Without area_of the spec is still checked and reported, and the true area is absent.
+// `same` says whether two specs name one arena (`circle:d=20` and `circle:d=20.0`: geometry's
+// parser, which the caller has); without it specs are compared as text.
 struct TrueArena {
   std::string spec; // "" unless given
   std::function<double(const std::string& spec, const std::string& where)> area_of;
+  std::function<bool(const std::string& a, const std::string& b)> same = {};
 };
 enum class ArenaSource { none, logs, visit1, visit2, option };
 std::string_view arena_source_name(ArenaSource source) noexcept; // "", "logs", "visit1", ...
@@ -160,7 +163,9 @@ struct BuffonFromLogs {
 //  * a visit-1 log given as visit 2 or a visit-2 log as visit 1 (the header's params "visit");
 //  * logs of different robots, or headers naming different arenas (or an arena other than
 //    arena.spec, which is then refused as "arena spec");
-//  * a log without odometry, or with a buffon observation that is not six readings in [0, 1].
+//  * a log without odometry, or with a buffon observation that is not six readings in [0, 1];
+//  * a log that does not replay (replay.hpp: at the first divergence's line) or is not whole (no
+//    stop record, a cut last line): a visit is measured only as it was recorded.
 BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& visit2,
                                 kernel::Fx width, const TrueArena& arena = {});
 
