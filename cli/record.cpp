@@ -26,6 +26,7 @@
 
 #include <antkit/algorithms/options.hpp>
 #include <antkit/commands/json.hpp>
+#include <antkit/commands/options.hpp>
 #include <antkit/devices/device.hpp>
 #include <antkit/experiments/recorded_run.hpp>
 #include <antkit/kernel/hash.hpp>
@@ -104,6 +105,9 @@ void run(const RecordCommand& c) {
   if (!c.start.empty()) o.start = antkit::algorithms::parse_cell("--start", c.start);
   o.calibration = c.calibration;
   line_and_link(c, o);
+  // The arena goes into the log's header for buffon-from-logs: a spec that names no arena would
+  // make both visits unusable later, so it is refused now (as emulate refuses it).
+  if (!c.arena.empty()) (void)antkit::commands::arena_spec_area(c.arena, "--arena");
 
   const bool live = ::isatty(STDERR_FILENO) == 1;
   const auto r = antkit::experiments::record_run(o, [live](std::int64_t step, std::int64_t steps) {
@@ -144,6 +148,7 @@ void run(const RecordCommand& c) {
                    : s.safe_stop.failure.empty() ? "acknowledged"
                                                  : s.safe_stop.failure;
   if (!s.connected) j["hash"] = nullptr; // no run to hash
+  if (!s.log_error.empty()) j["log_error"] = s.log_error;
   j["exchanges"] = s.link.exchanges;
   j["retries"] = s.link.retries;
   j["faults"] = {{"timeouts", s.link.timeouts},
@@ -154,6 +159,8 @@ void run(const RecordCommand& c) {
   if (r.succeeded()) return;
   if (!s.safe_stop.stopped)
     throw antkit::cli::CheckFailed("the robot may still be moving: " + s.safe_stop.failure);
+  if (!s.log_error.empty())
+    throw antkit::cli::CheckFailed("the log is not whole (the robot is stopped): " + s.log_error);
   if (s.kind == devices::StopKind::Interrupted)
     throw antkit::cli::Interrupted(s.signal, s.stop + " (the robot is stopped)");
   if (s.kind != devices::StopKind::Done)

@@ -442,7 +442,15 @@ LogWriter::LogWriter(const std::string& path, const LogHeader& header, std::uint
   if (file_ == nullptr && errno == EEXIST) throw InputError(path, kLogExists);
   if (file_ == nullptr)
     throw InputError(path, std::string("cannot create the log: ") + std::strerror(errno));
-  put(format_header(header));
+  try {
+    put(format_header(header));
+  } catch (const LogWriteError&) {
+    const int err = errno;
+    std::fclose(file_);
+    file_ = nullptr;
+    ::unlink(path.c_str()); // nothing of the run is in it
+    throw InputError(path, std::string("cannot write the log: ") + std::strerror(err));
+  }
 }
 
 LogWriter::~LogWriter() {
@@ -453,7 +461,7 @@ void LogWriter::put(const std::string& line) {
   if (file_ == nullptr) throw std::logic_error("log " + path_ + " already finished");
   if (std::fwrite(line.data(), 1, line.size(), file_) != line.size() ||
       std::fputc('\n', file_) == EOF || std::fflush(file_) != 0)
-    throw std::runtime_error("writing the log " + path_ + ": " + std::strerror(errno));
+    throw LogWriteError("writing the log " + path_ + ": " + std::strerror(errno));
 }
 
 void LogWriter::write(const LogRecord& r) {
@@ -464,9 +472,14 @@ void LogWriter::write(const LogRecord& r) {
 
 void LogWriter::finish(const LogStop& s) {
   put(format_stop(s));
-  ::fdatasync(::fileno(file_));
-  std::fclose(file_);
+  // Only the errors that lose data count (a pipe or a tty cannot be synced: EINVAL).
+  const bool synced =
+      ::fdatasync(::fileno(file_)) == 0 || (errno != EIO && errno != ENOSPC && errno != EDQUOT);
+  const int err = errno;
+  const bool closed = std::fclose(file_) == 0;
   file_ = nullptr;
+  if (!synced || !closed)
+    throw LogWriteError("writing the log " + path_ + ": " + std::strerror(synced ? errno : err));
 }
 
 LogReader::LogReader(const std::string& path) : name_(path) {

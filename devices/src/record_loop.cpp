@@ -12,6 +12,7 @@
 #include <antkit/uniform/controllers.hpp>
 #include <csignal>
 #include <optional>
+#include <sys/stat.h>
 #include <thread>
 
 namespace antkit::devices {
@@ -207,6 +208,15 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
   PreparedRun run = dev.prepare(options);
   // A log is never replaced by accident: a mistyped name must not lose a recorded visit.
   check_new_log(options.out, options.force);
+  // The log is not the robot's own line (--force would otherwise write the log into the port).
+  // stat(), not std::filesystem::equivalent(), which refuses to compare two character devices.
+  struct stat out_st {
+  }, port_st{};
+  if (!is_tcp_port(options.port) && ::stat(options.out.c_str(), &out_st) == 0 &&
+      ::stat(options.port.c_str(), &port_st) == 0 && out_st.st_dev == port_st.st_dev &&
+      out_st.st_ino == port_st.st_ino)
+    throw kernel::InputError(options.out, "is the robot's port (--port " + options.port +
+                                              "): the log must be another file");
 
   LogHeader header = std::move(run.header);
   header.antkit_version = ANTKIT_DEVICES_VERSION;
@@ -229,7 +239,11 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
     summary.stop =
         stop_reason(StopKind::Link, std::string(link_error_name(e.kind())) + ": " + e.what(),
                     summary.safe_stop);
-    log.finish({0, summary.stop, {}});
+    try {
+      log.finish({0, summary.stop, {}});
+    } catch (const LogWriteError& w) {
+      summary.log_error = w.what();
+    }
     return summary;
   }
   StopSignals::Scope signals;
@@ -284,7 +298,13 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
   summary.safe_stop = session->safe_stop(pending);
   StopSignals::reset();
   summary.stop = stop_reason(summary.kind, detail, summary.safe_stop);
-  log.finish({summary.steps, summary.stop, std::move(pending)});
+  // A log that cannot take its stop record (the disk filled during the run) keeps what it has: the
+  // summary says so, and the run is not a success.
+  try {
+    log.finish({summary.steps, summary.stop, std::move(pending)});
+  } catch (const LogWriteError& e) {
+    summary.log_error = e.what();
+  }
   summary.link = session->stats();
   summary.hash = hash.value();
   session->report(summary);

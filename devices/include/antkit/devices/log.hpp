@@ -32,6 +32,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -88,10 +89,17 @@ std::string format_stop(const LogStop& s);
 // checked before a recording opens its port, so that a refused --out leaves the robot untouched.
 void check_new_log(const std::string& path, bool replace);
 
+// A log that could not be written on (a full disk, a file size limit, an I/O error).
+class LogWriteError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
 class LogWriter {
 public:
   // Throws kernel::InputError(path, ...) when the file cannot be created, or exists and `replace`
-  // is false (created exclusively: two recorders cannot share one log either).
+  // is false (created exclusively: two recorders cannot share one log either), or its header
+  // cannot be written. write() and finish() throw LogWriteError.
   LogWriter(const std::string& path, const LogHeader& header, std::uint32_t sync_every = 0,
             bool replace = false);
   LogWriter(const LogWriter&) = delete;

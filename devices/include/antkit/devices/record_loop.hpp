@@ -114,6 +114,7 @@ struct RecordSummary {
   StopKind kind = StopKind::Error;
   int signal = 0;         // the stop signal, when kind is Interrupted
   bool connected = true;  // the link opened (false: nothing was sent, no safe stop was needed)
+  std::string log_error;  // "" when the log is whole; else why it is not (a full disk...)
   std::string stop;       // the stop record's reason
   bool completed = false; // all the requested steps ran
   SafeStopResult safe_stop;
@@ -136,7 +137,7 @@ struct RecordSummary {
   // stopped by a signal did not: `antkit record` exits 128 + the signal's number then (a script's
   // `record ... && record ...` must not drive the second visit after the user stopped the first).
   [[nodiscard]] bool succeeded() const noexcept {
-    return kind == StopKind::Done && safe_stop.stopped;
+    return kind == StopKind::Done && safe_stop.stopped && log_error.empty();
   }
 };
 
