@@ -334,6 +334,15 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
        "--port:", "not a serial port"},
       {"record --device khepera --port /dev/null --controller zz --out {D}/log.jsonl",
        "--controller:", "'zz'"},
+      {"record --device khepera --port /dev/null --controller buffon --arena nonsense --out "
+       "{D}/log.jsonl",
+       "--arena:", "nonsense"},
+      {"record --device khepera --port /dev/null --controller buffon --stop-within 0 --out "
+       "{D}/log.jsonl",
+       "--stop-within:", "milliseconds"},
+      {"record --device khepera --port /dev/null --controller buffon --force --out /dev/null",
+       "/dev/null:", "is the robot's port"},
+      {"emulate khepera --fault silent=x", "--fault:", "silent=x"},
       {"record --device khepera --port /dev/null --controller buffon --visit 3 --out {D}/log.jsonl",
        "--controller:", "visit=3"},
       {"record --device khepera --port /dev/null --controller buffon --param visit --out "
