@@ -47,7 +47,7 @@ struct RecordCommand {
   std::uint64_t seed = 1;
   std::int64_t trial = -1, visit = -1;
   std::vector<std::string> params;
-  std::int64_t steps = 1000, timeout_ms = 250, tries = 12, period_ms = -1, stop_within_ms = 10000;
+  std::int64_t steps = 1000, timeout_ms = -1, tries = 12, period_ms = -1, stop_within_ms = 10000;
   Format format = Format::Table;
   // stc-floor
   std::string map, start, calibration;
@@ -64,10 +64,11 @@ void line_and_link(const RecordCommand& c, devices::RecordOptions& o) {
     if (!c.framing.empty()) line = devices::parse_framing(c.framing, line.baud, "--framing");
     o.line = line;
   }
-  if (c.timeout_ms < 1 || c.timeout_ms > 60000)
+  if (c.timeout_ms != -1 && (c.timeout_ms < 1 || c.timeout_ms > 60000))
     throw InputError("--timeout", "expected milliseconds in [1, 60000]");
   if (c.tries < 1 || c.tries > 100) throw InputError("--tries", "expected 1 to 100 sends");
-  o.link.timeout = std::chrono::milliseconds(c.timeout_ms);
+  o.link.timeout = c.timeout_ms == -1 ? devices::device(c.device, "--device").reply_timeout()
+                                      : std::chrono::milliseconds(c.timeout_ms);
   o.link.tries = static_cast<std::uint32_t>(c.tries);
   if (c.stop_within_ms < 1 || c.stop_within_ms > 600000)
     throw InputError("--stop-within", "expected milliseconds in [1, 600000]");
@@ -201,7 +202,8 @@ void register_record(CLI::App& app) {
       "--steps", c->steps, "Control steps to run (default 1000; stc-floor: until the tour closes)");
   sub->add_option("--baud", c->baud, "Baud rate (default the robot's)");
   sub->add_option("--framing", c->framing, "Framing such as 8N1 or 8N2 (default the robot's)");
-  sub->add_option("--timeout", c->timeout_ms, "Reply timeout in milliseconds (default 250)");
+  sub->add_option("--timeout", c->timeout_ms,
+                  "Reply timeout in milliseconds (default the robot's: 250; khepera-webots 1000)");
   sub->add_option("--stop-within", c->stop_within_ms,
                   "The safe stop gives up after this many milliseconds (default 10000; Ctrl-C "
                   "again gives up at once)");

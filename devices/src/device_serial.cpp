@@ -59,6 +59,9 @@ public:
   explicit SerialDevice(const RobotDescription& robot) : robot_(robot.kind) {}
   [[nodiscard]] std::string_view name() const noexcept override { return robot_name(robot_); }
   [[nodiscard]] LineSettings line() const noexcept override { return describe(robot_).line; }
+  [[nodiscard]] std::chrono::milliseconds reply_timeout() const noexcept override {
+    return describe(robot_).reply_timeout;
+  }
 
   [[nodiscard]] PreparedRun prepare(const RecordOptions& o) const override {
     const std::string others = " is an option of the stc-floor robot";

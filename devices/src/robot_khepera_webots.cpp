@@ -46,6 +46,7 @@ constexpr RobotDescription kKheperaWebots{
     // The relay answers what it does not know with a bare LF (tcpip.c: send(fd, "\n", 1)).
     .unknown_reply = "\n",
     .webots_relay = true,
+    .reply_timeout = std::chrono::milliseconds(1000), // a control step can pass before the reply
 };
 
 } // namespace

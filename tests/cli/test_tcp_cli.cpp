@@ -126,3 +126,24 @@ TEST_CASE("a second antkit record on a port a first one holds exits 2: port busy
   CHECK(nlohmann::json::parse(out)["robot_stopped"] == true);
   emu.finish(SIGTERM);
 }
+
+TEST_CASE(
+    "antkit record waits for the Webots relay's slow step by default: no command is sent twice",
+    "[cli][devices]") {
+  // Every reply 300 ms late, as a real-time relay answers within its 250 ms control step plus
+  // jitter: the relay's default timeout (1000 ms, robot.hpp) waits for it, where the robots' 250 ms
+  // would resend each command, and the relay would execute the resend as a second command.
+  const auto dir = scratch_dir("webots-timeout");
+  Child emu({"emulate", "khepera-webots", "--arena", "circle:d=8", "--fault", "delay=1:300",
+             "--listen", "127.0.0.1:0"});
+  const std::string port = emu.first_line();
+  const auto r = run_antkit("record --device khepera-webots --port " + port +
+                            " --controller buffon --visit 1 --steps 2 --out " +
+                            (dir / "relay.jsonl").string() + " --format json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["retries"] == 0);
+  CHECK(j["faults"]["timeouts"] == 0);
+  emu.finish(SIGTERM);
+}

@@ -26,6 +26,7 @@
 #include <antkit/devices/serial.hpp>
 #include <antkit/kernel/grid.hpp>
 #include <antkit/kernel/segment.hpp>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -106,6 +107,10 @@ public:
   [[nodiscard]] virtual std::string_view name() const noexcept = 0;
   // The line the robot talks on (record's --baud and --framing go over it).
   [[nodiscard]] virtual LineSettings line() const noexcept = 0;
+  // How long a command waits for its reply unless record's --timeout says (RobotDescription).
+  [[nodiscard]] virtual std::chrono::milliseconds reply_timeout() const noexcept {
+    return std::chrono::milliseconds(250);
+  }
   // Validates the options for this device (kernel::InputError naming the option otherwise, in
   // RecordOptions' words).
   [[nodiscard]] virtual PreparedRun prepare(const RecordOptions& options) const = 0;

@@ -6,6 +6,7 @@
 // source is silent, the choice is named there.
 #include <antkit/devices/line_settings.hpp>
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -66,6 +67,12 @@ struct RobotDescription {
   // The Webots relay controller (tcpip.c): the emulator answers only its commands, closes on
   // "exit", ignores G, and truncates its counters toward zero.
   bool webots_relay = false;
+  // How long a command waits for its reply by default (record's --timeout). 250 ms for the robots,
+  // which answer within milliseconds; the Webots relay acts on one command per 250 ms control step
+  // of simulated time (PROTOCOLS.md), so a reply takes up to a step, longer when the simulation
+  // runs slower than real time, and a resend after a 250 ms timeout would reach the relay as a
+  // second command and be executed twice: 1000 ms (four steps) there.
+  std::chrono::milliseconds reply_timeout{250};
 };
 const RobotDescription& describe(RobotKind robot);
 
