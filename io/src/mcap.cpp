@@ -207,6 +207,12 @@ void Writer::close_chunk() {
   chunk_index_.clear();
 }
 
+std::vector<std::pair<std::string, std::uint64_t>> Writer::channel_counts() const {
+  std::vector<std::pair<std::string, std::uint64_t>> out;
+  for (const auto& c : channels_) out.emplace_back(c.topic, channel_counts_.at(c.id));
+  return out;
+}
+
 void Writer::finish() {
   if (finished_) throw std::logic_error("mcap: finish twice");
   close_chunk();

@@ -77,6 +77,8 @@ public:
   void finish();
 
   [[nodiscard]] std::uint64_t messages() const noexcept { return message_count_; }
+  // Each channel's topic and messages written, in channel id order.
+  [[nodiscard]] std::vector<std::pair<std::string, std::uint64_t>> channel_counts() const;
 
 private:
   struct SchemaRecord {
