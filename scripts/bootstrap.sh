@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
-# Installs the Debian packages antkit needs, or says exactly how to.
+# Installs the Debian packages antkit needs, or says exactly how to; then the node packages the
+# interop tests read antkit's files with (package-lock.json, by `npm ci`).
 #
 # Run by `make demo` and `make test` before they configure. As root it installs whatever is missing
 # with apt-get; as anyone else it prints the one command to run and exits 1. It changes nothing when
-# every package is already there, so it is cheap to run on every build.
+# every package is already there, so it is cheap to run on every build: `npm ci` runs only when
+# node_modules is missing or was installed from another package-lock.json (the lock's hash is kept
+# in node_modules/.antkit-lock), and is left out where node or npm is not installed (the interop
+# tests then skip, saying so).
 set -euo pipefail
 
 packages=(
@@ -28,7 +32,25 @@ for p in "${packages[@]}"; do
   [ "$status" = "installed" ] || missing+=("$p")
 done
 
+node_packages() {
+  local root lock stamp want
+  root=$(cd "$(dirname "$0")/.." && pwd)
+  lock="$root/package-lock.json"
+  stamp="$root/node_modules/.antkit-lock"
+  [ -f "$lock" ] || return 0
+  # Without node the interop tests skip, saying so; nothing to do here.
+  command -v node >/dev/null && command -v npm >/dev/null || return 0
+  want=$(sha256sum "$lock" | cut -d' ' -f1)
+  if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want" ]; then
+    return 0
+  fi
+  echo "bootstrap: npm ci (node packages for the interop tests)" >&2
+  (cd "$root" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  echo "$want" >"$stamp"
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
+  node_packages
   exit 0
 fi
 
@@ -38,6 +60,7 @@ if [ "$(id -u)" -eq 0 ]; then
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}"
   echo "bootstrap: installed ${#missing[@]} package(s)" >&2
+  node_packages
 else
   echo "bootstrap: run this, then try again:" >&2
   echo "  sudo apt-get update && sudo apt-get install -y --no-install-recommends ${missing[*]}" >&2

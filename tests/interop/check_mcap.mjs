@@ -2,7 +2,10 @@
 // not write"): @mcap/core's indexed reader (magic, footer, summary CRC, chunk indexes, chunk CRCs)
 // and its stream reader (every record in file order, the data section's CRC recomputed here with
 // @foxglove/crc), every foxglove.* message against @foxglove/schemas' JSON Schema (ajv).
-//   node check_mcap.mjs FILE.mcap [TOPIC=COUNT ...]
+//   node check_mcap.mjs FILE.mcap [TOPIC=COUNT ...] [error@STEP]
+// TOPIC=COUNT: that many messages on TOPIC; error@STEP: exactly one foxglove.Log of level ERROR
+// (4) on /log, with sequence STEP, at the log time of that step's /recorded/step message (or, past
+// the recorded steps, the last one's).
 // Also checks: the Statistics equal the messages read; every message of the stream is reached
 // through the index; schema encoding jsonschema, message encoding json; each message's JSON parses
 // and its timestamp {sec, nsec} is its log time; sequence is its step where it has one. Exits 1 with
@@ -58,6 +61,8 @@ for (const schema of reader.schemasById.values()) {
 }
 const indexed = new Map(); // topic -> count
 const seen = [];
+const errors = []; // [sequence, log time] of /log's ERROR messages
+const stepTimes = new Map(); // step -> log time on /recorded/step
 for await (const m of reader.readMessages()) {
   const channel = reader.channelsById.get(m.channelId);
   if (channel.messageEncoding !== "json") fail(`${channel.topic}: encoding ${channel.messageEncoding}`);
@@ -77,6 +82,8 @@ for await (const m of reader.readMessages()) {
   if (json.step !== undefined && json.step !== m.sequence)
     fail(`${channel.topic}: sequence ${m.sequence} is not step ${json.step}`);
   if (m.publishTime !== m.logTime) fail(`${channel.topic}: publish time is not the log time`);
+  if (channel.topic === "/log" && json.level === 4) errors.push([m.sequence, m.logTime]);
+  if (channel.topic === "/recorded/step") stepTimes.set(json.step, m.logTime);
   indexed.set(channel.topic, (indexed.get(channel.topic) ?? 0) + 1);
   seen.push(`${m.channelId}:${m.logTime}:${m.sequence}`);
 }
@@ -115,6 +122,15 @@ if (JSON.stringify([...streamed].sort(sortKey)) !== JSON.stringify([...seen].sor
   fail(`the index reaches ${seen.length} messages, the file holds ${streamed.length}`);
 
 for (const e of expectations) {
+  if (e.startsWith("error@")) {
+    const step = Number(e.slice("error@".length));
+    if (errors.length !== 1 || errors[0][0] !== step)
+      fail(`expected one ERROR log at step ${step}, found ${JSON.stringify(errors.map((x) => x[0]))}`);
+    const last = [...stepTimes.keys()].reduce((a, b) => Math.max(a, b), -1);
+    const t = stepTimes.get(step) ?? stepTimes.get(last);
+    if (errors[0][1] !== t) fail(`the ERROR log's time ${errors[0][1]} is not step ${step}'s ${t}`);
+    continue;
+  }
   const [topic, count] = e.split("=");
   if ((indexed.get(topic) ?? 0) !== Number(count))
     fail(`${topic}: ${indexed.get(topic) ?? 0} messages, expected ${count}`);
