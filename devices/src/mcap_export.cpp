@@ -331,16 +331,17 @@ std::string base64(std::string_view bytes) {
       "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);
+  const auto byte = [&](std::size_t k) {
+    return static_cast<std::uint32_t>(static_cast<std::uint8_t>(bytes[k]));
+  };
   std::size_t i = 0;
   for (; i + 3 <= bytes.size(); i += 3) {
-    const std::uint32_t v = static_cast<std::uint8_t>(bytes[i]) << 16 |
-                            static_cast<std::uint8_t>(bytes[i + 1]) << 8 |
-                            static_cast<std::uint8_t>(bytes[i + 2]);
+    const std::uint32_t v = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
     for (int k = 18; k >= 0; k -= 6) out += kAlphabet[(v >> k) & 63U];
   }
   if (const std::size_t rest = bytes.size() - i; rest > 0) {
-    std::uint32_t v = static_cast<std::uint8_t>(bytes[i]) << 16;
-    if (rest == 2) v |= static_cast<std::uint32_t>(static_cast<std::uint8_t>(bytes[i + 1])) << 8;
+    std::uint32_t v = byte(i) << 16;
+    if (rest == 2) v |= byte(i + 1) << 8;
     out += kAlphabet[(v >> 18) & 63U];
     out += kAlphabet[(v >> 12) & 63U];
     out += rest == 2 ? kAlphabet[(v >> 6) & 63U] : '=';
