@@ -166,8 +166,9 @@ void put_pose(std::string& out, const Pose& p) {
   out += "}}";
 }
 Pose pose_of(double x, double y, kernel::Angle heading) {
-  // The rotation by `heading` about z: (0, 0, sin h/2, cos h/2), by the kernel's sine.
-  const auto half = kernel::Angle::from_raw(heading.raw() / 2);
+  // The rotation by `heading` about z: (0, 0, sin h/2, cos h/2), by the kernel's sine; h in
+  // (-pi, pi], so that w >= 0 (q and -q are the same rotation; this one is the usual spelling).
+  const auto half = kernel::Angle::from_raw(static_cast<std::uint32_t>(heading.signed_raw() / 2));
   constexpr double kOne = 65536.0;
   return {x, y, kernel::sin(half).raw() / kOne, kernel::cos(half).raw() / kOne};
 }

@@ -12,6 +12,7 @@
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -147,6 +148,12 @@ TEST_CASE("export mcap of a run recorded through an emulator", "[devices][mcap]"
   // The pose follows the dead reckoning: the robot moved away from the origin.
   const auto poses = messages_on(f, "/pose");
   CHECK(poses.back()["frame_id"] == "odom");
+  // Unit quaternions about z, spelled with w >= 0.
+  for (const auto& p : poses) {
+    const double z = p["pose"]["orientation"]["z"], w = p["pose"]["orientation"]["w"];
+    CHECK(w >= 0);
+    CHECK(std::abs(z * z + w * w - 1) < 1e-3);
+  }
   CHECK((poses.back()["pose"]["position"]["x"] != 0 || poses.back()["pose"]["position"]["y"] != 0));
 }
 
