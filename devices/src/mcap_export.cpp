@@ -351,11 +351,15 @@ std::string base64(std::string_view bytes) {
   return out;
 }
 
-std::string mcap_of_log(LogReader& reader, const std::string& log_name, const McapOptions& options,
-                        const ReplayResult* replay, McapSummary* summary) {
+namespace {
+
+// The file, streamed to `bytes`; the log is read whole first, so that a malformed one throws before
+// a byte is written.
+void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_name,
+                const McapOptions& options, const ReplayResult* replay, McapSummary* summary) {
   const LogHeader& header = reader.header();
   std::vector<LogRecord> records;
-  for (LogRecord r; reader.next(r);) records.push_back(r);
+  for (LogRecord r; reader.next(r); r = LogRecord{}) records.push_back(std::move(r));
   Poser poser(header);
   std::vector<kernel::FxSegment> walls;
   if (!header.arena.empty() && options.arena_walls && poser.diameter_m() > 0) try {
@@ -365,7 +369,6 @@ std::string mcap_of_log(LogReader& reader, const std::string& log_name, const Mc
                                "the header's arena '" + header.arena + "': " + e.message());
     }
 
-  std::ostringstream bytes;
   mcap::Writer w(bytes);
   // Schemas first, one per name, in a fixed order.
   std::vector<std::pair<std::string, std::uint16_t>> schema_ids;
@@ -448,21 +451,28 @@ std::string mcap_of_log(LogReader& reader, const std::string& log_name, const Mc
                          "replay identical: " + std::to_string(replay->steps) + " steps, hash " +
                              kernel::hash_hex(replay->hash))});
   w.finish();
-  std::string out = std::move(bytes).str();
   if (summary != nullptr) {
-    summary->bytes = out.size();
+    summary->bytes = w.bytes();
     summary->messages = w.messages();
     summary->channels = w.channel_counts();
   }
-  return out;
+}
+
+} // namespace
+
+std::string mcap_of_log(LogReader& reader, const std::string& log_name, const McapOptions& options,
+                        const ReplayResult* replay, McapSummary* summary) {
+  std::ostringstream bytes;
+  write_mcap(bytes, reader, log_name, options, replay, summary);
+  return std::move(bytes).str();
 }
 
 McapSummary export_mcap(const std::string& log, const std::string& out,
                         const McapOptions& options) {
   LogReader reader(log);
   McapSummary s;
-  const std::string bytes = mcap_of_log(reader, log, options, nullptr, &s);
-  io::write_file_atomic(out, bytes);
+  io::write_file_atomic(out,
+                        [&](std::ostream& o) { write_mcap(o, reader, log, options, nullptr, &s); });
   return s;
 }
 
@@ -470,8 +480,8 @@ McapSummary export_replay_mcap(const std::string& log, const ReplayResult& resul
                                const std::string& out, const McapOptions& options) {
   LogReader reader(log);
   McapSummary s;
-  const std::string bytes = mcap_of_log(reader, log, options, &result, &s);
-  io::write_file_atomic(out, bytes);
+  io::write_file_atomic(out,
+                        [&](std::ostream& o) { write_mcap(o, reader, log, options, &result, &s); });
   return s;
 }
 

@@ -77,6 +77,7 @@ public:
   void finish();
 
   [[nodiscard]] std::uint64_t messages() const noexcept { return message_count_; }
+  [[nodiscard]] std::uint64_t bytes() const noexcept { return position_; } // written so far
   // Each channel's topic and messages written, in channel id order.
   [[nodiscard]] std::vector<std::pair<std::string, std::uint64_t>> channel_counts() const;
 
