@@ -31,11 +31,13 @@ demo: configure
 # The tier for every edit: unit and property tests and the fast proofs, without what is labelled
 # slow, the Cortex-M image (mcu) or the determinism matrix. `make test` is the whole suite.
 check: build
+	@scripts/bootstrap.sh --node-packages
 	@echo "rapidcheck seed: $$(grep -m1 '^ANTKIT_RC_SEED' $(BUILD)/CMakeCache.txt | cut -d= -f2)"
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE 'slow|mcu|determinism' $(CTEST_ARGS)
 
 # The whole test suite (unit, property, proof, fuzz-regression, slow).
 test: build
+	@scripts/bootstrap.sh --node-packages
 	@echo "rapidcheck seed: $$(grep -m1 '^ANTKIT_RC_SEED' $(BUILD)/CMakeCache.txt | cut -d= -f2)"
 	@status=0; ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) $(CTEST_ARGS) \
 	  -O $(BUILD)/ctest.log || status=$$?; \

@@ -3,7 +3,8 @@
 //                 --controller buffon|rs|wander
 //                 [--seed S] [--trial T] [--visit V] [--param KEY=VALUE ...] [--steps N]
 //                 [--baud B] [--framing 8N1|8N2|...] [--timeout MS] [--tries N] [--period MS]
-//                 [--stop-within MS] [--arena SPEC] --out LOG [--force] [--format table|json]
+//                 [--stop-within MS] [--arena SPEC] --out LOG [--force] [--mcap FILE.mcap]
+//                 [--format table|json]
 //   antkit record --device stc-floor --port PATH --controller ant|ant-edge [--map F] [--start X,Y]
 //                 [--heading D] [--calibration F.json] [--turn-ms T] [--led-ms L] [--steps N]
 //                 [--baud B] [--framing F] [--timeout MS] [--tries N] --out LOG [--force]
@@ -21,6 +22,7 @@
 // (the link failed, the tour broke a rule; the summary says which) or the robot may still be
 // moving ("robot_stopped": false). 2 for bad options, a port that cannot be opened or is held by
 // another process ("port busy"), or an --out that exists without --force (no log is written).
+// --mcap: the log, once written, also as MCAP (antkit export mcap; devices/mcap_export.hpp).
 #include "commands.hpp"
 #include "output.hpp"
 
@@ -28,6 +30,7 @@
 #include <antkit/commands/json.hpp>
 #include <antkit/commands/options.hpp>
 #include <antkit/devices/device.hpp>
+#include <antkit/devices/mcap_export.hpp>
 #include <antkit/experiments/recorded_run.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -42,7 +45,7 @@ using antkit::cli::Format;
 using antkit::kernel::InputError;
 
 struct RecordCommand {
-  std::string device, port, controller, out, baud, framing, arena;
+  std::string device, port, controller, out, baud, framing, arena, mcap;
   bool force = false;
   std::uint64_t seed = 1;
   std::int64_t trial = -1, visit = -1;
@@ -116,6 +119,7 @@ void run(const RecordCommand& c) {
       std::cerr << "\rrecord: step " << step << " / " << steps << std::flush;
   });
   if (live) std::cerr << '\n';
+  if (!c.mcap.empty()) devices::export_mcap(c.out, c.mcap, antkit::commands::mcap_options());
   const auto& s = r.summary;
   nlohmann::json j;
   j["robot"] = c.device;
@@ -216,6 +220,7 @@ void register_record(CLI::App& app) {
   sub->add_option("--out", c->out, "The log to write (JSON Lines); an existing file is refused")
       ->required();
   sub->add_flag("--force", c->force, "Replace --out if it exists");
+  sub->add_option("--mcap", c->mcap, "Also write the log as MCAP (for Foxglove) when the run ends");
   sub->add_option("--arena", c->arena,
                   "The arena the robot runs in (an emulator's spec), written into the log's header "
                   "for buffon-from-logs");

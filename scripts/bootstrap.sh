@@ -1,9 +1,15 @@
 #!/usr/bin/env bash
-# Installs the Debian packages antkit needs, or says exactly how to.
+# Installs the Debian packages antkit needs, or says exactly how to; then the node packages the
+# interop tests read antkit's files with (package-lock.json, by `npm ci`).
 #
 # Run by `make demo` and `make test` before they configure. As root it installs whatever is missing
 # with apt-get; as anyone else it prints the one command to run and exits 1. It changes nothing when
 # every package is already there, so it is cheap to run on every build.
+#
+# `scripts/bootstrap.sh --node-packages` (run by `make test` and `make check`, not by the demo, which
+# needs none) installs the node packages alone: `npm ci` runs only when node_modules is missing or
+# was installed from another package-lock.json (the lock's hash is kept in node_modules/.antkit-lock),
+# and is left out where node or npm is not installed (the interop tests then skip, saying so).
 set -euo pipefail
 
 packages=(
@@ -21,6 +27,28 @@ packages=(
   cvc5
   time
 )
+
+node_packages() {
+  local root lock stamp want
+  root=$(cd "$(dirname "$0")/.." && pwd)
+  lock="$root/package-lock.json"
+  stamp="$root/node_modules/.antkit-lock"
+  [ -f "$lock" ] || return 0
+  # Without node the interop tests skip, saying so; nothing to do here.
+  command -v node >/dev/null && command -v npm >/dev/null || return 0
+  want=$(sha256sum "$lock" | cut -d' ' -f1)
+  if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want" ]; then
+    return 0
+  fi
+  echo "bootstrap: npm ci (node packages for the interop tests)" >&2
+  (cd "$root" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  echo "$want" >"$stamp"
+}
+
+if [ "${1:-}" = "--node-packages" ]; then
+  node_packages
+  exit 0
+fi
 
 missing=()
 for p in "${packages[@]}"; do

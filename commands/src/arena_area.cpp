@@ -1,5 +1,5 @@
 // The exact area of an arena named by a spec or a WKT file (options.hpp), for the Buffon estimate's
-// relative error, and whether two arguments name one arena.
+// relative error, whether two arguments name one arena, and its walls for the MCAP export.
 #include <antkit/commands/options.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/geometry/wkt.hpp>
@@ -41,6 +41,15 @@ bool same_arena(const std::string& a, const std::string& b) {
   } catch (const kernel::InputError&) {
     return false;
   }
+}
+
+devices::McapOptions mcap_options() {
+  devices::McapOptions o;
+  o.arena_walls = [](const std::string& spec) {
+    return is_wkt_path(spec) ? geometry::read_wkt_file(spec).walls_fx()
+                             : geometry::build_arena_spec(spec, "arena").arena.walls_fx();
+  };
+  return o;
 }
 
 } // namespace antkit::commands

@@ -3,6 +3,7 @@
 // cli/, and the Python package, python/) so that both read an option the same way: the STC variant
 // by name, its marker noise, its start; the Buffon measurement from two logs; an arena named by a
 // spec or a WKT file. Each names the option it reads in an InputError(where).
+#include <antkit/devices/mcap_export.hpp>
 #include <antkit/devices/odometry.hpp>
 #include <antkit/kernel/grid.hpp>
 #include <antkit/maps/map_io.hpp>
@@ -48,5 +49,9 @@ namespace antkit::commands {
 // numbers (`circle:d=20` and `circle:d=20.0`), or one WKT file (the same file, or the same text).
 // Anything that does not parse is compared as text.
 [[nodiscard]] bool same_arena(const std::string& a, const std::string& b);
+
+// The MCAP export's options (`export mcap`, `replay --mcap`): a log header's arena, a spec or a WKT
+// file, drawn from geometry's arena (its walls in body diameters).
+[[nodiscard]] devices::McapOptions mcap_options();
 
 } // namespace antkit::commands

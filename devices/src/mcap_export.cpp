@@ -1,0 +1,488 @@
+// A hardware log as MCAP (mcap_export.hpp).
+#include <algorithm>
+#include <antkit/devices/mcap_export.hpp>
+#include <antkit/devices/odometry.hpp>
+#include <antkit/devices/robot.hpp>
+#include <antkit/io/atomic_file.hpp>
+#include <antkit/io/mcap.hpp>
+#include <antkit/kernel/angle.hpp>
+#include <antkit/kernel/hash.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <array>
+#include <charconv>
+#include <functional>
+#include <optional>
+#include <sstream>
+
+namespace antkit::devices {
+
+namespace {
+
+namespace mcap = io::mcap;
+
+// The schemas: JSON Schema texts written for antkit, naming the fields of Foxglove's message types
+// that antkit fills (the names and types of foxglove/schemas' jsonschema/*.json).
+constexpr std::string_view kTime =
+    R"({"type":"object","properties":{"sec":{"type":"integer","minimum":0},)"
+    R"("nsec":{"type":"integer","minimum":0,"maximum":999999999}}})";
+std::string vec3() {
+  return R"({"type":"object","properties":{"x":{"type":"number"},"y":{"type":"number"},)"
+         R"("z":{"type":"number"}}})";
+}
+std::string pose_schema() {
+  return R"({"type":"object","properties":{"position":)" + vec3() +
+         R"(,"orientation":{"type":"object","properties":{"x":{"type":"number"},)"
+         R"("y":{"type":"number"},"z":{"type":"number"},"w":{"type":"number"}}}}})";
+}
+std::string object_schema(std::string_view title, const std::string& properties) {
+  return R"({"title":")" + std::string(title) + R"(","type":"object","properties":{)" + properties +
+         "}}";
+}
+std::string timestamp_property() {
+  return R"("timestamp":)" + std::string(kTime);
+}
+const std::string kInts = R"({"type":"array","items":{"type":"integer"}})";
+
+std::string schema_text(std::string_view name) {
+  if (name == "foxglove.PoseInFrame")
+    return object_schema(name, timestamp_property() + R"(,"frame_id":{"type":"string"},"pose":)" +
+                                   pose_schema());
+  if (name == "foxglove.PosesInFrame")
+    return object_schema(name, timestamp_property() +
+                                   R"(,"frame_id":{"type":"string"},"poses":{"type":"array",)"
+                                   R"("items":)" +
+                                   pose_schema() + "}");
+  if (name == "foxglove.Log")
+    return object_schema(name,
+                         timestamp_property() +
+                             R"(,"level":{"type":"integer","minimum":0,"maximum":5},)"
+                             R"("message":{"type":"string"},"name":{"type":"string"},)"
+                             R"("file":{"type":"string"},"line":{"type":"integer","minimum":0})");
+  if (name == "foxglove.SceneUpdate") {
+    const std::string array = R"({"type":"array"})";
+    const std::string line =
+        R"({"type":"object","properties":{"type":{"type":"integer","minimum":0,"maximum":2},)"
+        R"("pose":)" +
+        pose_schema() +
+        R"(,"thickness":{"type":"number"},"scale_invariant":{"type":"boolean"},)"
+        R"("points":{"type":"array","items":)" +
+        vec3() +
+        R"(},"color":{"type":"object","properties":{"r":{"type":"number"},)"
+        R"("g":{"type":"number"},"b":{"type":"number"},"a":{"type":"number"}}},)"
+        R"("colors":{"type":"array"},"indices":{"type":"array","items":{"type":"integer"}}}})";
+    std::string entity = R"({"type":"object","properties":{)" + timestamp_property() +
+                         R"(,"frame_id":{"type":"string"},"id":{"type":"string"},"lifetime":)" +
+                         std::string(kTime) +
+                         R"(,"frame_locked":{"type":"boolean"},"metadata":{"type":"array"},)";
+    for (const char* p :
+         {"arrows", "cubes", "spheres", "cylinders", "triangles", "texts", "models"})
+      entity += "\"" + std::string(p) + "\":" + array + ",";
+    entity += R"("lines":{"type":"array","items":)" + line + "}}}";
+    return object_schema(name, R"("deletions":{"type":"array"},"entities":{"type":"array",)"
+                               R"("items":)" +
+                                   entity + "}");
+  }
+  if (name == "antkit.Step")
+    return object_schema(name, timestamp_property() + R"(,"step":{"type":"integer"},"obs":)" +
+                                   kInts + R"(,"cmd":)" + kInts + R"(,"odo":)" + kInts +
+                                   R"(,"state":{"type":"string"})");
+  if (name == "antkit.ReplayedStep")
+    return object_schema(
+        name, timestamp_property() +
+                  R"(,"step":{"type":"integer"},"identical":{"type":"boolean"})"
+                  R"(,"obs":)" +
+                  kInts + R"(,"cmd":)" + kInts + R"(,"odo":)" + kInts +
+                  R"(,"state":{"type":"string"},"divergence":{"type":"object","properties":{)"
+                  R"("field":{"type":"string"},"recorded":{"type":"string"},)"
+                  R"("replayed":{"type":"string"}}})");
+  // antkit.Exchanges
+  return object_schema(
+      name, timestamp_property() +
+                R"(,"step":{"type":"integer"},"io":{"type":"array","items":{"type":"object",)"
+                R"("properties":{"sent":{"type":"string","contentEncoding":"base64"},)"
+                R"("received":{"type":"string","contentEncoding":"base64"},)"
+                R"("t_ns":{"type":["integer","null"]}}}})");
+}
+
+// JSON text, written by hand so that every byte is fixed by the values.
+void put_string(std::string& out, std::string_view s) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  out += '"';
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c < 0x20 || c >= 0x7F) { // a log is ASCII; anything else is shown as its byte
+      out += "\\u00";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    } else {
+      out += ch;
+    }
+  }
+  out += '"';
+}
+void put_number(std::string& out, double v) {
+  std::array<char, 32> buf{};
+  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  out.append(buf.data(), r.ptr);
+}
+void put_ints(std::string& out, const std::vector<std::int64_t>& v) {
+  out += '[';
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i > 0) out += ',';
+    out += std::to_string(v[i]);
+  }
+  out += ']';
+}
+
+std::uint64_t log_time(std::int64_t t_ns) {
+  return t_ns < 0 ? 0 : static_cast<std::uint64_t>(t_ns);
+}
+std::string timestamp(std::uint64_t t) {
+  return R"("timestamp":{"sec":)" + std::to_string(t / 1000000000U) +
+         ",\"nsec\":" + std::to_string(t % 1000000000U) + "}";
+}
+
+struct Pose {
+  double x = 0, y = 0, qz = 0, qw = 1;
+};
+void put_pose(std::string& out, const Pose& p) {
+  out += R"({"position":{"x":)";
+  put_number(out, p.x);
+  out += ",\"y\":";
+  put_number(out, p.y);
+  out += R"(,"z":0},"orientation":{"x":0,"y":0,"z":)";
+  put_number(out, p.qz);
+  out += ",\"w\":";
+  put_number(out, p.qw);
+  out += "}}";
+}
+Pose pose_of(double x, double y, kernel::Angle heading) {
+  // The rotation by `heading` about z: (0, 0, sin h/2, cos h/2), by the kernel's sine; h in
+  // (-pi, pi], so that w >= 0 (q and -q are the same rotation; this one is the usual spelling).
+  const auto half = kernel::Angle::from_raw(static_cast<std::uint32_t>(heading.signed_raw() / 2));
+  constexpr double kOne = 65536.0;
+  return {x, y, kernel::sin(half).raw() / kOne, kernel::cos(half).raw() / kOne};
+}
+
+// The pose after each step, where the log says it: the serial robots' dead reckoning (metres),
+// stc-floor's believed sub-cell and quarter-turn heading.
+class Poser {
+public:
+  explicit Poser(const LogHeader& header) {
+    if (const auto kind = parse_robot(header.robot)) {
+      robot_ = &describe(*kind);
+      frame_ = "odom";
+    } else if (header.robot == "stc-floor") {
+      floor_ = true;
+      frame_ = "map";
+    }
+  }
+  [[nodiscard]] const std::string& frame() const noexcept { return frame_; }
+  std::optional<Pose> after(const LogRecord& r) {
+    if (floor_ && r.odo.size() >= 3)
+      return pose_of(static_cast<double>(r.odo[0]), static_cast<double>(r.odo[1]),
+                     kernel::Angle::from_raw(static_cast<std::uint32_t>((r.odo[2] & 3) << 30)));
+    if (robot_ == nullptr || r.odo.size() != 2 || robot_->wheel_base_um <= 0) return std::nullopt;
+    const WheelTravel w{r.odo[0], r.odo[1]};
+    if (!dr_)
+      dr_.emplace(*robot_, w);
+    else
+      dr_->update(w);
+    const double metres = robot_->diameter_um / 1e6 / 65536.0; // raw Q15.16 body diameters
+    return pose_of(dr_->position().x.raw() * metres, dr_->position().y.raw() * metres,
+                   dr_->heading());
+  }
+  // Metres per body diameter (the arena's unit), 0 when the robot has none.
+  [[nodiscard]] double diameter_m() const noexcept {
+    return robot_ != nullptr ? robot_->diameter_um / 1e6 : 0;
+  }
+
+private:
+  const RobotDescription* robot_ = nullptr;
+  bool floor_ = false;
+  std::string frame_;
+  std::optional<DeadReckoning> dr_;
+};
+
+// The channels of one run (recorded or exported) and the messages of its steps.
+class RunChannels {
+public:
+  RunChannels(mcap::Writer& w, const std::function<std::uint16_t(std::string_view)>& schema,
+              const std::string& prefix)
+      : w_(w) {
+    // Exported: /pose, /trail, /antkit/step, /antkit/io; a replay's: /recorded/...
+    const std::string own = prefix.empty() ? "/antkit" : prefix;
+    pose_ = w.add_channel(schema("foxglove.PoseInFrame"), prefix + "/pose", "json");
+    trail_ = w.add_channel(schema("foxglove.PosesInFrame"), prefix + "/trail", "json");
+    step_ = w.add_channel(schema("antkit.Step"), own + "/step", "json");
+    io_ = w.add_channel(schema("antkit.Exchanges"), own + "/io", "json");
+  }
+  void write(const LogRecord& r, const std::optional<Pose>& pose, const std::string& frame,
+             const std::vector<Pose>& trail, bool trail_now) {
+    const auto t = log_time(r.time_ns);
+    const auto seq = static_cast<std::uint32_t>(r.step);
+    if (pose) {
+      std::string m = "{" + timestamp(t) + ",\"frame_id\":";
+      put_string(m, frame);
+      m += ",\"pose\":";
+      put_pose(m, *pose);
+      m += "}";
+      w_.write({pose_, seq, t, t, std::move(m)});
+    }
+    if (trail_now && !trail.empty()) {
+      std::string m = "{" + timestamp(t) + ",\"frame_id\":";
+      put_string(m, frame);
+      m += ",\"poses\":[";
+      const std::size_t n = std::min<std::size_t>(trail.size(), kTrailPoses);
+      for (std::size_t j = 0; j < n; ++j) {
+        if (j > 0) m += ',';
+        // Thinned evenly, first and last kept.
+        const std::size_t k = n == 1 ? trail.size() - 1 : j * (trail.size() - 1) / (n - 1);
+        put_pose(m, trail[k]);
+      }
+      m += "]}";
+      w_.write({trail_, seq, t, t, std::move(m)});
+    }
+    w_.write({step_, seq, t, t, step_json(r, t)});
+    std::string m = "{" + timestamp(t) + ",\"step\":" + std::to_string(r.step) + ",\"io\":[";
+    for (std::size_t k = 0; k < r.io.size(); ++k) {
+      if (k > 0) m += ',';
+      m += "{\"sent\":";
+      put_string(m, base64(r.io[k].sent));
+      m += ",\"received\":";
+      put_string(m, base64(r.io[k].received));
+      m += ",\"t_ns\":" + (r.io[k].t_ns < 0 ? std::string("null") : std::to_string(r.io[k].t_ns));
+      m += '}';
+    }
+    m += "]}";
+    w_.write({io_, seq, t, t, std::move(m)});
+  }
+  static std::string step_fields(const LogRecord& r) {
+    std::string m = ",\"obs\":";
+    put_ints(m, r.obs);
+    m += ",\"cmd\":";
+    put_ints(m, r.cmd);
+    m += ",\"odo\":";
+    put_ints(m, r.odo);
+    m += ",\"state\":\"" + kernel::hash_hex(r.state) + "\"";
+    return m;
+  }
+  static std::string step_json(const LogRecord& r, std::uint64_t t) {
+    return "{" + timestamp(t) + ",\"step\":" + std::to_string(r.step) + step_fields(r) + "}";
+  }
+  static constexpr std::size_t kTrailPoses = 1000;
+
+private:
+  mcap::Writer& w_;
+  std::uint16_t pose_ = 0, trail_ = 0, step_ = 0, io_ = 0;
+};
+
+std::string log_message(std::uint64_t t, int level, const std::string& text) {
+  std::string m = "{" + timestamp(t) + ",\"level\":" + std::to_string(level) + ",\"message\":";
+  put_string(m, text);
+  m += R"(,"name":"antkit","file":"","line":0})";
+  return m;
+}
+
+std::string arena_message(const std::vector<kernel::FxSegment>& walls, double metres) {
+  std::string m = R"({"deletions":[],"entities":[{)" + timestamp(0) +
+                  R"(,"frame_id":"arena","id":"arena","lifetime":{"sec":0,"nsec":0},)"
+                  R"("frame_locked":true,"metadata":[],"arrows":[],"cubes":[],"spheres":[],)"
+                  R"("cylinders":[],"triangles":[],"texts":[],"models":[],"lines":[{"type":2,)"
+                  R"("pose":)";
+  put_pose(m, Pose{});
+  m += R"(,"thickness":2,"scale_invariant":true,"points":[)";
+  const double unit = metres / 65536.0;
+  bool first = true;
+  for (const auto& s : walls)
+    for (const auto& p : {s.a, s.b}) {
+      if (!first) m += ',';
+      first = false;
+      m += "{\"x\":";
+      put_number(m, p.x.raw() * unit);
+      m += ",\"y\":";
+      put_number(m, p.y.raw() * unit);
+      m += ",\"z\":0}";
+    }
+  m += R"(],"color":{"r":0.2,"g":0.2,"b":0.2,"a":1},"colors":[],"indices":[]}]}]})";
+  return m;
+}
+
+std::string header_text(const LogHeader& h) {
+  std::string s = "robot " + h.robot + ", controller " + h.controller;
+  for (const auto& [k, v] : h.params) s += ", " + k + "=" + std::to_string(v);
+  s += ", seed " + std::to_string(h.seed);
+  if (!h.arena.empty()) s += ", arena " + h.arena;
+  return s;
+}
+
+} // namespace
+
+std::string base64(std::string_view bytes) {
+  static constexpr char kAlphabet[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  const auto byte = [&](std::size_t k) {
+    return static_cast<std::uint32_t>(static_cast<std::uint8_t>(bytes[k]));
+  };
+  std::size_t i = 0;
+  for (; i + 3 <= bytes.size(); i += 3) {
+    const std::uint32_t v = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
+    for (int k = 18; k >= 0; k -= 6) out += kAlphabet[(v >> k) & 63U];
+  }
+  if (const std::size_t rest = bytes.size() - i; rest > 0) {
+    std::uint32_t v = byte(i) << 16;
+    if (rest == 2) v |= byte(i + 1) << 8;
+    out += kAlphabet[(v >> 18) & 63U];
+    out += kAlphabet[(v >> 12) & 63U];
+    out += rest == 2 ? kAlphabet[(v >> 6) & 63U] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+namespace {
+
+// The file, streamed to `bytes`; the log is read whole first, so that a malformed one throws before
+// a byte is written.
+void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_name,
+                const McapOptions& options, const ReplayResult* replay, McapSummary* summary) {
+  const LogHeader& header = reader.header();
+  std::vector<LogRecord> records;
+  for (LogRecord r; reader.next(r); r = LogRecord{}) records.push_back(std::move(r));
+  Poser poser(header);
+  std::vector<kernel::FxSegment> walls;
+  if (!header.arena.empty() && options.arena_walls && poser.diameter_m() > 0) try {
+      walls = options.arena_walls(header.arena);
+    } catch (const kernel::InputError& e) {
+      throw kernel::InputError(log_name, 1, 1,
+                               "the header's arena '" + header.arena + "': " + e.message());
+    }
+
+  mcap::Writer w(bytes);
+  // Schemas first, one per name, in a fixed order.
+  std::vector<std::pair<std::string, std::uint16_t>> schema_ids;
+  for (const char* name :
+       {"foxglove.PoseInFrame", "foxglove.PosesInFrame", "antkit.Step", "antkit.Exchanges",
+        "foxglove.Log", "foxglove.SceneUpdate", "antkit.ReplayedStep"}) {
+    if (std::string_view(name) == "antkit.ReplayedStep" && replay == nullptr) continue;
+    if (std::string_view(name) == "foxglove.SceneUpdate" && walls.empty()) continue;
+    schema_ids.emplace_back(name, w.add_schema(name, "jsonschema", schema_text(name)));
+  }
+  const auto id_of = [&](std::string_view name) -> std::uint16_t {
+    for (const auto& [known, id] : schema_ids)
+      if (known == name) return id;
+    return 0;
+  };
+  RunChannels run(w, id_of, replay != nullptr ? "/recorded" : "");
+  const std::uint16_t log = w.add_channel(id_of("foxglove.Log"), "/log", "json");
+  const std::uint16_t arena =
+      walls.empty() ? 0 : w.add_channel(id_of("foxglove.SceneUpdate"), "/arena", "json");
+  const std::uint16_t replayed =
+      replay == nullptr ? 0 : w.add_channel(id_of("antkit.ReplayedStep"), "/replayed/step", "json");
+
+  w.write({log, 0, 0, 0, log_message(0, 2, header_text(header))});
+  if (arena != 0) w.write({arena, 0, 0, 0, arena_message(walls, poser.diameter_m())});
+
+  const std::size_t n = records.size();
+  const std::size_t every = std::max<std::size_t>(1, (n + 99) / 100);
+  std::vector<Pose> trail;
+  const std::optional<Divergence> divergence =
+      replay != nullptr ? replay->first_divergence : std::nullopt;
+  bool divergence_written = false;
+  const auto write_divergence = [&](std::uint64_t t, std::uint32_t seq) {
+    const Divergence& d = *divergence;
+    std::string m = "{" + timestamp(t) + ",\"step\":" + std::to_string(d.step) +
+                    R"(,"identical":false,"divergence":{"field":)";
+    put_string(m, d.field);
+    m += ",\"recorded\":";
+    put_string(m, d.expected);
+    m += ",\"replayed\":";
+    put_string(m, d.actual);
+    m += "}}";
+    w.write({replayed, seq, t, t, std::move(m)});
+    w.write({log, seq, t, t,
+             log_message(t, 4,
+                         "step " + std::to_string(d.step) + ": " + d.field + ": the log holds " +
+                             d.expected + ", the replay derived " + d.actual)});
+    divergence_written = true;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const LogRecord& r = records[i];
+    const auto pose = poser.after(r);
+    if (pose) trail.push_back(*pose);
+    run.write(r, pose, poser.frame(), trail, (i + 1) % every == 0 || i + 1 == n);
+    if (replay == nullptr) continue;
+    const auto t = log_time(r.time_ns);
+    const auto seq = static_cast<std::uint32_t>(r.step);
+    if (r.step < replay->steps)
+      w.write({replayed, seq, t, t,
+               "{" + timestamp(t) + ",\"step\":" + std::to_string(r.step) + ",\"identical\":true" +
+                   RunChannels::step_fields(r) + "}"});
+    else if (divergence && divergence->step == r.step && !divergence_written)
+      write_divergence(t, seq);
+  }
+  const std::uint64_t last_t = n > 0 ? log_time(records.back().time_ns) : 0;
+  const auto& stop = reader.stop();
+  const auto last_seq =
+      static_cast<std::uint32_t>(stop ? stop->step : static_cast<std::int64_t>(n));
+  if (divergence && !divergence_written) write_divergence(last_t, last_seq);
+  if (stop)
+    w.write({log, last_seq, last_t, last_t,
+             log_message(last_t, stop->reason == "done" ? 2 : 3, "stop: " + stop->reason)});
+  else
+    w.write({log, last_seq, last_t, last_t,
+             log_message(last_t, 3,
+                         reader.truncated() ? "the log's last line is cut short"
+                                            : "the log has no stop record")});
+  if (replay != nullptr && replay->identical)
+    w.write({log, last_seq, last_t, last_t,
+             log_message(last_t, 2,
+                         "replay identical: " + std::to_string(replay->steps) + " steps, hash " +
+                             kernel::hash_hex(replay->hash))});
+  w.finish();
+  if (summary != nullptr) {
+    summary->bytes = w.bytes();
+    summary->messages = w.messages();
+    summary->channels = w.channel_counts();
+  }
+}
+
+} // namespace
+
+std::string mcap_of_log(LogReader& reader, const std::string& log_name, const McapOptions& options,
+                        const ReplayResult* replay, McapSummary* summary) {
+  std::ostringstream bytes;
+  write_mcap(bytes, reader, log_name, options, replay, summary);
+  return std::move(bytes).str();
+}
+
+McapSummary export_mcap(const std::string& log, const std::string& out,
+                        const McapOptions& options) {
+  LogReader reader(log);
+  McapSummary s;
+  io::write_file_atomic(out,
+                        [&](std::ostream& o) { write_mcap(o, reader, log, options, nullptr, &s); });
+  return s;
+}
+
+McapSummary export_replay_mcap(const std::string& log, const ReplayResult& result,
+                               const std::string& out, const McapOptions& options) {
+  LogReader reader(log);
+  McapSummary s;
+  io::write_file_atomic(out,
+                        [&](std::ostream& o) { write_mcap(o, reader, log, options, &result, &s); });
+  return s;
+}
+
+} // namespace antkit::devices

@@ -1,0 +1,294 @@
+// The MCAP writer (mcap.hpp), from the specification's record layouts.
+#include <algorithm>
+#include <antkit/io/mcap.hpp>
+#include <array>
+#include <limits>
+#include <stdexcept>
+#include <tuple>
+
+namespace antkit::io::mcap {
+
+namespace {
+
+// Slicing by 8 (eight tables: table k advances a byte through k further zero bytes), so that the
+// CRC of a large file costs about a byte-wise pass over an eighth of it.
+using CrcTables = std::array<std::array<std::uint32_t, 256>, 8>;
+constexpr CrcTables make_crc_tables() {
+  CrcTables t{};
+  for (std::uint32_t n = 0; n < 256; ++n) {
+    std::uint32_t c = n;
+    for (int k = 0; k < 8; ++k) c = (c & 1U) != 0 ? 0xEDB88320U ^ (c >> 1) : c >> 1;
+    t[0][n] = c;
+  }
+  for (std::size_t k = 1; k < 8; ++k)
+    for (std::size_t n = 0; n < 256; ++n) t[k][n] = (t[k - 1][n] >> 8) ^ t[0][t[k - 1][n] & 0xFFU];
+  return t;
+}
+constexpr CrcTables kCrc = make_crc_tables();
+
+void put_map_u16_u64(std::string& out, const std::map<std::uint16_t, std::uint64_t>& m) {
+  put_u32(out, static_cast<std::uint32_t>(m.size() * 10));
+  for (const auto& [k, v] : m) {
+    put_u16(out, k);
+    put_u64(out, v);
+  }
+}
+
+std::string schema_content(std::uint16_t id, std::string_view name, std::string_view encoding,
+                           std::string_view data) {
+  std::string c;
+  put_u16(c, id);
+  put_string(c, name);
+  put_string(c, encoding);
+  put_string(c, data); // uint32 length-prefixed bytes: the same layout as a string
+  return c;
+}
+
+std::string channel_content(std::uint16_t id, std::uint16_t schema_id, std::string_view topic,
+                            std::string_view encoding,
+                            const std::vector<std::pair<std::string, std::string>>& metadata) {
+  std::string c;
+  put_u16(c, id);
+  put_u16(c, schema_id);
+  put_string(c, topic);
+  put_string(c, encoding);
+  std::string map;
+  for (const auto& [k, v] : metadata) {
+    put_string(map, k);
+    put_string(map, v);
+  }
+  put_string(c, map);
+  return c;
+}
+
+} // namespace
+
+std::uint32_t crc32(std::string_view bytes, std::uint32_t crc) noexcept {
+  crc = ~crc;
+  const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
+  std::size_t n = bytes.size();
+  for (; n >= 8; n -= 8, p += 8) {
+    // The bytes in file order, whatever the machine's byte order.
+    const std::uint32_t lo =
+        crc ^ (static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+               static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24);
+    crc = kCrc[7][lo & 0xFFU] ^ kCrc[6][(lo >> 8) & 0xFFU] ^ kCrc[5][(lo >> 16) & 0xFFU] ^
+          kCrc[4][lo >> 24] ^ kCrc[3][p[4]] ^ kCrc[2][p[5]] ^ kCrc[1][p[6]] ^ kCrc[0][p[7]];
+  }
+  for (; n > 0; --n, ++p) crc = kCrc[0][(crc ^ *p) & 0xFFU] ^ (crc >> 8);
+  return ~crc;
+}
+
+void put_u8(std::string& out, std::uint8_t v) {
+  out.push_back(static_cast<char>(v));
+}
+void put_u16(std::string& out, std::uint16_t v) {
+  for (int i = 0; i < 2; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFU));
+}
+void put_u32(std::string& out, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFU));
+}
+void put_u64(std::string& out, std::uint64_t v) {
+  for (int i = 0; i < 8; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFU));
+}
+void put_string(std::string& out, std::string_view s) {
+  if (s.size() > std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("mcap: a string or byte field over 4 GiB");
+  put_u32(out, static_cast<std::uint32_t>(s.size()));
+  out.append(s);
+}
+void put_record(std::string& out, Op op, std::string_view content) {
+  put_u8(out, static_cast<std::uint8_t>(op));
+  put_u64(out, content.size());
+  out.append(content);
+}
+
+Writer::Writer(std::ostream& out, WriterOptions options) : out_(out), options_(std::move(options)) {
+  std::string head(kMagic);
+  std::string c;
+  put_string(c, options_.profile);
+  put_string(c, options_.library);
+  put_record(head, Op::Header, c);
+  emit(head);
+}
+
+void Writer::emit(std::string_view bytes) {
+  out_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  position_ += bytes.size();
+  data_crc_ = crc32(bytes, data_crc_);
+}
+
+std::uint16_t Writer::add_schema(std::string_view name, std::string_view encoding,
+                                 std::string_view data) {
+  if (finished_) throw std::logic_error("mcap: add_schema after finish");
+  if (schemas_.size() >= 65535) throw std::logic_error("mcap: more than 65535 schemas");
+  const auto id = static_cast<std::uint16_t>(schemas_.size() + 1);
+  schemas_.push_back({id, std::string(name), std::string(encoding), std::string(data)});
+  std::string r;
+  put_record(r, Op::Schema, schema_content(id, name, encoding, data));
+  emit(r);
+  return id;
+}
+
+std::uint16_t
+Writer::add_channel(std::uint16_t schema_id, std::string_view topic,
+                    std::string_view message_encoding,
+                    const std::vector<std::pair<std::string, std::string>>& metadata) {
+  if (finished_) throw std::logic_error("mcap: add_channel after finish");
+  if (schema_id > schemas_.size()) throw std::logic_error("mcap: a channel of an unknown schema");
+  if (channels_.size() >= 65535) throw std::logic_error("mcap: more than 65535 channels");
+  const auto id = static_cast<std::uint16_t>(channels_.size() + 1);
+  channels_.push_back({id, schema_id, std::string(topic), std::string(message_encoding), metadata});
+  channel_counts_[id] = 0;
+  std::string r;
+  put_record(r, Op::Channel, channel_content(id, schema_id, topic, message_encoding, metadata));
+  emit(r);
+  return id;
+}
+
+void Writer::write(const Message& m) {
+  if (finished_) throw std::logic_error("mcap: write after finish");
+  if (m.channel_id == 0 || m.channel_id > channels_.size())
+    throw std::logic_error("mcap: a message on an unknown channel");
+  if (chunk_index_.empty()) {
+    chunk_start_ = m.log_time;
+    chunk_end_ = m.log_time;
+  }
+  chunk_start_ = std::min(chunk_start_, m.log_time);
+  chunk_end_ = std::max(chunk_end_, m.log_time);
+  chunk_index_[m.channel_id].emplace_back(m.log_time, chunk_.size());
+  // The Message record, straight into the chunk.
+  put_u8(chunk_, static_cast<std::uint8_t>(Op::Message));
+  put_u64(chunk_, 2 + 4 + 8 + 8 + m.data.size());
+  put_u16(chunk_, m.channel_id);
+  put_u32(chunk_, m.sequence);
+  put_u64(chunk_, m.log_time);
+  put_u64(chunk_, m.publish_time);
+  chunk_.append(m.data);
+  start_time_ = message_count_ == 0 ? m.log_time : std::min(start_time_, m.log_time);
+  end_time_ = message_count_ == 0 ? m.log_time : std::max(end_time_, m.log_time);
+  ++message_count_;
+  ++channel_counts_[m.channel_id];
+  if (chunk_.size() >= options_.chunk_size) close_chunk();
+}
+
+void Writer::close_chunk() {
+  if (chunk_index_.empty()) return;
+  const std::uint64_t chunk_offset = position_;
+  // The record's head, then its records as they are (no copy of the chunk).
+  std::string head;
+  put_u8(head, static_cast<std::uint8_t>(Op::Chunk));
+  put_u64(head, 8 + 8 + 8 + 4 + 4 + 8 + chunk_.size());
+  put_u64(head, chunk_start_);
+  put_u64(head, chunk_end_);
+  put_u64(head, chunk_.size());
+  put_u32(head, crc32(chunk_));
+  put_string(head, ""); // no compression
+  put_u64(head, chunk_.size());
+  emit(head);
+  emit(chunk_);
+  const std::uint64_t chunk_length = head.size() + chunk_.size();
+  // One MessageIndex per channel, in channel id order; entries in log time order (stable: equal
+  // times keep the order they were written in).
+  const std::uint64_t index_start = position_;
+  std::map<std::uint16_t, std::uint64_t> index_offsets;
+  for (auto& [channel, entries] : chunk_index_) {
+    std::stable_sort(entries.begin(), entries.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::string ic;
+    put_u16(ic, channel);
+    put_u32(ic, static_cast<std::uint32_t>(entries.size() * 16));
+    for (const auto& [t, offset] : entries) {
+      put_u64(ic, t);
+      put_u64(ic, offset);
+    }
+    std::string ir;
+    put_record(ir, Op::MessageIndex, ic);
+    index_offsets[channel] = position_;
+    emit(ir);
+  }
+  std::string ci;
+  put_u64(ci, chunk_start_);
+  put_u64(ci, chunk_end_);
+  put_u64(ci, chunk_offset);
+  put_u64(ci, chunk_length);
+  put_map_u16_u64(ci, index_offsets);
+  put_u64(ci, position_ - index_start);
+  put_string(ci, "");
+  put_u64(ci, chunk_.size()); // compressed size: the records as they are
+  put_u64(ci, chunk_.size());
+  put_record(chunk_indexes_, Op::ChunkIndex, ci);
+  ++chunk_count_;
+  chunk_.clear();
+  chunk_index_.clear();
+}
+
+std::vector<std::pair<std::string, std::uint64_t>> Writer::channel_counts() const {
+  std::vector<std::pair<std::string, std::uint64_t>> out;
+  for (const auto& c : channels_) out.emplace_back(c.topic, channel_counts_.at(c.id));
+  return out;
+}
+
+void Writer::finish() {
+  if (finished_) throw std::logic_error("mcap: finish twice");
+  close_chunk();
+  std::string end;
+  std::string dc;
+  put_u32(dc, data_crc_);
+  put_record(end, Op::DataEnd, dc);
+  emit(end);
+  finished_ = true;
+
+  // The summary, grouped by opcode; each group's offset and length for its SummaryOffset.
+  const std::uint64_t summary_start = position_;
+  std::string summary;
+  std::vector<std::tuple<Op, std::uint64_t, std::uint64_t>> groups;
+  const auto group = [&](Op op, const std::string& records) {
+    if (records.empty()) return;
+    groups.emplace_back(op, summary_start + summary.size(), records.size());
+    summary += records;
+  };
+  std::string schemas, channels, statistics;
+  for (const auto& s : schemas_)
+    put_record(schemas, Op::Schema, schema_content(s.id, s.name, s.encoding, s.data));
+  for (const auto& c : channels_)
+    put_record(channels, Op::Channel,
+               channel_content(c.id, c.schema_id, c.topic, c.encoding, c.metadata));
+  std::string st;
+  put_u64(st, message_count_);
+  put_u16(st, static_cast<std::uint16_t>(schemas_.size()));
+  put_u32(st, static_cast<std::uint32_t>(channels_.size()));
+  put_u32(st, 0); // attachments
+  put_u32(st, 0); // metadata
+  put_u32(st, chunk_count_);
+  put_u64(st, start_time_);
+  put_u64(st, end_time_);
+  put_map_u16_u64(st, channel_counts_);
+  put_record(statistics, Op::Statistics, st);
+  group(Op::Schema, schemas);
+  group(Op::Channel, channels);
+  group(Op::Statistics, statistics);
+  group(Op::ChunkIndex, chunk_indexes_);
+
+  const std::uint64_t offsets_start = summary_start + summary.size();
+  std::string offsets;
+  for (const auto& [op, start, length] : groups) {
+    std::string oc;
+    put_u8(oc, static_cast<std::uint8_t>(op));
+    put_u64(oc, start);
+    put_u64(oc, length);
+    put_record(offsets, Op::SummaryOffset, oc);
+  }
+  // The footer: its CRC covers the summary, the offsets and the footer up to this field.
+  std::string tail = summary + offsets;
+  put_u8(tail, static_cast<std::uint8_t>(Op::Footer));
+  put_u64(tail, 8 + 8 + 4);
+  put_u64(tail, summary_start);
+  put_u64(tail, offsets_start);
+  put_u32(tail, crc32(tail));
+  tail.append(kMagic);
+  emit(tail);
+  out_.flush();
+}
+
+} // namespace antkit::io::mcap

@@ -1,0 +1,222 @@
+// A hardware log as MCAP (devices/mcap_export.hpp): the channels, their schemas and counts for a
+// committed recording (data/logs) and for one recorded here through an emulator; the same bytes
+// twice; the replay's side-by-side file and its divergence. Read back with the test's MCAP reader
+// (tests/support/mcap_reader.hpp). The official readers check the same files in ctest interop.mcap.
+#include "emulated_robot.hpp"
+#include "mcap_reader.hpp"
+#include "test_paths.hpp"
+
+#include <antkit/devices/log.hpp>
+#include <antkit/devices/mcap_export.hpp>
+#include <antkit/devices/replay.hpp>
+#include <antkit/geometry/arena_spec.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace devices = antkit::devices;
+namespace reader = antkit::test::mcap;
+using antkit::test::TempDir;
+
+namespace {
+
+std::string committed(const std::string& name) {
+  return std::string(antkit::test::source_dir()) + "/data/logs/" + name;
+}
+
+devices::McapOptions with_arenas() {
+  devices::McapOptions o;
+  o.arena_walls = [](const std::string& spec) {
+    return antkit::geometry::build_arena_spec(spec).arena.walls_fx();
+  };
+  return o;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// topic -> (schema name, messages)
+std::map<std::string, std::pair<std::string, std::size_t>> channels_of(const reader::File& f) {
+  std::map<std::string, std::pair<std::string, std::size_t>> out;
+  for (const auto& [id, c] : f.channels)
+    out[c.topic] = {c.schema_id == 0 ? "" : f.schemas.at(c.schema_id).name, 0};
+  for (const auto& m : f.messages) ++out[f.channels.at(m.channel_id).topic].second;
+  return out;
+}
+
+std::vector<nlohmann::json> messages_on(const reader::File& f, const std::string& topic) {
+  std::vector<nlohmann::json> out;
+  for (const auto& m : f.messages)
+    if (f.channels.at(m.channel_id).topic == topic) out.push_back(nlohmann::json::parse(m.data));
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("base64 as RFC 4648 spells it", "[devices][mcap]") {
+  CHECK(devices::base64("") == "");
+  CHECK(devices::base64("f") == "Zg==");
+  CHECK(devices::base64("fo") == "Zm8=");
+  CHECK(devices::base64("foo") == "Zm9v");
+  CHECK(devices::base64("foobar") == "Zm9vYmFy");
+  CHECK(devices::base64(std::string("\xff\x00\r\n", 4)) == "/wANCg==");
+}
+
+TEST_CASE("export mcap of a committed recording: channels, schemas, counts, same bytes",
+          "[devices][mcap]") {
+  TempDir dir;
+  const auto log = committed("khepera_buffon_circle8.jsonl");
+  const auto out = dir.file("k.mcap");
+  const auto s = devices::export_mcap(log, out, with_arenas());
+  const std::string bytes = slurp(out);
+  CHECK(s.bytes == bytes.size());
+  const auto f = reader::read(bytes);
+  CHECK(f.library == "antkit");
+  CHECK(f.profile == "");
+  for (const auto& [id, schema] : f.schemas) CHECK(schema.encoding == "jsonschema");
+  for (const auto& [id, c] : f.channels) CHECK(c.encoding == "json");
+  using C = std::pair<std::string, std::size_t>;
+  const std::map<std::string, C> expected{{"/pose", {"foxglove.PoseInFrame", 120}},
+                                          {"/trail", {"foxglove.PosesInFrame", 60}},
+                                          {"/antkit/step", {"antkit.Step", 120}},
+                                          {"/antkit/io", {"antkit.Exchanges", 120}},
+                                          {"/log", {"foxglove.Log", 2}},
+                                          {"/arena", {"foxglove.SceneUpdate", 1}}};
+  CHECK(channels_of(f) == expected);
+  CHECK(s.messages == f.messages.size());
+  CHECK(f.indexed_messages == f.messages.size());
+
+  // Step 40 as the log holds it: times, sequence, command, bytes.
+  devices::LogReader lr(log);
+  devices::LogRecord r;
+  for (int i = 0; i <= 40; ++i) REQUIRE(lr.next(r));
+  const auto steps = messages_on(f, "/antkit/step");
+  const auto& j = steps.at(40);
+  CHECK(j["step"] == 40);
+  CHECK(j["cmd"].get<std::vector<std::int64_t>>() == r.cmd);
+  CHECK(j["odo"].get<std::vector<std::int64_t>>() == r.odo);
+  CHECK(j["timestamp"]["sec"].get<std::int64_t>() * 1'000'000'000 +
+            j["timestamp"]["nsec"].get<std::int64_t>() ==
+        r.time_ns);
+  const auto io = messages_on(f, "/antkit/io").at(40);
+  REQUIRE(io["io"].size() == r.io.size());
+  CHECK(io["io"][0]["sent"] == devices::base64(r.io[0].sent));
+  for (const auto& m : f.messages) {
+    const auto& topic = f.channels.at(m.channel_id).topic;
+    if (topic == "/antkit/step")
+      CHECK(m.log_time ==
+            static_cast<std::uint64_t>(
+                steps.at(m.sequence)["timestamp"]["sec"].get<std::int64_t>() * 1'000'000'000 +
+                steps.at(m.sequence)["timestamp"]["nsec"].get<std::int64_t>()));
+  }
+  const auto logs = messages_on(f, "/log");
+  CHECK(logs.back()["message"] == "stop: done");
+  // The same log, the same bytes.
+  const auto again = dir.file("k2.mcap");
+  devices::export_mcap(log, again, with_arenas());
+  CHECK(slurp(again) == bytes);
+}
+
+TEST_CASE("export mcap of a run recorded through an emulator", "[devices][mcap]") {
+  TempDir dir;
+  antkit::test::EmulatedRobot emu(devices::RobotKind::Epuck, "circle:d=8");
+  const auto log = dir.file("epuck.jsonl");
+  auto o =
+      antkit::test::record_options(devices::RobotKind::Epuck, emu.port(), "buffon", {}, 45, log);
+  o.link.timeout = std::chrono::milliseconds(2000);
+  REQUIRE(devices::record(o).completed);
+  emu.stop();
+  const auto out = dir.file("epuck.mcap");
+  devices::export_mcap(log, out); // no arena builder: no /arena channel
+  const auto f = reader::read(slurp(out));
+  const auto ch = channels_of(f);
+  CHECK(ch.count("/arena") == 0);
+  CHECK(ch.at("/pose").second == 45);
+  CHECK(ch.at("/antkit/step").second == 45);
+  CHECK(ch.at("/antkit/io").second == 45);
+  CHECK(ch.at("/trail").second == 45); // every step: at most 100 over the run
+  CHECK(ch.at("/log").second == 2);
+  // The pose follows the dead reckoning: the robot moved away from the origin.
+  const auto poses = messages_on(f, "/pose");
+  CHECK(poses.back()["frame_id"] == "odom");
+  // Unit quaternions about z, spelled with w >= 0.
+  for (const auto& p : poses) {
+    const double z = p["pose"]["orientation"]["z"], w = p["pose"]["orientation"]["w"];
+    CHECK(w >= 0);
+    CHECK(std::abs(z * z + w * w - 1) < 1e-3);
+  }
+  CHECK((poses.back()["pose"]["position"]["x"] != 0 || poses.back()["pose"]["position"]["y"] != 0));
+}
+
+TEST_CASE("replay --mcap: recorded and replayed side by side, the divergence as an ERROR",
+          "[devices][mcap]") {
+  TempDir dir;
+  const auto log = committed("khepera_buffon_circle8_cmd_edited.jsonl");
+  const auto r = devices::replay(log);
+  REQUIRE(!r.identical);
+  REQUIRE(r.first_divergence->step == 40);
+  const auto out = dir.file("r.mcap");
+  devices::export_replay_mcap(log, r, out, with_arenas());
+  const auto f = reader::read(slurp(out));
+  const auto ch = channels_of(f);
+  CHECK(ch.at("/recorded/step") == std::pair<std::string, std::size_t>{"antkit.Step", 120});
+  CHECK(ch.at("/replayed/step") == std::pair<std::string, std::size_t>{"antkit.ReplayedStep", 41});
+  const auto replayed = messages_on(f, "/replayed/step");
+  CHECK(replayed.at(39)["identical"] == true);
+  CHECK(replayed.back()["step"] == 40);
+  CHECK(replayed.back()["identical"] == false);
+  CHECK(replayed.back()["divergence"]["field"] == "cmd[1]");
+  CHECK(replayed.back()["divergence"]["recorded"] == r.first_divergence->expected);
+  CHECK(replayed.back()["divergence"]["replayed"] == r.first_divergence->actual);
+  std::size_t errors = 0;
+  const auto recorded = messages_on(f, "/recorded/step");
+  for (const auto& m : f.messages)
+    if (f.channels.at(m.channel_id).topic == "/log" &&
+        nlohmann::json::parse(m.data)["level"] == 4) {
+      ++errors;
+      CHECK(m.sequence == 40);
+      CHECK(nlohmann::json::parse(m.data)["timestamp"] == recorded.at(40)["timestamp"]);
+    }
+  CHECK(errors == 1);
+}
+
+TEST_CASE("export mcap refuses a malformed log at its line, and writes nothing",
+          "[devices][mcap]") {
+  TempDir dir;
+  const auto log = dir.file("bad.jsonl");
+  auto lines = antkit::test::lines_of(committed("khepera_buffon_circle8.jsonl"));
+  lines[5] = "{\"step\":4,\"t_ns\":oops}";
+  std::ofstream(log) << [&] {
+    std::string s;
+    for (const auto& l : lines) s += l + "\n";
+    return s;
+  }();
+  const auto out = dir.file("bad.mcap");
+  try {
+    devices::export_mcap(log, out);
+    FAIL("no error");
+  } catch (const antkit::kernel::InputError& e) {
+    CHECK(std::string(e.what()).find("bad.jsonl:6:") != std::string::npos);
+  }
+  CHECK(!std::filesystem::exists(out));
+  // An arena the header names but geometry refuses: located at the header.
+  lines = antkit::test::lines_of(committed("khepera_buffon_circle8.jsonl"));
+  const auto at = lines[0].find("circle:d=8");
+  lines[0].replace(at, 10, "circle:d=-1");
+  {
+    std::ofstream o(log);
+    for (const auto& l : lines) o << l << "\n";
+  }
+  CHECK_THROWS_WITH(devices::export_mcap(log, out, with_arenas()),
+                    Catch::Contains("bad.jsonl:1:1: the header's arena"));
+  CHECK(!std::filesystem::exists(out));
+}

@@ -1,0 +1,54 @@
+# ctest interop.mcap: antkit's MCAP files held against the official readers under node
+# (check_mcap.mjs: @mcap/core, @foxglove/schemas), from a committed recording (data/logs/):
+#   export mcap            the channels and counts, and the same bytes twice (no clock in them)
+#   replay --mcap          an identical replay: exit 0, recorded and replayed side by side
+#   replay --mcap (edited) cmd[1] of step 40 edited: exit 1, one ERROR log at step 40
+#   export mcap (bad log)  exit 2, a located error, no file
+# Fails when the node packages are not installed (run `scripts/bootstrap.sh --node-packages` or
+# `npm ci`); skipped only when node itself is absent.
+# Inputs: -DANTKIT=... -DNODE=... (empty when not found) -DSRC=<checkout> -DOUT=<scratch dir>
+if(NOT NODE)
+  message("interop: SKIPPED: node (Node.js 20) is not installed")
+  return()
+endif()
+if(NOT EXISTS ${SRC}/node_modules/@mcap/core/package.json
+   OR NOT EXISTS ${SRC}/node_modules/@foxglove/schemas/package.json)
+  message(FATAL_ERROR "interop: ${SRC}/node_modules is missing or incomplete: run "
+                      "`scripts/bootstrap.sh --node-packages` "
+                      "(or `npm ci` in the checkout)")
+endif()
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+set(log ${SRC}/data/logs/khepera_buffon_circle8.jsonl)
+set(edited ${SRC}/data/logs/khepera_buffon_circle8_cmd_edited.jsonl)
+
+function(run expect_rc)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL expect_rc)
+    message(FATAL_ERROR "interop: exit ${rc}, expected ${expect_rc}: ${ARGN}\n${out}${err}")
+  endif()
+  set(last_err "${err}" PARENT_SCOPE)
+endfunction()
+
+set(check ${NODE} ${CMAKE_CURRENT_LIST_DIR}/check_mcap.mjs)
+# 120 steps: a pose, a step and its bytes each; the trail every second step (at most 100 over a
+# run); the header and the stop on /log; the header's arena circle:d=8 once.
+run(0 ${ANTKIT} export mcap ${log} --out ${OUT}/export.mcap)
+run(0 ${ANTKIT} export mcap ${log} --out ${OUT}/export2.mcap)
+run(0 ${CMAKE_COMMAND} -E compare_files ${OUT}/export.mcap ${OUT}/export2.mcap)
+run(0 ${check} ${OUT}/export.mcap /pose=120 /trail=60 /antkit/step=120 /antkit/io=120 /log=2
+    /arena=1)
+run(0 ${ANTKIT} replay ${log} --mcap ${OUT}/replay.mcap)
+run(0 ${check} ${OUT}/replay.mcap /recorded/pose=120 /recorded/step=120 /recorded/io=120
+    /replayed/step=120 /log=3 /arena=1)
+run(1 ${ANTKIT} replay ${edited} --mcap ${OUT}/diverged.mcap)
+run(0 ${check} ${OUT}/diverged.mcap /recorded/step=120 /replayed/step=41 /log=3 error@40)
+# A malformed log: exit 2, FILE:LINE:COL on stderr, nothing written.
+file(WRITE ${OUT}/bad.jsonl "{\"schema\":1,\"robot\":\"khepera\"}\n")
+run(2 ${ANTKIT} export mcap ${OUT}/bad.jsonl --out ${OUT}/bad.mcap)
+if(NOT last_err MATCHES "bad.jsonl:1:[0-9]+:")
+  message(FATAL_ERROR "interop: no located error for a malformed log: ${last_err}")
+endif()
+if(EXISTS ${OUT}/bad.mcap)
+  message(FATAL_ERROR "interop: a malformed log left ${OUT}/bad.mcap")
+endif()
