@@ -234,10 +234,37 @@ ReplayResult replay_records(
     run.add(r.step, r.obs, cmd, r.state);
     ++out.steps;
   }
+  // After a divergence the rest is read unchecked, so that the result still says whether the log
+  // is whole (its stop record, a cut last line): the divergence stays the finding, and a line the
+  // reader refuses after it ends the reading there.
+  if (!out.identical && !until) {
+    try {
+      while (reader.next(r)) {
+      }
+    } catch (const kernel::InputError&) {
+    }
+  }
   out.truncated = reader.truncated();
   out.stop = reader.stop();
   out.complete = out.stop.has_value() && !out.truncated;
   out.hash = run.value();
+  // The stop record's exchanges come after the last step: their times are no earlier than its end
+  // and never decrease (so the last step's t_ns is held from both sides).
+  if (out.identical && !until && out.stop) {
+    std::int64_t t = last_t;
+    for (std::size_t k = 0; k < out.stop->io.size() && out.identical; ++k) {
+      const std::int64_t tk = out.stop->io[k].t_ns;
+      if (tk < 0) continue;
+      if (tk < t || tk > detail::kMaxRunNs) {
+        out.identical = false;
+        out.first_divergence =
+            Divergence{out.stop->step, "stop.io[" + std::to_string(k) + "].t", std::to_string(tk),
+                       "a time in [" + std::to_string(t) +
+                           ", 2^55]: after the last step's end and the exchange before it"};
+      }
+      t = std::max(t, tk);
+    }
+  }
   if (check_stop && out.identical && !until && out.stop)
     if (auto d = check_stop(*out.stop)) {
       out.identical = false;

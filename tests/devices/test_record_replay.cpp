@@ -286,6 +286,29 @@ TEST_CASE("an edited log is caught at the edited step and field", "[devices]") {
     REQUIRE(r.first_divergence.has_value());
     CHECK(r.first_divergence->step == 40);
     CHECK(r.first_divergence->field.rfind(edit.field, 0) == 0);
+    // The rest was read unchecked: the log is still known to be whole, with its stop record.
+    CHECK(r.complete);
+    CHECK(r.stop.has_value());
+  }
+  // The last step's time, moved later than the safe stop's first send: held by the stop record's
+  // exchange times (nothing after the last step held it before).
+  {
+    devices::LogReader reader(log);
+    devices::LogRecord next, rec;
+    while (reader.next(next)) rec = next; // (next() may leave its record half-filled at the end)
+    REQUIRE(rec.step == 59);
+    const auto stop = reader.stop();
+    REQUIRE(stop.has_value());
+    REQUIRE(!stop->io.empty());
+    rec.time_ns = stop->io.front().t_ns + 1;
+    auto edited = lines;
+    edited[60] = devices::format_record(rec);
+    const auto path = dir.file("late.jsonl");
+    write_lines(path, edited);
+    const auto r = devices::replay(path);
+    CHECK(!r.identical);
+    REQUIRE(r.first_divergence.has_value());
+    CHECK(r.first_divergence->field == "stop.io[0].t");
   }
 }
 

@@ -14,14 +14,18 @@
 //   odo[i]          the odometry: the counters' reply less the start's baseline, or for the
 //                   Hemisson the travel reckoned again from the logged times of its exchanges
 //                   (a Hemisson log without them is refused as bad input);
-//   t_ns, io[k].t   never decreasing, each exchange's time within its step;
+//   t_ns, io[k].t   never decreasing, each exchange's time within its step; the stop record's
+//                   exchanges no earlier than the last step's end (so its t_ns is held from both
+//                   sides), never decreasing;
 //   stop            the stop record's reason in stop_reason()'s words, and its safe stop re-run
 //                   over its exchanges: a stop acknowledged and read back at zero in the bytes may
 //                   not be reported as failed, and one never acknowledged must say the robot may
 //                   be moving.
 // The first difference ends the replay; its message says what the log holds and what the replay
-// derived. A log without a stop record (a power cut on a line boundary, a header-only log) replays
-// as far as it goes with complete == false: the run never said how it stopped.
+// derived. The rest of the log is then read unchecked, so that `stop` and `complete` still say
+// whether the log is whole. A log without a stop record (a power cut on a line boundary, a
+// header-only log) replays as far as it goes with complete == false: the run never said how it
+// stopped.
 #include <antkit/devices/log.hpp>
 #include <cstdint>
 #include <functional>
