@@ -7,6 +7,7 @@
 #include <antkit/devices/stc_floor/record.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/stc/world.hpp>
 #include <cstdlib>
 
 namespace antkit::devices::stc_floor {
@@ -153,6 +154,8 @@ std::optional<Divergence> check_floor_stop(const LogStop& stop, bool last_refuse
                           : "'; safe stop: ...': '" + printable(off) + "' was never acknowledged"};
   return std::nullopt;
 }
+
+constexpr std::int64_t kFloorStepsWithoutMap = 20000; // record's default bound without --map
 
 constexpr std::string_view kOnlySerial =
     " is an option of the serial robots (khepera, khepera-webots, hemisson, epuck)";
@@ -316,7 +319,13 @@ public:
     run.header.seed = 0;
     run.line = o.line ? *o.line : line();
     run.max_line = 512; // a frame's header line
-    run.steps = o.steps ? *o.steps : 1000000;
+    // A tour that never closes (marks that fade, a camera that misreads) must end: by default a
+    // tour of the map's reachable sub-cells may take 8 steps each (a clean one takes about 2: a
+    // move and a turn), plus 64; without a map, 20 000 steps (a 70 x 70-cell floor's clean tour
+    // twice over). The run then ends as asked, and a tour that did not close is no success.
+    run.steps = o.steps ? *o.steps
+                : map ? 8 * stc::reachable_subcells(map->cells, pilot.start, pilot.controller) + 64
+                      : kFloorStepsWithoutMap;
     run.connect = [pilot, calibration, map](SerialPort port, const LinkOptions& link) {
       return std::make_unique<FloorSession>(std::move(port), link, pilot, calibration, map);
     };

@@ -344,3 +344,46 @@ TEST_CASE("antkit record --device stc-floor: a tour the oracle refuses exits 1 a
   // The log itself is sound: it replays.
   CHECK(run_antkit("replay " + log).status == 0);
 }
+
+TEST_CASE("antkit record --device stc-floor: a tour that never closes ends, and one without --map "
+          "is never called covered",
+          "[cli][devices]") {
+  // Issue 43: with fading marks the robot went on past 100 000 steps; without --map, camera noise
+  // 255 closed a tour after one sub-cell and record exited 0.
+  const auto dir = scratch_dir("floor-bounds");
+  const auto map = (dir / "board.map").string();
+  {
+    std::ofstream out(map);
+    out << "type octile\nheight 12\nwidth 12\nmap\n";
+    for (int y = 0; y < 12; ++y) out << std::string(12, '.') << '\n';
+  }
+  {
+    // Marks fade in a second: the ant never sees its own trail and never closes its tour.
+    Emulator emu({"stc-floor", "--map", map, "--fade", "1"});
+    const auto r = run_antkit("record --device stc-floor --port " + emu.port() +
+                              " --controller ant-edge --map " + map + " --out " +
+                              (dir / "fading.jsonl").string() + " --format json");
+    INFO(r.err);
+    CHECK(r.status == 1);
+    const auto j = nlohmann::json::parse(r.out);
+    // The default bound: 8 steps a reachable sub-cell, plus 64.
+    const auto steps = j["steps"].get<std::int64_t>();
+    const auto bound = 8 * j["reachable_subcells"].get<std::int64_t>() + 64;
+    CHECK(steps == bound); // the bound ended it, not the tour
+    CHECK(j["tour_ok"] == false);
+  }
+  {
+    Emulator emu({"stc-floor", "--map", map, "--noise", "255", "--seed", "3"});
+    const auto r = run_antkit("record --device stc-floor --port " + emu.port() +
+                              " --controller ant-edge --start 0,0 --out " +
+                              (dir / "nomap.jsonl").string() + " --format json");
+    INFO(r.err);
+    CHECK(r.status == 1);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["tour_ok"] == false);
+    const bool said = r.err.find("without --map") != std::string::npos ||
+                      r.err.find("did not close") != std::string::npos ||
+                      r.err.find("more than once") != std::string::npos;
+    CHECK(said);
+  }
+}

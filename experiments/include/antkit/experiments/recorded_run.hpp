@@ -14,7 +14,8 @@ struct RecordedRun {
   devices::RecordSummary summary;
   // A tour's verdict. With a map: the believed tour held against it by the oracle, rule
   // ExactlyOnce (every reachable sub-cell entered exactly once, back next to the start). Without
-  // one: closed next to the start, no sub-cell entered twice.
+  // one the tour cannot be checked (a tour that closed after one sub-cell looks like a whole one),
+  // so it never passes; tour_broken says what it did.
   std::optional<testing::StcAudit> audit; // with a map
   bool tour_ok = true;
   std::string tour_broken; // the broken rule in words ("" when the tour passes or there is none)
