@@ -16,18 +16,12 @@
 
 using antkit::test::Emulator;
 using antkit::test::run_antkit;
+using antkit::test::slurp;
 
 namespace {
 
 std::filesystem::path scratch_dir(const std::string& name) {
   return antkit::test::scratch_dir("devices-cli", name);
-}
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 } // namespace

@@ -14,17 +14,7 @@
 
 using antkit::test::Emulator;
 using antkit::test::run_antkit;
-
-namespace {
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-} // namespace
+using antkit::test::slurp;
 
 TEST_CASE("antkit record --mcap: the stc-floor tour as MCAP, the same as export mcap",
           "[cli][devices]") {

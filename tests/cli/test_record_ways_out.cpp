@@ -19,19 +19,9 @@
 #include <sys/wait.h>
 #include <thread>
 
+using antkit::test::lines_in;
 using antkit::test::run_antkit;
 using Child = antkit::test::AntkitChild;
-
-namespace {
-
-std::size_t lines_in(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::size_t n = 0;
-  for (std::string line; std::getline(in, line);) ++n;
-  return n;
-}
-
-} // namespace
 
 TEST_CASE("antkit record exits 128 + N on signal N, after stopping the robot", "[cli][devices]") {
   const auto dir = antkit::test::scratch_dir("record-ways-out", "signals");

@@ -14,6 +14,7 @@
 #include <unistd.h>
 #include <vector>
 
+using antkit::test::lines_in;
 using antkit::test::run_antkit;
 using Child = antkit::test::AntkitChild;
 
@@ -21,13 +22,6 @@ namespace {
 
 std::filesystem::path scratch_dir(const std::string& name) {
   return antkit::test::scratch_dir("tcp-cli", name);
-}
-
-std::size_t lines_in(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::size_t n = 0;
-  for (std::string line; std::getline(in, line);) ++n;
-  return n;
 }
 
 } // namespace
