@@ -13,15 +13,7 @@
 
 namespace antkit::devices {
 
-using namespace std::literals;
-
-namespace {
-
-using kernel::InputError;
-
-// ---- writing ----
-
-void put_bytes(std::string& out, const std::string& bytes) {
+void append_json_bytes(std::string& out, std::string_view bytes) {
   constexpr char hex[] = "0123456789abcdef";
   out += '"';
   for (const char ch : bytes) {
@@ -46,6 +38,14 @@ void put_bytes(std::string& out, const std::string& bytes) {
   out += '"';
 }
 
+using namespace std::literals;
+
+namespace {
+
+using kernel::InputError;
+
+// ---- writing ----
+
 void put_int(std::string& out, std::int64_t v) {
   char buf[24];
   const int n = std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(v));
@@ -66,9 +66,9 @@ void put_io(std::string& out, const std::vector<Exchange>& io) {
   for (std::size_t i = 0; i < io.size(); ++i) {
     if (i) out += ',';
     out += '[';
-    put_bytes(out, io[i].sent);
+    append_json_bytes(out, io[i].sent);
     out += ',';
-    put_bytes(out, io[i].received);
+    append_json_bytes(out, io[i].received);
     if (io[i].t_ns >= 0) {
       out += ',';
       put_int(out, io[i].t_ns);
@@ -370,21 +370,21 @@ std::string format_header(const LogHeader& h) {
   std::string out = "{\"schema\":";
   put_int(out, h.schema);
   out += ",\"antkit\":";
-  put_bytes(out, h.antkit_version);
+  append_json_bytes(out, h.antkit_version);
   out += ",\"robot\":";
-  put_bytes(out, h.robot);
+  append_json_bytes(out, h.robot);
   out += ",\"port\":{\"path\":";
-  put_bytes(out, h.port);
+  append_json_bytes(out, h.port);
   out += ",\"baud\":";
   put_int(out, h.baud);
   out += ",\"framing\":";
-  put_bytes(out, h.framing);
+  append_json_bytes(out, h.framing);
   out += "},\"controller\":{\"name\":";
-  put_bytes(out, h.controller);
+  append_json_bytes(out, h.controller);
   out += ",\"params\":{";
   for (std::size_t i = 0; i < h.params.size(); ++i) {
     if (i) out += ',';
-    put_bytes(out, h.params[i].first);
+    append_json_bytes(out, h.params[i].first);
     out += ':';
     put_int(out, h.params[i].second);
   }
@@ -392,7 +392,7 @@ std::string format_header(const LogHeader& h) {
   put_int(out, static_cast<std::int64_t>(h.seed));
   if (!h.arena.empty()) {
     out += ",\"arena\":";
-    put_bytes(out, h.arena);
+    append_json_bytes(out, h.arena);
   }
   out += '}';
   return out;
@@ -417,7 +417,7 @@ std::string format_record(const LogRecord& r) {
 
 std::string format_stop(const LogStop& s) {
   std::string out = "{\"stop\":";
-  put_bytes(out, s.reason);
+  append_json_bytes(out, s.reason);
   out += ",\"step\":";
   put_int(out, s.step);
   out += ",\"io\":";

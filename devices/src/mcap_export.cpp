@@ -104,31 +104,8 @@ std::string schema_text(std::string_view name) {
                 R"("t_ns":{"type":["integer","null"]}}}})");
 }
 
-// JSON text, written by hand so that every byte is fixed by the values.
-void put_string(std::string& out, std::string_view s) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  out += '"';
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += ch;
-    } else if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\r') {
-      out += "\\r";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else if (c < 0x20 || c >= 0x7F) { // a log is ASCII; anything else is shown as its byte
-      out += "\\u00";
-      out += kHex[c >> 4];
-      out += kHex[c & 15];
-    } else {
-      out += ch;
-    }
-  }
-  out += '"';
-}
+// JSON text, written by hand so that every byte is fixed by the values (strings as the log
+// writes its byte strings, log.hpp).
 void put_number(std::string& out, double v) {
   std::array<char, 32> buf{};
   const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
@@ -232,7 +209,7 @@ public:
     const auto seq = static_cast<std::uint32_t>(r.step);
     if (pose) {
       std::string m = "{" + timestamp(t) + ",\"frame_id\":";
-      put_string(m, frame);
+      append_json_bytes(m, frame);
       m += ",\"pose\":";
       put_pose(m, *pose);
       m += "}";
@@ -240,7 +217,7 @@ public:
     }
     if (trail_now && !trail.empty()) {
       std::string m = "{" + timestamp(t) + ",\"frame_id\":";
-      put_string(m, frame);
+      append_json_bytes(m, frame);
       m += ",\"poses\":[";
       const std::size_t n = std::min<std::size_t>(trail.size(), kTrailPoses);
       for (std::size_t j = 0; j < n; ++j) {
@@ -257,9 +234,9 @@ public:
     for (std::size_t k = 0; k < r.io.size(); ++k) {
       if (k > 0) m += ',';
       m += "{\"sent\":";
-      put_string(m, base64(r.io[k].sent));
+      append_json_bytes(m, base64(r.io[k].sent));
       m += ",\"received\":";
-      put_string(m, base64(r.io[k].received));
+      append_json_bytes(m, base64(r.io[k].received));
       m += ",\"t_ns\":" + (r.io[k].t_ns < 0 ? std::string("null") : std::to_string(r.io[k].t_ns));
       m += '}';
     }
@@ -288,7 +265,7 @@ private:
 
 std::string log_message(std::uint64_t t, int level, const std::string& text) {
   std::string m = "{" + timestamp(t) + ",\"level\":" + std::to_string(level) + ",\"message\":";
-  put_string(m, text);
+  append_json_bytes(m, text);
   m += R"(,"name":"antkit","file":"","line":0})";
   return m;
 }
@@ -404,11 +381,11 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
     const Divergence& d = *divergence;
     std::string m = "{" + timestamp(t) + ",\"step\":" + std::to_string(d.step) +
                     R"(,"identical":false,"divergence":{"field":)";
-    put_string(m, d.field);
+    append_json_bytes(m, d.field);
     m += ",\"recorded\":";
-    put_string(m, d.expected);
+    append_json_bytes(m, d.expected);
     m += ",\"replayed\":";
-    put_string(m, d.actual);
+    append_json_bytes(m, d.actual);
     m += "}}";
     w.write({replayed, seq, t, t, std::move(m)});
     w.write({log, seq, t, t,

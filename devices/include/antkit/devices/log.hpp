@@ -82,6 +82,10 @@ struct LogStop {
 };
 
 std::string format_header(const LogHeader& h);
+// Appends `bytes` as the log writes a byte string: a JSON string, one character per byte, `"`, `\`,
+// CR, LF and TAB escaped, other bytes outside printable ASCII as \u00XX (the MCAP export writes its
+// strings the same way).
+void append_json_bytes(std::string& out, std::string_view bytes);
 std::string format_record(const LogRecord& r);
 std::string format_stop(const LogStop& s);
 
