@@ -1,5 +1,6 @@
 // The marker-floor robot on a serial link (stc_floor/link.hpp).
 #include <antkit/devices/stc_floor/link.hpp>
+#include <antkit/io/crc32.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <array>
 #include <thread>
@@ -14,16 +15,6 @@ Decoded<T> fail(std::size_t column, std::string message) {
   d.error = {column, std::move(message)};
   return d;
 }
-
-constexpr std::array<std::uint32_t, 256> kCrcTable = [] {
-  std::array<std::uint32_t, 256> t{};
-  for (std::uint32_t i = 0; i < 256; ++i) {
-    std::uint32_t c = i;
-    for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-    t[i] = c;
-  }
-  return t;
-}();
 
 std::string command(char letter, std::int32_t value) {
   return std::string(1, letter) + "," + std::to_string(value) + "\r";
@@ -52,9 +43,7 @@ std::string capture_command(bool dark) {
 }
 
 std::uint32_t crc32(std::span<const std::uint8_t> bytes) noexcept {
-  std::uint32_t c = 0xFFFFFFFFu;
-  for (const std::uint8_t b : bytes) c = kCrcTable[(c ^ b) & 0xFFu] ^ (c >> 8);
-  return c ^ 0xFFFFFFFFu;
+  return io::crc32({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
 }
 
 Decoded<bool> decode_forward(std::string_view line) {

@@ -11,6 +11,7 @@
 //   footer's summary_offset_start); magic.
 // Every integer little-endian. Nothing in the bytes depends on a clock or on memory: the same calls
 // write the same file.
+#include <antkit/io/crc32.hpp>
 #include <cstdint>
 #include <map>
 #include <ostream>
@@ -38,9 +39,8 @@ enum class Op : std::uint8_t {
   DataEnd = 0x0F,
 };
 
-// CRC-32 as MCAP specifies it (zlib's: reflected polynomial 0xEDB88320, initial and final value
-// 0xFFFFFFFF). Chained: crc32(b, crc32(a)) == crc32(a + b); crc32("") == 0.
-std::uint32_t crc32(std::string_view bytes, std::uint32_t crc = 0) noexcept;
+// CRC-32 as MCAP specifies it: zlib's (crc32.hpp).
+using io::crc32;
 
 struct Message {
   std::uint16_t channel_id = 0;

@@ -57,7 +57,7 @@ struct FrameHeader {
   std::uint32_t bytes = 0, crc = 0;
 };
 
-std::uint32_t crc32(std::span<const std::uint8_t> bytes) noexcept;
+std::uint32_t crc32(std::span<const std::uint8_t> bytes) noexcept; // io::crc32 of the bytes
 
 // Replies, validated completely (letter, arity, ranges, CR LF and nothing after it).
 Decoded<bool> decode_forward(std::string_view line); // moved
