@@ -1,7 +1,10 @@
-// `antkit reproduce [--quick | --full] [--only buffon,los,stc,uniform] [--threads T] [--seed S]
-//                   [--maps DIR] --out DIR [--format table|json]`: every paper's experiments in
-// one run, with the claims table (issue 15). The experiments, the report and the verdicts are
-// documented in experiments/include/antkit/experiments/reproduce.hpp.
+// `antkit reproduce [--quick | --full] [--decide [--budget TRIALS|DURATION]]
+//                   [--only buffon,los,stc,uniform] [--threads T] [--seed S] [--maps DIR] --out DIR
+//                   [--format table|json]`: every paper's experiments in one run, with the claims
+// table (issue 15); --decide adds trials until each claim is decided or the budget is spent
+// (issue 44): TRIALS is paper 000's trials per arena at the last look, DURATION a number with s, m
+// or h (30m), converted to trials after the first look. The experiments, the report and the
+// verdicts are documented in experiments/include/antkit/experiments/reproduce.hpp.
 //
 //   mpirun -n K antkit reproduce --full ...   splits the trials across K MPI ranks; rank 0
 //                                             gathers them and writes the same files
@@ -31,7 +34,8 @@ namespace ex = antkit::experiments;
 using antkit::kernel::InputError;
 
 struct ReproduceCommand {
-  bool quick = false, full = false;
+  bool quick = false, full = false, decide = false;
+  std::string budget;
   std::string only;
   std::int64_t threads = 2;
   std::uint64_t seed = 1;
@@ -51,12 +55,42 @@ std::vector<std::string> split(const std::string& s) {
   return parts;
 }
 
+// --budget: a count of trials, or a duration (a number and s, m or h).
+void parse_budget(const std::string& text, ex::ReproduceOptions& o) {
+  if (text.empty()) return;
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  const std::string unit = text.substr(used);
+  const bool digits = text.find_first_not_of("0123456789") == std::string::npos;
+  if (used == 0 || !(value > 0) || (unit.empty() && !digits))
+    throw InputError("--budget", "expected trials per arena (800) or a duration (600s, 30m, 2h), "
+                                 "not '" +
+                                     text + "'");
+  if (unit.empty()) {
+    if (text.size() > 7) throw InputError("--budget", "at most 100000 trials per arena");
+    o.budget_trials = std::stoll(text);
+    return;
+  }
+  const double scale = unit == "s" ? 1 : unit == "m" ? 60 : unit == "h" ? 3600 : 0;
+  if (scale == 0) throw InputError("--budget", "the unit of '" + text + "' must be s, m or h");
+  o.budget_seconds = value * scale;
+}
+
 void run(const ReproduceCommand& c) {
   if (c.quick && c.full) throw InputError("--full", "give --quick or --full, not both");
   if (c.threads < 1 || c.threads > 256)
     throw InputError("--threads", "expected 1 to 256 threads, not " + std::to_string(c.threads));
   ex::ReproduceOptions o;
-  o.scale = c.full ? ex::Scale::Full : ex::Scale::Quick;
+  // --decide starts from the papers' counts unless --quick is given.
+  o.scale = c.full || (c.decide && !c.quick) ? ex::Scale::Full : ex::Scale::Quick;
+  o.decide = c.decide;
+  if (!c.budget.empty() && !c.decide) throw InputError("--budget", "a budget is for --decide");
+  parse_budget(c.budget, o);
   if (!c.only.empty()) o.only = split(c.only);
   o.seed = c.seed;
   o.out = c.out;
@@ -73,6 +107,10 @@ void run(const ReproduceCommand& c) {
       [&](const antkit::algorithms::Runner& runner) { report = ex::reproduce(o, runner); });
   if (ranks == 0) return; // another rank than 0: rank 0 prints
   ex::release_drawing_caches();
+  if (c.decide)
+    std::cerr << "reproduce: " << report.looks << " look(s); the last at " << report.budget_trials
+              << " trials per arena (rerun with --budget " << report.budget_trials
+              << " for the same bytes)\n";
   std::cerr << "reproduce: done in " << std::fixed << std::setprecision(1) << seconds() << " s ("
             << c.threads << " thread(s) x " << ranks << " rank(s)); report in "
             << (std::filesystem::path(c.out) / "README.md").string() << '\n'
@@ -103,6 +141,12 @@ void register_reproduce(CLI::App& app) {
                    "claims table with verdicts, in DIR/README.md and DIR/claims.json");
   sub->add_flag("--quick", c->quick, "Fewer trials (the default; stated in the report)");
   sub->add_flag("--full", c->full, "The papers' trial counts");
+  sub->add_flag("--decide", c->decide,
+                "Add trials, look after look, until every claim is decided or the budget is "
+                "spent (from the papers' counts, or --quick's)");
+  sub->add_option("--budget", c->budget,
+                  "With --decide: paper 000's trials per arena at the last look (default 8 times "
+                  "the first look's), or a duration such as 30m");
   sub->add_option("--only", c->only, "Comma-separated: buffon, los, stc, uniform (default: all)");
   sub->add_option("--threads", c->threads, "Threads (default 2; per MPI rank)");
   sub->add_option("--seed", c->seed, "Seed of the keyed streams (default 1)");

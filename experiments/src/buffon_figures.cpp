@@ -70,30 +70,39 @@ std::vector<BuffonArena> buffon_figure_arenas(int figure) {
   return pts;
 }
 
-BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const algorithms::Runner& runner) {
-  const auto arenas = buffon_figure_arenas(params.figure);
-  if (arenas.empty()) throw InputError("figure", "the figure must be 5, 6, 7, 8 or 9 (or 14)");
+BuffonFigureTrials::BuffonFigureTrials(const BuffonFigureParams& params) : params_(params) {
+  arenas_ = buffon_figure_arenas(params.figure);
+  if (arenas_.empty()) throw InputError("figure", "the figure must be 5, 6, 7, 8 or 9 (or 14)");
   check(params);
-  std::vector<geometry::Arena> shapes;
+  for (std::size_t k = 0; k < arenas_.size(); ++k)
+    areas_.push_back(geometry::build_arena_spec(arenas_[k].spec, "figure").arena.area());
+  payloads_.resize(arenas_.size());
+}
+
+void BuffonFigureTrials::extend(std::int64_t trials, const algorithms::Runner& runner) {
+  BuffonFigureParams wanted = params_;
+  wanted.trials = trials;
+  check(wanted);
+  if (trials <= have_) return;
   std::vector<buffon::World> worlds;
   std::vector<buffon::TrialParams> trial_params;
-  for (std::size_t k = 0; k < arenas.size(); ++k) {
-    shapes.push_back(geometry::build_arena_spec(arenas[k].spec, "figure").arena);
-    worlds.emplace_back(shapes.back().walls_fx());
+  for (std::size_t k = 0; k < arenas_.size(); ++k) {
+    worlds.emplace_back(geometry::build_arena_spec(arenas_[k].spec, "figure").arena.walls_fx());
     buffon::TrialParams tp;
-    tp.seed = params.seed;
-    tp.experiment = 4000 + 100 * static_cast<std::uint64_t>(params.figure) + k;
-    tp.steps = params.steps;
-    tp.width = geometry::fixed_from_double<kernel::Fx>(arenas[k].width, "trail width");
+    tp.seed = params_.seed;
+    tp.experiment = 4000 + 100 * static_cast<std::uint64_t>(params_.figure) + k;
+    tp.steps = params_.steps;
+    tp.width = geometry::fixed_from_double<kernel::Fx>(arenas_[k].width, "trail width");
     trial_params.push_back(tp);
   }
-  const auto trials = static_cast<std::uint64_t>(params.trials);
+  const auto first = static_cast<std::uint64_t>(have_);
+  const auto batch = static_cast<std::uint64_t>(trials - have_);
   const auto payloads =
-      algorithms::run_units(runner, "paper 000, figure " + std::to_string(params.figure),
-                            arenas.size() * trials, [&](std::uint64_t u) {
-                              const std::size_t k = u / trials;
+      algorithms::run_units(runner, "paper 000, figure " + std::to_string(params_.figure),
+                            arenas_.size() * batch, [&](std::uint64_t u) {
+                              const std::size_t k = u / batch;
                               const auto r =
-                                  buffon::run_trial(worlds[k], trial_params[k], u % trials);
+                                  buffon::run_trial(worlds[k], trial_params[k], first + u % batch);
                               algorithms::Payload p;
                               p.put(r.bc);
                               p.put_i(r.length1_raw);
@@ -103,13 +112,19 @@ BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const algorithm
                               p.put(r.hash);
                               return p;
                             });
-  BuffonFigure out{params, {}, 0};
-  if (!runner.root()) return out;
+  if (runner.root())
+    for (std::size_t k = 0; k < arenas_.size(); ++k)
+      for (std::uint64_t t = 0; t < batch; ++t) payloads_[k].push_back(payloads[k * batch + t]);
+  have_ = trials;
+}
+
+BuffonFigure BuffonFigureTrials::finish() const {
+  BuffonFigure out{params_, {}, 0};
+  out.params.trials = have_;
   kernel::TraceHash digest;
-  for (std::size_t k = 0; k < arenas.size(); ++k) {
+  for (std::size_t k = 0; k < arenas_.size() && !payloads_[k].empty(); ++k) {
     std::vector<double> nbc, cf, blocked, length1, bc_values;
-    for (std::uint64_t t = 0; t < trials; ++t) {
-      algorithms::Payload p = payloads[k * trials + t];
+    for (algorithms::Payload p : payloads_[k]) {
       const auto bc = p.get();
       const double l1 = static_cast<double>(p.get_i()) / 65536.0;
       const double l2 = static_cast<double>(p.get_i()) / 65536.0;
@@ -121,7 +136,7 @@ BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const algorithm
       bc_values.push_back(static_cast<double>(bc));
       if (auto a = buffon::closed_form_area(l1, l2, crossings).area) cf.push_back(*a);
     }
-    out.rows.push_back({arenas[k], shapes[k].area(), buffon::quantile(nbc, 0.5),
+    out.rows.push_back({arenas_[k], areas_[k], buffon::quantile(nbc, 0.5),
                         buffon::quantile(nbc, 0.25), buffon::quantile(nbc, 0.75),
                         buffon::quantile(cf, 0.5), buffon::quantile(blocked, 0.5)});
     auto& row = out.rows.back();
@@ -134,6 +149,13 @@ BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const algorithm
   }
   out.hash = digest.finish();
   return out;
+}
+
+BuffonFigure run_buffon_figure(const BuffonFigureParams& params, const algorithms::Runner& runner) {
+  BuffonFigureTrials trials(params);
+  trials.extend(params.trials, runner);
+  if (!runner.root()) return BuffonFigure{params, {}, 0};
+  return trials.finish();
 }
 
 std::string buffon_figure_csv(const BuffonFigure& f) {
@@ -340,29 +362,44 @@ Figure buffon_figure5b_plot(const BuffonFigure& f) {
   return fig;
 }
 
-Figure14 run_figure14(const BuffonFigureParams& params, const algorithms::Runner& runner) {
+namespace {
+constexpr int kFigure14Checkpoints = 10;
+} // namespace
+
+Figure14Trials::Figure14Trials(const BuffonFigureParams& params) : params_(params) {
   check(params);
-  constexpr int K = 10;
+  for (int d = 30; d <= 100; d += 10) {
+    diameters_.push_back(d);
+    areas_.push_back(
+        geometry::build_arena_spec("circle:d=" + std::to_string(d), "figure").arena.area());
+  }
+  payloads_.resize(diameters_.size());
+}
+
+void Figure14Trials::extend(std::int64_t trials, const algorithms::Runner& runner) {
+  BuffonFigureParams wanted = params_;
+  wanted.trials = trials;
+  check(wanted);
+  if (trials <= have_) return;
   const std::int64_t step_raw = std::int64_t{168} * 65536;
-  std::vector<geometry::Arena> shapes;
   std::vector<buffon::World> worlds;
   std::vector<buffon::TrialParams> trial_params;
-  std::vector<int> diameters;
-  for (int d = 30; d <= 100; d += 10) {
-    diameters.push_back(d);
-    shapes.push_back(geometry::build_arena_spec("circle:d=" + std::to_string(d), "figure").arena);
-    worlds.emplace_back(shapes.back().walls_fx());
+  for (const int d : diameters_) {
+    worlds.emplace_back(
+        geometry::build_arena_spec("circle:d=" + std::to_string(d), "figure").arena.walls_fx());
     buffon::TrialParams tp;
-    tp.seed = params.seed;
+    tp.seed = params_.seed;
     tp.experiment = 4000 + 100 * 14 + static_cast<std::uint64_t>(d);
-    tp.steps = params.steps;
+    tp.steps = params_.steps;
     trial_params.push_back(tp);
   }
-  const auto trials = static_cast<std::uint64_t>(params.trials);
+  const auto first = static_cast<std::uint64_t>(have_);
+  const auto batch = static_cast<std::uint64_t>(trials - have_);
   const auto payloads = algorithms::run_units(
-      runner, "paper 000, figure 14", diameters.size() * trials, [&](std::uint64_t u) {
-        const std::size_t k = u / trials;
-        const auto r = buffon::run_checkpoints(worlds[k], trial_params[k], u % trials, step_raw, K);
+      runner, "paper 000, figure 14", diameters_.size() * batch, [&](std::uint64_t u) {
+        const std::size_t k = u / batch;
+        const auto r = buffon::run_checkpoints(worlds[k], trial_params[k], first + u % batch,
+                                               step_raw, kFigure14Checkpoints);
         algorithms::Payload p;
         p.put(r.bc.size());
         for (std::size_t i = 0; i < r.bc.size(); ++i) {
@@ -373,14 +410,20 @@ Figure14 run_figure14(const BuffonFigureParams& params, const algorithms::Runner
         p.put_i(r.rs_cell_raw);
         return p;
       });
-  Figure14 out{params, {}, 0};
-  if (!runner.root()) return out;
+  if (runner.root())
+    for (std::size_t k = 0; k < diameters_.size(); ++k)
+      for (std::uint64_t t = 0; t < batch; ++t) payloads_[k].push_back(payloads[k * batch + t]);
+  have_ = trials;
+}
+
+Figure14 Figure14Trials::finish() const {
+  Figure14 out{params_, {}, 0};
+  out.params.trials = have_;
   kernel::TraceHash digest;
   std::vector<Figure14Arena> arenas;
-  for (std::size_t k = 0; k < diameters.size(); ++k) {
-    Figure14Arena a{static_cast<double>(diameters[k]), shapes[k].area(), {}, {}};
-    for (std::uint64_t t = 0; t < trials; ++t) {
-      algorithms::Payload p = payloads[k * trials + t];
+  for (std::size_t k = 0; k < diameters_.size(); ++k) {
+    Figure14Arena a{static_cast<double>(diameters_[k]), areas_[k], {}, {}};
+    for (algorithms::Payload p : payloads_[k]) {
       for (const std::uint64_t w : p.words()) digest.add_u64(w);
       buffon::CheckpointResult r;
       const auto n = p.get();
@@ -394,21 +437,29 @@ Figure14 run_figure14(const BuffonFigureParams& params, const algorithms::Runner
     }
     arenas.push_back(std::move(a));
   }
-  for (std::size_t k = 0; k < K; ++k) {
-    const auto fit = calibrate_at(arenas, k);
-    const double total = 2.0 * 168.0 * static_cast<double>(k + 1);
-    for (const auto& a : arenas) {
-      if (is_calibration_diameter(a.diameter)) continue;
-      const std::vector<double> est = estimates_at(a, k, fit);
-      out.rows.push_back({a.diameter, total, a.area, buffon::quantile(est, 0.5),
-                          buffon::quantile(est, 0.25), buffon::quantile(est, 0.75),
-                          buffon::quantile(a.rs[k], 0.5), buffon::quantile(a.rs[k], 0.25),
-                          buffon::quantile(a.rs[k], 0.75), fit.a, fit.b, fit.c});
+  if (have_ > 0)
+    for (std::size_t k = 0; k < kFigure14Checkpoints; ++k) {
+      const auto fit = calibrate_at(arenas, k);
+      const double total = 2.0 * 168.0 * static_cast<double>(k + 1);
+      for (const auto& a : arenas) {
+        if (is_calibration_diameter(a.diameter)) continue;
+        const std::vector<double> est = estimates_at(a, k, fit);
+        out.rows.push_back({a.diameter, total, a.area, buffon::quantile(est, 0.5),
+                            buffon::quantile(est, 0.25), buffon::quantile(est, 0.75),
+                            buffon::quantile(a.rs[k], 0.5), buffon::quantile(a.rs[k], 0.25),
+                            buffon::quantile(a.rs[k], 0.75), fit.a, fit.b, fit.c});
+      }
     }
-  }
   out.hash = digest.finish();
   out.arenas = std::move(arenas);
   return out;
+}
+
+Figure14 run_figure14(const BuffonFigureParams& params, const algorithms::Runner& runner) {
+  Figure14Trials trials(params);
+  trials.extend(params.trials, runner);
+  if (!runner.root()) return Figure14{params, {}, 0};
+  return trials.finish();
 }
 
 std::string figure14_csv(const Figure14& f) {

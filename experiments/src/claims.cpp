@@ -104,12 +104,12 @@ double relative(double a, double b) {
   return b != 0 ? a / b - 1 : 0.0;
 }
 
-Claim evaluate(const ClaimSpec& spec, const ClaimInputs& inputs, std::uint64_t seed) {
+std::vector<Part> evaluate_parts(const ClaimSpec& spec, const ClaimInputs& inputs,
+                                 std::uint64_t seed, double alpha) {
   std::vector<Part> parts = spec.parts(inputs);
   std::size_t uncertain = 0;
   for (const auto& p : parts) uncertain += p.method != IntervalMethod::Exact;
-  const double level = uncertain > 0 ? 1 - 0.05 / static_cast<double>(uncertain) : 1.0;
-  std::vector<Verdict> verdicts;
+  const double level = uncertain > 0 ? 1 - alpha / static_cast<double>(uncertain) : 1.0;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     Part& p = parts[i];
     switch (p.method) {
@@ -131,8 +131,29 @@ Claim evaluate(const ClaimSpec& spec, const ClaimInputs& inputs, std::uint64_t s
       break;
     }
     p.verdict = decide(p.ci, p.rule);
-    verdicts.push_back(p.verdict);
   }
+  return parts;
+}
+
+double miss_of(const Part& p) {
+  switch (p.rule.side) {
+  case Side::Below:
+    return p.value - p.rule.threshold;
+  case Side::Above:
+    return p.rule.threshold - p.value;
+  case Side::Within:
+    return std::fabs(p.value) - p.rule.threshold;
+  }
+  return 0;
+}
+
+Claim evaluate(const ClaimSpec& spec, const ClaimInputs& inputs, std::uint64_t seed, double alpha) {
+  return claim_of(spec, inputs, evaluate_parts(spec, inputs, seed, alpha));
+}
+
+Claim claim_of(const ClaimSpec& spec, const ClaimInputs& inputs, const std::vector<Part>& parts) {
+  std::vector<Verdict> verdicts;
+  for (const auto& p : parts) verdicts.push_back(p.verdict);
   Claim c;
   c.id = spec.id;
   c.paper = std::string(spec.id).substr(0, 3);
@@ -164,9 +185,14 @@ Claim evaluate(const ClaimSpec& spec, const ClaimInputs& inputs, std::uint64_t s
     while (!why.empty() && why.back() == ' ') why.pop_back();
     c.why = why;
   }
-  for (const auto& p : parts)
+  for (const auto& p : parts) {
     c.parts.push_back({p.label, rule_text(p.rule, p.unit, p.decimals), p.value, p.ci, p.level,
                        interval_method_text(p.method), p.figure(), p.verdict});
+    c.parts.back().side = p.rule.side;
+    c.parts.back().threshold = p.rule.threshold;
+    c.parts.back().miss = miss_of(p);
+    c.parts.back().miss_text = p.format(std::fabs(c.parts.back().miss));
+  }
   return c;
 }
 

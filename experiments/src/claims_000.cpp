@@ -15,7 +15,7 @@ const BuffonFigureRow& row(const BuffonFigure& f, const std::string& series, dou
 }
 
 const BuffonFigure& fig(const ClaimInputs& in, int n) {
-  return in.buffon->figures.at(n);
+  return in.get<BuffonResults>()->figures.at(n);
 }
 
 std::string d_label(double d) {
@@ -324,7 +324,7 @@ const std::vector<ClaimSpec> kPaper000Claims = {
      "reliable",
      "buffon/figure14.csv",
      [](const ClaimInputs& in) {
-       const auto& arenas = in.buffon->fig14.arenas;
+       const auto& arenas = in.get<BuffonResults>()->fig14.arenas;
        std::vector<const Figure14Arena*> test;
        for (const auto& a : arenas)
          if (!is_calibration_diameter(a.diameter)) test.push_back(&a);
@@ -366,7 +366,7 @@ const std::vector<ClaimSpec> kPaper000Claims = {
      "bootstrap refits the calibration on each resample)",
      "buffon/figure14.csv",
      [](const ClaimInputs& in) {
-       const auto& arenas = in.buffon->fig14.arenas;
+       const auto& arenas = in.get<BuffonResults>()->fig14.arenas;
        std::vector<Part> parts;
        if (arenas.empty()) return parts;
        std::vector<double> cal_area, test_area;

@@ -12,7 +12,7 @@ constexpr auto& kEnv = kExploreEnvironments;
 constexpr std::size_t kFwf = 0, kSheng = 1, kStrong = 2;
 
 const ExploreRuns& runs(const ClaimInputs& in, std::size_t env, std::size_t method) {
-  return in.los->runs[env][method];
+  return in.get<ExploreTables>()->runs[env][method];
 }
 
 // samples {a, b} (paired): mean(a) - mean(b).

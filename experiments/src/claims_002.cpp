@@ -15,7 +15,7 @@ std::vector<Part> failing_tours(const ClaimInputs& in,
   std::vector<Part> parts;
   for (const char* v : variants) {
     std::size_t failed = 0;
-    for (const auto& r : in.stc->tours) failed += r.variant == v && !r.audit_ok;
+    for (const auto& r : in.get<StcTours>()->tours) failed += r.variant == v && !r.audit_ok;
     parts.push_back(exact_part(std::string(v) + ": tours failing the audit",
                                static_cast<double>(failed), {Side::Below, 0.5}, Unit::Number, 0));
   }
@@ -24,7 +24,7 @@ std::vector<Part> failing_tours(const ClaimInputs& in,
 
 std::string tours_note(const ClaimInputs& in, std::initializer_list<const char*> variants) {
   std::size_t all = 0, failed = 0;
-  for (const auto& r : in.stc->tours)
+  for (const auto& r : in.get<StcTours>()->tours)
     for (const char* v : variants)
       if (r.variant == v) ++all, failed += !r.audit_ok;
   if (all == 0) return "no tours";
@@ -33,13 +33,13 @@ std::string tours_note(const ClaimInputs& in, std::initializer_list<const char*>
   std::snprintf(buf, sizeof buf,
                 "%zu of %zu tours on %zu maps fail; failure rate at most %.1f %% (95 %%, "
                 "Clopper-Pearson)",
-                failed, all, in.stc->maps.size(), 100 * ci.hi);
+                failed, all, in.get<StcTours>()->maps.size(), 100 * ci.hi);
   return buf;
 }
 
 std::string failures(const ClaimInputs& in) {
   std::string out;
-  for (const auto& r : in.stc->tours)
+  for (const auto& r : in.get<StcTours>()->tours)
     if (!r.audit_ok && out.size() < 300)
       out += (out.empty() ? "" : "; ") + r.map + " " + r.variant + ": " + r.audit;
   return out;
@@ -72,9 +72,9 @@ const std::vector<ClaimSpec> kPaper002Claims = {
      "stc/tours.csv",
      [](const ClaimInputs& in) {
        std::size_t differ = 0;
-       for (const auto& a : in.stc->tours)
+       for (const auto& a : in.get<StcTours>()->tours)
          if (a.variant == "ant")
-           for (const auto& e : in.stc->tours)
+           for (const auto& e : in.get<StcTours>()->tours)
              if (e.variant == "ant-edge" && e.map == a.map)
                differ +=
                    e.positions != a.positions || e.covered != a.covered || e.repeats != a.repeats;
@@ -99,7 +99,8 @@ const std::vector<ClaimSpec> kPaper002Claims = {
      "stc/floor_curves.csv",
      [](const ClaimInputs& in) {
        const FloorPoint *with = nullptr, *without = nullptr;
-       for (const auto& p : in.floor->points) (p.factor == "drift" ? with : without) = &p;
+       for (const auto& p : in.get<FloorCurves>()->points)
+         (p.factor == "drift" ? with : without) = &p;
        return std::vector<Part>{bootstrap_part(
            "coverage, calibrated - uncalibrated", {with->coverage_runs, without->coverage_runs}, 0,
            [](const Samples& s) { return mean(s[0]) - mean(s[1]); }, {Side::Above, 0},
@@ -107,7 +108,7 @@ const std::vector<ClaimSpec> kPaper002Claims = {
      },
      [](const ClaimInputs& in, const std::vector<Part>&) {
        std::string out;
-       for (const auto& p : in.floor->points) {
+       for (const auto& p : in.get<FloorCurves>()->points) {
          char buf[160];
          std::snprintf(buf, sizeof buf, "%s%s: %.0f %% of %zu tours exact, coverage %.1f %%",
                        out.empty() ? "" : "; ", p.factor == "drift" ? "calibrated" : "uncalibrated",
@@ -127,13 +128,13 @@ const std::vector<ClaimSpec> kPaper002Claims = {
      "is; ours: 4 x 4 cells, 64 sub-cells, and up)",
      "stc/floor_boards.csv",
      [](const ClaimInputs& in) {
-       const auto& b = in.floor->boards.front();
+       const auto& b = in.get<FloorCurves>()->boards.front();
        return std::vector<Part>{exact_part("largest exact board, cells a side",
                                            static_cast<double>(b.largest), {Side::Below, 4},
                                            Unit::Number, 0)};
      },
      [](const ClaimInputs& in, const std::vector<Part>&) {
-       const auto& b = in.floor->boards.front();
+       const auto& b = in.get<FloorCurves>()->boards.front();
        char buf[200];
        if (b.largest == 0) return std::string("not even a 2 x 2 board closes");
        std::snprintf(buf, sizeof buf,

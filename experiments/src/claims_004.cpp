@@ -15,7 +15,7 @@ namespace ut = uniform_tables;
 constexpr std::size_t kRw = 0, kPm = 1, kAStar = 2;
 
 const ut::TablesRow& at(const ClaimInputs& in, int density, int robots) {
-  for (const auto& r : *in.uniform)
+  for (const auto& r : in.get<UniformResults>()->rows)
     if (r.paper->density_percent == density && r.paper->robots == robots) return r;
   throw std::logic_error("paper 004: no row");
 }
@@ -38,13 +38,15 @@ const std::vector<ClaimSpec> kPaper004Claims = {
      "uniform/uniform_tables.csv",
      [](const ClaimInputs& in) {
        std::uint64_t incomplete = 0;
-       for (const auto& r : *in.uniform) incomplete += in.uniform_runs - r.complete[kAStar];
+       for (const auto& r : in.get<UniformResults>()->rows)
+         incomplete += in.get<UniformResults>()->runs - r.complete[kAStar];
        return std::vector<Part>{exact_part("incomplete A* runs", static_cast<double>(incomplete),
                                            {Side::Below, 0.5}, Unit::Number, 0)};
      },
      [](const ClaimInputs& in, const std::vector<Part>&) {
        std::uint64_t complete = 0, all = 0;
-       for (const auto& r : *in.uniform) complete += r.complete[kAStar], all += in.uniform_runs;
+       for (const auto& r : in.get<UniformResults>()->rows)
+         complete += r.complete[kAStar], all += in.get<UniformResults>()->runs;
        const auto ci = clopper_pearson(complete, all, 0.95);
        return std::to_string(complete) + " of " + std::to_string(all) +
               " runs complete (completion rate at least " + fixed(100 * ci.lo, 1) +
@@ -76,7 +78,7 @@ const std::vector<ClaimSpec> kPaper004Claims = {
      "uniform/uniform_tables.csv",
      [](const ClaimInputs& in) {
        std::vector<Part> parts;
-       for (const auto& r : *in.uniform)
+       for (const auto& r : in.get<UniformResults>()->rows)
          if (r.paper->density_percent > 0)
            parts.push_back(bootstrap_part(row_label(r),
                                           {r.movements_runs[kPm], r.coverage_runs[kPm],
@@ -130,10 +132,10 @@ const std::vector<ClaimSpec> kPaper004Claims = {
      [](const ClaimInputs& in) {
        std::vector<Part> parts;
        for (const int robots : {3, 4})
-         parts.push_back(
-             exact_part(std::to_string(robots) + " robots: incomplete PM runs",
-                        static_cast<double>(in.uniform_runs - at(in, 0, robots).complete[kPm]),
-                        {Side::Below, 0.5}, Unit::Number, 0));
+         parts.push_back(exact_part(
+             std::to_string(robots) + " robots: incomplete PM runs",
+             static_cast<double>(in.get<UniformResults>()->runs - at(in, 0, robots).complete[kPm]),
+             {Side::Below, 0.5}, Unit::Number, 0));
        return parts;
      },
      [](const ClaimInputs& in, const std::vector<Part>&) {
@@ -160,7 +162,7 @@ const std::vector<ClaimSpec> kPaper004Claims = {
      "uniform/uniform_tables.csv",
      [](const ClaimInputs& in) {
        std::vector<Part> parts;
-       for (const auto& r : *in.uniform)
+       for (const auto& r : in.get<UniformResults>()->rows)
          parts.push_back(bootstrap_part(
              row_label(r), {r.coverage_runs[kRw], r.coverage_runs[kPm], r.coverage_runs[kAStar]}, 0,
              [](const Samples& s) { return mean(s[0]) - std::min(mean(s[1]), mean(s[2])); },
@@ -180,7 +182,7 @@ const std::vector<ClaimSpec> kPaper004Claims = {
      "uniform/uniform_tables.csv",
      [](const ClaimInputs& in) {
        std::vector<Part> parts;
-       for (const auto& r : *in.uniform)
+       for (const auto& r : in.get<UniformResults>()->rows)
          if (r.paper->density_percent > 0) {
            const double p = r.paper->coverage[kPm];
            parts.push_back(bootstrap_part(
@@ -191,9 +193,9 @@ const std::vector<ClaimSpec> kPaper004Claims = {
        return parts;
      },
      [](const ClaimInputs& in, const std::vector<Part>&) {
-       if (!in.uniform_disk || in.uniform_disk->empty()) return std::string();
+       if (in.get<UniformResults>()->disk.empty()) return std::string();
        double lo = 1e300, hi = 0;
-       for (const auto& d : *in.uniform_disk)
+       for (const auto& d : in.get<UniformResults>()->disk)
          if (d.paper->density_percent > 0)
            lo = std::min(lo, d.coverage[kPm]), hi = std::max(hi, d.coverage[kPm]);
        return "with a disk sensor that sees through walls PM covers " + fixed(lo, 1) + "-" +
@@ -201,8 +203,8 @@ const std::vector<ClaimSpec> kPaper004Claims = {
      },
      [](const ClaimInputs& in, const std::vector<Part>&) {
        std::size_t all = 0, disk_good = 0;
-       if (in.uniform_disk)
-         for (const auto& d : *in.uniform_disk)
+       if (!in.get<UniformResults>()->disk.empty())
+         for (const auto& d : in.get<UniformResults>()->disk)
            if (d.paper->density_percent > 0)
              ++all, disk_good += std::abs(d.coverage[kPm] - d.paper->coverage[kPm]) <= 10;
        std::string why = "Our PM stops when no unviewed cell is in sensor range, early among "
@@ -227,7 +229,7 @@ const std::vector<ClaimSpec> kPaper004Claims = {
      "uniform/uniform_tables.csv",
      [](const ClaimInputs& in) {
        std::vector<Part> parts;
-       for (const auto& r : *in.uniform) {
+       for (const auto& r : in.get<UniformResults>()->rows) {
          const double p = r.paper->movements[kAStar];
          parts.push_back(bootstrap_part(
              row_label(r) + " (paper " + fixed(p, 0) + ")", {r.movements_runs[kAStar]}, 1,
@@ -244,7 +246,7 @@ const std::vector<ClaimSpec> kPaper004Claims = {
      "uniform/uniform_tables.csv",
      [](const ClaimInputs& in) {
        std::vector<Part> parts;
-       for (const auto& r : *in.uniform) {
+       for (const auto& r : in.get<UniformResults>()->rows) {
          const double p = r.paper->coverage[kRw];
          parts.push_back(bootstrap_part(
              row_label(r) + " (paper " + fixed(p, 1) + ")", {r.coverage_runs[kRw]}, 1,

@@ -41,7 +41,10 @@ double sample_deviation(const std::vector<double>& v) {
   return std::sqrt(s / static_cast<double>(v.size() - 1));
 }
 
-ExploreTables run_explore_tables(std::uint64_t seed, const algorithms::Runner& runner) {
+ExploreTables run_explore_tables(std::uint64_t seed, const algorithms::Runner& runner,
+                                 int repetitions_factor) {
+  if (repetitions_factor < 1 || repetitions_factor > 1000)
+    throw kernel::InputError("repetitions", "the factor must be in [1, 1000]");
   struct WorkUnit {
     std::size_t env, method;
     int trial;
@@ -49,7 +52,8 @@ ExploreTables run_explore_tables(std::uint64_t seed, const algorithms::Runner& r
   std::vector<WorkUnit> units;
   for (std::size_t e = 0; e < kExploreEnvironments.size(); ++e)
     for (std::size_t m = 0; m < kExploreMethods; ++m)
-      for (int t = 1; t <= kExploreEnvironments[e].repetitions; ++t) units.push_back({e, m, t});
+      for (int t = 1; t <= kExploreEnvironments[e].repetitions * repetitions_factor; ++t)
+        units.push_back({e, m, t});
   const kernel::Cell corner{0, 24};
   const auto payloads =
       algorithms::run_units(runner, "paper 001, tables 2-3", units.size(), [&](std::uint64_t u) {

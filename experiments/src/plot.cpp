@@ -22,9 +22,12 @@ namespace {
 // the next row's panel titles). The picture ends under its caption: no empty band.
 constexpr double kTop = 64, kPlot = 300, kLeft = 74, kRight = 30, kBelowPlot = 54, kRowGap = 46;
 constexpr double kLegendRow = 17, kFont = 12;
-// A lone panel gets room for a long title and caption; panels side by side 420 each.
-double panel_width(std::size_t columns) {
-  return columns == 1 ? 640 : 420;
+// A lone panel gets room for a long title and caption; panels side by side 420 each; a lone panel
+// of many named categories (the claims' forest plot) 18 px a category, so that their staggered
+// labels do not collide.
+double panel_width(std::size_t columns, std::size_t categories) {
+  return columns == 1 ? std::max(640.0, kLeft + kRight + 18.0 * static_cast<double>(categories))
+                      : 420;
 }
 
 using detail::rgb;
@@ -267,7 +270,7 @@ Layout layout(const Figure& f) {
   const std::size_t n = std::max<std::size_t>(1, f.panels.size());
   l.columns = f.columns == 0 ? n : std::min(f.columns, n);
   l.rows = (n + l.columns - 1) / l.columns;
-  l.column_width = panel_width(l.columns);
+  l.column_width = panel_width(l.columns, f.x_categories.size());
   l.width = l.column_width * static_cast<double>(l.columns);
   std::size_t panel_legend = 0;
   if (f.legend.empty())

@@ -5,7 +5,9 @@
 #include <antkit/experiments/drawing.hpp>
 #include <antkit/experiments/explore_tables.hpp>
 #include <antkit/experiments/format.hpp>
+#include <antkit/experiments/papers.hpp>
 #include <antkit/experiments/reproduce.hpp>
+#include <antkit/experiments/sequential.hpp>
 #include <antkit/experiments/stc_tours.hpp>
 #include <antkit/experiments/uniform_tables.hpp>
 #include <antkit/geometry/arena_spec.hpp>
@@ -14,69 +16,23 @@
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/stc/world.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iostream>
 #include <map>
+#include <mutex>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
 #include <sstream>
 
 namespace antkit::experiments {
 
-namespace ut = antkit::experiments::uniform_tables;
 using kernel::InputError;
 
 namespace {
-
-const std::vector<std::string> kFamilies = {"buffon", "los", "stc", "uniform"};
-
-// The output directory, its subdirectories, and the files written (relative paths).
-class Writer {
-public:
-  explicit Writer(std::filesystem::path out) : out_(std::move(out)) {}
-  void dir(const std::string& sub) {
-    std::error_code ec;
-    std::filesystem::create_directories(out_ / sub, ec);
-    if (!std::filesystem::is_directory(out_ / sub))
-      throw InputError("output directory",
-                       "cannot make the directory '" + (out_ / sub).string() + "'");
-  }
-  void text(const std::string& rel_path, const std::string& content) {
-    io::write_file_atomic(out_ / rel_path, content);
-    files_.emplace_back(rel_path);
-  }
-  void figure(const std::string& stem, const Figure& f) {
-    save_figure(f, out_ / (stem + ".svg"), out_ / (stem + ".png"));
-    files_.emplace_back(stem + ".svg");
-    files_.emplace_back(stem + ".png");
-  }
-  [[nodiscard]] const std::filesystem::path& out() const { return out_; }
-  void added(const std::string& rel_path) { files_.emplace_back(rel_path); }
-  [[nodiscard]] const std::vector<std::filesystem::path>& files() const { return files_; }
-
-private:
-  std::filesystem::path out_;
-  std::vector<std::filesystem::path> files_;
-};
-
-// A Markdown file's body under the report's own heading level: its first "# " title dropped and
-// every other heading two levels deeper.
-std::string embed(const std::string& md) {
-  std::istringstream in(md);
-  std::ostringstream out;
-  std::string line;
-  bool first = true;
-  while (std::getline(in, line)) {
-    if (first && line.rfind("# ", 0) == 0) {
-      first = false;
-      continue;
-    }
-    first = false;
-    if (line.rfind("#", 0) == 0) line = "##" + line;
-    out << line << '\n';
-  }
-  return out.str();
-}
 
 nlohmann::json parts_json(const std::vector<ClaimPart>& parts) {
   nlohmann::json out = nlohmann::json::array();
@@ -87,67 +43,283 @@ nlohmann::json parts_json(const std::vector<ClaimPart>& parts) {
                    {"level", p.level},
                    {"method", p.method},
                    {"rule", p.rule},
-                   {"verdict", verdict_text(p.verdict)}});
+                   {"verdict", verdict_text(p.verdict)},
+                   {"miss", p.miss}});
   return out;
 }
 
-std::string image(const std::string& stem, const std::string& alt) {
-  return "![" + alt + "](" + stem + ".png)\n\n(" + stem + ".svg, " + stem + ".png)\n\n";
+// The counts of a look: the scale's, times `factor`.
+Trials scaled(const Trials& base, int factor) {
+  Trials t = base;
+  t.buffon *= factor;
+  t.uniform_runs *= factor;
+  t.stc_random_maps *= factor;
+  t.stc_noise_trials *= factor;
+  t.stc_floor_boards *= factor;
+  return t;
 }
 
-// ---------------------------------------------------------------------------------------------
-// Paper 000.
+// --decide's looks: look k runs 2^k times the scale's counts. Its alpha is 0.05 / ((k + 1)(k + 2))
+// (0.025, 0.0083, 0.0042, ...: the series sums to 0.05 over any number of looks), so no look count
+// is planned: a budget only says where the looks stop, and a time budget's report is the report
+// of the budget in trials it reached.
+double look_alpha(int look) {
+  return experiments::look_alpha(0.05, look); // sequential.hpp
+}
+int look_factor(int look) {
+  return 1 << look;
+}
+inline constexpr int kMaxLooks = 20;
+// A claim whose estimate needs more than this many times its look's trials stops asking for them.
+inline constexpr double kFutile = 16;
 
-std::string buffon_rows_table(const BuffonFigure& f) {
+// How many times a look's trials would settle a claim, if every interval's half-width shrinks as
+// one over the square root of the trials and each undecided part ends on the side its figure is
+// on now: parts decide in the order of their own need ((half-width / distance from the threshold
+// it straddles)^2), and the claim's need is the first at which the combined verdict is decided.
+// Infinite when a figure sits on its threshold.
+double settling_ratio(const std::vector<Part>& parts) {
+  std::vector<Verdict> verdicts;
+  std::vector<std::pair<double, std::size_t>> open;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const Part& p = parts[i];
+    verdicts.push_back(p.verdict);
+    if (p.verdict != Verdict::Inconclusive) continue;
+    const double half = (p.ci.hi - p.ci.lo) / 2;
+    double distance = std::fabs(p.value - p.rule.threshold);
+    if (p.rule.side == Side::Within)
+      distance = std::min(distance, std::fabs(p.value + p.rule.threshold));
+    const double ratio = distance <= 1e-12 * std::max(1.0, std::fabs(p.rule.threshold))
+                             ? std::numeric_limits<double>::infinity()
+                             : (half / distance) * (half / distance);
+    open.emplace_back(std::max(1.0, ratio), i);
+  }
+  std::sort(open.begin(), open.end());
+  for (const auto& [ratio, i] : open) {
+    const Part& p = parts[i];
+    verdicts[i] = decide({p.value, p.value}, p.rule);
+    if (verdicts[i] == Verdict::Inconclusive) return std::numeric_limits<double>::infinity();
+    if (combine(verdicts) != Verdict::Inconclusive) return ratio;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+// --decide's state: every claim's parts as decided so far. A part decided at a look keeps that
+// look's figure, interval and verdict; a claim is settled once its combined verdict is decided
+// (holds, does not hold or partly: none of them can change as more parts decide) and then keeps
+// the claim of that look. Look k evaluates at alpha_k = look_alpha(k) per claim (alpha_k / m per
+// part of a claim of m parts): by the union bound every interval of every look of a claim holds
+// with probability at least 1 - sum alpha_k >= 95 %.
+class Settling {
+public:
+  // Evaluates the claim at this look unless it is settled; returns whether it still asks for
+  // trials (unsettled, and its estimate within kFutile times this look's).
+  bool look(const ClaimSpec& spec, const ClaimInputs& inputs, std::uint64_t seed, int look) {
+    auto& st = states_[spec.id];
+    if (st.settled) return false;
+    std::vector<Part> parts = evaluate_parts(spec, inputs, seed, look_alpha(look));
+    if (st.parts.size() == parts.size())
+      for (std::size_t i = 0; i < parts.size(); ++i)
+        if (st.parts[i].verdict != Verdict::Inconclusive) parts[i] = st.parts[i];
+    st.parts = parts;
+    st.claim = claim_of(spec, inputs, parts);
+    st.claim.look = look;
+    st.settled = st.claim.verdict != Verdict::Inconclusive;
+    if (st.settled) return false;
+    const double ratio = settling_ratio(parts);
+    st.claim.needed = needed_text(ratio, look);
+    return ratio <= kFutile;
+  }
+  [[nodiscard]] Claim claim(const std::string& id) const { return states_.at(id).claim; }
+
+private:
+  static std::string needed_text(double ratio, int look) {
+    if (!std::isfinite(ratio)) return "no estimate: a figure sits on its threshold";
+    if (ratio > 1e6) return "more than a million times these trials";
+    char buf[128];
+    std::snprintf(buf, sizeof buf,
+                  "about %.0f times the first look's trials (%.1f times this look's)",
+                  std::ceil(ratio * look_factor(look)), ratio);
+    return std::string(buf) +
+           (ratio > kFutile ? "; it stopped asking for trials (over 16 times)" : "");
+  }
+
+  struct State {
+    std::vector<Part> parts;
+    Claim claim;
+    bool settled = false;
+  };
+  std::map<std::string, State> states_;
+};
+
+// A part's interval as its margin over the threshold, in units of `scale`: > 0 on the side where
+// it holds. Within +-t, the margin of a figure v is t - |v|.
+Interval margin_of(const ClaimPart& p, double scale) {
+  const auto m = [&](double v) {
+    switch (p.side) {
+    case Side::Below:
+      return (p.threshold - v) / scale;
+    case Side::Above:
+      return (v - p.threshold) / scale;
+    case Side::Within:
+      return (p.threshold - std::fabs(v)) / scale;
+    }
+    return 0.0;
+  };
+  if (p.side == Side::Within) {
+    const double far = std::max(std::fabs(p.ci.lo), std::fabs(p.ci.hi));
+    const double near =
+        p.ci.lo <= 0 && p.ci.hi >= 0 ? 0.0 : std::min(std::fabs(p.ci.lo), std::fabs(p.ci.hi));
+    return {m(far), m(near)};
+  }
+  const double a = m(p.ci.lo), b = m(p.ci.hi);
+  return {std::min(a, b), std::max(a, b)};
+}
+
+// The report's first figure (issue 44): every claim's parts, each its interval as a margin over
+// its threshold in units of the tolerance (the threshold's size; for a threshold of 0, the
+// largest interval end among the claim's parts), coloured by the claim's verdict, one column per
+// claim; above 0 a part holds, below 0 it does not, across 0 it is undecided. Margins are clipped
+// to [-3, 3].
+Figure forest_plot(const std::vector<Claim>& claims) {
+  Figure fig;
+  fig.title = "Every claim's parts against their thresholds";
+  fig.y_label = "margin over the threshold, in tolerances";
+  fig.x_label = "claim";
+  fig.caption =
+      "Each bar: one part's interval, as its distance past the threshold on the side where it "
+      "holds,\nin units of the threshold (of the claim's largest interval end for a threshold of "
+      "0), clipped to [-3, 3].\nAbove 0 the part holds, below 0 it does not, across 0 it is "
+      "undecided. Colour: the claim's verdict.";
+  const std::pair<Verdict, const char*> colours[] = {{Verdict::Holds, "#1b9e3a"},
+                                                     {Verdict::Partly, "#e08a00"},
+                                                     {Verdict::DoesNotHold, "#d81e1e"},
+                                                     {Verdict::Inconclusive, "#707070"}};
+  PlotPanel panel;
+  for (const auto& [verdict, colour] : colours) {
+    PlotSeries series{verdict_text(verdict), colour, false, true, {}};
+    for (std::size_t i = 0; i < claims.size(); ++i) {
+      const auto& c = claims[i];
+      if (c.verdict != verdict) continue;
+      double zero_scale = 1e-12;
+      for (const auto& p : c.parts)
+        zero_scale = std::max({zero_scale, std::fabs(p.ci.lo), std::fabs(p.ci.hi)});
+      const std::size_t n = c.parts.size();
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto& p = c.parts[j];
+        const double scale = p.threshold != 0 ? std::fabs(p.threshold) : zero_scale;
+        const Interval m = margin_of(p, scale);
+        const auto clip = [](double v) { return std::clamp(v, -3.0, 3.0); };
+        const double x =
+            static_cast<double>(i) +
+            (n > 1 ? 0.6 * (static_cast<double>(j) / static_cast<double>(n - 1) - 0.5) : 0.0);
+        series.points.push_back({x, clip((m.lo + m.hi) / 2), clip(m.lo), clip(m.hi)});
+      }
+    }
+    if (!series.points.empty()) panel.series.push_back(std::move(series));
+  }
+  panel.marks.push_back({0, "threshold", "#404040", true, false});
+  fig.panels.push_back(std::move(panel));
+  for (const auto& c : claims) fig.x_categories.push_back(c.id);
+  return fig;
+}
+
+// A simulation row of the report: its figures depend on the margin and the spending alone (the
+// model and its seed are fixed), so a process computes each once.
+SequentialSimulation simulation(double margin, bool spend, unsigned threads) {
+  static std::mutex lock;
+  static std::map<std::pair<double, bool>, SequentialSimulation> done;
+  const std::lock_guard<std::mutex> hold(lock);
+  const auto key = std::make_pair(margin, spend);
+  if (const auto it = done.find(key); it != done.end()) return it->second;
+  SequentialSimulation sim;
+  sim.margin = margin;
+  sim.spend = spend;
+  return done[key] = simulate_sequential(sim, threads);
+}
+
+// The report's account of --decide: the method, the looks, what each settled, what is left, and
+// the simulation that shows the error stays at or below its rate.
+std::string decide_section(const std::vector<Claim>& claims, int looks, const Trials& base,
+                           unsigned threads) {
   std::ostringstream s;
-  s << "| series | x | arena | median nBC | IQR | efficiency |\n|---|---|---|---|---|---|\n";
-  for (const auto& r : f.rows)
-    s << "| " << r.arena.series << " | " << number(r.arena.x) << " | `" << r.arena.spec << "` | "
-      << fixed(r.nbc_median, 4) << " | " << fixed(r.nbc_q1, 4) << " - " << fixed(r.nbc_q3, 4)
-      << " | " << fixed(r.efficiency, 3) << " |\n";
+  s << "### How `--decide` decided\n\n"
+    << looks << " look(s), each twice the trials of the last: paper 000's trials per arena ";
+  for (int k = 0; k < looks; ++k)
+    s << (k ? ", " : "") << std::int64_t{base.buffon} * look_factor(k);
+  s << ", the other papers' counts by the same factors. A look runs only what a claim still asks "
+       "trials for: a figure of paper 000 (its later trials added to the earlier ones, keyed by "
+       "their index), or a whole family of the others (rerun at the new count: seconds). After "
+       "each look every claim not yet settled is evaluated again; a part whose interval decides "
+       "it keeps that look's figure and verdict, and a claim is settled once its combined "
+       "verdict is decided (holds, does not hold or partly: none can change as more parts "
+       "decide). A claim that would need more than 16 times its look's trials (its estimate "
+       "below) stops asking for them. The looks end when nothing asks, or when the next would "
+       "pass the budget.\n\n"
+    << "The error across the repeated looks: alpha spending over an open-ended series of looks. "
+       "Look k (from 0) evaluates at alpha_k = 0.05 / ((k + 1)(k + 2)) per claim (0.025, "
+       "0.0083, 0.0042, 0.0025, ...), a part of a claim of m parts at 1 - alpha_k / m; the "
+       "alpha_k sum to 0.05 over any number of looks, so by the union bound every interval of "
+       "every look of a claim holds with probability at least 95 %, and then no verdict of the "
+       "claim is false. We chose it because it needs no planned number of looks (a budget, in "
+       "trials or in time, only says where the looks stop, so a time budget's report is the "
+       "report of the trial budget it reached) and nothing of the joint law of the looks (the "
+       "later looks contain the earlier trials, and the intervals are percentile bootstraps of "
+       "medians, not the Gaussian statistics O'Brien-Fleming or Pocock boundaries assume); it "
+       "is conservative, and the error is controlled per claim: across the claims it bounds the "
+       "expected share of false verdicts at 5 %, not the chance of any.\n\n"
+    << "| look | alpha | paper 000 trials per arena | claims settled at this look |\n"
+       "|---|---|---|---|\n";
+  for (int k = 0; k < looks; ++k) {
+    std::string ids;
+    for (const auto& c : claims)
+      if (c.look == k && c.verdict != Verdict::Inconclusive)
+        ids += (ids.empty() ? "" : ", ") + c.id;
+    char alpha[32];
+    std::snprintf(alpha, sizeof alpha, "%.4g", look_alpha(k));
+    s << "| " << k + 1 << " | " << alpha << " | " << std::int64_t{base.buffon} * look_factor(k)
+      << " | " << (ids.empty() ? std::string("none") : ids) << " |\n";
+  }
+  std::string open;
+  for (const auto& c : claims)
+    if (c.verdict == Verdict::Inconclusive)
+      open += "- " + c.id + ": " + c.measured + "; " + c.needed + ".\n";
+  s << '\n'
+    << (open.empty() ? std::string("Every claim is settled.\n\n")
+                     : "Still undecided (the last look's intervals, and the trials that would "
+                       "settle the claim if the intervals shrink as one over the square root of "
+                       "the trials and each undecided part ends on the side its figure is on "
+                       "now):\n\n" +
+                           open + "\n");
+  s << "#### The error, by simulation\n\n"
+    << "Claims whose truth we set: exponential trials, their median against a threshold at the "
+       "true median times (1 + margin), decided by the same bootstrap (1000 resamples) at the "
+       "same looks (20, 40, 80, 160 trials, each at its alpha_k), 400 claims a row "
+       "(experiments/sequential.hpp). At margin 0 the truth sits on the threshold and any "
+       "verdict is false: the worst case. The last row looks four times at 95 % without "
+       "spending, to show what the spending buys.\n\n"
+    << "| truth | margin | spending | verdicts | false | false rate [95 %] | mean trials |\n"
+       "|---|---|---|---|---|---|---|\n";
+  struct Row {
+    double margin;
+    bool spend;
+  };
+  for (const Row r : {Row{0, true}, Row{0.5, true}, Row{-0.5, true}, Row{0, false}}) {
+    const SequentialSimulation sim = simulation(r.margin, r.spend, threads);
+    char rate[96];
+    std::snprintf(rate, sizeof rate, "%.1f %% [%.1f %%, %.1f %%]", 100 * sim.false_rate(),
+                  100 * sim.false_rate_ci.lo, 100 * sim.false_rate_ci.hi);
+    s << "| "
+      << (r.margin > 0   ? "holds"
+          : r.margin < 0 ? "does not hold"
+                         : "on the threshold")
+      << " | " << number(r.margin) << " | " << (r.spend ? "alpha_k" : "none (0.05 a look)") << " | "
+      << sim.decided << " | " << sim.false_verdicts << " | " << rate << " | "
+      << fixed(sim.mean_trials, 1) << " |\n";
+  }
+  s << '\n';
   return s.str();
 }
-
-// Figure 4: the trails of trial 0 in three circles (experiment 4400 + k).
-void buffon_figure4(Writer& w, std::uint64_t seed) {
-  std::vector<TrailPanel> panels;
-  const double diameters[] = {20, 50, 100};
-  for (std::size_t k = 0; k < 3; ++k) {
-    const auto arena =
-        geometry::build_arena_spec("circle:d=" + number(diameters[k]), "figure").arena;
-    buffon::TrialParams params;
-    params.seed = seed;
-    params.experiment = 4400 + k;
-    params.keep_trails = true;
-    const auto r = buffon::run_trial(buffon::World(arena.walls_fx()), params, 0);
-    TrailPanel p;
-    p.title = "circle, d = " + number(diameters[k]) + " (area " + fixed(arena.area(), 0) + ")";
-    for (const auto& ring : arena.rings()) {
-      std::vector<XY> pts;
-      for (const auto& v : ring) pts.emplace_back(v[0], v[1]);
-      p.rings.push_back(std::move(pts));
-    }
-    // Every 8th point (a step is 0.04 units), keeping the points around a jump.
-    const auto thin = [](const std::vector<kernel::FxPoint>& pts) {
-      std::vector<XY> out;
-      for (std::size_t i = 0; i < pts.size(); ++i)
-        if (i % 8 == 0 || i + 1 == pts.size())
-          out.emplace_back(geometry::to_double(pts[i].x), geometry::to_double(pts[i].y));
-      return out;
-    };
-    p.trail1 = thin(r.trail1);
-    p.trail2 = thin(r.trail2);
-    panels.push_back(std::move(p));
-  }
-  save_trails_figure("Paper 000, Figure 4: two visits' trails in three circles",
-                     "Trial 0 of each circle, 50 000 steps per visit, trail width 0.1 (unit: the "
-                     "robot's diameter).\nIn the smallest circle the trails cover the floor and "
-                     "blend: crossings are undercounted there.",
-                     panels, w.out() / "buffon/figure4.svg", w.out() / "buffon/figure4.png");
-  w.added("buffon/figure4.svg");
-  w.added("buffon/figure4.png");
-}
-
 } // namespace
 
 Trials trials_of(Scale scale) {
@@ -156,9 +328,25 @@ Trials trials_of(Scale scale) {
 }
 
 void validate(const ReproduceOptions& options) {
+  std::string families;
+  for (const auto& e : papers()) families += (families.empty() ? "" : ", ") + e.family;
   for (const auto& name : options.only)
-    if (std::find(kFamilies.begin(), kFamilies.end(), name) == kFamilies.end())
-      throw InputError("families", "'" + name + "' is not one of buffon, los, stc, uniform");
+    if (std::none_of(papers().begin(), papers().end(),
+                     [&](const PaperEntry& e) { return e.family == name; }))
+      throw InputError("families", "'" + name + "' is not one of " + families);
+  if (!options.decide && (options.budget_trials != 0 || options.budget_seconds != 0))
+    throw InputError("--budget", "a budget is for --decide");
+  const int base = trials_of(options.scale).buffon;
+  if (options.budget_trials != 0 &&
+      (options.budget_trials < base || options.budget_trials > 100000))
+    throw InputError("--budget", "expected " + std::to_string(base) +
+                                     " to 100000 trials per arena (the first look runs " +
+                                     std::to_string(base) + "), not " +
+                                     std::to_string(options.budget_trials));
+  if (options.budget_seconds < 0 || options.budget_seconds > 30 * 86400.0)
+    throw InputError("--budget", "expected a duration from 1s to 30 days");
+  if (options.budget_trials != 0 && options.budget_seconds != 0)
+    throw InputError("--budget", "give a budget in trials or in time, not both");
 }
 
 std::string reproduce_command(const ReproduceOptions& o, const std::vector<std::string>& only) {
@@ -167,6 +355,10 @@ std::string reproduce_command(const ReproduceOptions& o, const std::vector<std::
   if (!only.empty()) {
     s += " --only ";
     for (std::size_t i = 0; i < only.size(); ++i) s += (i ? "," : "") + only[i];
+  }
+  if (o.decide) {
+    s += " --decide";
+    if (o.budget_trials > 0) s += " --budget " + std::to_string(o.budget_trials);
   }
   s += " --seed " + std::to_string(o.seed);
   if (only.empty() || std::find(only.begin(), only.end(), "stc") != only.end())
@@ -193,265 +385,119 @@ std::string claims_markdown(const std::vector<Claim>& claims) {
 
 ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& runner) {
   validate(o);
-  const auto wants = [&](const char* family) {
-    return o.only.empty() || std::find(o.only.begin(), o.only.end(), family) != o.only.end();
-  };
-  const Trials trials = trials_of(o.scale);
-  Writer w(o.out);
-  if (runner.root())
-    for (const char* family : {"buffon", "los", "stc", "uniform"})
-      if (wants(family)) w.dir(family);
-  if (runner.root() && wants("uniform")) w.dir("uniform/disk");
+  const auto reproduce_started = std::chrono::steady_clock::now();
+  const Trials base = trials_of(o.scale);
+  ReportFiles w(o.out);
   ReproduceReport report;
   std::ostringstream md;
   const std::string scale = o.scale == Scale::Full ? "full" : "quick";
 
-  // Paper 000.
-  BuffonResults buffon;
-  if (wants("buffon")) {
-    for (const int figure : {5, 6, 7, 8, 9}) {
-      BuffonFigureParams p;
-      p.figure = figure;
-      p.trials = trials.buffon;
-      p.seed = o.seed;
-      buffon.figures.emplace(figure, run_buffon_figure(p, runner));
+  // The papers asked for, in id order, each with its run.
+  struct Paper {
+    const PaperEntry* entry;
+    std::unique_ptr<PaperRun> run;
+  };
+  std::vector<Paper> ran;
+  for (const auto& e : papers())
+    if (o.only.empty() || std::find(o.only.begin(), o.only.end(), e.family) != o.only.end())
+      ran.push_back({&e, e.make(o)});
+
+  // The looks (one without --decide): look k runs what still has a claim asking for trials, at
+  // 2^k times the scale's counts (paper 000 figure by figure, its trials added to the earlier
+  // looks'; the others whole).
+  std::vector<std::pair<PaperRun*, std::string>> running; // the next look's units
+  for (const auto& p : ran)
+    for (const auto& unit : p.run->units()) running.emplace_back(p.run.get(), unit);
+  std::map<std::string, int> unit_look;    // the last look each unit ran
+  std::map<std::string, double> unit_cost; // its time at that look, seconds (time budgets)
+  Settling settling;                       // --decide: every claim as decided so far (rank 0)
+  const auto inputs_now = [&] {
+    ClaimInputs in;
+    for (const auto& p : ran) p.run->inputs(in);
+    return in;
+  };
+  int last_look = 0;
+  for (int look = 0; look < kMaxLooks; ++look) {
+    const int factor = look_factor(look);
+    const Trials trials = scaled(base, factor);
+    if (o.decide && runner.root()) {
+      std::cerr << "reproduce: look " << look + 1 << ", " << factor
+                << " times the first look's trials, running:";
+      for (const auto& [paper, unit] : running) std::cerr << ' ' << unit;
+      std::cerr << '\n';
     }
-    BuffonFigureParams p14;
-    p14.figure = 14;
-    p14.trials = trials.buffon;
-    p14.seed = o.seed;
-    buffon.fig14 = run_figure14(p14, runner);
-  }
-  ExploreTables los;
-  if (wants("los")) los = run_explore_tables(o.seed, runner);
-  StcTours stc;
-  StcToursParams stc_params;
-  stc_params.maps_dir = o.maps_dir;
-  stc_params.random_maps = trials.stc_random_maps;
-  stc_params.noise_trials = trials.stc_noise_trials;
-  stc_params.seed = o.seed;
-  if (wants("stc")) stc = run_stc_tours(stc_params, runner);
-  // Paper 002's robot on its floor (the rendered floor, camera and pilot of devices/stc_floor,
-  // experiments/stc_floor.hpp), for the two claims on its hardware: a weakening battery's turn
-  // drift (2 000 ppm a minute, the first level of results/stc_floor's curve) with the paper's
-  // rotation calibration and without, on the same keyed boards; and the largest open board that
-  // closes when the marks fade as the paper's camera saw them (a 30 s half-life: lost after about
-  // 70 s, "the first minute or so"), boards of 2 x 2 to 4 x 4 cells.
-  FloorParams floor_params;
-  floor_params.trials = trials.stc_floor_boards;
-  floor_params.seed = o.seed;
-  floor_params.noise = {};
-  floor_params.fade_s = {};
-  floor_params.drift = {2000};
-  floor_params.board_fade_s = {30};
-  floor_params.max_board = 4;
-  FloorCurves floor;
-  if (wants("stc")) floor = run_floor_curves(floor_params, runner);
-  ut::TablesConfig uc;
-  uc.runs = static_cast<std::uint32_t>(trials.uniform_runs);
-  uc.seed = o.seed;
-  ut::TablesConfig disk_config = uc;
-  disk_config.sensor_model = uniform::SensorModel::Disk;
-  std::vector<ut::TablesRow> uniform_rows, disk_rows;
-  if (wants("uniform")) {
-    uniform_rows = ut::run_tables(uc, runner);
-    disk_rows = ut::run_tables(disk_config, runner);
+    for (const auto& [paper, unit] : running) {
+      const auto started = std::chrono::steady_clock::now();
+      paper->run(unit, trials, factor, runner);
+      unit_cost[unit] =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      unit_look[unit] = look;
+    }
+    last_look = look;
+    if (!o.decide) break;
+    // Decide what this look can (rank 0); the units whose claims still ask for trials run again.
+    std::set<std::string> open;
+    if (runner.root()) {
+      const ClaimInputs inputs = inputs_now();
+      for (const auto& p : ran)
+        for (const auto& spec : p.entry->claims()) {
+          const std::string unit = p.run->unit_of(spec);
+          if (unit_look[unit] == look && settling.look(spec, inputs, o.seed, look))
+            open.insert(unit);
+        }
+    }
+    // The next look's budget: its trials within a trial budget; within a time budget, its time
+    // predicted from each unit's last (paper 000's added trials cost as many as the last look's,
+    // a family's rerun twice its last), within what is left.
+    const bool next_fits = [&] {
+      if (look + 1 >= kMaxLooks || std::int64_t{base.buffon} * look_factor(look + 1) > 100000)
+        return false;
+      if (o.budget_seconds <= 0)
+        return std::int64_t{base.buffon} * look_factor(look + 1) <=
+               (o.budget_trials > 0 ? o.budget_trials : std::int64_t{8} * base.buffon);
+      const double spent =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - reproduce_started)
+              .count();
+      double next = 0;
+      for (const auto& unit : open) next += unit_cost[unit] * 2;
+      return spent + next <= o.budget_seconds;
+    }();
+    std::vector<std::pair<PaperRun*, std::string>> next;
+    for (const auto& r : running)
+      if (runner.any(runner.root() && next_fits && open.count(r.second) > 0)) next.push_back(r);
+    running = std::move(next);
+    if (running.empty()) break;
   }
   if (!runner.root()) return report;
 
-  // Decide and write (rank 0).
-  std::ostringstream body;
-  if (wants("buffon")) {
-    buffon_figure4(w, o.seed);
-    body << "## Paper 000: Buffon's-needle area measurement\n\n"
-         << trials.buffon << " trials per arena (the paper: 100), 50 000 steps per visit, trail "
-         << "width 0.1 unless the figure varies it. nBC is the Buffon count per unit length of "
-            "visit 2; efficiency is nBC pi A / (2 L1), 1 for an ideal needle count. The paper "
-            "gives no numbers for these figures, only statements (section 6), which the claims "
-            "above test.\n\n"
-         << "### Figure 4: trails\n\n"
-         << image("buffon/figure4", "Figure 4: trails in three circles");
-    const char* captions[] = {"",
-                              "",
-                              "",
-                              "",
-                              "",
-                              "Figure 5: circles and squares",
-                              "Figure 6: compactness",
-                              "Figure 7: barriers",
-                              "Figure 8: holes and obstacles",
-                              "Figure 9: trail width"};
-    for (auto& [figure, f] : buffon.figures) {
-      const std::string stem = "buffon/figure" + std::to_string(figure);
-      w.text(stem + ".csv", buffon_figure_csv(f));
-      w.figure(stem, buffon_figure_plot(f));
-      body << "### " << captions[figure] << "\n\n" << image(stem, captions[figure]);
-      if (figure == 5) {
-        w.figure("buffon/figure5b", buffon_figure5b_plot(f));
-        body << image("buffon/figure5b", "Figure 5b: squares against circles");
-      }
-      body << buffon_rows_table(f) << '\n';
-      report.experiments.push_back({"paper 000, figure " + std::to_string(figure), f.hash,
-                                    "antkit buffon-experiment --figure " + std::to_string(figure) +
-                                        " --trials " + std::to_string(trials.buffon) + " --seed " +
-                                        std::to_string(o.seed) + " --out DIR (prints this hash)"});
-    }
-    w.text("buffon/figure14.csv", figure14_csv(buffon.fig14));
-    w.figure("buffon/figure14", figure14_plot(buffon.fig14));
-    body << "### Figure 14: calibrated Buffon against Random Search\n\n"
-         << image("buffon/figure14", "Figure 14")
-         << "Rows: buffon/figure14.csv (medians and interquartile ranges per circle and "
-            "checkpoint, with the fit a + b nBC^c).\n\n";
-    report.experiments.push_back({"paper 000, figure 14", buffon.fig14.hash,
-                                  "antkit buffon-experiment --figure 14 --trials " +
-                                      std::to_string(trials.buffon) + " --seed " +
-                                      std::to_string(o.seed) + " --out DIR (prints this hash)"});
-  }
-  if (wants("los")) {
-    w.text("los/table2.csv", table2_csv(los));
-    w.text("los/table2.md", table2_markdown(los));
-    w.text("los/table3.csv", table3_csv(los));
-    w.text("los/table3.md", table3_markdown(los));
-    w.figure("los/figures5-6", explore_plot(los));
-    explore_stages_figure(o.seed, o.out / "los/figure4.svg", o.out / "los/figure4.png");
-    w.added("los/figure4.svg");
-    w.added("los/figure4.png");
-    body << "## Paper 001: two-robot line-of-sight exploration\n\n"
-         << "25 x 25 cells, the paper's 10 repetitions (5 for the blocks) per environment, seed "
-         << o.seed
-         << ". \"Sheng et al.\" (ours) is the frontier baseline as paper 001 describes it: "
-            "g = w1 I - w2 D + w3 lambda with w1 = w2 = 1, w3 = 0, and the information gain I "
-            "counting only the cells outside the other robot's sensor range and target, without "
-            "line-of-sight sweeping; the strong baseline is the same with sweeping. Each cell: "
-            "ours / the paper's.\n\n"
-         << "### Figure 4: stages of one run\n\n"
-         << image("los/figure4", "Figure 4: stages of one run") << "### Table 2\n\n"
-         << embed(table2_markdown(los)) << "\n### Table 3\n\n"
-         << embed(table3_markdown(los)) << "\n### Figures 5-6\n\n"
-         << image("los/figures5-6", "Figures 5-6: steps and E.M.E");
-    report.experiments.push_back({"paper 001, tables 2-3", los.hash,
-                                  "antkit explore-tables --seed " + std::to_string(o.seed) +
-                                      " --out DIR --format json (prints this hash)"});
-  }
-  if (wants("stc")) {
-    w.text("stc/tours.csv", stc_tours_csv(stc));
-    w.text("stc/noise.csv", stc_noise_csv(stc));
-    if (!stc.noise.empty()) w.figure("stc/noise", stc_noise_plot(stc));
-    body << "## Paper 002: ant-like Spanning Tree Coverage\n\n"
-         << "Every variant on " << stc.maps.size() << " maps ("
-         << (stc.maps.size() > static_cast<std::size_t>(trials.stc_random_maps)
-                 ? "the shared MovingAI maps and "
-                 : "no shared maps found; ")
-         << trials.stc_random_maps
-         << " keyed random maps of 64 x 64 sub-cells with 10 % blocked), from the start `antkit "
-            "stc` takes, each tour audited by `antkit check stc` (antkit::testing). The paper "
-            "reports no numbers: its claim is the task itself.\n\n"
-         << "| variant | tours | pass | sub-cells covered (sum) | repeats (sum) |\n"
-            "|---|---|---|---|---|\n";
-    for (const auto v : stc::kVariants) {
-      std::size_t count = 0, pass = 0;
-      std::int64_t covered = 0, repeats = 0;
-      for (const auto& r : stc.tours)
-        if (r.variant == stc::variant_name(v))
-          ++count, pass += r.audit_ok, covered += r.covered, repeats += r.repeats;
-      body << "| " << stc::variant_name(v) << " | " << count << " | " << pass << " | " << covered
-           << " | " << repeats << " |\n";
-    }
-    body << "\nEvery tour: stc/tours.csv.\n\n";
-    // A tour on a real map (den312d when present, else the first map).
-    std::string tour_map = stc.maps.empty() ? "" : stc.maps.front();
-    for (const auto& m : stc.maps)
-      if (m == "den312d.map") tour_map = m;
-    if (!tour_map.empty()) {
-      const auto grid = stc_experiment_map(stc_params, tour_map);
-      if (const auto start = stc::default_start(grid, stc::Variant::AntEdge)) {
-        const auto r = stc::run_stc(grid, *start, stc::Variant::AntEdge);
-        save_tour_figure(
-            grid, r.path, "Paper 002: ant-edge STC on " + tour_map,
-            std::to_string(r.reachable_subcells) + " reachable sub-cells, " +
-                std::to_string(r.covered) + " covered, " + std::to_string(r.repeats) +
-                " repeats, back at the start cell: " + (r.returned_to_start ? "yes" : "no") + ".",
-            o.out / "stc/tour.svg", o.out / "stc/tour.png");
-        w.added("stc/tour.svg");
-        w.added("stc/tour.png");
-        body << "### A tour on a real map\n\n" << image("stc/tour", "ant-edge tour");
-      }
-    }
-    if (!stc.noise.empty()) {
-      body << "### Marker noise (ours; the paper gives no curve)\n\n"
-           << image("stc/noise", "marker noise curve")
-           << "| variant | misread probability | coverage | repeats per sub-cell | complete tours "
-              "|\n|---|---|---|---|---|\n";
-      for (const auto& p : stc.noise)
-        body << "| " << p.variant << " | " << number(p.ppm / 1e6) << " | " << fixed(p.coverage, 4)
-             << " | " << fixed(p.repeats_per_subcell, 4) << " | " << fixed(p.complete, 2) << " |\n";
-      body << '\n';
-    }
-    w.text("stc/floor_curves.csv", floor_curves_csv(floor));
-    w.text("stc/floor_boards.csv", floor_boards_csv(floor));
-    body << "### The robot on its floor\n\n"
-         << "Paper 002's robot driving ant-edge STC through its rendered camera "
-            "(experiments/stc_floor.hpp; the whole study is `antkit stc-floor-experiment`, "
-            "results/stc_floor/): "
-         << trials.stc_floor_boards
-         << " keyed boards of 8 x 8 cells with 10 % of their sub-cells blocked, at a turn drift "
-            "of 2 000 ppm a minute with the paper's rotation calibration and without "
-            "(stc/floor_curves.csv); open boards of 2 x 2 to 4 x 4 cells with marks of a 30 s "
-            "half-life (stc/floor_boards.csv).\n\n";
-    report.experiments.push_back(
-        {"paper 002, tours and marker noise", stc.hash, reproduce_command(o, {"stc"})});
-    report.experiments.push_back(
-        {"paper 002, the robot on its floor", floor.hash, reproduce_command(o, {"stc"})});
-  }
-  if (wants("uniform")) {
-    w.text("uniform/uniform_tables.csv", ut::tables_csv(uniform_rows, uc));
-    w.text("uniform/uniform_tables.md", ut::tables_markdown(uniform_rows, uc));
-    w.text("uniform/disk/uniform_tables.csv", ut::tables_csv(disk_rows, disk_config));
-    w.text("uniform/disk/uniform_tables.md", ut::tables_markdown(disk_rows, disk_config));
-    w.figure("uniform/coverage", ut::tables_plot(uniform_rows, uc));
-    body << "## Paper 004: uniform coverage (RW, PM, A*)\n\n"
-         << embed(ut::tables_markdown(uniform_rows, uc)) << "\n### Coverage against movements\n\n"
-         << image("uniform/coverage", "coverage against movements")
-         << "### The disk-sensor test\n\nThe same runs with a sensor that views every cell within "
-            "range, through walls (RW, PM and A* only): uniform/disk/uniform_tables.md. PM's "
-            "coverage per row, line of sight / disk / the paper's:\n\n"
-            "| density % | robots | PM, line of sight | PM, disk | PM, paper "
-            "|\n|---|---|---|---|---|\n";
-    for (std::size_t i = 0; i < uniform_rows.size() && i < disk_rows.size(); ++i)
-      body << "| " << uniform_rows[i].paper->density_percent << " | "
-           << uniform_rows[i].paper->robots << " | " << fixed(uniform_rows[i].coverage[1], 2)
-           << " | " << fixed(disk_rows[i].coverage[1], 2) << " | "
-           << fixed(uniform_rows[i].paper->coverage[1], 2) << " |\n";
-    body << '\n';
-    kernel::TraceHash los_digest, disk_digest;
-    for (const auto& r : uniform_rows) los_digest.add_u64(r.hash);
-    for (const auto& r : disk_rows) disk_digest.add_u64(r.hash);
-    report.experiments.push_back({"paper 004, tables 1-4", los_digest.finish(),
-                                  "antkit cover-experiment --runs " + std::to_string(uc.runs) +
-                                      " --seed " + std::to_string(o.seed) +
-                                      " --out DIR (prints this hash)"});
-    report.experiments.push_back({"paper 004, tables 1-4, disk sensor", disk_digest.finish(),
-                                  "antkit cover-experiment --runs " + std::to_string(uc.runs) +
-                                      " --seed " + std::to_string(o.seed) +
-                                      " --sensor-model disk --out DIR (prints this hash)"});
+  // The options that reproduce this report: under --decide, the budget in trials the looks used.
+  ReproduceOptions ro = o;
+  if (o.decide) {
+    ro.budget_trials = std::int64_t{base.buffon} * look_factor(last_look);
+    ro.budget_seconds = 0;
   }
 
-  // Decide every claim of the papers that ran (claims_000.cpp ...), in the papers' order.
-  ClaimInputs inputs;
-  if (wants("buffon")) inputs.buffon = &buffon;
-  if (wants("los")) inputs.los = &los;
-  if (wants("stc")) {
-    inputs.stc = &stc;
-    inputs.floor = &floor;
-  }
-  if (wants("uniform")) {
-    inputs.uniform = &uniform_rows;
-    inputs.uniform_disk = &disk_rows;
-    inputs.uniform_runs = uc.runs;
-  }
-  for (const auto* table : {&claims_000(), &claims_001(), &claims_002(), &claims_004()})
-    for (const auto& spec : *table)
-      if (wants(spec.family)) report.claims.push_back(evaluate(spec, inputs, o.seed));
+  // Each paper's files and report section (rank 0).
+  std::ostringstream body;
+  for (const auto& p : ran) p.run->write(w, ro, body, report.experiments);
+
+  // Every claim of the papers that ran, in the papers' order: as the looks left it under
+  // --decide, on the one run's results otherwise.
+  const ClaimInputs inputs = inputs_now();
+  for (const auto& p : ran)
+    for (const auto& spec : p.entry->claims()) {
+      if (!o.decide) {
+        report.claims.push_back(evaluate(spec, inputs, o.seed));
+        continue;
+      }
+      Claim c = settling.claim(spec.id);
+      c.trials = p.run->trials_text(scaled(base, look_factor(c.look)), look_factor(c.look));
+      report.claims.push_back(std::move(c));
+    }
+
+  report.looks = last_look + 1;
+  report.budget_trials = std::int64_t{base.buffon} * look_factor(last_look);
+  if (!report.claims.empty()) w.figure("claims_forest", forest_plot(report.claims));
 
   // The report.
   std::size_t holds = 0, partly = 0, not_held = 0, open = 0;
@@ -461,16 +507,14 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
      : c.verdict == Verdict::DoesNotHold ? not_held
                                          : open)++;
   md << "# The papers, reproduced by antkit\n\n"
-     << "`" << reproduce_command(o, o.only) << "` (" << scale << " scale";
-  if (o.scale == Scale::Quick)
-    md << ": " << trials.buffon << " trials per arena for paper 000 (the paper: 100), "
-       << trials.uniform_runs << " runs per row for paper 004 (the paper: 10), "
-       << trials.stc_random_maps << " random maps, " << trials.stc_noise_trials
-       << " noisy trials per level and " << trials.stc_floor_boards
-       << " floor boards per condition for paper 002; paper 001 in full. `--full` runs the papers' "
-          "counts";
-  else
+     << "`" << reproduce_command(ro, o.only) << "` (" << scale << " scale";
+  if (o.scale == Scale::Quick || o.decide) {
+    md << ": ";
+    for (std::size_t i = 0; i < ran.size(); ++i) md << (i ? "; " : "") << ran[i].run->counts_text();
+    md << (o.decide ? "" : ". `--full` runs the papers' counts");
+  } else {
     md << ": the papers' trial counts";
+  }
   md << "). Every number below depends only on these options, not on the threads or the MPI "
         "ranks: the trials are the kernel's, bit-exact on every compiler and CPU that "
         "scripts/determinism.sh checks; the reductions (medians, means, Figure 14's fit) are "
@@ -478,6 +522,9 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
      << "## Claims\n\n"
      << report.claims.size() << " claims: " << holds << " hold, " << partly << " partly, "
      << not_held << " do not hold, " << open << " inconclusive at this trial count.\n\n"
+     << report_image("claims_forest", "every claim's parts against their thresholds")
+     << (o.decide ? decide_section(report.claims, last_look + 1, base, runner.threads)
+                  : std::string())
      << "How to read a verdict. Each claim is one or more parts (an arena, a row, an "
         "environment...); each part is a figure with an interval and a rule that compares it with "
         "a threshold. The intervals are percentile bootstraps over the trials ("
@@ -512,26 +559,31 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
       std::snprintf(level, sizeof level, "%.2f %%", 100 * p.level);
       md << "| " << p.label << " | " << p.figure << " | " << p.method
          << (p.method == std::string("exact") ? std::string() : std::string(", ") + level) << " | "
-         << p.rule << " | " << verdict_text(p.verdict) << " |\n";
+         << p.rule << " | " << verdict_text(p.verdict)
+         << (p.verdict == Verdict::DoesNotHold ? " (misses by " + p.miss_text + ")" : std::string())
+         << " |\n";
     }
+    if (o.decide)
+      md << "\nTrials: " << c.trials << " (look " << c.look + 1 << " of " << last_look + 1
+         << (c.verdict == Verdict::Inconclusive ? "; still undecided: " + c.needed : std::string())
+         << ").\n";
     md << '\n';
   }
   md << body.str() << "## Trace hashes\n\n"
      << "Each experiment's trace hash (every trial's, in trial order) and a command that "
         "reproduces it. This whole report: `"
-     << reproduce_command(o, o.only) << "`.\n\n| experiment | hash | command |\n|---|---|---|\n";
+     << reproduce_command(ro, o.only) << "`.\n\n| experiment | hash | command |\n|---|---|---|\n";
   for (const auto& e : report.experiments)
     md << "| " << e.name << " | `" << kernel::hash_hex(e.hash) << "` | `" << e.command << "` |\n";
 
   nlohmann::json j;
-  j["command"] = reproduce_command(o, o.only);
+  j["command"] = reproduce_command(ro, o.only);
   j["scale"] = scale;
   j["seed"] = o.seed;
-  j["trials"] = {{"buffon_per_arena", trials.buffon},
-                 {"uniform_runs_per_row", trials.uniform_runs},
-                 {"stc_random_maps", trials.stc_random_maps},
-                 {"stc_noise_trials", trials.stc_noise_trials},
-                 {"stc_floor_boards", trials.stc_floor_boards}};
+  std::vector<std::pair<std::string, std::int64_t>> counts;
+  for (const auto& p : ran) p.run->counts_json(counts);
+  j["trials"] = nlohmann::json::object();
+  for (const auto& [key, n] : counts) j["trials"][key] = n;
   nlohmann::json claims = nlohmann::json::array();
   for (const auto& c : report.claims)
     claims.push_back({{"id", c.id},
@@ -556,6 +608,25 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
   j["intervals"] = {{"bootstrap_resamples", kBootstrapResamples},
                     {"family_level", 0.95},
                     {"per_part_level", "1 - 0.05 / m for a claim of m parts with intervals"}};
+  if (o.decide) {
+    nlohmann::json factors = nlohmann::json::array(), alphas = nlohmann::json::array();
+    for (int k = 0; k <= last_look; ++k)
+      factors.push_back(look_factor(k)), alphas.push_back(look_alpha(k));
+    j["decide"] = {
+        {"looks", last_look + 1},
+        {"factors", factors},
+        {"budget_trials_per_arena", report.budget_trials},
+        {"alpha_per_look", alphas},
+        {"per_part_level", "1 - alpha_k / m at look k for a claim of m parts with intervals"},
+        {"method",
+         "alpha spending over an open-ended series of looks: alpha_k = 0.05 / ((k + 1)(k + 2))"}};
+    for (std::size_t i = 0; i < report.claims.size(); ++i) {
+      const auto& c = report.claims[i];
+      j["claims"][i]["look"] = c.look;
+      j["claims"][i]["trials"] = c.trials;
+      j["claims"][i]["needed"] = c.needed;
+    }
+  }
   w.text("claims.json", j.dump(2) + "\n");
   w.text("README.md", md.str());
   report.files = w.files();

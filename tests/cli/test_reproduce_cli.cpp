@@ -2,6 +2,7 @@
 // stderr, random maps only when the shared maps are missing.
 #include "run_antkit.hpp"
 
+#include <antkit/experiments/claims.hpp>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -26,7 +27,7 @@ TEST_CASE("antkit reproduce prints the claims table and writes the report") {
   const auto json = run_antkit("reproduce --only los --format json --out " + dir.string());
   REQUIRE(json.status == 0);
   const auto j = nlohmann::json::parse(json.out);
-  CHECK(j["claims"].size() == 8);
+  CHECK(j["claims"].size() == antkit::experiments::claims_001().size()); // paper 001's table
   CHECK(j["ranks"] == 1);
   for (const auto& f : j["files"]) CHECK(fs::exists(f.get<std::string>()));
   std::ifstream readme(dir / "README.md");
@@ -58,6 +59,27 @@ TEST_CASE("antkit reproduce runs paper 002 on random maps when the shared maps a
     else
       CHECK(c["verdict"] == "holds");
   }
-  CHECK(j["claims"].size() == 5);
+  CHECK(j["claims"].size() == antkit::experiments::claims_002().size());
+  fs::remove_all(dir);
+}
+
+TEST_CASE("antkit reproduce --decide looks until the claims settle or the budget ends") {
+  const fs::path dir =
+      fs::temp_directory_path() / ("antkit-reproduce-decide-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const auto r = run_antkit(
+      "reproduce --decide --quick --budget 40 --only los --format json --out " + dir.string());
+  REQUIRE(r.status == 0);
+  CHECK(r.err.find("reproduce: look 1, 1 times the first look's trials, running: los") !=
+        std::string::npos);
+  CHECK(r.err.find("per arena (rerun with --budget ") != std::string::npos);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["claims"].size() == antkit::experiments::claims_001().size());
+  std::ifstream readme(dir / "README.md");
+  std::stringstream text;
+  text << readme.rdbuf();
+  CHECK(text.str().find("antkit reproduce --quick --only los --decide --budget ") !=
+        std::string::npos);
+  CHECK(fs::exists(dir / "claims_forest.png"));
   fs::remove_all(dir);
 }

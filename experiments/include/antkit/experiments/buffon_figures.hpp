@@ -70,6 +70,28 @@ struct BuffonFigure {
 // Throws kernel::InputError("figure" / "trials" / "steps per visit") for parameters out of range.
 [[nodiscard]] BuffonFigure run_buffon_figure(const BuffonFigureParams& params,
                                              const algorithms::Runner& runner);
+
+// A figure's trials, added batch by batch (`antkit reproduce --decide`). Trial t of an arena is
+// keyed by t alone, so extend(a, ...) then extend(b, ...) then finish() gives the very figure
+// (rows, per-trial samples and hash) that run_buffon_figure gives at b trials: run_buffon_figure
+// is extend once, then finish. params.trials is ignored; extend() throws as run_buffon_figure
+// does for a count out of range. Under MPI every rank calls extend() (a collective); finish() is
+// rank 0's.
+class BuffonFigureTrials {
+public:
+  explicit BuffonFigureTrials(const BuffonFigureParams& params);
+  // Runs trials [trials(), trials) of every arena (none when trials <= trials()).
+  void extend(std::int64_t trials, const algorithms::Runner& runner);
+  [[nodiscard]] std::int64_t trials() const noexcept { return have_; }
+  [[nodiscard]] BuffonFigure finish() const;
+
+private:
+  BuffonFigureParams params_;
+  std::vector<BuffonArena> arenas_;
+  std::vector<double> areas_;
+  std::vector<std::vector<algorithms::Payload>> payloads_; // [arena][trial], rank 0
+  std::int64_t have_ = 0;
+};
 [[nodiscard]] std::string buffon_figure_csv(const BuffonFigure& f);
 [[nodiscard]] Figure buffon_figure_plot(const BuffonFigure& f);
 // Figure 5b: each square's median nBC against the circle's of the same area, with y = x.
@@ -102,6 +124,22 @@ struct Figure14 {
 
 [[nodiscard]] Figure14 run_figure14(const BuffonFigureParams& params,
                                     const algorithms::Runner& runner);
+
+// Figure 14's trials, added batch by batch, as BuffonFigureTrials for Figures 5-9.
+class Figure14Trials {
+public:
+  explicit Figure14Trials(const BuffonFigureParams& params);
+  void extend(std::int64_t trials, const algorithms::Runner& runner);
+  [[nodiscard]] std::int64_t trials() const noexcept { return have_; }
+  [[nodiscard]] Figure14 finish() const;
+
+private:
+  BuffonFigureParams params_;
+  std::vector<int> diameters_;
+  std::vector<double> areas_;
+  std::vector<std::vector<algorithms::Payload>> payloads_; // [circle][trial], rank 0
+  std::int64_t have_ = 0;
+};
 [[nodiscard]] std::string figure14_csv(const Figure14& f);
 [[nodiscard]] Figure figure14_plot(const Figure14& f);
 

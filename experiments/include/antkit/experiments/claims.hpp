@@ -29,6 +29,8 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <typeindex>
+#include <typeinfo>
 #include <vector>
 
 namespace antkit::experiments {
@@ -38,15 +40,30 @@ struct BuffonResults {
   Figure14 fig14;
 };
 
-// What the experiments of one run gave; null where a family did not run.
-struct ClaimInputs {
-  const BuffonResults* buffon = nullptr;
-  const ExploreTables* los = nullptr;
-  const StcTours* stc = nullptr;
-  const FloorCurves* floor = nullptr; // paper 002's robot on its floor (with stc)
-  const std::vector<uniform_tables::TablesRow>* uniform = nullptr;
-  const std::vector<uniform_tables::TablesRow>* uniform_disk = nullptr;
-  std::uint32_t uniform_runs = 0;
+// Paper 004's results: its tables with the line-of-sight sensor and with the disk sensor, and the
+// runs per row.
+struct UniformResults {
+  std::vector<uniform_tables::TablesRow> rows, disk;
+  std::uint32_t runs = 0;
+};
+
+// What the experiments of one run gave, by type (each paper puts its own results: papers.hpp);
+// get<T>() is null where no paper put a T. Paper 000 puts BuffonResults, 001 ExploreTables, 002
+// StcTours and FloorCurves (its robot on its floor), 004 UniformResults.
+class ClaimInputs {
+public:
+  template <class T>
+  void put(const T& results) {
+    results_[std::type_index(typeid(T))] = &results;
+  }
+  template <class T>
+  [[nodiscard]] const T* get() const {
+    const auto it = results_.find(std::type_index(typeid(T)));
+    return it == results_.end() ? nullptr : static_cast<const T*>(it->second);
+  }
+
+private:
+  std::map<std::type_index, const void*> results_;
 };
 
 enum class IntervalMethod { Exact, Bootstrap, ClopperPearson };
@@ -114,10 +131,22 @@ struct ClaimSpec {
 // Bootstrap resamples per interval.
 inline constexpr int kBootstrapResamples = 2000;
 
-// The claim a spec gives on these results: its parts evaluated (intervals at 1 - 0.05 / m for m
+// The claim a spec gives on these results: its parts evaluated (intervals at 1 - alpha / m for m
 // parts with intervals, bootstrap streams keyed by `seed`), their verdicts combined, the measured
-// text (note, then each part's figure) and why.
-[[nodiscard]] Claim evaluate(const ClaimSpec& spec, const ClaimInputs& inputs, std::uint64_t seed);
+// text (note, then each part's figure) and why. `antkit reproduce` uses alpha = 0.05; --decide
+// spends it over its planned looks (reproduce.hpp).
+[[nodiscard]] Claim evaluate(const ClaimSpec& spec, const ClaimInputs& inputs, std::uint64_t seed,
+                             double alpha = 0.05);
+// The two halves of evaluate(): the parts, each with its figure, interval and verdict; and the
+// claim those parts give (--decide keeps each part as it was at the look that decided it).
+[[nodiscard]] std::vector<Part> evaluate_parts(const ClaimSpec& spec, const ClaimInputs& inputs,
+                                               std::uint64_t seed, double alpha = 0.05);
+[[nodiscard]] Claim claim_of(const ClaimSpec& spec, const ClaimInputs& inputs,
+                             const std::vector<Part>& parts);
+// How far a part's figure is past its threshold on the side where it does not hold (its miss;
+// negative when it is on the holding side): figure - t below t, t - figure above t, |figure| - t
+// within +-t.
+[[nodiscard]] double miss_of(const Part& part);
 
 // The rule's threshold in words ("below 5 %", "within +-15 %").
 [[nodiscard]] std::string rule_text(const Rule& rule, Unit unit, int decimals);

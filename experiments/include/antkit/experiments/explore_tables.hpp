@@ -80,9 +80,12 @@ struct ExploreTables {
   std::uint64_t hash = 0; // every run's trace hash, in environment, method, repetition order
 };
 
-// Throws std::runtime_error when a run does not complete (it never should).
-[[nodiscard]] ExploreTables run_explore_tables(std::uint64_t seed,
-                                               const algorithms::Runner& runner);
+// Throws std::runtime_error when a run does not complete (it never should). repetitions_factor
+// multiplies the paper's repetitions (`antkit reproduce --decide`; 1 to 1000): repetition t is
+// keyed by t alone, so the first runs are the same at every factor and the tables print the
+// paper's first 10 (5); the averages and the claims use them all.
+[[nodiscard]] ExploreTables run_explore_tables(std::uint64_t seed, const algorithms::Runner& runner,
+                                               int repetitions_factor = 1);
 
 [[nodiscard]] double mean_of(const std::vector<double>& v);
 // The sample standard deviation (n - 1), which reproduces the paper's Table 2 deviations.

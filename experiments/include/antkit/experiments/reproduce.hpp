@@ -54,6 +54,15 @@ struct ReproduceOptions {
   // The shared maps (paper 002's real maps); empty or missing: random maps only (said in the
   // report).
   std::filesystem::path maps_dir;
+  // --decide (issue 44): looks at 1, 2, 4, ... times the scale's trial counts, each deciding what
+  // it can, until every claim is settled or the budget is spent. The budget is paper 000's trials
+  // per arena at the last look (the other families' counts grow by the same factors); 0: eight
+  // times the scale's. Or a time budget: the first look runs at the scale's counts, its time
+  // converts the budget into the looks that fit (the report states the trials, and a rerun with
+  // that trial budget gives the same bytes).
+  bool decide = false;
+  std::int64_t budget_trials = 0;
+  double budget_seconds = 0;
 };
 
 // Trials per experiment at a scale.
@@ -76,6 +85,10 @@ struct ClaimPart {
   std::string method; // "bootstrap", "Clopper-Pearson", "exact"
   std::string figure; // value and interval, formatted
   Verdict verdict = Verdict::Inconclusive;
+  Side side = Side::Below; // the rule's side and threshold
+  double threshold = 0;
+  double miss = 0;         // claims.hpp's miss_of: > 0 past the threshold on the failing side
+  std::string miss_text{}; // |miss| in the part's unit
 };
 
 struct Claim {
@@ -90,6 +103,11 @@ struct Claim {
   std::string quote{};      // the paper's own words (empty for a claim of ours beside the paper)
   std::string experiment{}; // the report's file it reads
   std::vector<ClaimPart> parts{}; // its tests, each with its interval and verdict
+  // --decide: the look that settled it (or the last that ran), its trial count in words, and for
+  // a claim still undecided an estimate of the count that would decide it.
+  int look = 0;
+  std::string trials{};
+  std::string needed{};
 };
 
 struct ExperimentRecord {
@@ -99,6 +117,11 @@ struct ExperimentRecord {
 };
 
 struct ReproduceReport {
+  // --decide: the planned looks, and paper 000's trials per arena at the last one (the budget in
+  // trials that reproduces this report, after a time budget's conversion); 1 and the scale's
+  // count without.
+  int looks = 1;
+  std::int64_t budget_trials = 0;
   std::vector<Claim> claims;
   std::vector<ExperimentRecord> experiments;
   std::vector<std::filesystem::path> files; // written, relative to `out`

@@ -1,0 +1,190 @@
+// Paper 000 in a reproduction (papers.hpp): Figures 5-9 and 14, each figure a unit that --decide
+// extends trial by trial (BuffonFigureTrials: trial t keyed by t alone), and Figure 4's trails.
+#include <antkit/buffon/measurement.hpp>
+#include <antkit/experiments/buffon_figures.hpp>
+#include <antkit/experiments/drawing.hpp>
+#include <antkit/experiments/format.hpp>
+#include <antkit/experiments/papers.hpp>
+#include <antkit/geometry/arena_spec.hpp>
+#include <antkit/geometry/fixed_convert.hpp>
+#include <map>
+#include <optional>
+#include <sstream>
+
+namespace antkit::experiments {
+
+namespace {
+
+std::string buffon_rows_table(const BuffonFigure& f) {
+  std::ostringstream s;
+  s << "| series | x | arena | median nBC | IQR | efficiency |\n|---|---|---|---|---|---|\n";
+  for (const auto& r : f.rows)
+    s << "| " << r.arena.series << " | " << number(r.arena.x) << " | `" << r.arena.spec << "` | "
+      << fixed(r.nbc_median, 4) << " | " << fixed(r.nbc_q1, 4) << " - " << fixed(r.nbc_q3, 4)
+      << " | " << fixed(r.efficiency, 3) << " |\n";
+  return s.str();
+}
+
+// Figure 4: the trails of trial 0 in three circles (experiment 4400 + k).
+void buffon_figure4(ReportFiles& w, std::uint64_t seed) {
+  std::vector<TrailPanel> panels;
+  const double diameters[] = {20, 50, 100};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto arena =
+        geometry::build_arena_spec("circle:d=" + number(diameters[k]), "figure").arena;
+    buffon::TrialParams params;
+    params.seed = seed;
+    params.experiment = 4400 + k;
+    params.keep_trails = true;
+    const auto r = buffon::run_trial(buffon::World(arena.walls_fx()), params, 0);
+    TrailPanel p;
+    p.title = "circle, d = " + number(diameters[k]) + " (area " + fixed(arena.area(), 0) + ")";
+    for (const auto& ring : arena.rings()) {
+      std::vector<XY> pts;
+      for (const auto& v : ring) pts.emplace_back(v[0], v[1]);
+      p.rings.push_back(std::move(pts));
+    }
+    // Every 8th point (a step is 0.04 units), keeping the points around a jump.
+    const auto thin = [](const std::vector<kernel::FxPoint>& pts) {
+      std::vector<XY> out;
+      for (std::size_t i = 0; i < pts.size(); ++i)
+        if (i % 8 == 0 || i + 1 == pts.size())
+          out.emplace_back(geometry::to_double(pts[i].x), geometry::to_double(pts[i].y));
+      return out;
+    };
+    p.trail1 = thin(r.trail1);
+    p.trail2 = thin(r.trail2);
+    panels.push_back(std::move(p));
+  }
+  save_trails_figure("Paper 000, Figure 4: two visits' trails in three circles",
+                     "Trial 0 of each circle, 50 000 steps per visit, trail width 0.1 (unit: the "
+                     "robot's diameter).\nIn the smallest circle the trails cover the floor and "
+                     "blend: crossings are undercounted there.",
+                     panels, w.out() / "buffon/figure4.svg", w.out() / "buffon/figure4.png");
+  w.added("buffon/figure4.svg");
+  w.added("buffon/figure4.png");
+}
+
+// Paper 000's trials per arena in words: one count, or each figure's when --decide ran them to
+// different counts.
+std::string buffon_trials_text(const BuffonResults& buffon) {
+  std::map<int, std::int64_t> counts;
+  for (const auto& [figure, f] : buffon.figures) counts[figure] = f.params.trials;
+  counts[14] = buffon.fig14.params.trials;
+  bool same = true;
+  for (const auto& [figure, n] : counts) same = same && n == counts.begin()->second;
+  if (same) return std::to_string(counts.begin()->second) + " trials per arena";
+  std::string text = "trials per arena by figure (";
+  for (const auto& [figure, n] : counts)
+    text += (figure == counts.begin()->first ? "" : ", ") + std::string("Figure ") +
+            std::to_string(figure) + ": " + std::to_string(n);
+  return text + ")";
+}
+
+const char* const kCaptions[] = {"Figure 5: circles and squares", "Figure 6: compactness",
+                                 "Figure 7: barriers", "Figure 8: holes and obstacles",
+                                 "Figure 9: trail width"};
+
+class Paper000 final : public PaperRun {
+public:
+  explicit Paper000(const ReproduceOptions& o) : seed_(o.seed) {
+    for (const int figure : {5, 6, 7, 8, 9}) {
+      BuffonFigureParams p;
+      p.figure = figure;
+      p.seed = o.seed;
+      trials_.emplace(figure, BuffonFigureTrials(p));
+    }
+    BuffonFigureParams p14;
+    p14.figure = 14;
+    p14.seed = o.seed;
+    fig14_.emplace(p14);
+  }
+  [[nodiscard]] std::vector<std::string> units() const override {
+    return {"buffon/figure5", "buffon/figure6", "buffon/figure7",
+            "buffon/figure8", "buffon/figure9", "buffon/figure14"};
+  }
+  // Each claim reads one figure: its experiment, "buffon/figureN.csv".
+  [[nodiscard]] std::string unit_of(const ClaimSpec& spec) const override {
+    const std::string experiment = spec.experiment;
+    return experiment.substr(0, experiment.rfind('.'));
+  }
+  void run(const std::string& unit, const Trials& trials, int,
+           const algorithms::Runner& runner) override {
+    const int figure = std::stoi(unit.substr(std::string("buffon/figure").size()));
+    if (figure == 14) {
+      fig14_->extend(trials.buffon, runner);
+      if (runner.root()) results_.fig14 = fig14_->finish();
+      return;
+    }
+    auto& t = trials_.at(figure);
+    t.extend(trials.buffon, runner);
+    if (runner.root()) results_.figures[figure] = t.finish();
+  }
+  void inputs(ClaimInputs& in) const override { in.put(results_); }
+  [[nodiscard]] std::string trials_text(const Trials& t, int) const override {
+    return std::to_string(t.buffon) + " trials per arena";
+  }
+  [[nodiscard]] std::string counts_text() const override {
+    return buffon_trials_text(results_) + " for paper 000 (the paper: 100)";
+  }
+  void counts_json(std::vector<std::pair<std::string, std::int64_t>>& counts) const override {
+    for (const auto& [figure, f] : results_.figures)
+      counts.emplace_back("buffon_figure" + std::to_string(figure) + "_per_arena", f.params.trials);
+    counts.emplace_back("buffon_figure14_per_arena", results_.fig14.params.trials);
+  }
+  void write(ReportFiles& w, const ReproduceOptions&, std::ostream& body,
+             std::vector<ExperimentRecord>& records) const override {
+    w.dir("buffon");
+    buffon_figure4(w, seed_);
+    body << "## Paper 000: Buffon's-needle area measurement\n\n"
+         << buffon_trials_text(results_) << " (the paper: 100), 50 000 steps per visit, trail "
+         << "width 0.1 unless the figure varies it. nBC is the Buffon count per unit length of "
+            "visit 2; efficiency is nBC pi A / (2 L1), 1 for an ideal needle count. The paper "
+            "gives no numbers for these figures, only statements (section 6), which the claims "
+            "above test.\n\n"
+         << "### Figure 4: trails\n\n"
+         << report_image("buffon/figure4", "Figure 4: trails in three circles");
+    for (const auto& [figure, f] : results_.figures) {
+      const std::string stem = "buffon/figure" + std::to_string(figure);
+      const char* caption = kCaptions[figure - 5];
+      w.text(stem + ".csv", buffon_figure_csv(f));
+      w.figure(stem, buffon_figure_plot(f));
+      body << "### " << caption << "\n\n" << report_image(stem, caption);
+      if (figure == 5) {
+        w.figure("buffon/figure5b", buffon_figure5b_plot(f));
+        body << report_image("buffon/figure5b", "Figure 5b: squares against circles");
+      }
+      body << buffon_rows_table(f) << '\n';
+      records.push_back({"paper 000, figure " + std::to_string(figure), f.hash,
+                         "antkit buffon-experiment --figure " + std::to_string(figure) +
+                             " --trials " + std::to_string(f.params.trials) + " --seed " +
+                             std::to_string(seed_) + " --out DIR (prints this hash)"});
+    }
+    const auto& fig14 = results_.fig14;
+    w.text("buffon/figure14.csv", figure14_csv(fig14));
+    w.figure("buffon/figure14", figure14_plot(fig14));
+    body << "### Figure 14: calibrated Buffon against Random Search\n\n"
+         << report_image("buffon/figure14", "Figure 14")
+         << "Rows: buffon/figure14.csv (medians and interquartile ranges per circle and "
+            "checkpoint, with the fit a + b nBC^c).\n\n";
+    records.push_back({"paper 000, figure 14", fig14.hash,
+                       "antkit buffon-experiment --figure 14 --trials " +
+                           std::to_string(fig14.params.trials) + " --seed " +
+                           std::to_string(seed_) + " --out DIR (prints this hash)"});
+  }
+
+private:
+  std::uint64_t seed_;
+  std::map<int, BuffonFigureTrials> trials_;
+  std::optional<Figure14Trials> fig14_;
+  BuffonResults results_;
+};
+
+} // namespace
+
+PaperEntry paper_000_entry() {
+  return {"000", "buffon", &claims_000,
+          [](const ReproduceOptions& o) { return std::make_unique<Paper000>(o); }};
+}
+
+} // namespace antkit::experiments

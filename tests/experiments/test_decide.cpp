@@ -1,0 +1,185 @@
+// `antkit reproduce --decide` as a library (issue 44): paper 000's trials added batch by batch
+// give the figure a single run gives; the looks settle claims and say so; the bytes depend on the
+// seed and the budget in trials alone (not the threads), and a time budget's report is reproduced
+// by the budget in trials it states.
+#include "test_paths.hpp"
+
+#include <antkit/experiments/buffon_figures.hpp>
+#include <antkit/experiments/reproduce.hpp>
+#include <antkit/kernel/input_error.hpp>
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <unistd.h>
+
+namespace ex = antkit::experiments;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::map<std::string, std::string> tree(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) {
+      std::ifstream in(e.path(), std::ios::binary);
+      std::ostringstream s;
+      s << in.rdbuf();
+      files[fs::relative(e.path(), dir).string()] = s.str();
+    }
+  return files;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path p =
+      fs::temp_directory_path() / ("antkit-decide-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+ex::ReproduceOptions decide_options(const fs::path& out) {
+  ex::ReproduceOptions o;
+  o.only = {"los"};
+  o.out = out;
+  o.decide = true;
+  o.budget_trials = 80; // --quick: looks at 20, 40, 80 (paper 001: 10, 20, 40 repetitions)
+  return o;
+}
+
+} // namespace
+
+TEST_CASE("decide: paper 000's trials added in batches give the single run's figure") {
+  antkit::algorithms::Runner runner;
+  runner.threads = 2;
+  ex::BuffonFigureParams p;
+  p.figure = 6;
+  p.trials = 5;
+  p.steps = 2000;
+  const auto whole = ex::run_buffon_figure(p, runner);
+  ex::BuffonFigureTrials batches(p);
+  batches.extend(2, runner);
+  batches.extend(2, runner); // no new trials
+  CHECK(batches.trials() == 2);
+  batches.extend(5, runner);
+  const auto added = batches.finish();
+  CHECK(added.hash == whole.hash);
+  CHECK(added.params.trials == 5);
+  REQUIRE(added.rows.size() == whole.rows.size());
+  for (std::size_t k = 0; k < whole.rows.size(); ++k) {
+    CHECK(added.rows[k].nbc_trials == whole.rows[k].nbc_trials);
+    CHECK(added.rows[k].nbc_median == whole.rows[k].nbc_median);
+    CHECK(added.rows[k].closed_form_median == whole.rows[k].closed_form_median);
+  }
+  // The hash is every trial's: a different count gives another.
+  p.trials = 4;
+  CHECK(ex::run_buffon_figure(p, runner).hash != whole.hash);
+
+  p.figure = 14;
+  p.trials = 3;
+  const auto fig14 = ex::run_figure14(p, runner);
+  ex::Figure14Trials f14(p);
+  f14.extend(1, runner);
+  f14.extend(3, runner);
+  const auto fig14_added = f14.finish();
+  CHECK(fig14_added.hash == fig14.hash);
+  REQUIRE(fig14_added.rows.size() == fig14.rows.size());
+  for (std::size_t k = 0; k < fig14.rows.size(); ++k)
+    CHECK(fig14_added.rows[k].buffon_median == fig14.rows[k].buffon_median);
+}
+
+TEST_CASE("decide: the looks settle claims, say when, and the bytes do not depend on the threads") {
+  const fs::path base = scratch("threads");
+  std::map<std::string, std::string> first;
+  for (const unsigned threads : {1u, 3u}) {
+    const fs::path dir = base / std::to_string(threads);
+    fs::create_directories(dir);
+    antkit::algorithms::Runner runner;
+    runner.threads = threads;
+    const auto report = ex::reproduce(decide_options(dir), runner);
+    CHECK(report.looks >= 1);
+    CHECK(report.looks <= 3); // the budget's 80 trials: looks at 20, 40, 80 at most
+    CHECK(report.budget_trials == (20 << (report.looks - 1)));
+    const auto files = tree(dir);
+    if (first.empty()) {
+      first = files;
+      continue;
+    }
+    for (const auto& [name, bytes] : files) {
+      INFO(name);
+      CHECK(bytes == first[name]);
+    }
+  }
+  const auto j = nlohmann::json::parse(first.at("claims.json"));
+  const int looks = j["decide"]["looks"];
+  REQUIRE(j["decide"]["factors"].size() == static_cast<std::size_t>(looks));
+  double alpha = 0;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(looks); ++k) {
+    CHECK(j["decide"]["factors"][k] == (1 << k));
+    alpha += j["decide"]["alpha_per_look"][k].get<double>();
+  }
+  CHECK(alpha <= 0.05); // the spending never passes 5 %
+  CHECK(j["command"].get<std::string>().find(
+            "--decide --budget " + std::to_string(20 << (looks - 1))) != std::string::npos);
+  // Every claim says at which look it settled (or the last), with that look's trials; a claim
+  // settled early keeps the trials of its look.
+  std::size_t settled_early = 0, open = 0;
+  for (const auto& c : j["claims"]) {
+    const int look = c["look"];
+    CHECK(look >= 0);
+    CHECK(look < looks);
+    const std::string reps = std::to_string(10 << look) + " repetitions";
+    CHECK(c["trials"].get<std::string>().rfind(reps, 0) == 0);
+    const bool undecided = c["verdict"] == "inconclusive at this trial count";
+    CHECK(c["needed"].get<std::string>().empty() == !undecided);
+    if (undecided)
+      ++open;
+    else
+      settled_early += look < looks - 1;
+  }
+  CHECK(settled_early > 0);
+  const auto& readme = first.at("README.md");
+  CHECK(readme.find("### How `--decide` decided") != std::string::npos);
+  CHECK(readme.find("#### The error, by simulation") != std::string::npos);
+  CHECK(first.count("claims_forest.png") == 1);
+  CHECK(first.count("claims_forest.svg") == 1);
+  INFO(open << " claims still open");
+  fs::remove_all(base);
+}
+
+TEST_CASE("decide: a time budget's report is the report of the budget in trials it states") {
+  const fs::path base = scratch("time");
+  antkit::algorithms::Runner runner;
+  runner.threads = 2;
+  auto o = decide_options(base / "time");
+  o.budget_trials = 0;
+  o.budget_seconds = 2;
+  fs::create_directories(o.out);
+  const auto timed = ex::reproduce(o, runner);
+  CHECK(timed.budget_trials >= 20);
+  CHECK(timed.budget_trials % 20 == 0);
+  auto again = decide_options(base / "trials");
+  again.budget_trials = timed.budget_trials;
+  fs::create_directories(again.out);
+  const auto counted = ex::reproduce(again, runner);
+  CHECK(counted.looks == timed.looks);
+  CHECK(tree(base / "time") == tree(base / "trials"));
+  fs::remove_all(base);
+}
+
+TEST_CASE("decide: budgets out of range are refused") {
+  ex::ReproduceOptions o;
+  o.budget_trials = 80;
+  CHECK_THROWS_AS(ex::validate(o), antkit::kernel::InputError); // without --decide
+  o.decide = true;
+  CHECK_NOTHROW(ex::validate(o));
+  o.budget_trials = 10; // below the first look's 20
+  CHECK_THROWS_AS(ex::validate(o), antkit::kernel::InputError);
+  o.budget_trials = 100001;
+  CHECK_THROWS_AS(ex::validate(o), antkit::kernel::InputError);
+  o.budget_trials = 80;
+  o.budget_seconds = 60;
+  CHECK_THROWS_AS(ex::validate(o), antkit::kernel::InputError); // both
+}
