@@ -4,7 +4,9 @@
 // by the budget in trials it states.
 #include "test_paths.hpp"
 
+#include <algorithm>
 #include <antkit/experiments/buffon_figures.hpp>
+#include <antkit/experiments/papers.hpp>
 #include <antkit/experiments/reproduce.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
@@ -182,4 +184,33 @@ TEST_CASE("decide: budgets out of range are refused") {
   o.budget_trials = 80;
   o.budget_seconds = 60;
   CHECK_THROWS_AS(ex::validate(o), antkit::kernel::InputError); // both
+}
+
+TEST_CASE("the papers are registered entries, and the README counts their claims") {
+  const auto& entries = ex::papers();
+  REQUIRE_FALSE(entries.empty());
+  std::size_t claims = 0;
+  std::string last_id;
+  for (const auto& e : entries) {
+    CHECK(e.id > last_id); // in id order
+    last_id = e.id;
+    claims += e.claims().size();
+    for (const auto& spec : e.claims()) CHECK(std::string(spec.id).rfind(e.id + "-", 0) == 0);
+    // Every claim reads a unit its paper runs.
+    ex::ReproduceOptions o;
+    const auto run = e.make(o);
+    const auto units = run->units();
+    for (const auto& spec : e.claims()) {
+      INFO(spec.id);
+      CHECK(std::find(units.begin(), units.end(), run->unit_of(spec)) != units.end());
+    }
+  }
+  std::ifstream in(antkit::test::source_path("README.md"));
+  std::ostringstream raw;
+  raw << in.rdbuf();
+  std::string text; // the README with its line breaks as spaces
+  for (const char c : raw.str()) text += c == '\n' ? ' ' : c;
+  const std::string said = "that a run can decide (" + std::to_string(claims) + " today";
+  INFO("README.md should say: " << said);
+  CHECK(text.find(said) != std::string::npos);
 }

@@ -21,7 +21,14 @@
 // arena and 3 runs per row, fewer maps and noisy trials for paper 002 (paper 001 runs in full at
 // both scales: it takes well under a second). The report states the counts it ran.
 //
-// The claims are data: one table per paper (experiments/src/claims_000.cpp, claims_001.cpp,
+// --decide (issue 44): looks at 1, 2, 4, ... times those counts, each running only what a claim
+// still asks for, until every claim settles or the budget ends; alpha spent over an open-ended
+// series of looks (0.05 / ((k + 1)(k + 2)) at look k), so a budget (trials, or time converted look
+// by look) only says where the looks stop; the report states the trials of the last look, and a
+// rerun with that budget gives the same bytes. The error is shown by simulation (sequential.hpp).
+//
+// The papers are registered entries (papers.hpp): reproduce() loops over them. The claims are
+// data too: one table per paper (experiments/src/claims_000.cpp, claims_001.cpp,
 // claims_002.cpp, claims_004.cpp; the typed API in claims.hpp), each claim with the paper's words,
 // its rule and the experiment it reads; adding a claim touches its paper's file only. Every
 // verdict carries its uncertainty (verdict.hpp): each part of a claim is a figure with an interval
