@@ -521,7 +521,9 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
      << " resamples, drawn from the kernel's keyed streams by seed, claim and part, so the "
         "report stays byte-identical), Clopper-Pearson intervals for a proportion of runs, or "
         "none for an exact figure (an invariant checked on every run). A claim's intervals hold "
-        "together at 95 %: with m parts, each is at 1 - 0.05 / m (Bonferroni). A part holds when "
+        "together at 95 %: with m parts, each is at 1 - 0.05 / m (Bonferroni"
+     << (o.decide ? "; under --decide 1 - alpha_k / m at look k, above" : "")
+     << "). A part holds when "
         "its interval is on the rule's side of the threshold, does not hold when it is on the "
         "other side, and is undecided when the interval contains the threshold. A claim holds "
         "when every part holds, does not hold when no part holds and every part is decided, is "
