@@ -23,10 +23,10 @@ namespace {
 constexpr double kTop = 64, kPlot = 300, kLeft = 74, kRight = 30, kBelowPlot = 54, kRowGap = 46;
 constexpr double kLegendRow = 17, kFont = 12;
 // A lone panel gets room for a long title and caption; panels side by side 420 each; a lone panel
-// of many named categories (the claims' forest plot) 18 px a category, so that their staggered
-// labels do not collide.
+// of many named categories (the claims' forest plot) 36 px a category, so that their staggered
+// labels (up to 12 characters: "002-rotation") do not collide.
 double panel_width(std::size_t columns, std::size_t categories) {
-  return columns == 1 ? std::max(640.0, kLeft + kRight + 18.0 * static_cast<double>(categories))
+  return columns == 1 ? std::max(640.0, kLeft + kRight + 36.0 * static_cast<double>(categories))
                       : 420;
 }
 
