@@ -30,6 +30,14 @@ inline std::string ros_bags_dir() {
                                "scripts/bootstrap.sh --node-packages)");
     return d.string();
   }();
+  // The folder goes when the test process ends.
+  static const struct Cleanup {
+    std::string dir;
+    ~Cleanup() {
+      std::error_code ec;
+      if (!dir.empty()) std::filesystem::remove_all(dir, ec);
+    }
+  } cleanup{dir};
   return dir;
 }
 
