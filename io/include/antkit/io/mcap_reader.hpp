@@ -92,6 +92,10 @@ private:
   std::uint64_t pos_ = 0;      // the next record of the data section
   std::uint64_t data_end_ = 0; // where the data section's records must end (the Footer)
   bool done_ = false;
+  // The data section's CRC over its first crc_pos_ bytes (uncompressed chunks are added as they
+  // are read, from their own CRC; the rest at DataEnd).
+  std::uint64_t crc_pos_ = 0;
+  std::uint32_t data_crc_ = 0;
   std::map<std::uint16_t, SchemaInfo> schemas_;
   std::map<std::uint16_t, ChannelInfo> channels_;
   // The chunk being read: its records (a view into the file or into buffer_), the next one.
