@@ -6,12 +6,15 @@
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/buffon/stopping.hpp>
 #include <antkit/commands/bags.hpp>
+#include <antkit/commands/json.hpp>
 #include <antkit/commands/options.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/kernel/segment.hpp>
+#include <antkit/maps/map_io.hpp>
 #include <climits>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 namespace antkit::commands {
 
@@ -203,6 +206,103 @@ nlohmann::json buffon_from_bags_json(const BuffonFromBags& r, double width_m) {
   j["area_true_m2"] = maybe(r.area_true);
   j["relative_error"] = maybe(r.relative_error);
   j["relative_error_raw"] = maybe(r.relative_error_raw);
+  return j;
+}
+
+namespace {
+
+// A point in map cells from the lower-left corner (x right, y up), through resolution and origin.
+struct MapPoint {
+  double x = 0, y = 0;
+};
+
+MapPoint to_map(const maps::GridMap& map, double x, double y) {
+  const double dx = x - map.origin_x, dy = y - map.origin_y;
+  const double c = std::cos(map.origin_yaw), s = std::sin(map.origin_yaw);
+  return {(dx * c + dy * s) / map.resolution, (-dx * s + dy * c) / map.resolution};
+}
+
+} // namespace
+
+std::optional<std::int64_t> StcBagCheck::violation_ns() const {
+  const auto step = report.audit.first.step;
+  if (report.audit.ok() || step < 0 || static_cast<std::size_t>(step) >= entered_ns.size())
+    return std::nullopt;
+  return entered_ns[static_cast<std::size_t>(step)];
+}
+
+StcBagCheck check_stc_bag(const std::string& map_file, const std::string& bag,
+                          const std::string& topic, io::bag::Stamp stamp,
+                          const std::string& child_frame, const testing::StcCheckRequest& request) {
+  StcBagCheck out;
+  maps::GridMap map = maps::load_map(map_file);
+  out.track = io::bag::read_poses(bag, topic, stamp, child_frame);
+  const std::int64_t width = map.cells.width(), height = map.cells.height();
+  testing::TourFile tour;
+  const auto cell_of = [&](const io::bag::TimedPose& p, std::size_t i) {
+    const MapPoint m = to_map(map, p.x, p.y);
+    const double cx = std::floor(m.x), cy = std::floor(m.y);
+    if (!(cx >= 0 && cx < static_cast<double>(width) && cy >= 0 &&
+          cy < static_cast<double>(height)))
+      throw InputError(bag, "topic " + topic + ": pose " + std::to_string(i) + " (time " +
+                                std::to_string(p.t_ns) + " ns) at (" + std::to_string(p.x) + ", " +
+                                std::to_string(p.y) + ") m leaves the map " + map_file);
+    return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(cx),
+                                                 static_cast<std::int64_t>(cy)};
+  };
+  const auto enter = [&](std::int64_t cx, std::int64_t cy, std::int64_t t) {
+    tour.path.push_back(
+        {static_cast<std::int32_t>(cx), static_cast<std::int32_t>(height - 1 - cy)});
+    out.entered_ns.push_back(t);
+  };
+  const auto& poses = out.track.poses;
+  auto [cx, cy] = cell_of(poses[0], 0);
+  enter(cx, cy, poses[0].t_ns);
+  for (std::size_t i = 1; i < poses.size(); ++i) {
+    const auto [ex, ey] = cell_of(poses[i], i);
+    if (ex == cx && ey == cy) continue;
+    // The cells the segment passes through (a grid traversal): at each step the axis whose next
+    // cell boundary the segment reaches first; as many steps as the cells are apart, so that it
+    // ends in the pose's cell whatever the rounding.
+    const MapPoint a = to_map(map, poses[i - 1].x, poses[i - 1].y);
+    const MapPoint b = to_map(map, poses[i].x, poses[i].y);
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const std::int64_t sx = ex > cx ? 1 : -1, sy = ey > cy ? 1 : -1;
+    std::int64_t nx = std::abs(ex - cx), ny = std::abs(ey - cy);
+    const auto boundary = [](double from, double cell, std::int64_t step, double d) {
+      if (d == 0) return std::numeric_limits<double>::infinity();
+      const double edge = step > 0 ? cell + 1 : cell;
+      return (edge - from) / d;
+    };
+    const std::int64_t t0 = poses[i - 1].t_ns, t1 = poses[i].t_ns;
+    while (nx + ny > 0) {
+      const double tx = nx > 0 ? boundary(a.x, static_cast<double>(cx), sx, dx)
+                               : std::numeric_limits<double>::infinity();
+      const double ty = ny > 0 ? boundary(a.y, static_cast<double>(cy), sy, dy)
+                               : std::numeric_limits<double>::infinity();
+      double t = 0;
+      if (ny == 0 || (nx > 0 && tx <= ty)) {
+        cx += sx, --nx, t = tx;
+      } else {
+        cy += sy, --ny, t = ty;
+      }
+      t = std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 1.0;
+      enter(cx, cy, t0 + static_cast<std::int64_t>(std::llround(static_cast<double>(t1 - t0) * t)));
+    }
+  }
+  out.report = testing::check_stc(std::move(map), tour, request);
+  return out;
+}
+
+nlohmann::json check_stc_bag_json(const StcBagCheck& c, const std::string& map) {
+  nlohmann::json j = check_stc_json(c.report, map);
+  j["bag"] = c.track.path;
+  j["topic"] = c.track.topic;
+  j["type"] = c.track.type;
+  j["stamp"] = c.track.stamp == io::bag::Stamp::bag ? "bag" : "header";
+  j["poses"] = c.track.poses.size();
+  const auto t = c.violation_ns();
+  j["first_violation_time_ns"] = t ? nlohmann::json(*t) : nlohmann::json(nullptr);
   return j;
 }
 

@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
@@ -93,4 +94,39 @@ TEST_CASE("antkit buffon-from-logs --topic: refusals exit 2, located", "[cli][ba
   CHECK(type.status == 2);
   CHECK_THAT(type.err, Contains("std_msgs/msg/String"));
   CHECK(type.out.empty());
+}
+
+TEST_CASE("antkit check stc --bag: a bag's poses as a tour on a ROS map", "[cli][bag]") {
+  const std::string d = bags();
+  if (d.empty()) return;
+  // A 4 x 2 free map, 0.5 m cells, its lower-left corner at (-1, -2) m (write_bags.mjs's tours).
+  std::ofstream(d + "/free.yaml") << "image: free.pgm\nresolution: 0.5\norigin: [-1.0, -2.0, 0.0]\n"
+                                     "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  std::ofstream(d + "/free.pgm", std::ios::binary)
+      << std::string("P5\n4 2\n255\n") + std::string(8, '\xfe');
+  const std::string map = " --map '" + d + "/free.yaml' --topic /pose --format json --bag '" + d;
+  // Four poses at the corners' cells: the cells between them filled in, every cell once.
+  const auto ok = run_antkit("check stc" + map + "/tour.mcap'");
+  REQUIRE(ok.status == 0);
+  const auto j = nlohmann::json::parse(ok.out);
+  CHECK(j["ok"] == true);
+  CHECK(j["positions"] == 8);
+  CHECK(j["poses"] == 4);
+  CHECK(j["covered"] == 8);
+  CHECK(j["first_violation_time_ns"].is_null());
+  // (0,0) -> (3,0) -> (1,0): cell (2,0) entered again at step 4, a quarter of the way from the
+  // second pose (0.1 s) to the third (0.2 s).
+  const auto bad = run_antkit("check stc" + map + "/tour_repeat.mcap'");
+  CHECK(bad.status == 1);
+  const auto b = nlohmann::json::parse(bad.out);
+  CHECK(b["first_violation"]["step"] == 4);
+  CHECK(b["first_violation"]["subcell"] == nlohmann::json::array({2, 0}));
+  CHECK(b["first_violation_time_ns"] == 1700000000125000000LL);
+  CHECK_THAT(bad.err, Contains("entered a second time at bag time 1700000000125000000 ns"));
+  // Poses off the map: exit 2, located, nothing on standard output.
+  const auto off = run_antkit("check stc --map '" + d + "/free.yaml' --topic /odom --bag '" + d +
+                              "/walk1.mcap'");
+  CHECK(off.status == 2);
+  CHECK_THAT(off.err, Contains("leaves the map"));
+  CHECK(off.out.empty());
 }

@@ -11,6 +11,7 @@
 //                     (std_msgs/msg/String)
 //   walk2_zstd.mcap   /odom, zstd chunks        walk2_lz4.mcap  /odom, lz4 chunks
 //   walk1.db3         /odom and /chatter        walk2_bag/      metadata.yaml + walk2_bag_0.db3
+//   tour.mcap, tour_repeat.mcap  /pose (PoseStamped): tours for `check stc --bag` (below)
 // Bag time of message i: 1.7e18 + i * 0.1 s; header.stamp: bag time - 0.25 s.
 import { mkdirSync, writeFileSync } from "node:fs";
 import { createRequire } from "node:module";
@@ -152,4 +153,12 @@ writeFileSync(`${out}/walk2_bag/metadata.yaml`, `rosbag2_bagfile_information:
   relative_file_paths:
     - walk2_bag_0.db3
 `);
+// Tours on the tests' 4 x 2 free ROS map (resolution 0.5 m, origin (-1, -2, 0); cell (x, y) with y
+// down from the first row has its centre at (-0.75 + 0.5 x, -1.25 - 0.5 y)): /pose at the centres
+// of cells (0,0), (3,0), (3,1), (0,1) (tour.mcap: filled in, every cell once) and (0,0), (3,0),
+// (1,0) (tour_repeat.mcap: cell (2,0) entered twice).
+const centre = ([x, y]) => ({ x: -0.75 + 0.5 * x, y: -1.25 - 0.5 * y, yaw: 0 });
+for (const [name, cells] of [["tour", [[0, 0], [3, 0], [3, 1], [0, 1]]], ["tour_repeat", [[0, 0], [3, 0], [1, 0]]]])
+  await writeMcap(`${out}/${name}.mcap`, [["/pose", "geometry_msgs/msg/PoseStamped",
+    cells.map(centre).map((p, i) => cdr("geometry_msgs/msg/PoseStamped", { header: header(i, "map"), pose: pose(p) }))]], undefined);
 console.log("write_bags: wrote", out);

@@ -4,6 +4,7 @@
 // commands make from their options and the JSON of their results.
 #include <antkit/devices/odometry.hpp>
 #include <antkit/io/bag.hpp>
+#include <antkit/testing/stc_audit.hpp>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -43,5 +44,28 @@ struct BuffonFromBags {
                                               const std::string& arena,
                                               const std::string& width_where);
 [[nodiscard]] nlohmann::json buffon_from_bags_json(const BuffonFromBags& r, double width_m);
+
+// `antkit check stc --bag`: a bag's poses as a tour on a grid map. Each pose goes to the map cell
+// (one sub-cell, as `check stc` reads a tour) it lies in, through the map's resolution and origin
+// (x, y and yaw of the lower-left pixel; y down from the first row, as antkit's cells are); between
+// two poses, the cells the straight segment from one to the other passes through, in order (a
+// segment through a cell corner steps in x first), each entered at the time interpolated along the
+// segment; a pose in the cell of the one before adds nothing. The tour is then checked as any tour
+// (testing::check_stc: `request`'s rule and start; the start defaults to the first pose's cell).
+// Refuses (InputError at the pose's place in the bag, with its time) a pose off the map.
+struct StcBagCheck {
+  testing::StcCheckReport report;
+  io::bag::PoseTrack track;
+  std::vector<std::int64_t> entered_ns; // the time each tour position was entered (the stamp)
+  // The first broken rule's time, when it names a position of the tour.
+  [[nodiscard]] std::optional<std::int64_t> violation_ns() const;
+};
+[[nodiscard]] StcBagCheck check_stc_bag(const std::string& map_file, const std::string& bag,
+                                        const std::string& topic, io::bag::Stamp stamp,
+                                        const std::string& child_frame,
+                                        const testing::StcCheckRequest& request);
+// check_stc_json's keys, and "bag", "topic", "type", "stamp", "poses", "first_violation_time_ns"
+// (null when the tour passes or the broken rule is about the whole tour).
+[[nodiscard]] nlohmann::json check_stc_bag_json(const StcBagCheck& check, const std::string& map);
 
 } // namespace antkit::commands
