@@ -48,9 +48,10 @@ void run_stc(const StcCheckCommand& c) {
   request.rule = c.coverage ? testing::TourRule::Coverage : testing::TourRule::ExactlyOnce;
   request.order = c.order == "rc" ? testing::TourOrder::RowCol : testing::TourOrder::XY;
   request.cells = c.cells;
-  if (c.path.empty() == c.bag.empty())
-    throw antkit::kernel::InputError("--path",
-                                     "give the tour as --path FILE or --bag BAG --topic T");
+  if (c.path.empty() && c.bag.empty())
+    throw antkit::kernel::InputError("", "--path is required (or --bag BAG --topic T)");
+  if (!c.path.empty() && !c.bag.empty())
+    throw antkit::kernel::InputError("--bag", "one tour: --path FILE or --bag BAG, not both");
   if (!c.bag.empty()) {
     if (c.topic.empty()) throw antkit::kernel::InputError("--topic", "--bag needs --topic");
     const auto b = antkit::commands::check_stc_bag(c.map, c.bag, c.topic,
