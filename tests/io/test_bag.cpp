@@ -46,6 +46,15 @@ std::string spill(const std::string& name, const std::string& bytes) {
   const auto path =
       fs::temp_directory_path() / ("antkit_bag_case_" + std::to_string(::getpid()) + "_" + name);
   std::ofstream(path, std::ios::binary) << bytes;
+  // Removed when the test process ends.
+  static struct Spilled {
+    std::vector<fs::path> paths;
+    ~Spilled() {
+      std::error_code ec;
+      for (const auto& p : paths) fs::remove(p, ec);
+    }
+  } spilled;
+  spilled.paths.push_back(path);
   return path.string();
 }
 
