@@ -35,9 +35,21 @@
 //                              path in a header is read from the current directory
 //   "relative_error"           (area_corrected - area_true) / area_true (null without an arena)
 //   "relative_error_raw"       (area_raw - area_true) / area_true, for comparison
+//
+// From two ROS 2 bags (issue 42): `--topic T` reads VISIT1 and VISIT2 as bags (.mcap, .db3 or bag
+// folders), the topic's poses (nav_msgs/msg/Odometry, geometry_msgs/msg/PoseStamped,
+// PoseWithCovarianceStamped, a Twist integrated over bag time, or a tf2_msgs/msg/TFMessage's
+// --child-frame, default base_link) as two random walks in the bags' metres; --width is then in
+// metres, and --arena's lengths too. `--stamp bag|header` picks the poses' time (bag by default).
+// The same keys, with: "robot", "diameter_m", "wall_encounters" null (a bag has no robot
+// description and no front readings; the erosion factor is 1, so area_corrected = area_raw);
+// "unit": "m" and every *_m2 equal to its unitless twin; "visit1"/"visit2" {"bag", "topic", "type",
+// "poses", "steps" (poses - 1), "length" (m), "start_ns", "end_ns" (the chosen stamp), "truncated"
+// and "hash" null}; "stamp"; "arena_source" "--arena" or null.
 #include "commands.hpp"
 #include "output.hpp"
 
+#include <antkit/commands/bags.hpp>
 #include <antkit/commands/json.hpp>
 #include <antkit/commands/options.hpp>
 #include <antkit/devices/odometry.hpp>
@@ -52,10 +64,18 @@ struct FromLogsCommand {
   std::string visit1, visit2;
   double width = 0.1;
   std::string arena;
+  std::string topic, stamp = "bag", child_frame = "base_link";
   Format format = Format::Table;
 };
 
 void run(const FromLogsCommand& c) {
+  if (!c.topic.empty()) {
+    const auto r = antkit::commands::buffon_from_bags(
+        c.visit1, c.visit2, c.topic, c.width, antkit::commands::bag_stamp(c.stamp, "--stamp"),
+        c.child_frame, c.arena, "--width");
+    antkit::cli::emit(antkit::commands::buffon_from_bags_json(r, c.width), c.format, std::cout);
+    return;
+  }
   const auto r =
       antkit::commands::buffon_from_logs(c.visit1, c.visit2, c.width, c.arena, "--width");
   antkit::cli::emit(antkit::commands::buffon_from_logs_json(r, c.width), c.format, std::cout);
@@ -77,11 +97,20 @@ void register_from_logs(CLI::App& app) {
   sub->add_option("--arena", c->arena,
                   "The arena (named spec or FILE.wkt) when the logs' headers do not name it: its "
                   "true area and the estimate's relative error are reported");
+  sub->add_option("--topic", c->topic,
+                  "Read VISIT1 and VISIT2 as ROS 2 bags (.mcap, .db3, bag folders): this pose "
+                  "topic's walks, lengths and --width in metres");
+  sub->add_option("--stamp", c->stamp,
+                  "With --topic: the poses' time, bag or header (default bag)");
+  sub->add_option("--child-frame", c->child_frame,
+                  "With --topic on a tf2_msgs/msg/TFMessage: the child frame (default base_link)");
   antkit::cli::add_format_option(*sub, c->format);
   sub->callback([c] { run(*c); });
 }
 
 const antkit::cli::Registration buffon_from_logs_registration{
-    "buffon-from-logs", &register_from_logs, {{"arena spec", "--arena"}}};
+    "buffon-from-logs",
+    &register_from_logs,
+    {{"arena spec", "--arena"}, {"stamp", "--stamp"}, {"trail width", "--width"}}};
 
 } // namespace

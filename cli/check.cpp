@@ -4,6 +4,11 @@
 //
 //   antkit check stc --map F --path P [--start X,Y] [--coverage] [--order xy|rc] [--cells]
 //                    [--format table|json]
+//   antkit check stc --map F --bag BAG --topic T [--stamp bag|header] [--child-frame F]
+//                    [--start X,Y] [--coverage]: a ROS 2 bag's poses as the tour
+//                    (commands/bags.hpp, check_stc_bag: cells through the map's resolution and
+//                    origin, the cells between two poses filled in); the JSON adds "bag", "topic",
+//                    "type", "stamp", "poses" and "first_violation_time_ns"
 //   antkit check explore --map F --cells C [--format table|json]
 //   antkit check cover --map F --log L [--sensor R] [--format table|json]
 //
@@ -13,7 +18,9 @@
 #include "output.hpp"
 
 #include <antkit/algorithms/options.hpp>
+#include <antkit/commands/bags.hpp>
 #include <antkit/commands/json.hpp>
+#include <antkit/kernel/input_error.hpp>
 #include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
 #include <iostream>
@@ -28,6 +35,7 @@ namespace testing = antkit::testing;
 
 struct StcCheckCommand {
   std::string map, path, start, order = "xy";
+  std::string bag, topic, stamp = "bag", child_frame = "base_link";
   bool coverage = false, cells = false;
   Format format = Format::Table;
 };
@@ -40,6 +48,22 @@ void run_stc(const StcCheckCommand& c) {
   request.rule = c.coverage ? testing::TourRule::Coverage : testing::TourRule::ExactlyOnce;
   request.order = c.order == "rc" ? testing::TourOrder::RowCol : testing::TourOrder::XY;
   request.cells = c.cells;
+  if (c.path.empty() && c.bag.empty())
+    throw antkit::kernel::InputError("", "--path is required (or --bag BAG --topic T)");
+  if (!c.path.empty() && !c.bag.empty())
+    throw antkit::kernel::InputError("--bag", "one tour: --path FILE or --bag BAG, not both");
+  if (!c.bag.empty()) {
+    if (c.topic.empty()) throw antkit::kernel::InputError("--topic", "--bag needs --topic");
+    const auto b = antkit::commands::check_stc_bag(c.map, c.bag, c.topic,
+                                                   antkit::commands::bag_stamp(c.stamp, "--stamp"),
+                                                   c.child_frame, request);
+    antkit::cli::emit(antkit::commands::check_stc_bag_json(b, c.map), c.format, std::cout);
+    if (!b.report.audit.ok())
+      throw antkit::cli::CheckFailed(
+          c.bag + ": " + b.report.audit.first.describe() +
+          (b.violation_ns() ? " at bag time " + std::to_string(*b.violation_ns()) + " ns" : ""));
+    return;
+  }
   const testing::StcCheckReport r = testing::check_stc_files(request);
   const testing::StcAudit& a = r.audit;
   const nlohmann::json j = antkit::commands::check_stc_json(r, c.map);
@@ -89,8 +113,14 @@ void register_check(CLI::App& app) {
   stc->add_option("--map", s->map, "The map (MovingAI .map, ROS .yaml, ASCII .txt)")->required();
   stc->add_option("--path", s->path,
                   "The tour: JSON [[x, y], ...] or antkit stc's JSON output, or CSV x,y per line "
-                  "(sub-cells: one map cell each, y down from the first row)")
-      ->required();
+                  "(sub-cells: one map cell each, y down from the first row); or --bag");
+  stc->add_option("--bag", s->bag,
+                  "A ROS 2 bag (.mcap, .db3, folder) whose --topic poses are the tour, through "
+                  "the map's resolution and origin");
+  stc->add_option("--topic", s->topic, "With --bag: the pose topic");
+  stc->add_option("--stamp", s->stamp, "With --bag: the poses' time, bag or header");
+  stc->add_option("--child-frame", s->child_frame,
+                  "With --bag on a TFMessage topic: the child frame (default base_link)");
   stc->add_option("--start", s->start,
                   "The start sub-cell X,Y (default: the tour file's start, else the map's, else "
                   "the tour's first position)");
@@ -138,6 +168,7 @@ void register_check(CLI::App& app) {
   cover->callback([v] { run_cover(*v); });
 }
 
-const antkit::cli::Registration check_registration{"check", &register_check};
+const antkit::cli::Registration check_registration{
+    "check", &register_check, {{"stamp", "--stamp"}}};
 
 } // namespace

@@ -19,6 +19,7 @@ packages=(
   python3-dev python3-pybind11 python3-numpy python3-pytest python3-hypothesis
   catch2 librapidcheck-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev jq
   libz3-dev coq libcairo2-dev
+  libsqlite3-dev libzstd-dev liblz4-dev
   libcoq-interval
   g++-s390x-linux-gnu qemu-user
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm

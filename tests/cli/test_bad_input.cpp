@@ -135,6 +135,15 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
   write(d / "trace_bearing.csv", "# sensor: 2\n0,0,0,0,9\n");
   write(d / "trace_nosensor.csv", "0,0,1,1,0\n");
   write(d / "trace_short.csv", "# sensor: 2\n0,0,1,1,0\n0,1,2,1,0\n1,0,1,1,0\n");
+  // ROS 2 bags (bag info, buffon-from-logs --topic): junk, an MCAP file cut after its Header, a
+  // .db3 that is not rosbag2's, a folder without metadata.yaml, a metadata.yaml of another storage
+  write(d / "junk.mcap", junk(300, 8));
+  write(d / "cut.mcap", std::string("\x89MCAP0\r\n\x01\x08", 10) + std::string(15, '\0'));
+  write(d / "other.db3", std::string("SQLite format 3\0", 16) + junk(300, 9));
+  fs::create_directories(d / "nometa");
+  fs::create_directories(d / "leveldb");
+  write(d / "leveldb" / "metadata.yaml",
+        "rosbag2_bagfile_information:\n  version: 5\n  storage_identifier: leveldb\n");
   const auto inputs = listing(dir);
 
   const std::string bin = junk(12, 6);
@@ -338,6 +347,17 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"buffon-from-logs {D}/junk.jsonl {D}/junk.jsonl", "{D}/junk.jsonl:1:1:", ""},
       {"buffon-from-logs {D}/header.jsonl", "visit2 is required", ""},
       {"rs-from-log {D}/empty.jsonl", "{D}/empty.jsonl:1:1:", ""},
+      // ROS 2 bags
+      {"bag info {D}/junk.mcap", "{D}/junk.mcap:", "not a bag"},
+      {"bag info {D}/cut.mcap", "{D}/cut.mcap: byte ", "truncated MCAP file"},
+      {"bag info {D}/other.db3", "{D}/other.db3:", "expected a rosbag2 .db3"},
+      {"bag info {D}/nometa", "{D}/nometa:", "without metadata.yaml"},
+      {"bag info {D}/leveldb", "{D}/leveldb/metadata.yaml:3:23:", "storage_identifier 'leveldb'"},
+      {"bag info {D}/missing.mcap", "{D}/missing.mcap:", "cannot open"},
+      {"buffon-from-logs --topic /odom {D}/cut.mcap {D}/junk.mcap", "{D}/cut.mcap: byte ",
+       "truncated"},
+      {"buffon-from-logs --topic /odom --stamp now {D}/cut.mcap {D}/junk.mcap",
+       "--stamp:", "expected bag or header"},
       // record and emulate (their options; the link itself is tested over ptys elsewhere)
       {"record --device roomba --port /dev/null --controller buffon --out {D}/log.jsonl",
        "--device:", "roomba"},
@@ -375,7 +395,7 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"emulate khepera --fault '" + bin + "'", "--fault:", "expected delay=P:MS"},
       {"emulate khepera --arena {D}/junk.wkt", "{D}/junk.wkt:1:1:", "POLYGON"},
       {"emulate", "robot is required", ""},
-      {"nosuchcommand", "unknown subcommand 'nosuchcommand'", "arena, buffon"},
+      {"nosuchcommand", "unknown subcommand 'nosuchcommand'", "arena, bag, buffon"},
   };
   const auto map = shared_map("movingai/empty-32-32.map");
   std::printf("bad-input table: %zu cases\n", cases.size());
