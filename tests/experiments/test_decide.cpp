@@ -1,7 +1,8 @@
 // `antkit reproduce --decide` as a library (issue 44): paper 000's trials added batch by batch
 // give the figure a single run gives; the looks settle claims and say so; the bytes depend on the
 // seed and the budget in trials alone (not the threads), and a time budget's report is reproduced
-// by the budget in trials it states.
+// by the budget in trials it states. The two whole runs are [slow] (20 s each here): the sanitizer
+// pass runs the decide path through tests/cli's `reproduce --decide` instead.
 #include "test_paths.hpp"
 
 #include <algorithm>
@@ -92,7 +93,8 @@ TEST_CASE("decide: paper 000's trials added in batches give the single run's fig
     CHECK(fig14_added.rows[k].buffon_median == fig14.rows[k].buffon_median);
 }
 
-TEST_CASE("decide: the looks settle claims, say when, and the bytes do not depend on the threads") {
+TEST_CASE("decide: the looks settle claims, say when, and the bytes do not depend on the threads",
+          "[slow]") {
   const fs::path base = scratch("threads");
   std::map<std::string, std::string> first;
   for (const unsigned threads : {1u, 3u}) {
@@ -151,7 +153,8 @@ TEST_CASE("decide: the looks settle claims, say when, and the bytes do not depen
   fs::remove_all(base);
 }
 
-TEST_CASE("decide: a time budget's report is the report of the budget in trials it states") {
+TEST_CASE("decide: a time budget's report is the report of the budget in trials it states",
+          "[slow]") {
   const fs::path base = scratch("time");
   antkit::algorithms::Runner runner;
   runner.threads = 2;
