@@ -111,6 +111,9 @@ public:
     EmulatorOptions options;
     options.seed = o.seed;
     options.faults = parse_faults(o.faults);
+    if (options.faults.unterminated_ppm > 0)
+      throw kernel::InputError("fault", "unterminated=P is a fault of the epuck2's binary "
+                                        "sequences (the text robots' lines have no 0 to lose)");
     options.pace = o.pace;
     std::optional<TcpListener> listener;
     if (o.listen)

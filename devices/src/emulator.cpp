@@ -82,7 +82,7 @@ FaultSpec parse_faults(const std::vector<std::string>& specs) {
     if (eq == std::string::npos)
       throw InputError("fault", "'" + spec +
                                     "': expected delay=P:MS, garbage=P, drop=P, cut=P, "
-                                    "disconnect=N or silent=N");
+                                    "disconnect=N, silent=N or unterminated=P");
     const std::string kind = spec.substr(0, eq);
     const std::string_view value = std::string_view(spec).substr(eq + 1);
     if (kind == "delay") {
@@ -101,9 +101,12 @@ FaultSpec parse_faults(const std::vector<std::string>& specs) {
       f.disconnect_after = parse_count(value, spec, 1000000000);
     } else if (kind == "silent") {
       f.silent_after = parse_count(value, spec, 1000000000);
+    } else if (kind == "unterminated") {
+      f.unterminated_ppm = parse_probability(value, spec);
     } else {
       throw InputError("fault", "unknown fault '" + kind +
-                                    "': expected delay, garbage, drop, cut, disconnect or silent");
+                                    "': expected delay, garbage, drop, cut, disconnect, silent or "
+                                    "unterminated");
     }
   }
   return f;
@@ -323,6 +326,17 @@ bool command_line(std::string& pending, const ReadResult& r) {
   return !pending.empty();
 }
 
+// One unit of input: a command line, or (raw: a byte-stream firmware) whatever bytes came.
+bool read_unit(SerialPort& port, std::string& pending, bool raw) {
+  if (!raw)
+    return command_line(pending, port.read_line(std::chrono::milliseconds(50), LineEnd::CrOrLf));
+  pending = port.read_bytes(1, std::chrono::milliseconds(50));
+  if (pending.empty()) return false;
+  for (std::string more; !(more = port.read_bytes(65536, std::chrono::milliseconds(0))).empty();)
+    pending += more;
+  return true;
+}
+
 // Writes a reply (nothing when empty); false when the client is gone or not reading.
 bool write_reply(SerialPort& port, const std::string& bytes) {
   if (bytes.empty()) return true;
@@ -338,7 +352,7 @@ bool write_reply(SerialPort& port, const std::string& bytes) {
 
 void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>& handle,
                const std::function<void()>& new_session, const std::atomic<bool>* stop,
-               bool stop_on_signal) {
+               bool stop_on_signal, bool raw) {
   SerialPort& port = pty.master();
   // Without a slave fd of its own the master sees EIO whenever no client has the tty open: that is
   // how a session's end shows when nobody comes at once. Two clients back to back (two `antkit
@@ -381,9 +395,9 @@ void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>
     }
   };
   while (!(stop != nullptr && stop->load()) && !(stop_on_signal && StopSignals::requested())) {
-    ReadResult r;
+    bool unit = false;
     try {
-      r = port.read_line(std::chrono::milliseconds(50), LineEnd::CrOrLf);
+      unit = read_unit(port, pending, raw);
     } catch (const LinkError& e) {
       if (e.kind() == LinkError::Kind::Interrupted) {
         if (stop_on_signal) break;
@@ -395,7 +409,7 @@ void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
       continue;
     }
-    if (!command_line(pending, r)) continue;
+    if (!unit) continue;
     follow_clients();
     if (!in_session) {
       new_session();
@@ -419,13 +433,13 @@ namespace {
 // (a disconnect fault) ends the serving, or a stop is asked for.
 bool serve_client(SerialPort& port, const std::function<EmulatorResponse(std::string_view)>& handle,
                   const std::function<void()>& new_session, const std::function<bool()>& stopped,
-                  bool stop_on_signal) {
+                  bool stop_on_signal, bool raw) {
   std::string pending;
   bool in_session = false;
   while (!stopped()) {
-    ReadResult r;
+    bool unit = false;
     try {
-      r = port.read_line(std::chrono::milliseconds(50), LineEnd::CrOrLf);
+      unit = read_unit(port, pending, raw);
     } catch (const LinkError& e) {
       if (e.kind() == LinkError::Kind::Interrupted) {
         if (stop_on_signal) return true;
@@ -433,7 +447,7 @@ bool serve_client(SerialPort& port, const std::function<EmulatorResponse(std::st
       }
       return false; // the client has gone (closed, reset): the session is over
     }
-    if (!command_line(pending, r)) continue;
+    if (!unit) continue;
     if (!in_session) {
       new_session();
       in_session = true;
@@ -453,7 +467,7 @@ bool serve_client(SerialPort& port, const std::function<EmulatorResponse(std::st
 void serve_tcp(TcpListener& listener,
                const std::function<EmulatorResponse(std::string_view)>& handle,
                const std::function<void()>& new_session, const std::atomic<bool>* stop,
-               bool stop_on_signal) {
+               bool stop_on_signal, bool raw) {
   const auto stopped = [&] {
     return (stop != nullptr && stop->load()) || (stop_on_signal && StopSignals::requested());
   };
@@ -471,7 +485,7 @@ void serve_tcp(TcpListener& listener,
     if (!client) continue;
     // One client at a time: connects are refused while this one is served (serial.hpp).
     listener.pause();
-    const bool end = serve_client(*client, handle, new_session, stopped, stop_on_signal);
+    const bool end = serve_client(*client, handle, new_session, stopped, stop_on_signal, raw);
     // Listening again before the close: a client that sees its connection closed by the server
     // (`exit`) finds the port open for its next session.
     if (!end) listener.resume();

@@ -155,7 +155,7 @@ Pose pose_of(double x, double y, kernel::Angle heading) {
 class Poser {
 public:
   explicit Poser(const LogHeader& header) {
-    if (const auto kind = parse_robot(header.robot)) {
+    if (const auto kind = body_of(header.robot)) {
       robot_ = &describe(*kind);
       frame_ = "odom";
     } else if (header.robot == "stc-floor") {

@@ -87,7 +87,7 @@ namespace {
 // its observations (a buffon log's six front readings, the ones the behaviour acted on at each
 // step: what the simulator's WallEncounters observes, measurement.hpp).
 LoggedTrail read_trail(LogReader& reader, const std::string& path, buffon::WallEncounters* walls) {
-  const auto kind = parse_robot(reader.header().robot);
+  const auto kind = body_of(reader.header().robot);
   if (!kind) throw InputError(path, 1, 1, "unknown robot '" + reader.header().robot + "'");
   LoggedTrail out;
   out.robot = reader.header().robot;
@@ -305,7 +305,7 @@ BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& vi
     if (out.arena.empty()) out.arena = arena.spec, out.arena_source = ArenaSource::option;
   }
 
-  const auto& robot = describe(*parse_robot(out.visit1.robot));
+  const auto& robot = describe(*body_of(out.visit1.robot));
   out.diameter_m = static_cast<double>(robot.diameter_um) / 1e6;
   // The band of visit 1 over the bounding box of both trails (and the band's half width).
   std::int32_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
@@ -369,7 +369,7 @@ RsFromLog rs_from_log(const std::string& path) {
   out.cells = f.cells;
   const double cell = static_cast<double>(f.cell_raw) / 65536.0;
   out.area = static_cast<double>(f.cells) * cell * cell;
-  out.diameter_m = static_cast<double>(describe(*parse_robot(out.walk.robot)).diameter_um) / 1e6;
+  out.diameter_m = static_cast<double>(describe(*body_of(out.walk.robot)).diameter_um) / 1e6;
   return out;
 }
 

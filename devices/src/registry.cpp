@@ -28,6 +28,7 @@ std::span<const Device* const> all_devices() {
     std::vector<const Device*> out;
     for (const RobotDescription* robot : detail::serial_robots())
       out.push_back(&detail::serial_device(*robot));
+    out.push_back(&detail::epuck2_device());    // the e-puck2 in binary mode (epuck2.hpp)
     out.push_back(&detail::stc_floor_device()); // paper 002's marker-floor robot
     return out;
   }();

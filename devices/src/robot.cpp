@@ -31,6 +31,11 @@ std::optional<RobotKind> parse_robot(std::string_view name) {
   return std::nullopt;
 }
 
+std::optional<RobotKind> body_of(std::string_view log_robot) {
+  if (log_robot == "epuck2") return RobotKind::Epuck;
+  return parse_robot(log_robot);
+}
+
 std::string_view robot_name(RobotKind robot) {
   return describe(robot).name;
 }

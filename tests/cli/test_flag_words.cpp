@@ -37,7 +37,8 @@ TEST_CASE("antkit: the library's words for its inputs are shown as each command'
        "--steps: the steps per visit must be in [1, 10000000]"},
       // devices: "fault", "dark offset", "port", "controller parameter heading", "start sub-cell"
       {"emulate khepera --fault foo=1",
-       "--fault: unknown fault 'foo': expected delay, garbage, drop, cut, disconnect or silent"},
+       "--fault: unknown fault 'foo': expected delay, garbage, drop, cut, disconnect, silent or "
+       "unterminated"},
       {"emulate khepera --dark-offset 2", "--dark-offset:  is an option of the stc-floor robot"},
       {"record --device khepera --port " + d + "/absent --controller buffon --out " + d +
            "/log.jsonl",

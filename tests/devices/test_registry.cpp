@@ -9,8 +9,9 @@ namespace devices = antkit::devices;
 using antkit::kernel::InputError;
 
 TEST_CASE("the registry: every robot is one device, found by its name", "[devices]") {
-  CHECK(devices::device_names() == "khepera, khepera-webots, hemisson, epuck, stc-floor");
-  CHECK(devices::all_devices().size() == std::size(devices::kSerialRobots) + 1);
+  CHECK(devices::device_names() == "khepera, khepera-webots, hemisson, epuck, epuck2, stc-floor");
+  // The serial robots, the e-puck2 in binary mode and the marker-floor robot.
+  CHECK(devices::all_devices().size() == std::size(devices::kSerialRobots) + 2);
   for (const auto kind : devices::kSerialRobots) {
     const auto& robot = devices::describe(kind);
     INFO(robot.name);
@@ -24,6 +25,8 @@ TEST_CASE("the registry: every robot is one device, found by its name", "[device
     CHECK(robot.safe_stop[0] == "D,0,0");
   }
   REQUIRE(devices::find_device("stc-floor") != nullptr);
+  REQUIRE(devices::find_device("epuck2") != nullptr);
+  CHECK_FALSE(devices::parse_robot("epuck2")); // not a text-line robot: a device of its own
   CHECK(devices::find_device("roomba") == nullptr);
   try {
     (void)devices::device("roomba", "--device");

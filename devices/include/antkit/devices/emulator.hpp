@@ -90,11 +90,13 @@ struct FaultSpec {
   std::uint32_t cut_ppm = 0;
   std::int64_t disconnect_after = -1; // hang up after this many commands (-1: never)
   std::int64_t silent_after = -1; // after this many commands, answer nothing, line open (-1: never)
+  std::uint32_t unterminated_ppm = 0; // the e-puck2's binary sequences only: the ending 0 lost
   friend bool operator==(const FaultSpec&, const FaultSpec&) = default;
 };
 
 // Parses --fault values: `delay=P:MS`, `garbage=P`, `drop=P`, `cut=P` (P a probability in [0, 1]
-// with up to six decimals), `disconnect=N`, `silent=N` (N >= 0 commands). Several may be given.
+// with up to six decimals), `disconnect=N`, `silent=N` (N >= 0 commands), `unterminated=P` (the
+// e-puck2's binary emulator only: a sequence's ending 0 lost, epuck2.hpp). Several may be given.
 // Throws kernel::InputError("fault", ...).
 FaultSpec parse_faults(const std::vector<std::string>& specs);
 
@@ -118,9 +120,11 @@ struct EmulatorResponse {
 // lines skipped) from the pty's master, calls new_session() before the first command of each
 // client (a client's session lasts until it closes the tty), answers each line with handle(), and
 // returns when `stop` is set, on a stop signal (when stop_on_signal), or after a hang-up response.
+// `raw`: a byte-stream firmware (the e-puck2's binary mode): handle() gets whatever bytes came, as
+// they came, not lines.
 void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>& handle,
                const std::function<void()>& new_session, const std::atomic<bool>* stop,
-               bool stop_on_signal);
+               bool stop_on_signal, bool raw = false);
 
 // The same over TCP: serves one client at a time from `listener` (pausing it while a client is
 // connected, so a second client is refused), each connection a session (new_session() before its
@@ -129,7 +133,7 @@ void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>
 void serve_tcp(TcpListener& listener,
                const std::function<EmulatorResponse(std::string_view)>& handle,
                const std::function<void()>& new_session, const std::atomic<bool>* stop,
-               bool stop_on_signal);
+               bool stop_on_signal, bool raw = false);
 
 class FirmwareEmulator {
 public:

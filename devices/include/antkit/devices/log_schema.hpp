@@ -1,6 +1,15 @@
 #pragma once
 // Hardware logs are JSON Lines (DESIGN.md, Files and formats): a header record, then one record per
 // step. This is the schema version every writer puts in the header and every reader checks.
+//
+// Binary protocols (the e-puck2 in binary mode, `"robot":"epuck2"`, epuck2.hpp) need no other
+// schema: an exchange's "sent" and "received" are JSON strings of one character per byte, and a
+// byte outside printable ASCII is written \u00XX (its two hex digits, lower case), so every byte
+// of a binary sequence and of its reply is kept exactly, in order (log.hpp, append_json_bytes). A
+// step sequence [-'D' 300 -2][-'N'][-'Q'][0] is logged
+// "\u00bc,\u0001\u00fe\u00ff\u00b2\u00af\u0000" (0x2C is ','); a resynchronisation is 36 "\u0000".
+// Readers that want the bytes take each character's code point (0..255), as `antkit replay` and the
+// Python module do.
 #include <cstdint>
 
 namespace antkit::devices {

@@ -23,6 +23,10 @@ std::optional<RobotKind> parse_robot(std::string_view name);
 std::string_view robot_name(RobotKind robot);
 // The names parse_robot accepts, for messages: "khepera, khepera-webots, hemisson, epuck".
 std::string_view robot_names();
+// The description whose body and scales a log's robot runs with (dead reckoning, the MCAP
+// export, buffon-from-logs): a serial robot's own, and for "epuck2" (binary mode, epuck2.hpp) the
+// e-puck's (its axle and wheel taken as the e-puck1's, PROTOCOLS.md). nullopt for any other name.
+std::optional<RobotKind> body_of(std::string_view log_robot);
 
 struct RobotDescription {
   RobotKind kind;
