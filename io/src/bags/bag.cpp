@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <numbers>
 #include <sqlite3.h>
 
@@ -159,43 +160,44 @@ private:
 
 class Db3File final : public Reader::File {
 public:
+  // The database and its statements are owned by unique_ptrs, so that a constructor that throws
+  // (a file that is not a database, a table missing) still closes what it opened.
   explicit Db3File(const std::string& path) : path_(path) {
-    if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK)
-      fail("cannot open as a sqlite3 database");
-    sqlite3_stmt* t = prepare("SELECT id, name, type, serialization_format FROM topics", "topics");
+    sqlite3* db = nullptr;
+    const int opened = sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
+    db_.reset(db); // sqlite3_open_v2 gives a handle to close even when it fails
+    if (opened != SQLITE_OK) fail("cannot open as a sqlite3 database");
+    const Statement t =
+        prepare("SELECT id, name, type, serialization_format FROM topics", "topics");
     int rc = 0;
-    while ((rc = sqlite3_step(t)) == SQLITE_ROW) {
+    while ((rc = sqlite3_step(t.get())) == SQLITE_ROW) {
       TopicInfo info;
-      info.name = text(t, 1);
-      info.type = text(t, 2);
-      info.encoding = text(t, 3);
-      topics_[sqlite3_column_int64(t, 0)] = std::move(info);
+      info.name = text(t.get(), 1);
+      info.type = text(t.get(), 2);
+      info.encoding = text(t.get(), 3);
+      topics_[sqlite3_column_int64(t.get(), 0)] = std::move(info);
     }
-    sqlite3_finalize(t);
-    if (rc != SQLITE_DONE) fail("table topics: " + std::string(sqlite3_errmsg(db_)));
+    if (rc != SQLITE_DONE) fail("table topics: " + std::string(sqlite3_errmsg(db_.get())));
     messages_ = prepare("SELECT id, topic_id, timestamp, data FROM messages ORDER BY timestamp, id",
                         "messages");
-  }
-  ~Db3File() override {
-    sqlite3_finalize(messages_);
-    sqlite3_close(db_);
   }
   Db3File(const Db3File&) = delete;
   Db3File& operator=(const Db3File&) = delete;
 
   bool next(Message& out) override {
-    const int rc = sqlite3_step(messages_);
+    sqlite3_stmt* const messages = messages_.get();
+    const int rc = sqlite3_step(messages);
     if (rc == SQLITE_DONE) return false;
-    if (rc != SQLITE_ROW) fail("table messages: " + std::string(sqlite3_errmsg(db_)));
-    row_ = sqlite3_column_int64(messages_, 0);
-    const auto topic = sqlite3_column_int64(messages_, 1);
+    if (rc != SQLITE_ROW) fail("table messages: " + std::string(sqlite3_errmsg(db_.get())));
+    row_ = sqlite3_column_int64(messages, 0);
+    const auto topic = sqlite3_column_int64(messages, 1);
     const auto it = topics_.find(topic);
     if (it == topics_.end())
       throw InputError(where(), "topic_id " + std::to_string(topic) + " is not in table topics");
-    const auto time = sqlite3_column_int64(messages_, 2);
+    const auto time = sqlite3_column_int64(messages, 2);
     if (time < 0) throw InputError(where(), "a negative timestamp");
-    const void* blob = sqlite3_column_blob(messages_, 3);
-    const int size = sqlite3_column_bytes(messages_, 3);
+    const void* blob = sqlite3_column_blob(messages, 3);
+    const int size = sqlite3_column_bytes(messages, 3);
     out.topic = &it->second;
     out.time_ns = static_cast<std::uint64_t>(time);
     out.data = blob == nullptr ? std::string_view{}
@@ -214,11 +216,13 @@ private:
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError(path_, what + " (expected a rosbag2 .db3: tables topics and messages)");
   }
-  sqlite3_stmt* prepare(const char* sql, const char* table) {
+  using Statement = std::unique_ptr<sqlite3_stmt, decltype(&sqlite3_finalize)>;
+  Statement prepare(const char* sql, const char* table) {
     sqlite3_stmt* s = nullptr;
-    if (sqlite3_prepare_v2(db_, sql, -1, &s, nullptr) != SQLITE_OK)
-      fail(std::string("table ") + table + ": " + sqlite3_errmsg(db_));
-    return s;
+    const int rc = sqlite3_prepare_v2(db_.get(), sql, -1, &s, nullptr);
+    Statement owned(s, &sqlite3_finalize);
+    if (rc != SQLITE_OK) fail(std::string("table ") + table + ": " + sqlite3_errmsg(db_.get()));
+    return owned;
   }
   static std::string text(sqlite3_stmt* s, int column) {
     const auto* p = sqlite3_column_text(s, column);
@@ -226,8 +230,8 @@ private:
   }
 
   std::string path_;
-  sqlite3* db_ = nullptr;
-  sqlite3_stmt* messages_ = nullptr;
+  std::unique_ptr<sqlite3, decltype(&sqlite3_close)> db_{nullptr, &sqlite3_close};
+  Statement messages_{nullptr, &sqlite3_finalize}; // after db_: finalized before it closes
   std::map<std::int64_t, TopicInfo> topics_;
   std::int64_t row_ = 0;
 };
