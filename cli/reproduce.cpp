@@ -3,8 +3,9 @@
 //                   [--format table|json]`: every paper's experiments in one run, with the claims
 // table (issue 15); --decide adds trials until each claim is decided or the budget is spent
 // (issue 44): TRIALS is paper 000's trials per arena at the last look, DURATION a number with s, m
-// or h (30m), converted to trials after the first look. The experiments, the report and the
-// verdicts are documented in experiments/include/antkit/experiments/reproduce.hpp.
+// or h (30m): the looks go on while the next one's predicted time fits, and the report states the
+// trials reached. The experiments, the report and the verdicts are documented in
+// experiments/include/antkit/experiments/reproduce.hpp.
 //
 //   mpirun -n K antkit reproduce --full ...   splits the trials across K MPI ranks; rank 0
 //                                             gathers them and writes the same files
