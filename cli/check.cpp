@@ -11,6 +11,9 @@
 //                    "type", "stamp", "poses" and "first_violation_time_ns"
 //   antkit check explore --map F --cells C [--format table|json]
 //   antkit check cover --map F --log L [--sensor R] [--format table|json]
+//   antkit check cover --map F --bag BAG --topic T [--topic T2 ...] --sensor R [--stamp ...]
+//                      [--child-frame F]: each topic's poses one robot (check_cover_bag); the
+//                      JSON adds "bag", "stamp", "topics" and "first_violation_time_ns"
 //
 // Exit status: 0 the output keeps every rule, 1 a rule is broken (the report is printed, then the
 // first broken rule on stderr), 2 bad input (a malformed map or tour file, a start off the map).
@@ -85,12 +88,27 @@ void run_explore(const ExploreCheckCommand& c) {
 }
 
 struct CoverCheckCommand {
-  std::string map, log;
+  std::string map, log, bag, stamp = "bag", child_frame = "base_link";
+  std::vector<std::string> topics;
   std::int64_t sensor = -1;
   Format format = Format::Table;
 };
 
 void run_cover(const CoverCheckCommand& c) {
+  if (c.log.empty() == c.bag.empty())
+    throw antkit::kernel::InputError("--log", "one run: --log TRACE or --bag BAG --topic T");
+  if (!c.bag.empty()) {
+    if (c.sensor == -1) throw antkit::kernel::InputError("--sensor", "--bag needs --sensor");
+    const auto b = antkit::commands::check_cover_bag(
+        c.map, c.bag, c.topics, antkit::commands::bag_stamp(c.stamp, "--stamp"), c.child_frame,
+        c.sensor);
+    antkit::cli::emit(antkit::commands::check_cover_bag_json(b, c.map), c.format, std::cout);
+    if (!b.report.audit.ok())
+      throw antkit::cli::CheckFailed(
+          c.bag + ": " + b.report.audit.first +
+          (b.violation_ns() ? " at bag time " + std::to_string(*b.violation_ns()) + " ns" : ""));
+    return;
+  }
   std::optional<std::int64_t> sensor; // checked by check_cover_files
   if (c.sensor != -1) sensor = c.sensor;
   const auto r = testing::check_cover_files(c.map, c.log, sensor);
@@ -158,12 +176,18 @@ void register_check(CLI::App& app) {
       "cover", "Check a coverage run's trace: legal moves and turns, no two robots on one cell, "
                "and the coverage it claims recomputed from its poses");
   cover->add_option("--map", v->map, "The map (MovingAI .map, ROS .yaml, ASCII .txt)")->required();
-  cover
-      ->add_option("--log", v->log,
-                   "The trace: tick,robot,x,y,bearing per line (antkit cover --trace)")
-      ->required();
+  cover->add_option("--log", v->log,
+                    "The trace: tick,robot,x,y,bearing per line (antkit cover --trace); or --bag");
+  cover->add_option("--bag", v->bag,
+                    "A ROS 2 bag (.mcap, .db3, folder): each --topic's poses are one robot, "
+                    "through the map's resolution and origin (commands/bags.hpp)");
+  cover->add_option("--topic", v->topics, "With --bag: a robot's pose topic (repeat for more)");
+  cover->add_option("--stamp", v->stamp, "With --bag: the poses' time, bag or header");
+  cover->add_option("--child-frame", v->child_frame,
+                    "With --bag on a TFMessage topic: the child frame (default base_link)");
   cover->add_option("--sensor", v->sensor,
-                    "Sensor distance in cells (default: the trace's '# sensor:' line)");
+                    "Sensor distance in cells (default: the trace's '# sensor:' line; required "
+                    "with --bag)");
   antkit::cli::add_format_option(*cover, v->format);
   cover->callback([v] { run_cover(*v); });
 }

@@ -231,31 +231,27 @@ std::optional<std::int64_t> StcBagCheck::violation_ns() const {
   return entered_ns[static_cast<std::size_t>(step)];
 }
 
-StcBagCheck check_stc_bag(const std::string& map_file, const std::string& bag,
-                          const std::string& topic, io::bag::Stamp stamp,
-                          const std::string& child_frame, const testing::StcCheckRequest& request) {
-  StcBagCheck out;
-  maps::GridMap map = maps::load_map(map_file);
-  out.track = io::bag::read_poses(bag, topic, stamp, child_frame);
+std::vector<BagCell> bag_cells(const maps::GridMap& map, const io::bag::PoseTrack& track,
+                               const std::string& map_file) {
   const std::int64_t width = map.cells.width(), height = map.cells.height();
-  testing::TourFile tour;
+  std::vector<BagCell> cells;
   const auto cell_of = [&](const io::bag::TimedPose& p, std::size_t i) {
     const MapPoint m = to_map(map, p.x, p.y);
     const double cx = std::floor(m.x), cy = std::floor(m.y);
     if (!(cx >= 0 && cx < static_cast<double>(width) && cy >= 0 &&
           cy < static_cast<double>(height)))
-      throw InputError(bag, "topic " + topic + ": pose " + std::to_string(i) + " (time " +
-                                std::to_string(p.t_ns) + " ns) at (" + std::to_string(p.x) + ", " +
-                                std::to_string(p.y) + ") m leaves the map " + map_file);
+      throw InputError(track.path, "topic " + track.topic + ": pose " + std::to_string(i) +
+                                       " (time " + std::to_string(p.t_ns) + " ns) at (" +
+                                       std::to_string(p.x) + ", " + std::to_string(p.y) +
+                                       ") m leaves the map " + map_file);
     return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(cx),
                                                  static_cast<std::int64_t>(cy)};
   };
   const auto enter = [&](std::int64_t cx, std::int64_t cy, std::int64_t t) {
-    tour.path.push_back(
-        {static_cast<std::int32_t>(cx), static_cast<std::int32_t>(height - 1 - cy)});
-    out.entered_ns.push_back(t);
+    cells.push_back({static_cast<std::int32_t>(cx), static_cast<std::int32_t>(height - 1 - cy), t});
   };
-  const auto& poses = out.track.poses;
+  const auto& poses = track.poses;
+  if (poses.empty()) return cells;
   auto [cx, cy] = cell_of(poses[0], 0);
   enter(cx, cy, poses[0].t_ns);
   for (std::size_t i = 1; i < poses.size(); ++i) {
@@ -290,7 +286,85 @@ StcBagCheck check_stc_bag(const std::string& map_file, const std::string& bag,
       enter(cx, cy, t0 + static_cast<std::int64_t>(std::llround(static_cast<double>(t1 - t0) * t)));
     }
   }
+  return cells;
+}
+
+StcBagCheck check_stc_bag(const std::string& map_file, const std::string& bag,
+                          const std::string& topic, io::bag::Stamp stamp,
+                          const std::string& child_frame, const testing::StcCheckRequest& request) {
+  StcBagCheck out;
+  maps::GridMap map = maps::load_map(map_file);
+  out.track = io::bag::read_poses(bag, topic, stamp, child_frame);
+  testing::TourFile tour;
+  for (const auto& c : bag_cells(map, out.track, map_file)) {
+    tour.path.push_back({c.x, c.y});
+    out.entered_ns.push_back(c.t_ns);
+  }
   out.report = testing::check_stc(std::move(map), tour, request);
+  return out;
+}
+
+std::optional<std::int64_t> CoverBagCheck::violation_ns() const {
+  const auto tick = report.audit.first_tick;
+  if (report.audit.ok() || tick < 0 || static_cast<std::size_t>(tick) >= tick_ns.size())
+    return std::nullopt;
+  return tick_ns[static_cast<std::size_t>(tick)];
+}
+
+CoverBagCheck check_cover_bag(const std::string& map_file, const std::string& bag,
+                              const std::vector<std::string>& topics, io::bag::Stamp stamp,
+                              const std::string& child_frame, std::int64_t sensor) {
+  testing::check_sensor_range(sensor);
+  if (topics.empty()) throw InputError("--topic", "--bag needs --topic (one per robot)");
+  for (std::size_t i = 0; i < topics.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (topics[i] == topics[j])
+        throw InputError("--topic", topics[i] + " given twice: one topic per robot");
+  CoverBagCheck out;
+  const maps::GridMap map = maps::load_map(map_file);
+  std::vector<std::vector<BagCell>> paths;
+  for (const auto& topic : topics) {
+    out.tracks.push_back(io::bag::read_poses(bag, topic, stamp, child_frame));
+    paths.push_back(bag_cells(map, out.tracks.back(), map_file));
+  }
+  // Tick 0: every robot on its first pose's cell, facing its first pose's yaw (to the nearest
+  // eighth, relative to the map's x axis). Then one tick per cell entered, in time order (ties in
+  // topic order): that robot steps (a 4-neighbour step, facing the way it moved), the others stay.
+  testing::CoverTrace trace;
+  trace.robots = static_cast<std::int32_t>(topics.size());
+  trace.sensor = static_cast<std::int32_t>(sensor);
+  std::vector<kernel::Cell> at;
+  std::vector<std::uint8_t> facing;
+  std::int64_t start_ns = std::numeric_limits<std::int64_t>::max();
+  for (std::size_t r = 0; r < paths.size(); ++r) {
+    if (paths[r].empty())
+      throw InputError(bag, "topic " + topics[r] + ": no poses, so no robot to check");
+    at.push_back({paths[r][0].x, paths[r][0].y});
+    const double eighths = (out.tracks[r].poses[0].yaw - map.origin_yaw) / (M_PI / 4);
+    facing.push_back(static_cast<std::uint8_t>(((std::llround(eighths) % 8) + 8) % 8));
+    start_ns = std::min(start_ns, paths[r][0].t_ns);
+  }
+  trace.cells.push_back(at);
+  trace.bearings.push_back(facing);
+  out.tick_ns.push_back(start_ns);
+  std::vector<std::size_t> next(paths.size(), 1);
+  for (;;) {
+    std::size_t who = paths.size();
+    for (std::size_t r = 0; r < paths.size(); ++r)
+      if (next[r] < paths[r].size() &&
+          (who == paths.size() || paths[r][next[r]].t_ns < paths[who][next[who]].t_ns))
+        who = r;
+    if (who == paths.size()) break;
+    const BagCell& c = paths[who][next[who]++];
+    const std::int32_t dx = c.x - at[who].x, dy = c.y - at[who].y;
+    // A step of the traversal: east 0, north (up, y down) 2, west 4, south 6.
+    facing[who] = static_cast<std::uint8_t>(dx > 0 ? 0 : dx < 0 ? 4 : dy < 0 ? 2 : 6);
+    at[who] = {c.x, c.y};
+    trace.cells.push_back(at);
+    trace.bearings.push_back(facing);
+    out.tick_ns.push_back(c.t_ns);
+  }
+  out.report = testing::check_cover(map.cells, trace, sensor, bag);
   return out;
 }
 
@@ -301,6 +375,19 @@ nlohmann::json check_stc_bag_json(const StcBagCheck& c, const std::string& map) 
   j["type"] = c.track.type;
   j["stamp"] = c.track.stamp == io::bag::Stamp::bag ? "bag" : "header";
   j["poses"] = c.track.poses.size();
+  const auto t = c.violation_ns();
+  j["first_violation_time_ns"] = t ? nlohmann::json(*t) : nlohmann::json(nullptr);
+  return j;
+}
+
+nlohmann::json check_cover_bag_json(const CoverBagCheck& c, const std::string& map) {
+  nlohmann::json j = check_cover_json(c.report, map);
+  j["bag"] = c.tracks.empty() ? std::string() : c.tracks.front().path;
+  j["stamp"] = c.tracks.empty() || c.tracks.front().stamp == io::bag::Stamp::bag ? "bag" : "header";
+  nlohmann::json robots = nlohmann::json::array();
+  for (const auto& t : c.tracks)
+    robots.push_back({{"topic", t.topic}, {"type", t.type}, {"poses", t.poses.size()}});
+  j["topics"] = robots;
   const auto t = c.violation_ns();
   j["first_violation_time_ns"] = t ? nlohmann::json(*t) : nlohmann::json(nullptr);
   return j;

@@ -291,9 +291,11 @@ CoverAudit audit_cover_trace(const OccupancyGrid& map, const CoverTrace& trace,
   a.ticks = static_cast<std::int64_t>(trace.cells.size());
   a.robots = trace.robots;
   auto fail = [&](std::int64_t tick, std::int64_t robot, Cell c, const std::string& what) {
-    if (a.first.empty())
+    if (a.first.empty()) {
       a.first = "tick " + std::to_string(tick) + ", robot " + std::to_string(robot) + " at " +
                 at(c) + ": " + what;
+      a.first_tick = tick;
+    }
   };
   auto free = [&](Cell c) { return map.in_bounds(c) && map[c] == Occupancy::Free; };
   kernel::Grid<std::uint8_t> stood(map.width(), map.height(), 0);

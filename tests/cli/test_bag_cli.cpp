@@ -130,3 +130,53 @@ TEST_CASE("antkit check stc --bag: a bag's poses as a tour on a ROS map", "[cli]
   CHECK_THAT(off.err, Contains("leaves the map"));
   CHECK(off.out.empty());
 }
+
+TEST_CASE("antkit check cover --bag: each topic one robot, collisions at their bag time",
+          "[cli][bag]") {
+  const std::string d = bags();
+  if (d.empty()) return;
+  std::ofstream(d + "/free.yaml") << "image: free.pgm\nresolution: 0.5\norigin: [-1.0, -2.0, 0.0]\n"
+                                     "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  std::ofstream(d + "/free.pgm", std::ios::binary)
+      << std::string("P5\n4 2\n255\n") + std::string(8, '\xfe');
+  const std::string args = " --map '" + d + "/free.yaml' --topic /r0/pose --topic /r1/pose";
+  // Row 0 and row 1 swept in opposite directions: three steps each, no two robots on one cell,
+  // and with sensor 0 each robot views the cells it stands on: all 8.
+  const auto ok =
+      run_antkit("check cover" + args + " --sensor 0 --format json --bag '" + d + "/cover.mcap'");
+  INFO(ok.err);
+  REQUIRE(ok.status == 0);
+  const auto j = nlohmann::json::parse(ok.out);
+  CHECK(j["ok"] == true);
+  CHECK(j["robots"] == 2);
+  CHECK(j["ticks"] == 7); // the start, then 3 steps of each robot
+  CHECK(j["moves"] == 6);
+  CHECK(j["collisions"] == 0);
+  CHECK(j["viewed"] == 8);
+  CHECK(j["viewable"] == 8);
+  CHECK(j["topics"].size() == 2);
+  CHECK(j["topics"][1]["topic"] == "/r1/pose");
+  CHECK(j["first_violation_time_ns"].is_null());
+  // Head on along one row: at tick 3 (0.05 s) r0 steps onto (2,0), where r1 stands.
+  const auto bad = run_antkit("check cover" + args + " --sensor 1 --format json --bag '" + d +
+                              "/cover_collide.mcap'");
+  CHECK(bad.status == 1);
+  const auto b = nlohmann::json::parse(bad.out);
+  CHECK(b["collisions"].get<int>() >= 1);
+  CHECK(b["first_violation_time_ns"] == 1700000000050000000LL);
+  CHECK_THAT(b["first_violation"].get<std::string>(), Contains("tick 3"));
+  CHECK_THAT(bad.err, Contains("at bag time 1700000000050000000 ns"));
+  // Refusals: exit 2, located, nothing on standard output.
+  for (const auto& [extra, says] : std::vector<std::pair<std::string, std::string>>{
+           {" --bag '" + d + "/cover.mcap'", "--bag needs --sensor"},
+           {" --sensor 1 --log x.trace --bag '" + d + "/cover.mcap'", "one run"},
+           {" --sensor 999 --bag '" + d + "/cover.mcap'", "sensor"},
+           {" --sensor 1 --topic /r0/pose --bag '" + d + "/cover.mcap'", "given twice"},
+           {" --sensor 1 --topic /odom --bag '" + d + "/walk1.mcap'", "/r0/pose"}}) {
+    const auto r = run_antkit("check cover" + args + extra);
+    INFO(extra);
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Contains(says));
+    CHECK(r.out.empty());
+  }
+}

@@ -12,6 +12,7 @@
 //   walk2_zstd.mcap   /odom, zstd chunks        walk2_lz4.mcap  /odom, lz4 chunks
 //   walk1.db3         /odom and /chatter        walk2_bag/      metadata.yaml + walk2_bag_0.db3
 //   tour.mcap, tour_repeat.mcap  /pose (PoseStamped): tours for `check stc --bag` (below)
+//   cover.mcap, cover_collide.mcap  /r0/pose, /r1/pose: two robots for `check cover --bag`
 // Bag time of message i: 1.7e18 + i * 0.1 s; header.stamp: bag time - 0.25 s.
 import { mkdirSync, writeFileSync } from "node:fs";
 import { createRequire } from "node:module";
@@ -161,4 +162,12 @@ const centre = ([x, y]) => ({ x: -0.75 + 0.5 * x, y: -1.25 - 0.5 * y, yaw: 0 });
 for (const [name, cells] of [["tour", [[0, 0], [3, 0], [3, 1], [0, 1]]], ["tour_repeat", [[0, 0], [3, 0], [1, 0]]]])
   await writeMcap(`${out}/${name}.mcap`, [["/pose", "geometry_msgs/msg/PoseStamped",
     cells.map(centre).map((p, i) => cdr("geometry_msgs/msg/PoseStamped", { header: header(i, "map"), pose: pose(p) }))]], undefined);
+// Two robots for `check cover --bag`, on the same map: /r0/pose and /r1/pose, one pose each at bag
+// times 0 and 0.1 s. cover.mcap: r0 along row 0 from (0,0) to (3,0), r1 along row 1 from (3,1) to
+// (0,1) (never on one cell). cover_collide.mcap: r0 from (0,0) to (3,0), r1 from (3,0) to (0,0) on
+// the same row: at 0.05 s (half-way) r0 enters (2,0), where r1 already is.
+const poses = (cells) => cells.map(centre).map((p, i) => cdr("geometry_msgs/msg/PoseStamped", { header: header(i, "map"), pose: pose(p) }));
+for (const [name, a, b] of [["cover", [[0, 0], [3, 0]], [[3, 1], [0, 1]]], ["cover_collide", [[0, 0], [3, 0]], [[3, 0], [0, 0]]]])
+  await writeMcap(`${out}/${name}.mcap`, [["/r0/pose", "geometry_msgs/msg/PoseStamped", poses(a)],
+                                          ["/r1/pose", "geometry_msgs/msg/PoseStamped", poses(b)]], undefined);
 console.log("write_bags: wrote", out);

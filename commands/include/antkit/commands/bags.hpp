@@ -4,11 +4,14 @@
 // commands make from their options and the JSON of their results.
 #include <antkit/devices/odometry.hpp>
 #include <antkit/io/bag.hpp>
+#include <antkit/maps/map_io.hpp>
+#include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace antkit::commands {
 
@@ -67,5 +70,37 @@ struct StcBagCheck {
 // check_stc_json's keys, and "bag", "topic", "type", "stamp", "poses", "first_violation_time_ns"
 // (null when the tour passes or the broken rule is about the whole tour).
 [[nodiscard]] nlohmann::json check_stc_bag_json(const StcBagCheck& check, const std::string& map);
+
+// A pose track's cells on a grid map, as check_stc_bag reads them (above): x right, y down from
+// the first row, each with the time it was entered. Refuses (InputError at the pose's place in the
+// bag, with its time) a pose off the map.
+struct BagCell {
+  std::int32_t x = 0, y = 0;
+  std::int64_t t_ns = 0;
+};
+[[nodiscard]] std::vector<BagCell>
+bag_cells(const maps::GridMap& map, const io::bag::PoseTrack& track, const std::string& map_file);
+
+// `antkit check cover --bag`: the poses of one or more topics of a bag (one robot each) as a
+// coverage trace (testing::check_cover, paper 004's movement model and sensor): the cells each
+// robot passes through as bag_cells reads them; tick 0 puts every robot on its first cell, facing
+// its first pose's yaw to the nearest eighth, and each later tick is one robot entering its next
+// cell (in time order, ties in topic order), facing the way it stepped, the others staying. So
+// the rules checked are those a recorded run can break: leaving the free cells, two robots on one
+// cell, and the coverage recomputed with `sensor` (cells, [0, uniform::kMaxSensorRange]).
+struct CoverBagCheck {
+  testing::CoverCheckReport report;
+  std::vector<io::bag::PoseTrack> tracks;
+  std::vector<std::int64_t> tick_ns; // each tick's time (the stamp); tick 0: the earliest start
+  [[nodiscard]] std::optional<std::int64_t> violation_ns() const;
+};
+[[nodiscard]] CoverBagCheck check_cover_bag(const std::string& map_file, const std::string& bag,
+                                            const std::vector<std::string>& topics,
+                                            io::bag::Stamp stamp, const std::string& child_frame,
+                                            std::int64_t sensor);
+// check_cover_json's keys, and "bag", "stamp", "topics" ([{"topic", "type", "poses"}]),
+// "first_violation_time_ns" (null when the run passes or the broken rule is about the whole run).
+[[nodiscard]] nlohmann::json check_cover_bag_json(const CoverBagCheck& check,
+                                                  const std::string& map);
 
 } // namespace antkit::commands

@@ -84,6 +84,7 @@ struct CoverTrace {
 // cells viewed, viewable the Free cells of the 4-connected components the robots start in.
 struct CoverAudit {
   std::string first; // the first broken rule, with the tick, robot and cell; empty when none
+  std::int64_t first_tick = -1; // its tick; -1 when none, or when it is about the whole run
   std::int64_t ticks = 0, robots = 0;
   std::int64_t moves = 0, turns = 0; // between ticks: cell changes, bearing-only changes
   std::int64_t illegal_moves = 0;    // not a neighbour, onto a cell not Free, a cut corner
