@@ -14,6 +14,7 @@
 #include <iomanip>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 namespace antkit::experiments {
 
@@ -77,16 +78,40 @@ BuffonFigureTrials::BuffonFigureTrials(const BuffonFigureParams& params) : param
   for (std::size_t k = 0; k < arenas_.size(); ++k)
     areas_.push_back(geometry::build_arena_spec(arenas_[k].spec, "figure").arena.area());
   payloads_.resize(arenas_.size());
+  have_.assign(arenas_.size(), 0);
 }
 
 void BuffonFigureTrials::extend(std::int64_t trials, const algorithms::Runner& runner) {
+  extend(trials, std::vector<bool>(arenas_.size(), true), runner);
+}
+
+void BuffonFigureTrials::extend(std::int64_t trials, const std::vector<bool>& arenas,
+                                const algorithms::Runner& runner) {
   BuffonFigureParams wanted = params_;
   wanted.trials = trials;
   check(wanted);
-  if (trials <= have_) return;
+  if (arenas.size() != arenas_.size())
+    throw std::invalid_argument("BuffonFigureTrials::extend: one flag per arena");
+  // The trials to run, arena by arena in row order: [have_[k], trials) of each arena asked for.
+  // With every arena at one count this is the one run's unit order (arena, then trial), so the
+  // payloads, and the figure, are the same whatever the batches.
+  struct Range {
+    std::size_t arena;
+    std::uint64_t first, count, offset;
+  };
+  std::vector<Range> ranges;
+  std::uint64_t units = 0;
+  for (std::size_t k = 0; k < arenas_.size(); ++k)
+    if (arenas[k] && trials > have_[k]) {
+      const auto first = static_cast<std::uint64_t>(have_[k]);
+      ranges.push_back({k, first, static_cast<std::uint64_t>(trials) - first, units});
+      units += ranges.back().count;
+    }
+  if (ranges.empty()) return;
   std::vector<buffon::World> worlds;
   std::vector<buffon::TrialParams> trial_params;
-  for (std::size_t k = 0; k < arenas_.size(); ++k) {
+  for (const auto& r : ranges) {
+    const std::size_t k = r.arena;
     worlds.emplace_back(geometry::build_arena_spec(arenas_[k].spec, "figure").arena.walls_fx());
     buffon::TrialParams tp;
     tp.seed = params_.seed;
@@ -95,32 +120,38 @@ void BuffonFigureTrials::extend(std::int64_t trials, const algorithms::Runner& r
     tp.width = geometry::fixed_from_double<kernel::Fx>(arenas_[k].width, "trail width");
     trial_params.push_back(tp);
   }
-  const auto first = static_cast<std::uint64_t>(have_);
-  const auto batch = static_cast<std::uint64_t>(trials - have_);
-  const auto payloads =
-      algorithms::run_units(runner, "paper 000, figure " + std::to_string(params_.figure),
-                            arenas_.size() * batch, [&](std::uint64_t u) {
-                              const std::size_t k = u / batch;
-                              const auto r =
-                                  buffon::run_trial(worlds[k], trial_params[k], first + u % batch);
-                              algorithms::Payload p;
-                              p.put(r.bc);
-                              p.put_i(r.length1_raw);
-                              p.put_i(r.length2_raw);
-                              p.put(r.crossings_exact);
-                              p.put(r.blocked);
-                              p.put(r.hash);
-                              return p;
-                            });
-  if (runner.root())
-    for (std::size_t k = 0; k < arenas_.size(); ++k)
-      for (std::uint64_t t = 0; t < batch; ++t) payloads_[k].push_back(payloads[k * batch + t]);
-  have_ = trials;
+  const auto payloads = algorithms::run_units(
+      runner, "paper 000, figure " + std::to_string(params_.figure), units, [&](std::uint64_t u) {
+        std::size_t i = 0;
+        while (u >= ranges[i].offset + ranges[i].count) ++i;
+        const auto r =
+            buffon::run_trial(worlds[i], trial_params[i], ranges[i].first + (u - ranges[i].offset));
+        algorithms::Payload p;
+        p.put(r.bc);
+        p.put_i(r.length1_raw);
+        p.put_i(r.length2_raw);
+        p.put(r.crossings_exact);
+        p.put(r.blocked);
+        p.put(r.hash);
+        return p;
+      });
+  for (const auto& r : ranges) {
+    if (runner.root())
+      for (std::uint64_t t = 0; t < r.count; ++t)
+        payloads_[r.arena].push_back(payloads[r.offset + t]);
+    have_[r.arena] = trials;
+  }
+}
+
+std::int64_t BuffonFigureTrials::trials() const noexcept {
+  std::int64_t most = 0;
+  for (const auto n : have_) most = std::max(most, n);
+  return most;
 }
 
 BuffonFigure BuffonFigureTrials::finish() const {
   BuffonFigure out{params_, {}, 0};
-  out.params.trials = have_;
+  out.params.trials = trials();
   kernel::TraceHash digest;
   for (std::size_t k = 0; k < arenas_.size() && !payloads_[k].empty(); ++k) {
     std::vector<double> nbc, cf, blocked, length1, bc_values;
@@ -140,6 +171,7 @@ BuffonFigure BuffonFigureTrials::finish() const {
                         buffon::quantile(nbc, 0.25), buffon::quantile(nbc, 0.75),
                         buffon::quantile(cf, 0.5), buffon::quantile(blocked, 0.5)});
     auto& row = out.rows.back();
+    row.trials = static_cast<std::int64_t>(payloads_[k].size());
     row.length1_median = buffon::quantile(length1, 0.5);
     row.efficiency =
         row.length1_median > 0 ? row.nbc_median * M_PI * row.area / (2 * row.length1_median) : 0.0;
@@ -164,13 +196,23 @@ std::string buffon_figure_csv(const BuffonFigure& f) {
          "blocked_median\n";
   for (const auto& r : f.rows)
     csv << r.arena.series << ',' << number(r.arena.x) << ",\"" << r.arena.spec << "\","
-        << number(r.arena.width) << ',' << number(r.area) << ',' << f.params.trials << ','
+        << number(r.arena.width) << ',' << number(r.area) << ',' << r.trials << ','
         << number(r.nbc_median) << ',' << number(r.nbc_q1) << ',' << number(r.nbc_q3) << ','
         << number(r.closed_form_median) << ',' << number(r.blocked_median) << '\n';
   return csv.str();
 }
 
 namespace {
+
+// "100 trials per arena", or, for a figure whose arenas `reproduce --decide` ran to different
+// counts, the range ("200 to 12800 trials per arena (the CSV's trials column)").
+std::string trials_per_arena(const BuffonFigure& f) {
+  std::int64_t lo = f.params.trials, hi = 0;
+  for (const auto& r : f.rows) lo = std::min(lo, r.trials), hi = std::max(hi, r.trials);
+  if (f.rows.empty() || lo == hi) return std::to_string(f.params.trials) + " trials per arena";
+  return std::to_string(lo) + " to " + std::to_string(hi) +
+         " trials per arena (the CSV's trials column)";
+}
 
 // Buffon's efficiency of each trial, nBC pi A / (2 L1): 1 for an ideal needle count, below where
 // the trails blend; the figure's point is the efficiency at the medians (as claims 000-4 and 000-10
@@ -239,8 +281,8 @@ Figure buffon_figure_plot(const BuffonFigure& f) {
         series.points.push_back({r.arena.x, r.nbc_median, r.nbc_q1, r.nbc_q3});
     panel.series.push_back(std::move(series));
   }
-  const std::string trials = std::to_string(f.params.trials) + " trials per arena, " +
-                             std::to_string(f.params.steps) + " steps per visit";
+  const std::string trials =
+      trials_per_arena(f) + ", " + std::to_string(f.params.steps) + " steps per visit";
   fig.y_label = "nBC (Buffon crossings per unit of visit 2)";
   fig.caption = "Median nBC with interquartile bars; " + trials + ", seed " +
                 std::to_string(f.params.seed) + ".";
@@ -337,8 +379,7 @@ Figure buffon_figure5b_plot(const BuffonFigure& f) {
   fig.caption = "One point per diameter d, interquartile bars of the square; the dashed line is "
                 "y = x (equal nBC).\nLog axes: nBC falls as 1 / area, so the larger arenas are "
                 "spread out instead of crowding one corner.\n" +
-                std::to_string(f.params.trials) + " trials per arena, seed " +
-                std::to_string(f.params.seed) + ".";
+                trials_per_arena(f) + ", seed " + std::to_string(f.params.seed) + ".";
   PlotPanel panel;
   PlotSeries points{"one diameter, d = 10 to 100", kColours[0], false, true, {}};
   double lo = 1e300, hi = 0;

@@ -1,5 +1,6 @@
 // Paper 000 in a reproduction (papers.hpp): Figures 5-9 and 14, each figure a unit that --decide
 // extends trial by trial (BuffonFigureTrials: trial t keyed by t alone), and Figure 4's trails.
+#include <algorithm>
 #include <antkit/buffon/measurement.hpp>
 #include <antkit/experiments/buffon_figures.hpp>
 #include <antkit/experiments/drawing.hpp>
@@ -10,6 +11,8 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace antkit::experiments {
 
@@ -65,19 +68,31 @@ void buffon_figure4(ReportFiles& w, std::uint64_t seed) {
   w.added("buffon/figure4.png");
 }
 
+// The fewest and the most trials of a figure's arenas (--decide extends only the arenas its
+// undecided parts read).
+std::pair<std::int64_t, std::int64_t> fewest_most(const BuffonFigure& f) {
+  std::pair<std::int64_t, std::int64_t> n{f.params.trials, 0};
+  for (const auto& r : f.rows) n = {std::min(n.first, r.trials), std::max(n.second, r.trials)};
+  return f.rows.empty() ? std::pair{f.params.trials, f.params.trials} : n;
+}
+
 // Paper 000's trials per arena in words: one count, or each figure's when --decide ran them to
-// different counts.
+// different counts ("400 to 12800" where its arenas differ).
 std::string buffon_trials_text(const BuffonResults& buffon) {
-  std::map<int, std::int64_t> counts;
-  for (const auto& [figure, f] : buffon.figures) counts[figure] = f.params.trials;
-  counts[14] = buffon.fig14.params.trials;
+  std::map<int, std::pair<std::int64_t, std::int64_t>> counts; // fewest, most
+  for (const auto& [figure, f] : buffon.figures) counts[figure] = fewest_most(f);
+  counts[14] = {buffon.fig14.params.trials, buffon.fig14.params.trials};
   bool same = true;
   for (const auto& [figure, n] : counts) same = same && n == counts.begin()->second;
-  if (same) return std::to_string(counts.begin()->second) + " trials per arena";
+  const auto text_of = [](std::pair<std::int64_t, std::int64_t> n) {
+    return n.first == n.second ? std::to_string(n.first)
+                               : std::to_string(n.first) + " to " + std::to_string(n.second);
+  };
+  if (same) return text_of(counts.begin()->second) + " trials per arena";
   std::string text = "trials per arena by figure (";
   for (const auto& [figure, n] : counts)
     text += (figure == counts.begin()->first ? "" : ", ") + std::string("Figure ") +
-            std::to_string(figure) + ": " + std::to_string(n);
+            std::to_string(figure) + ": " + text_of(n);
   return text + ")";
 }
 
@@ -117,8 +132,53 @@ public:
       return;
     }
     auto& t = trials_.at(figure);
-    t.extend(trials.buffon, runner);
+    // The arenas this run extends: those narrow() kept (rank 0's word, so that every rank runs
+    // the same units), or all of them.
+    const auto kept = narrowed_.find(unit);
+    std::vector<bool> arenas(t.arenas());
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < arenas.size(); ++k) {
+      arenas[k] = runner.any(runner.root() && (kept == narrowed_.end() || kept->second.at(k)));
+      count += arenas[k] ? std::size_t{1} : std::size_t{0};
+    }
+    if (kept != narrowed_.end()) narrowed_.erase(kept);
+    last_arenas_[unit] = count;
+    t.extend(trials.buffon, arenas, runner);
     if (runner.root()) results_.figures[figure] = t.finish();
+  }
+  // A figure's next run extends only the arenas whose trials the undecided parts resample: a
+  // part's samples are rows' per-trial vectors (nBC, visit-1 length or BC), so the rows are
+  // found by comparing them. A part with a sample no row holds (one derived from several), or
+  // none, keeps the whole figure; so does Figure 14, whose calibration reads every circle.
+  [[nodiscard]] std::string narrowed_text(const std::string& unit) const override {
+    const auto kept = narrowed_.find(unit);
+    if (kept == narrowed_.end()) return {};
+    return std::to_string(std::count(kept->second.begin(), kept->second.end(), true)) + " of " +
+           std::to_string(kept->second.size()) + " arenas";
+  }
+  double narrow(const std::string& unit, const std::vector<Part>& undecided) override {
+    narrowed_.erase(unit);
+    const int figure = std::stoi(unit.substr(std::string("buffon/figure").size()));
+    const auto found = results_.figures.find(figure);
+    if (figure == 14 || found == results_.figures.end() || undecided.empty()) return 1.0;
+    const auto& rows = found->second.rows;
+    if (rows.size() != trials_.at(figure).arenas()) return 1.0;
+    std::vector<bool> keep(rows.size(), false);
+    for (const auto& part : undecided) {
+      if (part.samples.empty()) return 1.0;
+      for (const auto& sample : part.samples) {
+        bool matched = false;
+        for (std::size_t k = 0; k < rows.size(); ++k)
+          if (sample == rows[k].nbc_trials || sample == rows[k].length1_trials ||
+              sample == rows[k].bc_trials)
+            keep[k] = matched = true;
+        if (!matched) return 1.0;
+      }
+    }
+    const auto kept = static_cast<double>(std::count(keep.begin(), keep.end(), true));
+    const auto last = last_arenas_.count(unit) > 0 ? last_arenas_.at(unit) : rows.size();
+    narrowed_[unit] = std::move(keep);
+    return last > 0 ? kept / static_cast<double>(last) : 1.0;
   }
   void inputs(ClaimInputs& in) const override { in.put(results_); }
   [[nodiscard]] std::string trials_text(const Trials& t, int) const override {
@@ -132,7 +192,7 @@ public:
       counts.emplace_back("buffon_figure" + std::to_string(figure) + "_per_arena", f.params.trials);
     counts.emplace_back("buffon_figure14_per_arena", results_.fig14.params.trials);
   }
-  void write(ReportFiles& w, const ReproduceOptions&, std::ostream& body,
+  void write(ReportFiles& w, const ReproduceOptions& options, std::ostream& body,
              std::vector<ExperimentRecord>& records) const override {
     w.dir("buffon");
     buffon_figure4(w, seed_);
@@ -155,10 +215,16 @@ public:
         body << report_image("buffon/figure5b", "Figure 5b: squares against circles");
       }
       body << buffon_rows_table(f) << '\n';
+      const auto [fewest, most] = fewest_most(f);
       records.push_back({"paper 000, figure " + std::to_string(figure), f.hash,
-                         "antkit buffon-experiment --figure " + std::to_string(figure) +
-                             " --trials " + std::to_string(f.params.trials) + " --seed " +
-                             std::to_string(seed_) + " --out DIR (prints this hash)"});
+                         fewest == most
+                             ? "antkit buffon-experiment --figure " + std::to_string(figure) +
+                                   " --trials " + std::to_string(f.params.trials) + " --seed " +
+                                   std::to_string(seed_) + " --out DIR (prints this hash)"
+                             : reproduce_command(options, {"buffon"}) +
+                                   " (its arenas ran to different counts, the CSV's trials "
+                                   "column; each arena's trials are those of `antkit "
+                                   "buffon-experiment --trials` at its count)"});
     }
     const auto& fig14 = results_.fig14;
     w.text("buffon/figure14.csv", figure14_csv(fig14));
@@ -176,6 +242,8 @@ public:
 private:
   std::uint64_t seed_;
   std::map<int, BuffonFigureTrials> trials_;
+  std::map<std::string, std::vector<bool>> narrowed_; // the next run's arenas (rank 0)
+  std::map<std::string, std::size_t> last_arenas_;    // the arenas each unit's last run extended
   std::optional<Figure14Trials> fig14_;
   BuffonResults results_;
 };

@@ -101,11 +101,15 @@ double settling_ratio(const std::vector<Part>& parts) {
 // with probability at least 1 - sum alpha_k >= 95 %.
 class Settling {
 public:
-  // Evaluates the claim at this look unless it is settled; returns whether it still asks for
-  // trials (unsettled, and its estimate within kFutile times this look's).
-  bool look(const ClaimSpec& spec, const ClaimInputs& inputs, std::uint64_t seed, int look) {
+  // Evaluates the claim at this look unless it is settled or stopped asking; returns whether it
+  // still asks for trials (unsettled, and its estimate within kFutile times this look's). When it
+  // asks, its undecided parts are added to `undecided` (what the next look must extend). A claim
+  // that stopped asking keeps the look at which it stopped: a later look extends only what the
+  // claims still asking read, so its rows would no longer be at one look's count.
+  bool look(const ClaimSpec& spec, const ClaimInputs& inputs, std::uint64_t seed, int look,
+            std::vector<Part>& undecided) {
     auto& st = states_[spec.id];
-    if (st.settled) return false;
+    if (st.settled || st.stopped) return false;
     std::vector<Part> parts = evaluate_parts(spec, inputs, seed, look_alpha(look));
     if (st.parts.size() == parts.size())
       for (std::size_t i = 0; i < parts.size(); ++i)
@@ -117,7 +121,11 @@ public:
     if (st.settled) return false;
     const double ratio = settling_ratio(parts);
     st.claim.needed = needed_text(ratio, look);
-    return ratio <= kFutile;
+    st.stopped = ratio > kFutile;
+    if (st.stopped) return false;
+    for (const auto& p : parts)
+      if (p.verdict == Verdict::Inconclusive) undecided.push_back(p);
+    return true;
   }
   [[nodiscard]] Claim claim(const std::string& id) const { return states_.at(id).claim; }
 
@@ -136,7 +144,7 @@ private:
   struct State {
     std::vector<Part> parts;
     Claim claim;
-    bool settled = false;
+    bool settled = false, stopped = false;
   };
   std::map<std::string, State> states_;
 };
@@ -237,14 +245,16 @@ std::string decide_section(const std::vector<Claim>& claims, int looks, const Tr
   for (int k = 0; k < looks; ++k)
     s << (k ? ", " : "") << std::int64_t{base.buffon} * look_factor(k);
   s << ", the other papers' counts by the same factors. A look runs only what a claim still asks "
-       "trials for: a figure of paper 000 (its later trials added to the earlier ones, keyed by "
-       "their index), or a whole family of the others (rerun at the new count: seconds). After "
-       "each look every claim not yet settled is evaluated again; a part whose interval decides "
-       "it keeps that look's figure and verdict, and a claim is settled once its combined "
-       "verdict is decided (holds, does not hold or partly: none can change as more parts "
-       "decide). A claim that would need more than 16 times its look's trials (its estimate "
-       "below) stops asking for them. The looks end when nothing asks, or when the next would "
-       "pass the budget.\n\n"
+       "trials for: in a figure of paper 000, the arenas whose trials its undecided parts "
+       "resample (their later trials added to the earlier ones, keyed by their index; so a "
+       "figure's arenas can end at different counts, its CSV's trials column), or a whole family "
+       "of the others (rerun at the new count: seconds). After each look every claim still "
+       "asking is evaluated again; a part whose interval decides it keeps that look's figure and "
+       "verdict, and a claim is settled once its combined verdict is decided (holds, does not "
+       "hold or partly: none can change as more parts decide). A claim that would need more "
+       "than 16 times its look's trials (its estimate below) stops asking for them and keeps "
+       "that look's verdict. The looks end when nothing asks, or when the next would pass the "
+       "budget.\n\n"
     << "The error across the repeated looks: alpha spending over an open-ended series of looks. "
        "Look k (from 0) evaluates at alpha_k = 0.05 / ((k + 1)(k + 2)) per claim (0.025, "
        "0.0083, 0.0042, 0.0025, ...), a part of a claim of m parts at 1 - alpha_k / m; the "
@@ -392,8 +402,8 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
       ran.push_back({&e, e.make(o)});
 
   // The looks (one without --decide): look k runs what still has a claim asking for trials, at
-  // 2^k times the scale's counts (paper 000 figure by figure, its trials added to the earlier
-  // looks'; the others whole).
+  // 2^k times the scale's counts (paper 000 figure by figure and within a figure only the arenas
+  // that undecided parts read, its trials added to the earlier looks'; the others whole).
   std::vector<std::pair<PaperRun*, std::string>> running; // the next look's units
   for (const auto& p : ran)
     for (const auto& unit : p.run->units()) running.emplace_back(p.run.get(), unit);
@@ -412,7 +422,10 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
     if (o.decide && runner.root()) {
       std::cerr << "reproduce: look " << look + 1 << ", " << factor
                 << " times the first look's trials, running:";
-      for (const auto& [paper, unit] : running) std::cerr << ' ' << unit;
+      for (const auto& [paper, unit] : running) {
+        const std::string kept = paper->narrowed_text(unit);
+        std::cerr << ' ' << unit << (kept.empty() ? "" : " (" + kept + ")");
+      }
       std::cerr << '\n';
     }
     for (const auto& [paper, unit] : running) {
@@ -426,18 +439,24 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
     if (!o.decide) break;
     // Decide what this look can (rank 0); the units whose claims still ask for trials run again.
     std::set<std::string> open;
+    std::map<std::string, std::vector<Part>> undecided; // per open unit
+    std::map<std::string, double> share;                // the next run's share of its last
     if (runner.root()) {
       const ClaimInputs inputs = inputs_now();
       for (const auto& p : ran)
         for (const auto& spec : p.entry->claims()) {
           const std::string unit = p.run->unit_of(spec);
-          if (unit_look[unit] == look && settling.look(spec, inputs, o.seed, look))
+          if (unit_look[unit] == look && settling.look(spec, inputs, o.seed, look, undecided[unit]))
             open.insert(unit);
         }
+      for (const auto& p : ran)
+        for (const auto& unit : p.run->units())
+          if (open.count(unit) > 0) share[unit] = p.run->narrow(unit, undecided[unit]);
     }
     // The next look's budget: its trials within a trial budget; within a time budget, its time
-    // predicted from each unit's last (paper 000's added trials cost as many as the last look's,
-    // a family's rerun twice its last), within what is left.
+    // predicted from each unit's last: twice its time (paper 000's added trials are twice the
+    // last look's, a family's rerun is at twice the counts), times the share of the unit that
+    // the undecided parts still read (PaperRun::narrow), within what is left.
     const bool next_fits = [&] {
       if (look + 1 >= kMaxLooks || std::int64_t{base.buffon} * look_factor(look + 1) > 100000)
         return false;
@@ -448,7 +467,7 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
           std::chrono::duration<double>(std::chrono::steady_clock::now() - reproduce_started)
               .count();
       double next = 0;
-      for (const auto& unit : open) next += unit_cost[unit] * 2;
+      for (const auto& unit : open) next += unit_cost[unit] * 2 * share[unit];
       return spent + next <= o.budget_seconds;
     }();
     std::vector<std::pair<PaperRun*, std::string>> next;

@@ -93,6 +93,59 @@ TEST_CASE("decide: paper 000's trials added in batches give the single run's fig
     CHECK(fig14_added.rows[k].buffon_median == fig14.rows[k].buffon_median);
 }
 
+TEST_CASE("decide: a look extends only the arenas asked for, each as its own run would") {
+  antkit::algorithms::Runner runner;
+  runner.threads = 2;
+  ex::BuffonFigureParams p;
+  p.figure = 8;
+  p.steps = 1500;
+  p.trials = 2;
+  const auto two = ex::run_buffon_figure(p, runner);
+  p.trials = 4;
+  const auto four = ex::run_buffon_figure(p, runner);
+  ex::BuffonFigureTrials t(p);
+  REQUIRE(t.arenas() == four.rows.size());
+  REQUIRE(t.arenas() >= 3);
+  t.extend(2, runner);
+  std::vector<bool> asked(t.arenas(), false);
+  asked[0] = asked[2] = true;
+  t.extend(4, asked, runner);
+  CHECK(t.trials() == 4);
+  const auto mixed = t.finish();
+  CHECK(mixed.params.trials == 4);
+  REQUIRE(mixed.rows.size() == four.rows.size());
+  for (std::size_t k = 0; k < mixed.rows.size(); ++k) {
+    INFO("arena " << k);
+    const auto& want = asked[k] ? four.rows[k] : two.rows[k];
+    CHECK(mixed.rows[k].trials == (asked[k] ? 4 : 2));
+    CHECK(mixed.rows[k].nbc_trials == want.nbc_trials);
+    CHECK(mixed.rows[k].nbc_median == want.nbc_median);
+  }
+  // The CSV says each row's count; a figure at one count says that count on every row.
+  const std::string csv = ex::buffon_figure_csv(mixed);
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line); // header
+  for (std::size_t k = 0; std::getline(lines, line); ++k) {
+    INFO(line);
+    // series,x,"spec",width,area,trials,...: the third field after the quoted spec.
+    std::istringstream after(line.substr(line.rfind('"') + 2));
+    std::string width, area, trials;
+    std::getline(after, width, ',');
+    std::getline(after, area, ',');
+    std::getline(after, trials, ',');
+    CHECK(trials == std::to_string(asked[k] ? 4 : 2));
+  }
+  // Then every arena to 4: the one run's figure, hash included.
+  t.extend(4, runner);
+  const auto all = t.finish();
+  CHECK(all.hash == four.hash);
+  CHECK(ex::buffon_figure_csv(all) == ex::buffon_figure_csv(four));
+  // One flag per arena.
+  CHECK_THROWS_AS(t.extend(6, std::vector<bool>(t.arenas() + 1, true), runner),
+                  std::invalid_argument);
+}
+
 TEST_CASE("decide: the looks settle claims, say when, and the bytes do not depend on the threads",
           "[slow]") {
   const fs::path base = scratch("threads");

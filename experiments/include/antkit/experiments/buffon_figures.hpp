@@ -53,6 +53,9 @@ struct BuffonFigureRow {
   BuffonArena arena;
   double area = 0, nbc_median = 0, nbc_q1 = 0, nbc_q3 = 0, closed_form_median = 0,
          blocked_median = 0;
+  // The row's trials: the figure's count, or under `reproduce --decide` the arena's own (a look
+  // extends only the arenas a claim still asks for).
+  std::int64_t trials = 0;
   // Not in the CSV: the median length of visit 1, and Buffon's efficiency nBC pi area / (2 L1)
   // at the medians (1 for an ideal needle count; below 1 where trails blend).
   double length1_median = 0, efficiency = 0;
@@ -82,7 +85,15 @@ public:
   explicit BuffonFigureTrials(const BuffonFigureParams& params);
   // Runs trials [trials(), trials) of every arena (none when trials <= trials()).
   void extend(std::int64_t trials, const algorithms::Runner& runner);
-  [[nodiscard]] std::int64_t trials() const noexcept { return have_; }
+  // Runs trials [trials(k), trials) of the arenas k whose flag is set (one flag per arena, in row
+  // order; std::invalid_argument otherwise): `reproduce --decide` extends only the arenas its
+  // undecided claims read. Every arena's trials are keyed by their index alone, so an arena
+  // extended to n trials holds what one run of n gives it; finish()'s rows then carry their own
+  // counts (BuffonFigureRow::trials) and params.trials is the largest.
+  void extend(std::int64_t trials, const std::vector<bool>& arenas,
+              const algorithms::Runner& runner);
+  [[nodiscard]] std::int64_t trials() const noexcept; // the most any arena has
+  [[nodiscard]] std::size_t arenas() const noexcept { return arenas_.size(); }
   [[nodiscard]] BuffonFigure finish() const;
 
 private:
@@ -90,7 +101,7 @@ private:
   std::vector<BuffonArena> arenas_;
   std::vector<double> areas_;
   std::vector<std::vector<algorithms::Payload>> payloads_; // [arena][trial], rank 0
-  std::int64_t have_ = 0;
+  std::vector<std::int64_t> have_;                         // per arena
 };
 [[nodiscard]] std::string buffon_figure_csv(const BuffonFigure& f);
 [[nodiscard]] Figure buffon_figure_plot(const BuffonFigure& f);

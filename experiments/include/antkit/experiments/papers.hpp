@@ -56,6 +56,17 @@ public:
   // rank calls it; the results are rank 0's).
   virtual void run(const std::string& unit, const Trials& trials, int factor,
                    const algorithms::Runner& runner) = 0;
+  // Under --decide, before a look reruns `unit` (rank 0 only): the parts still undecided of the
+  // claims that read it. A paper may then run only what they read (paper 000: the arenas whose
+  // trials are their samples); run() stays a collective, so it must make every rank agree on what
+  // it runs (Runner::any). Returns the next run's work as a share of the unit's last run's
+  // (the time budget's prediction); the default runs the whole unit again: 1.
+  virtual double narrow(const std::string& /*unit*/, const std::vector<Part>& /*undecided*/) {
+    return 1.0;
+  }
+  // What narrow() kept of `unit` for its next run, for the progress line ("3 of 17 arenas"), or
+  // "" for all of it (rank 0).
+  [[nodiscard]] virtual std::string narrowed_text(const std::string& /*unit*/) const { return {}; }
   // Its results, for its claims (rank 0).
   virtual void inputs(ClaimInputs& in) const = 0;
   // The counts a unit ran at `factor`, in words (a claim's "trials" under --decide).
