@@ -43,7 +43,23 @@ std::string timestamp_property() {
 }
 const std::string kInts = R"({"type":"array","items":{"type":"integer"}})";
 
-std::string schema_text(std::string_view name) {
+} // namespace
+
+std::string mcap_schema(std::string_view name) {
+  if (name == "foxglove.Grid") {
+    const std::string count = R"({"type":"integer","minimum":0})";
+    return object_schema(name,
+                         timestamp_property() + R"(,"frame_id":{"type":"string"},"pose":)" +
+                             pose_schema() + R"(,"column_count":)" + count +
+                             R"(,"cell_size":{"type":"object","properties":{"x":{"type":"number"},)"
+                             R"("y":{"type":"number"}}},"row_stride":)" +
+                             count + R"(,"cell_stride":)" + count +
+                             R"(,"fields":{"type":"array","items":{"type":"object","properties":{)"
+                             R"("name":{"type":"string"},"offset":)" +
+                             count +
+                             R"(,"type":{"type":"integer","minimum":0,"maximum":8}}}},)"
+                             R"("data":{"type":"string","contentEncoding":"base64"})");
+  }
   if (name == "foxglove.PoseInFrame")
     return object_schema(name, timestamp_property() + R"(,"frame_id":{"type":"string"},"pose":)" +
                                    pose_schema());
@@ -103,6 +119,8 @@ std::string schema_text(std::string_view name) {
                 R"("received":{"type":"string","contentEncoding":"base64"},)"
                 R"("t_ns":{"type":["integer","null"]}}}})");
 }
+
+namespace {
 
 // JSON text, written by hand so that every byte is fixed by the values (strings as the log
 // writes its byte strings, log.hpp).
@@ -354,7 +372,7 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
         "foxglove.Log", "foxglove.SceneUpdate", "antkit.ReplayedStep"}) {
     if (std::string_view(name) == "antkit.ReplayedStep" && replay == nullptr) continue;
     if (std::string_view(name) == "foxglove.SceneUpdate" && walls.empty()) continue;
-    schema_ids.emplace_back(name, w.add_schema(name, "jsonschema", schema_text(name)));
+    schema_ids.emplace_back(name, w.add_schema(name, "jsonschema", mcap_schema(name)));
   }
   const auto id_of = [&](std::string_view name) -> std::uint16_t {
     for (const auto& [known, id] : schema_ids)

@@ -1,12 +1,15 @@
 // `antkit bag info` and `antkit buffon-from-logs --topic` on ROS 2 bags written by independent
 // writers under node (tests/support/write_bags.mjs): walk 1 along the x axis, walk 2 a zigzag
 // crossing it nine times, in every storage; the JSON is the same whichever storage holds a walk.
+#include "mcap_reader.hpp"
 #include "ros_bags.hpp"
 #include "run_antkit.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
@@ -179,4 +182,54 @@ TEST_CASE("antkit check cover --bag: each topic one robot, collisions at their b
     CHECK_THAT(r.err, Contains(says));
     CHECK(r.out.empty());
   }
+}
+
+TEST_CASE("antkit bag export: the poses, the map and the check's verdict at its bag time",
+          "[cli][bag]") {
+  const std::string d = bags();
+  if (d.empty()) return;
+  std::ofstream(d + "/free.yaml") << "image: free.pgm\nresolution: 0.5\norigin: [-1.0, -2.0, 0.0]\n"
+                                     "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  std::ofstream(d + "/free.pgm", std::ios::binary)
+      << std::string("P5\n4 2\n255\n") + std::string(8, '\xfe');
+  const std::string out = d + "/collide.mcap";
+  const auto r = run_antkit("bag export '" + d + "/cover_collide.mcap' --map '" + d +
+                            "/free.yaml' --topic /r0/pose --topic /r1/pose --check cover "
+                            "--sensor 1 --format json --out '" +
+                            out + "'");
+  INFO(r.err);
+  CHECK(r.status == 1); // the check fails; the file is whole
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["check_ok"] == false);
+  CHECK(j["channels"]["/map"] == 1);
+  CHECK(j["channels"]["/robot1/pose"] == 2);
+  // /log's ERROR is the collision, at its bag time (check cover --bag's first_violation_time_ns).
+  std::ifstream in(out, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto file = antkit::test::mcap::read(bytes); // every CRC, index and offset checked
+  std::size_t errors = 0;
+  for (const auto& m : file.messages)
+    if (file.channels.at(m.channel_id).topic == "/log" &&
+        nlohmann::json::parse(m.data)["level"] == 4) {
+      ++errors;
+      CHECK(m.log_time == 1700000000050000000ULL);
+      CHECK_THAT(nlohmann::json::parse(m.data)["message"].get<std::string>(),
+                 Contains("another robot stands on this cell"));
+    }
+  CHECK(errors == 1);
+  // The same bytes twice (no clock in them); a refused check writes nothing.
+  (void)run_antkit("bag export '" + d + "/cover_collide.mcap' --map '" + d +
+                   "/free.yaml' --topic /r0/pose --topic /r1/pose --check cover "
+                   "--sensor 1 --out '" +
+                   d + "/collide2.mcap'");
+  std::ifstream in2(d + "/collide2.mcap", std::ios::binary);
+  CHECK(std::string((std::istreambuf_iterator<char>(in2)), std::istreambuf_iterator<char>()) ==
+        bytes);
+  const auto refused = run_antkit("bag export '" + d + "/cover.mcap' --map '" + d +
+                                  "/free.yaml' --topic /r0/pose --topic /r1/pose --check stc "
+                                  "--out '" +
+                                  d + "/refused.mcap'");
+  CHECK(refused.status == 2);
+  CHECK_THAT(refused.err, Contains("one --topic"));
+  CHECK_FALSE(std::filesystem::exists(d + "/refused.mcap"));
 }

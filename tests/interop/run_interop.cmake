@@ -4,6 +4,7 @@
 #   replay --mcap          an identical replay: exit 0, recorded and replayed side by side
 #   replay --mcap (edited) cmd[1] of step 40 edited: exit 1, one ERROR log at step 40
 #   export mcap (bad log)  exit 2, a located error, no file
+#   bag export             a ROS 2 bag's poses, the map and a check's result (both checks)
 # Fails when the node packages are not installed (run `scripts/bootstrap.sh --node-packages` or
 # `npm ci`); skipped only when node itself is absent.
 # Inputs: -DANTKIT=... -DNODE=... (empty when not found) -DSRC=<checkout> -DOUT=<scratch dir>
@@ -52,3 +53,17 @@ endif()
 if(EXISTS ${OUT}/bad.mcap)
   message(FATAL_ERROR "interop: a malformed log left ${OUT}/bad.mcap")
 endif()
+# A ROS 2 bag back out (antkit bag export): bags written by the independent writers
+# (tests/support/write_bags.mjs), two robots meeting head on over a 4 x 2 free map (plain PGM):
+# exit 1 (the check fails; the file is whole), the map and the visits as foxglove.Grid.
+run(0 ${NODE} ${SRC}/tests/support/write_bags.mjs ${OUT}/bags)
+file(WRITE ${OUT}/bags/free.yaml "image: free.pgm\nresolution: 0.5\norigin: [-1.0, -2.0, 0.0]\n"
+                                 "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n")
+file(WRITE ${OUT}/bags/free.pgm "P2\n4 2\n255\n254 254 254 254\n254 254 254 254\n")
+run(1 ${ANTKIT} bag export ${OUT}/bags/cover_collide.mcap --map ${OUT}/bags/free.yaml
+    --topic /r0/pose --topic /r1/pose --check cover --sensor 1 --out ${OUT}/bag_cover.mcap)
+run(0 ${check} ${OUT}/bag_cover.mcap /map=1 /visits=1 /log=2 /robot0/pose=2 /robot0/trail=2
+    /robot1/pose=2 /robot1/trail=2)
+run(0 ${ANTKIT} bag export ${OUT}/bags/tour.mcap --map ${OUT}/bags/free.yaml --topic /pose
+    --check stc --out ${OUT}/bag_tour.mcap)
+run(0 ${check} ${OUT}/bag_tour.mcap /map=1 /visits=1 /log=2 /robot0/pose=4)

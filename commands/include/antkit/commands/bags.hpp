@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace antkit::commands {
@@ -102,5 +103,43 @@ struct CoverBagCheck {
 // "first_violation_time_ns" (null when the run passes or the broken rule is about the whole run).
 [[nodiscard]] nlohmann::json check_cover_bag_json(const CoverBagCheck& check,
                                                   const std::string& map);
+
+// `antkit bag export`: a bag's pose topics back out to MCAP for Foxglove, with the map and, when
+// asked, a check's result (issue 42, "Back out"). Channels (schema encoding jsonschema, message
+// encoding json; the schemas are devices::mcap_schema's), every message at its pose's time:
+//   /map              foxglove.Grid         the map at the first pose's time: one UINT8 field,
+//                                           "occupied" (0 free, 100 otherwise), frame "map", its
+//                                           pose the map's origin, cells of its resolution
+//   /robotI/pose      foxglove.PoseInFrame  topic I's poses (frame "map": the poses are taken to be
+//   /robotI/trail     foxglove.PosesInFrame in the map's frame, as the checks take them); the trail
+//                                           at most 100 messages, each at most 1000 poses
+//   /visits           foxglove.Grid         at the last pose's time: "entries", the times robots
+//                                           entered each cell (capped at 255; the checks' cells)
+//   /log              foxglove.Log          which topic is which robot (INFO, first time); with a
+//                                           check, its result: INFO when it passes (last time), or
+//                                           ERROR with the first broken rule at its bag time
+// `check` is "" (none), "stc" (one topic; check_stc_bag, exactly once from the first pose's
+// cell) or "cover" (check_cover_bag with `sensor`). The file is written whole or not at all, also
+// when the check fails (BagMcapSummary::check_ok says so); refusals are the checks' and the
+// readers' (InputError), before any file.
+struct BagMcapRequest {
+  std::string bag, map_file, out;
+  std::vector<std::string> topics;
+  io::bag::Stamp stamp = io::bag::Stamp::bag;
+  std::string child_frame = "base_link";
+  std::string check; // "", "stc" or "cover"
+  std::int64_t sensor = -1;
+};
+struct BagMcapSummary {
+  std::uint64_t bytes = 0, messages = 0;
+  std::vector<std::pair<std::string, std::uint64_t>> channels; // topic, messages
+  bool check_ok = true;
+  std::string check_text;
+};
+[[nodiscard]] BagMcapSummary export_bag_mcap(const BagMcapRequest& request);
+// {"bag", "map", "out", "bytes", "messages", "channels": {topic: messages}, "topics", "check",
+// "check_ok", "check_result"} (the last three null without a check).
+[[nodiscard]] nlohmann::json bag_mcap_json(const BagMcapRequest& request,
+                                           const BagMcapSummary& summary);
 
 } // namespace antkit::commands

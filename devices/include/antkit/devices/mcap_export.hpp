@@ -67,5 +67,9 @@ std::string mcap_of_log(LogReader& reader, const std::string& name, const McapOp
                         const ReplayResult* replay = nullptr, McapSummary* summary = nullptr);
 
 std::string base64(std::string_view bytes);
+// The JSON Schema text of a channel's schema: foxglove.PoseInFrame, PosesInFrame, SceneUpdate, Log
+// and Grid (the fields antkit fills, named and typed as @foxglove/schemas' jsonschema), and
+// antkit.Step, ReplayedStep and Exchanges (any other name: Exchanges').
+std::string mcap_schema(std::string_view name);
 
 } // namespace antkit::devices
