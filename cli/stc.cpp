@@ -3,7 +3,10 @@
 //
 //   antkit stc --map FILE --variant offline|online|ant|ant-edge|full [--start X,Y]
 //              [--noise P --seed S] [--format table|json] [--path-out FILE.csv|FILE.bin]
-//              [--svg FILE] [--png FILE]
+//              [--svg FILE] [--png FILE] [--mcap FILE.mcap]
+//
+// --mcap writes the tour for Foxglove (commands/stc_mcap.hpp: the map, the spanning tree, the pose
+// step by step, the verdict on /log); it keeps the path in memory, so maps up to 2^22 sub-cells.
 //
 // At scale (issue 15): the tour is streamed as it is made, never held (unless a picture is asked
 // for): `--format json` writes the path into stdout as the run goes, `--path-out` into a file (CSV
@@ -22,6 +25,7 @@
 #include "stc_options.hpp"
 
 #include <antkit/commands/json.hpp>
+#include <antkit/commands/stc_mcap.hpp>
 #include <antkit/experiments/stc_tour.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/stc/world.hpp>
@@ -45,7 +49,7 @@ struct StcOptions {
   std::string start;
   std::string noise;
   std::uint64_t seed = 0;
-  std::string svg, png, path_out;
+  std::string svg, png, path_out, mcap;
   Format format = Format::Table;
 };
 
@@ -65,7 +69,8 @@ void run_stc_command(const StcOptions& o) {
   out.json = json ? &std::cout : nullptr;
   out.path_file = o.path_out;
   out.binary_path = ext == ".bin";
-  out.keep_path = !o.svg.empty() || !o.png.empty();
+  out.keep_path = !o.svg.empty() || !o.png.empty() || !o.mcap.empty();
+  if (!o.mcap.empty()) antkit::commands::check_stc_mcap_size(map.cells);
   if (!o.noise.empty()) out.seed = o.seed;
   out.start_where = o.start.empty() ? o.map : "--start"; // the option or the file it came from
   const RunResult r =
@@ -73,6 +78,9 @@ void run_stc_command(const StcOptions& o) {
   if (!o.svg.empty() || !o.png.empty())
     antkit::experiments::save_stc_tour_figure(
         map.cells, r, std::filesystem::path(o.map).filename().string(), o.svg, o.png);
+  if (!o.mcap.empty())
+    (void)antkit::commands::write_stc_mcap(map, r, std::filesystem::path(o.map).filename().string(),
+                                           o.mcap);
   if (!json) {
     nlohmann::json j = antkit::commands::stc_json(
         r, map.cells.width(), map.cells.height(), start,
@@ -114,6 +122,9 @@ void register_stc(CLI::App& app) {
   cmd->add_option("--path-out", o->path_out,
                   "Stream the tour into FILE.csv (x,y lines) or FILE.bin (two bits per move, "
                   "stc/path_format.hpp); antkit check stc reads both");
+  cmd->add_option("--mcap", o->mcap,
+                  "Write the tour as MCAP for Foxglove: the map, the spanning tree, the pose at "
+                  "each step (10 a second), the verdict (maps up to 2^22 sub-cells)");
   antkit::cli::add_format_option(*cmd, o->format);
   cmd->callback([o] { run_stc_command(*o); });
 }

@@ -1,4 +1,6 @@
 // A bag's poses back out to MCAP, with the map and a check's result (bags.hpp, export_bag_mcap).
+#include "foxglove_json.hpp"
+
 #include <algorithm>
 #include <antkit/commands/bags.hpp>
 #include <antkit/devices/mcap_export.hpp>
@@ -16,45 +18,8 @@ namespace {
 
 using kernel::InputError;
 namespace mcap = io::mcap;
-
-nlohmann::json stamp_of(std::uint64_t t) {
-  return {{"sec", t / 1000000000U}, {"nsec", t % 1000000000U}};
-}
-std::uint64_t at_or_zero(std::int64_t t) {
-  return t < 0 ? 0 : static_cast<std::uint64_t>(t);
-}
-
-nlohmann::json pose_json(double x, double y, double yaw) {
-  return {{"position", {{"x", x}, {"y", y}, {"z", 0.0}}},
-          {"orientation",
-           {{"x", 0.0}, {"y", 0.0}, {"z", std::sin(yaw / 2)}, {"w", std::cos(yaw / 2)}}}};
-}
-
-// A foxglove.Grid of one UINT8 field over the map, its row 0 the map's bottom row (Grid rows
-// count up along y from the pose, antkit's rows down from the first): `value(x, y)` with y down.
-template <class Value>
-nlohmann::json grid_json(const maps::GridMap& map, std::uint64_t t, const std::string& field,
-                         Value value) {
-  const std::int32_t w = map.cells.width(), h = map.cells.height();
-  std::string bytes;
-  bytes.reserve(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-  for (std::int32_t r = 0; r < h; ++r)
-    for (std::int32_t x = 0; x < w; ++x) bytes.push_back(static_cast<char>(value(x, h - 1 - r)));
-  return {{"timestamp", stamp_of(t)},
-          {"frame_id", "map"},
-          {"pose", pose_json(map.origin_x, map.origin_y, map.origin_yaw)},
-          {"column_count", w},
-          {"cell_size", {{"x", map.resolution}, {"y", map.resolution}}},
-          {"row_stride", w},
-          {"cell_stride", 1},
-          {"fields", nlohmann::json::array({{{"name", field}, {"offset", 0}, {"type", 1}}})},
-          {"data", devices::base64(bytes)}};
-}
-
-nlohmann::json log_json(std::uint64_t t, int level, const std::string& message) {
-  return {{"timestamp", stamp_of(t)}, {"level", level}, {"message", message},
-          {"name", "antkit"},         {"file", ""},     {"line", 0}};
-}
+using foxglove::at_or_zero, foxglove::grid_json, foxglove::log_json, foxglove::pose_json,
+    foxglove::stamp_of;
 
 } // namespace
 
@@ -149,7 +114,7 @@ BagMcapSummary export_bag_mcap(const BagMcapRequest& r) {
               }()));
   for (std::size_t i = 0; i < tracks.size(); ++i) {
     const auto& poses = tracks[i].poses;
-    // The trail: at most 100 messages over the run, each at most 1000 poses (its last the
+    // The trail: every ceil(n / 100)-th pose and the last, each at most 1000 poses (its last the
     // message's own), as antkit's own logs' /trail.
     const std::size_t every = std::max<std::size_t>(1, (poses.size() + 99) / 100);
     for (std::size_t k = 0; k < poses.size(); ++k) {

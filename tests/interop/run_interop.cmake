@@ -5,6 +5,7 @@
 #   replay --mcap (edited) cmd[1] of step 40 edited: exit 1, one ERROR log at step 40
 #   export mcap (bad log)  exit 2, a located error, no file
 #   bag export             a ROS 2 bag's poses, the map and a check's result (both checks)
+#   stc --mcap             an STC tour: the map, the spanning tree, a pose a step
 # Fails when the node packages are not installed (run `scripts/bootstrap.sh --node-packages` or
 # `npm ci`); skipped only when node itself is absent.
 # Inputs: -DANTKIT=... -DNODE=... (empty when not found) -DSRC=<checkout> -DOUT=<scratch dir>
@@ -67,3 +68,8 @@ run(0 ${check} ${OUT}/bag_cover.mcap /map=1 /visits=1 /log=2 /robot0/pose=2 /rob
 run(0 ${ANTKIT} bag export ${OUT}/bags/tour.mcap --map ${OUT}/bags/free.yaml --topic /pose
     --check stc --out ${OUT}/bag_tour.mcap)
 run(0 ${check} ${OUT}/bag_tour.mcap /map=1 /visits=1 /log=2 /robot0/pose=4)
+# An STC tour (antkit stc --mcap): the map and the tree at time 0, a pose a step (32 x 32 free:
+# 1024 sub-cells, ending beside the start), the trail every 11th step, the run and the verdict.
+run(0 ${ANTKIT} stc --map ${SRC}/data/maps/movingai/empty-32-32.map --variant ant
+    --mcap ${OUT}/stc.mcap)
+run(0 ${check} ${OUT}/stc.mcap /map=1 /tree=1 /pose=1024 /trail=94 /log=2)

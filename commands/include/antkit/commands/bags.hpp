@@ -112,7 +112,8 @@ struct CoverBagCheck {
 //                                           pose the map's origin, cells of its resolution
 //   /robotI/pose      foxglove.PoseInFrame  topic I's poses (frame "map": the poses are taken to be
 //   /robotI/trail     foxglove.PosesInFrame in the map's frame, as the checks take them); the trail
-//                                           at most 100 messages, each at most 1000 poses
+//                                           every ceil(n / 100)-th pose and the last, each at most
+//                                           1000
 //   /visits           foxglove.Grid         at the last pose's time: "entries", the times robots
 //                                           entered each cell (capped at 255; the checks' cells)
 //   /log              foxglove.Log          which topic is which robot (INFO, first time); with a

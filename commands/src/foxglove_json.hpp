@@ -1,0 +1,53 @@
+#pragma once
+// Foxglove messages as JSON for the commands' MCAP writers (bag_mcap.cpp, stc_mcap.cpp): the
+// fields devices::mcap_schema's texts name, built with nlohmann (keys sorted, numbers round-trip:
+// the bytes depend on the values alone).
+#include <antkit/devices/mcap_export.hpp>
+#include <antkit/maps/map_io.hpp>
+#include <cmath>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace antkit::commands::foxglove {
+
+inline nlohmann::json stamp_of(std::uint64_t t) {
+  return {{"sec", t / 1000000000U}, {"nsec", t % 1000000000U}};
+}
+inline std::uint64_t at_or_zero(std::int64_t t) {
+  return t < 0 ? 0 : static_cast<std::uint64_t>(t);
+}
+
+inline nlohmann::json pose_json(double x, double y, double yaw) {
+  return {{"position", {{"x", x}, {"y", y}, {"z", 0.0}}},
+          {"orientation",
+           {{"x", 0.0}, {"y", 0.0}, {"z", std::sin(yaw / 2)}, {"w", std::cos(yaw / 2)}}}};
+}
+
+// A foxglove.Grid of one UINT8 field over the map, its row 0 the map's bottom row (Grid rows
+// count up along y from the pose, antkit's rows down from the first): `value(x, y)` with y down.
+template <class Value>
+inline nlohmann::json grid_json(const maps::GridMap& map, std::uint64_t t, const std::string& field,
+                                Value value) {
+  const std::int32_t w = map.cells.width(), h = map.cells.height();
+  std::string bytes;
+  bytes.reserve(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  for (std::int32_t r = 0; r < h; ++r)
+    for (std::int32_t x = 0; x < w; ++x) bytes.push_back(static_cast<char>(value(x, h - 1 - r)));
+  return {{"timestamp", stamp_of(t)},
+          {"frame_id", "map"},
+          {"pose", pose_json(map.origin_x, map.origin_y, map.origin_yaw)},
+          {"column_count", w},
+          {"cell_size", {{"x", map.resolution}, {"y", map.resolution}}},
+          {"row_stride", w},
+          {"cell_stride", 1},
+          {"fields", nlohmann::json::array({{{"name", field}, {"offset", 0}, {"type", 1}}})},
+          {"data", devices::base64(bytes)}};
+}
+
+inline nlohmann::json log_json(std::uint64_t t, int level, const std::string& message) {
+  return {{"timestamp", stamp_of(t)}, {"level", level}, {"message", message},
+          {"name", "antkit"},         {"file", ""},     {"line", 0}};
+}
+
+} // namespace antkit::commands::foxglove
