@@ -234,8 +234,13 @@ std::optional<std::int64_t> StcBagCheck::violation_ns() const {
 StcBagCheck check_stc_bag(const std::string& map_file, const std::string& bag,
                           const std::string& topic, io::bag::Stamp stamp,
                           const std::string& child_frame, const testing::StcCheckRequest& request) {
+  return check_stc_bag(maps::load_map(map_file), map_file, bag, topic, stamp, child_frame, request);
+}
+
+StcBagCheck check_stc_bag(maps::GridMap map, const std::string& map_file, const std::string& bag,
+                          const std::string& topic, io::bag::Stamp stamp,
+                          const std::string& child_frame, const testing::StcCheckRequest& request) {
   StcBagCheck out;
-  maps::GridMap map = maps::load_map(map_file);
   out.track = io::bag::read_poses(bag, topic, stamp, child_frame);
   const std::int64_t width = map.cells.width(), height = map.cells.height();
   testing::TourFile tour;

@@ -4,6 +4,7 @@
 // commands make from their options and the JSON of their results.
 #include <antkit/devices/odometry.hpp>
 #include <antkit/io/bag.hpp>
+#include <antkit/maps/map_io.hpp>
 #include <antkit/testing/stc_audit.hpp>
 #include <cstdint>
 #include <nlohmann/json.hpp>
@@ -63,6 +64,12 @@ struct StcBagCheck {
 [[nodiscard]] StcBagCheck check_stc_bag(const std::string& map_file, const std::string& bag,
                                         const std::string& topic, io::bag::Stamp stamp,
                                         const std::string& child_frame,
+                                        const testing::StcCheckRequest& request);
+// The same on a map in memory (the Python package's Map), `map_name` naming it in messages: its
+// resolution and origin are the map's own (1 m and 0 for a map made from an array).
+[[nodiscard]] StcBagCheck check_stc_bag(maps::GridMap map, const std::string& map_name,
+                                        const std::string& bag, const std::string& topic,
+                                        io::bag::Stamp stamp, const std::string& child_frame,
                                         const testing::StcCheckRequest& request);
 // check_stc_json's keys, and "bag", "topic", "type", "stamp", "poses", "first_violation_time_ns"
 // (null when the tour passes or the broken rule is about the whole tour).
