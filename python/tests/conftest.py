@@ -2,6 +2,7 @@
 binding against, and the repository's maps (ANTKIT_MAPS_DIR)."""
 import json
 import os
+import shutil
 import subprocess
 from pathlib import Path
 
@@ -16,6 +17,7 @@ settings.register_profile(
 settings.load_profile("antkit")
 
 CLI = os.environ.get("ANTKIT_CLI", "")
+SOURCE = Path(os.environ.get("ANTKIT_SOURCE_DIR", Path(__file__).resolve().parents[2]))
 MAPS = Path(os.environ.get("ANTKIT_MAPS_DIR", Path(__file__).resolve().parents[2] / "data" / "maps"))
 
 
@@ -38,3 +40,17 @@ def maps_dir():
 def pytest_report_header(config):
     seed = config.getoption("hypothesis_seed", None)
     return f"hypothesis seed: {seed} (ctest passes ANTKIT_HYPOTHESIS_SEED; rerun with --hypothesis-seed={seed})"
+
+
+@pytest.fixture(scope="session")
+def ros_bags(tmp_path_factory):
+    """ROS 2 bags written by independent writers under node (tests/support/write_bags.mjs: what it
+    writes and what the walks are). Skipped, saying so, only where node is absent; node present
+    but its packages missing (`npm ci` not run) is a failure."""
+    if shutil.which("node") is None:
+        pytest.skip("node (Node.js 20) is not installed: no test bags are written")
+    out = tmp_path_factory.mktemp("ros_bags")
+    r = subprocess.run(["node", str(SOURCE / "tests/support/write_bags.mjs"), str(out)],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, f"write_bags.mjs failed (run `npm ci` in the checkout):\n{r.stderr}"
+    return out
