@@ -32,7 +32,7 @@ import decimal
 import numbers
 import operator
 import os
-from collections.abc import Mapping
+from collections.abc import Mapping, Set
 from typing import Any, Iterator, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -113,7 +113,10 @@ def _int(value: Any, name: str, lo: Optional[int] = None, hi: Optional[int] = No
     even 5.0) and never a bool; in [lo, hi] when given."""
     if isinstance(value, (bool, np.bool_)) or not hasattr(type(value), "__index__"):
         raise _error(name, f"expected an integer, not {_show(value)}")
-    v = operator.index(value)
+    try:
+        v = operator.index(value)  # numpy: only integer scalars and 0-d integer arrays have one
+    except TypeError:
+        raise _error(name, f"expected an integer, not {_show(value)}") from None
     if (lo is not None and v < lo) or (hi is not None and v > hi):
         lo_text = "" if lo is None else str(lo)
         hi_text = "" if hi is None else str(hi)
@@ -164,9 +167,12 @@ def _pair(value: Any, name: str) -> Optional[Tuple[int, int]]:
     """None, or a pair (x, y) of integers (a tuple, a list, a numpy array of two integers)."""
     if value is None:
         return None
-    if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 2:
-        raise _error(name, f"expected a pair (x, y) of integers, not {_show(value)}")
-    x, y = value
+    try:
+        if isinstance(value, (str, bytes, Mapping, Set)) or len(value) != 2:
+            raise TypeError
+        x, y = value
+    except (TypeError, ValueError):  # no len(), a 0-d array, a set of one, ...
+        raise _error(name, f"expected a pair (x, y) of integers, not {_show(value)}") from None
     if isinstance(x, (bool, np.bool_)) or isinstance(y, (bool, np.bool_)) or not (
         hasattr(type(x), "__index__") and hasattr(type(y), "__index__")
     ):

@@ -10,6 +10,7 @@
 // has already checked for type (their names begin with '_'), so that pybind11 never answers a
 // caller with its own TypeError; what only C++ can check (sizes, ranges, shapes) is checked here.
 // Every call that runs a tour, a check or a replay releases the GIL while it runs.
+#include <algorithm>
 #include <antkit/commands/bags.hpp>
 #include <antkit/commands/json.hpp>
 #include <antkit/commands/options.hpp>
@@ -99,6 +100,24 @@ std::optional<Cell> optional_cell(const std::optional<std::pair<std::int64_t, st
   return Cell{checked_i32(p->first, where), checked_i32(p->second, where)};
 }
 
+// At most as many positions or points as a tour file may hold (testing's reader).
+constexpr py::ssize_t kMaxRows = py::ssize_t{1} << 28;
+
+// An array's rows [0, n) as C-contiguous T, kChunk rows at a time: a view of any layout (strided,
+// reversed, broadcast) is never copied whole, so what it costs is what the result holds.
+template <class T, class F>
+void for_chunks(const py::array& a, const std::string& what, F&& f) {
+  constexpr py::ssize_t kChunk = py::ssize_t{1} << 16;
+  const py::ssize_t n = a.shape(0);
+  for (py::ssize_t i0 = 0; i0 < n; i0 += kChunk) {
+    const py::ssize_t i1 = std::min(n, i0 + kChunk);
+    const py::object part = a.attr("__getitem__")(py::slice(i0, i1, 1));
+    const auto v = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(part);
+    if (!v) throw InputError(what, "cannot read the array's values as numbers");
+    f(i0, v);
+  }
+}
+
 // An (n, 2) integer array as cells, pairs in x, y order (or row, col with `row_col`).
 std::vector<Cell> cells_from_array(const py::array& a, const char* what, bool row_col) {
   if (a.ndim() != 2 || a.shape(1) != 2)
@@ -108,22 +127,24 @@ std::vector<Cell> cells_from_array(const py::array& a, const char* what, bool ro
   if (kind != 'i' && kind != 'u')
     throw InputError(what, "expected integer pairs (dtype int or uint), not dtype " +
                                std::string(py::str(a.dtype())));
-  const auto v = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
-  if (!v) throw InputError(what, "cannot read the array as 64-bit integers");
-  const auto r = v.unchecked<2>();
+  if (a.shape(0) > kMaxRows)
+    throw InputError(what, std::to_string(a.shape(0)) + " positions, more than 2^28");
   std::vector<Cell> out;
-  out.reserve(static_cast<std::size_t>(r.shape(0)));
-  for (py::ssize_t i = 0; i < r.shape(0); ++i) {
-    const std::int64_t x = r(i, 0), y = r(i, 1);
-    if (x < INT32_MIN || x > INT32_MAX || y < INT32_MIN || y > INT32_MAX) {
-      const std::string where = std::string(what) + "[" + std::to_string(i) + "]";
-      throw InputError(where, "(" + std::to_string(x) + ", " + std::to_string(y) +
-                                  ") is outside [-2^31, 2^31)");
+  out.reserve(static_cast<std::size_t>(a.shape(0)));
+  for_chunks<std::int64_t>(a, what, [&](py::ssize_t i0, const py::array_t<std::int64_t>& v) {
+    const auto r = v.unchecked<2>();
+    for (py::ssize_t i = 0; i < r.shape(0); ++i) {
+      const std::int64_t x = r(i, 0), y = r(i, 1);
+      if (x < INT32_MIN || x > INT32_MAX || y < INT32_MIN || y > INT32_MAX) {
+        const std::string where = std::string(what) + "[" + std::to_string(i0 + i) + "]";
+        throw InputError(where, "(" + std::to_string(x) + ", " + std::to_string(y) +
+                                    ") is outside [-2^31, 2^31)");
+      }
+      Cell c{static_cast<std::int32_t>(x), static_cast<std::int32_t>(y)};
+      if (row_col) std::swap(c.x, c.y);
+      out.push_back(c);
     }
-    Cell c{static_cast<std::int32_t>(x), static_cast<std::int32_t>(y)};
-    if (row_col) std::swap(c.x, c.y);
-    out.push_back(c);
-  }
+  });
   return out;
 }
 
@@ -399,16 +420,19 @@ py::object check_cover_array(const PyMap& m, const py::array& a,
     throw InputError("trace", "no poses: expected at least one tick of at least one robot");
   if (a.shape(1) > kMaxRobots) throw InputError("trace", "more than 65536 robots");
   if (a.shape(0) > kMaxPoses / a.shape(1)) throw InputError("trace", "more than 2^28 poses");
-  const auto v = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
-  if (!v) throw InputError("trace", "cannot read the array as 64-bit integers");
-  const auto r = v.unchecked<3>();
+  // One tick at a time (a broadcast view is not copied whole).
   antkit::testing::CoverTrace trace;
-  trace.robots = static_cast<std::int32_t>(r.shape(1));
-  trace.cells.resize(static_cast<std::size_t>(r.shape(0)));
-  trace.bearings.resize(static_cast<std::size_t>(r.shape(0)));
-  for (py::ssize_t t = 0; t < r.shape(0); ++t)
-    for (py::ssize_t k = 0; k < r.shape(1); ++k) {
-      const std::int64_t x = r(t, k, 0), y = r(t, k, 1), b = r(t, k, 2);
+  trace.robots = static_cast<std::int32_t>(a.shape(1));
+  trace.cells.resize(static_cast<std::size_t>(a.shape(0)));
+  trace.bearings.resize(static_cast<std::size_t>(a.shape(0)));
+  for (py::ssize_t t = 0; t < a.shape(0); ++t) {
+    const py::object tick = a.attr("__getitem__")(t);
+    const auto v =
+        py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(tick);
+    if (!v) throw InputError("trace", "cannot read the array as 64-bit integers");
+    const auto r = v.unchecked<2>();
+    for (py::ssize_t k = 0; k < r.shape(0); ++k) {
+      const std::int64_t x = r(k, 0), y = r(k, 1), b = r(k, 2);
       const auto where = [&] {
         return "trace[" + std::to_string(t) + ", " + std::to_string(k) + "]";
       };
@@ -422,6 +446,7 @@ py::object check_cover_array(const PyMap& m, const py::array& a,
           {static_cast<std::int32_t>(x), static_cast<std::int32_t>(y)});
       trace.bearings[static_cast<std::size_t>(t)].push_back(static_cast<std::uint8_t>(b));
     }
+  }
   nlohmann::json j;
   {
     py::gil_scoped_release release;
@@ -476,16 +501,22 @@ py::dict buffon_from_trails(const py::array& trail1, const py::array& trail2,
     if (a.ndim() != 2 || a.shape(1) != 2)
       throw InputError(what, "expected an (n, 2) array of points, not shape " +
                                  std::string(py::str(a.attr("shape"))));
-    const auto v = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
-    if (!v) throw InputError(what, "cannot read the array as numbers");
-    const auto r = v.unchecked<2>();
+    const auto kind = a.dtype().kind();
+    if (kind != 'i' && kind != 'u' && kind != 'f')
+      throw InputError(what, "expected real coordinates (dtype int, uint or float), not dtype " +
+                                 std::string(py::str(a.dtype())));
+    if (a.shape(0) > kMaxRows)
+      throw InputError(what, std::to_string(a.shape(0)) + " points, more than 2^28");
     std::vector<antkit::kernel::FxPoint> out;
-    out.reserve(static_cast<std::size_t>(r.shape(0)));
-    for (py::ssize_t i = 0; i < r.shape(0); ++i) {
-      const std::string where = std::string(what) + "[" + std::to_string(i) + "]";
-      out.push_back({antkit::geometry::fixed_from_double<antkit::kernel::Fx>(r(i, 0), where),
-                     antkit::geometry::fixed_from_double<antkit::kernel::Fx>(r(i, 1), where)});
-    }
+    out.reserve(static_cast<std::size_t>(a.shape(0)));
+    for_chunks<double>(a, what, [&](py::ssize_t i0, const py::array_t<double>& v) {
+      const auto r = v.unchecked<2>();
+      for (py::ssize_t i = 0; i < r.shape(0); ++i) {
+        const std::string where = std::string(what) + "[" + std::to_string(i0 + i) + "]";
+        out.push_back({antkit::geometry::fixed_from_double<antkit::kernel::Fx>(r(i, 0), where),
+                       antkit::geometry::fixed_from_double<antkit::kernel::Fx>(r(i, 1), where)});
+      }
+    });
     return out;
   };
   const auto p1 = points(trail1, "trail1");
