@@ -55,6 +55,14 @@ struct PyMap {
   std::string source;
 };
 
+// Text for Python: bytes that are not UTF-8 (a message may quote a cut-off token of a file, a
+// bag may name a topic in any bytes) replaced by U+FFFD rather than raising UnicodeDecodeError.
+py::str text(const std::string& s) {
+  PyObject* o = PyUnicode_DecodeUTF8(s.data(), static_cast<Py_ssize_t>(s.size()), "replace");
+  if (!o) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(o);
+}
+
 py::object to_python(const nlohmann::json& j) {
   switch (j.type()) {
   case nlohmann::json::value_t::null:
@@ -68,7 +76,7 @@ py::object to_python(const nlohmann::json& j) {
   case nlohmann::json::value_t::number_float:
     return py::float_(j.get<double>());
   case nlohmann::json::value_t::string:
-    return py::str(j.get_ref<const std::string&>());
+    return text(j.get_ref<const std::string&>());
   case nlohmann::json::value_t::array: {
     py::list out;
     for (const auto& item : j) out.append(to_python(item));
@@ -76,7 +84,7 @@ py::object to_python(const nlohmann::json& j) {
   }
   case nlohmann::json::value_t::object: {
     py::dict out;
-    for (const auto& [key, value] : j.items()) out[py::str(key)] = to_python(value);
+    for (const auto& [key, value] : j.items()) out[text(key)] = to_python(value);
     return out;
   }
   default:
@@ -579,17 +587,17 @@ py::dict read_log(const std::string& path) {
   const auto& h = reader->header();
   py::dict header;
   header["schema"] = h.schema;
-  header["antkit_version"] = h.antkit_version;
-  header["robot"] = h.robot;
-  header["port"] = h.port;
+  header["antkit_version"] = text(h.antkit_version);
+  header["robot"] = text(h.robot);
+  header["port"] = text(h.port);
   header["baud"] = h.baud;
-  header["framing"] = h.framing;
-  header["controller"] = h.controller;
+  header["framing"] = text(h.framing);
+  header["controller"] = text(h.controller);
   py::dict params;
-  for (const auto& [k, v] : h.params) params[py::str(k)] = v;
+  for (const auto& [k, v] : h.params) params[text(k)] = v;
   header["params"] = params;
   header["seed"] = h.seed;
-  header["arena"] = h.arena.empty() ? py::object(py::none()) : py::object(py::str(h.arena));
+  header["arena"] = h.arena.empty() ? py::object(py::none()) : py::object(text(h.arena));
   py::list recs;
   for (const auto& r : records) {
     py::dict d;
@@ -609,7 +617,7 @@ py::dict read_log(const std::string& path) {
   if (const auto& s = reader->stop()) {
     py::dict stop;
     stop["step"] = s->step;
-    stop["reason"] = s->reason;
+    stop["reason"] = text(s->reason);
     stop["io"] = exchanges(s->io);
     out["stop"] = stop;
   } else {
@@ -657,11 +665,11 @@ py::dict read_bag_poses(const std::string& path, const std::string& topic,
     has_header = has_header && pose.header_ns.has_value();
   }
   py::dict d;
-  d["bag"] = track.path;
-  d["topic"] = track.topic;
-  d["type"] = track.type;
+  d["bag"] = text(track.path);
+  d["topic"] = text(track.topic);
+  d["type"] = text(track.type);
   d["stamp"] = stamp == antkit::io::bag::Stamp::bag ? "bag" : "header";
-  d["child_frame"] = track.type == "tf2_msgs/msg/TFMessage" ? py::object(py::str(track.child_frame))
+  d["child_frame"] = track.type == "tf2_msgs/msg/TFMessage" ? py::object(text(track.child_frame))
                                                             : py::object(py::none());
   d["messages"] = track.messages;
   d["poses"] = xyyaw;
@@ -778,10 +786,10 @@ PYBIND11_MODULE(_antkit, m) {
     } catch (const InputError& e) {
       const std::string where = python_where(e.where());
       const std::string message = python_message(e.message());
-      const std::string text = where.empty() ? message : where + ": " + message;
-      py::object instance = py::handle(input_error.ptr())(text);
-      instance.attr("where") = where;
-      instance.attr("message") = message;
+      py::object instance =
+          py::handle(input_error.ptr())(text(where.empty() ? message : where + ": " + message));
+      instance.attr("where") = text(where);
+      instance.attr("message") = text(message);
       PyErr_SetObject(input_error.ptr(), instance.ptr());
     }
   });
