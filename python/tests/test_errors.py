@@ -159,3 +159,21 @@ def test_docstrings():
               antkit.tour_hash, antkit.bag_info, antkit.read_bag_poses, antkit.buffon_from_bags,
               antkit.check_stc_bag]:
         assert f.__doc__ and len(f.__doc__) > 40, f
+
+
+def test_the_stubs_keep_in_step():
+    """__init__.pyi names every public name, Map's properties and each function's parameters."""
+    import ast
+    import inspect
+
+    tree = ast.parse((pathlib.Path(antkit.__file__).parent / "__init__.pyi").read_text())
+    top = {n.name: n for n in tree.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    assert set(antkit.__all__) <= set(top), set(antkit.__all__) - set(top)
+    stub_map = {n.name for n in top["Map"].body if isinstance(n, ast.FunctionDef)}
+    assert {"width", "height", "start", "source", "resolution", "origin", "from_array",
+            "to_array", "write"} <= stub_map
+    for name, node in top.items():
+        f = getattr(antkit, name, None)
+        if isinstance(node, ast.FunctionDef) and callable(f):
+            stub = [a.arg for a in node.args.args + node.args.kwonlyargs]
+            assert stub == list(inspect.signature(f).parameters), name
