@@ -346,9 +346,9 @@ def stc(
     the probability that a mark is misread (ant and ant-edge only; at most six decimals, as on the
     command line), drawn from ``seed``'s stream.
     """
+    m = _map(map)
     # The probability as the command reads it: its shortest decimal (repr), written out without an
     # exponent, so that a value with more than six decimals is refused as on the command line.
-    m = _map(map)
     text = None if noise is None else format(decimal.Decimal(repr(_real(noise, "noise"))), "f")
     fields, path = _antkit._stc(
         m, _str(variant, "variant"), _pair(start, "start"), text, _int(seed, "seed", *_U64)
@@ -528,9 +528,6 @@ class PoseTrack(Result):
             if isinstance(fields.get(key), np.ndarray):
                 fields[key].setflags(write=False)
         super().__init__(fields)
-
-    def __len__(self) -> int:
-        return len(self._fields)
 
     def to_dict(self) -> dict:
         """The fields, the arrays as lists."""
