@@ -147,7 +147,7 @@ def pairs(draw, lo=-2, hi=12):
 @st.composite
 def bool_grids(draw, max_side=8):
     h, w = draw(st.integers(1, max_side)), draw(st.integers(1, max_side))
-    a = draw(hnp.arrays(np.bool_, (h, w), elements=st.booleans()))
+    a = draw(hnp.arrays(np.bool_, (h, w), elements=st.sampled_from([True, True, True, False])))
     return draw(views(a))
 
 
@@ -204,22 +204,58 @@ def holds(call):
         return None
 
 
+def integer(v):
+    """What a call that returned must have been given where it takes an integer: no float (not
+    even 5.0), no bool, nothing truncated on the way."""
+    return isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_))
+
+
 def valid_map(m):
     assert isinstance(m, antkit.Map) and m.width >= 1 and m.height >= 1
     a = m.to_array()
     assert a.shape == (m.height, m.width) and a.dtype == np.bool_
 
 
+def near_miss(draw, v):
+    """A valid value in a form it must not be taken in: an integer as a float (5.0, 5.5), a bool
+    or a str; a pair of integers as floats; an integer array as floats; a str as bytes."""
+    if isinstance(v, (bool, np.bool_)):
+        return int(v)
+    if isinstance(v, (int, np.integer)):
+        return draw(st.sampled_from([float(v), float(v) + 0.5, np.float64(v), bool(v % 2), str(v)]))
+    if isinstance(v, float):
+        return draw(st.sampled_from([str(v), complex(v, 0), np.bool_(v > 0)]))
+    if isinstance(v, (tuple, list)) and len(v) == 2 and all(isinstance(x, (int, np.integer)) for x in v):
+        d = draw(st.sampled_from([0.0, 0.5]))
+        return type(v)(float(x) + d for x in v)
+    if isinstance(v, np.ndarray) and v.size > 4096:  # a view claiming more than it holds
+        return v.view(np.uint8) if v.dtype.kind == "b" else v[..., :0]
+    if isinstance(v, np.ndarray) and v.dtype.kind in "iu":
+        return v.astype(np.float64) + draw(st.sampled_from([0.0, 0.5]))
+    if isinstance(v, np.ndarray) and v.dtype.kind == "b":
+        return v.astype(np.uint8)
+    if isinstance(v, str):
+        return v.encode()
+    return draw(anything)
+
+
 @st.composite
 def arguments(draw, **valid):
     """Keyword arguments: about half the time every one drawn from its valid strategy (which
-    holds in-type edge cases of its own), else one of them (or, rarely, all) drawn from
-    `anything`, so that each argument's refusals are reached with the others valid."""
+    holds in-type edge cases of its own), else one of them (or, rarely, all) spoiled: a near miss
+    of a valid value (5.0 for 5, (1.5, 0) for (1, 0)) or anything at all, so that each argument's
+    refusals are reached with the others valid."""
     names = list(valid)
     k = draw(st.integers(0, 2 * len(names) + 1))
     spoil = names[k] if k < len(names) else "all" if k == 2 * len(names) + 1 else None
     note(f"spoiled: {spoil}")
-    return {n: draw(anything if spoil in (n, "all") else s) for n, s in valid.items()}
+    out = {}
+    for n, s in valid.items():
+        if spoil in (n, "all"):
+            out[n] = near_miss(draw, draw(s)) if draw(st.booleans()) else draw(anything)
+        else:
+            out[n] = draw(s)
+    return out
 
 
 def call(f, kwargs):
@@ -248,6 +284,7 @@ def test_map_from_array(kw):
         valid_map(m)
         np.testing.assert_array_equal(m.to_array(), np.asarray(kw["a"]))
         if kw["start"] is not None:
+            assert all(integer(v) for v in kw["start"])
             assert m.start == tuple(int(v) for v in kw["start"])
 
 
@@ -270,13 +307,13 @@ def test_map_write(a, path):
 
 
 VARIANTS = ["offline", "online", "ant", "ant-edge", "full"]
-noises = st.sampled_from([None, None, None, 0.0, 0.01, 0.5, 1.0, 0.1234567, -0.1, 2.0])
+noises = st.sampled_from([None] * 8 + [0.0, 0.01, 0.5, 1.0, 0.1234567, -0.1, 2.0])
 seeds = st.one_of(st.integers(0, 2**64 - 1), st.integers(0, 2**63 - 1).map(np.int64))
 
 
 @FUZZ
 @given(arguments(map=maps(), variant=st.sampled_from(VARIANTS + ["spiral", ""]),
-                 start=st.one_of(st.none(), pairs(-1, 16)), noise=noises, seed=seeds))
+                 start=st.one_of(st.none(), pairs(0, 7)), noise=noises, seed=seeds))
 def test_stc(kw):
     r = call(antkit.stc, kw)
     if r is not None:
@@ -284,6 +321,10 @@ def test_stc(kw):
         assert r.positions == len(r.path) and 0 <= r.covered <= r.reachable_subcells
         if len(r.path):
             assert antkit.tour_hash(r.path, r.width, r.height) == r.hash
+        assert integer(kw["seed"]) and r.get("seed", int(kw["seed"])) == int(kw["seed"])
+        if kw["start"] is not None:
+            assert all(integer(v) for v in kw["start"])
+            assert r.start == [int(v) for v in kw["start"]]
 
 
 sides = st.one_of(st.integers(6, 12), st.integers(1, 12).map(np.int16), st.integers(-2, 12))
@@ -295,6 +336,7 @@ def test_tour_hash(kw):
     h = call(antkit.tour_hash, kw)
     if h is not None:
         assert isinstance(h, str) and len(h) == 16 and int(h, 16) >= 0
+        assert integer(kw["width"]) and integer(kw["height"])
         p = np.asarray(kw["path"]).astype(np.int64).reshape(-1, 2)
         assert ((p >= 0) & (p < [kw["width"], kw["height"]])).all()
         assert (np.abs(np.diff(p, axis=0)).sum(axis=1) == 1).all()
@@ -364,6 +406,8 @@ def test_check_cover(kw):
     r = call(antkit.check_cover, kw)
     if r is not None:
         assert isinstance(r.ok, bool)
+        if kw["sensor"] is not None:
+            assert integer(kw["sensor"]) and r.sensor == kw["sensor"]
 
 
 lengths = st.one_of(st.floats(0, 1e10), st.integers(0, 10**6), st.just(Fraction(7, 2)),
@@ -377,6 +421,7 @@ def test_buffon_estimate(kw):
     r = call(antkit.buffon_estimate, kw)
     if r is not None:
         assert r.erosion_factor >= 1.0
+        assert integer(kw["crossings"]) and integer(kw["wall_encounters"])
         assert r.area_raw is None or (r.area_raw >= 0 and math.isfinite(r.area_raw))
 
 
@@ -399,6 +444,7 @@ def test_buffon_from_trails(kw):
     r = call(antkit.buffon_from_trails, kw)
     if r is not None:
         assert r.crossings >= 0 and r.length1 >= 0 and r.length2 >= 0
+        assert integer(kw["wall_encounters"]) and r.wall_encounters == kw["wall_encounters"]
 
 
 LOGS = corpus("replay_log", 12)
@@ -425,6 +471,7 @@ def test_read_log_and_replay(kw):
     r = call(antkit.replay, kw)
     if r is not None:
         assert isinstance(r.identical, bool)
+        assert kw["until"] is None or integer(kw["until"])
 
 
 # ---- bags: the corpus's MCAP files always; node's bags where node is (the ros_bags fixture) -----
