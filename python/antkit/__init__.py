@@ -406,6 +406,8 @@ def check_explore(map: MapLike, cells: Any) -> CheckResult:
         raise _error("cells", f"expected a file or a sequence of row strings, not {_show(cells)}")
     if isinstance(cells, np.ndarray) and cells.ndim != 1:
         raise _error("cells", f"expected a sequence of row strings, not a {cells.ndim}-D array")
+    if len(cells) > 1 << 15:  # the library's cap, before a loop over what a view only claims
+        raise _error("cells", f"{len(cells)} rows, more than 32768")
     rows = []
     for i, row in enumerate(cells):
         if isinstance(row, (list, tuple)) and all(isinstance(c, str) for c in row):

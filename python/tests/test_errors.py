@@ -177,3 +177,8 @@ def test_the_stubs_keep_in_step():
         if isinstance(node, ast.FunctionDef) and callable(f):
             stub = [a.arg for a in node.args.args + node.args.kwonlyargs]
             assert stub == list(inspect.signature(f).parameters), name
+
+
+def test_rows_that_a_view_only_claims_are_refused_at_once(room):
+    rows = np.broadcast_to(np.array(["FFF"]), (1 << 40,))  # 2^40 rows in a few bytes
+    refused(lambda: antkit.check_explore(room, rows), "cells", "more than 32768")
