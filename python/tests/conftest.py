@@ -37,8 +37,18 @@ def maps_dir():
     return MAPS
 
 
+def pytest_configure(config):
+    # Without a seed (pytest run by hand) under CI, derandomised: the same examples every run.
+    if config.getoption("hypothesis_seed", None) is None and os.environ.get("CI"):
+        settings.register_profile("antkit-ci", settings.get_profile("antkit"), derandomize=True)
+        settings.load_profile("antkit-ci")
+
+
 def pytest_report_header(config):
     seed = config.getoption("hypothesis_seed", None)
+    if seed is None:
+        how = "derandomized (CI is set)" if os.environ.get("CI") else "random"
+        return f"hypothesis seed: none given, {how}; ctest passes ANTKIT_HYPOTHESIS_SEED"
     return f"hypothesis seed: {seed} (ctest passes ANTKIT_HYPOTHESIS_SEED; rerun with --hypothesis-seed={seed})"
 
 

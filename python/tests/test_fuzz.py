@@ -485,17 +485,28 @@ frames = st.sampled_from(["base_link", "laser", "odom", ""])
 def bag_paths(ros_bags):
     names = ["walk1.mcap", "walk1.db3", "walk2_bag", "walk2_zstd.mcap", "walk2_lz4.mcap",
              "tour.mcap", "tour_repeat.mcap"]
-    bags = [ros_bags / n for n in names] + corpus("mcap_reader", 8) + [SCRATCH, SCRATCH / "no.mcap"]
+    bags = ([ros_bags / n for n in names] if ros_bags else []) + corpus("mcap_reader", 8) + [
+        SCRATCH, SCRATCH / "no.mcap"]
     return st.sampled_from(bags).flatmap(lambda p: st.sampled_from([p, str(p)]))
 
 
-def test_bag_functions(ros_bags):
+@pytest.fixture(scope="module")
+def bags_or_corpus(request):
+    """node's bags, or None where node is absent: the corpus's MCAP files are fuzzed either way."""
+    try:
+        return request.getfixturevalue("ros_bags")
+    except pytest.skip.Exception as e:
+        print(f"bag properties on the fuzz corpus's MCAP files alone: {e}")
+        return None
+
+
+def test_bag_functions(bags_or_corpus):
     """Hypothesis inside one test, so that the session fixture (node's bags) is made once."""
-    bag = bag_paths(ros_bags)
-    free = ros_bags / "fuzz_free.yaml"
+    bag = bag_paths(bags_or_corpus)
+    free = SCRATCH / "fuzz_free.yaml"
     free.write_text("image: fuzz_free.pgm\nresolution: 0.5\norigin: [-1.0, -2.0, 0.0]\n"
                     "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n")
-    (ros_bags / "fuzz_free.pgm").write_bytes(b"P5\n4 2\n255\n" + b"\xfe" * 8)
+    (SCRATCH / "fuzz_free.pgm").write_bytes(b"P5\n4 2\n255\n" + b"\xfe" * 8)
 
     @FUZZ
     @given(st.one_of(bag, anything))
