@@ -6,8 +6,18 @@ import shutil
 import subprocess
 from pathlib import Path
 
+import tempfile
+
 import pytest
 from hypothesis import HealthCheck, settings
+from hypothesis.configuration import set_hypothesis_home_dir
+
+# Hypothesis's own files (its Unicode tables) go to the build tree, not beside the sources.
+set_hypothesis_home_dir(
+    Path(os.environ["ANTKIT_BUILD_DIR"]) / "python" / ".hypothesis"
+    if os.environ.get("ANTKIT_BUILD_DIR")
+    else Path(tempfile.gettempdir()) / "antkit_hypothesis"
+)
 
 # Reproducible from the log: no example database (nothing carried between runs), derandomised
 # unless ctest passes --hypothesis-seed (it does: ANTKIT_HYPOTHESIS_SEED, printed by pytest).
