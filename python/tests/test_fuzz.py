@@ -9,9 +9,11 @@ crash (a crash ends the pytest process, and the test with it).
 
 Reproducible: ctest passes --hypothesis-seed (ANTKIT_HYPOTHESIS_SEED, printed in pytest's header
 by conftest.py); there is no example database. Rerun one failure with the seed it prints."""
+import atexit
 import math
 import os
 import pathlib
+import shutil
 import tempfile
 from fractions import Fraction
 
@@ -31,6 +33,7 @@ FUZZ = settings(max_examples=int(os.environ.get("ANTKIT_FUZZ_EXAMPLES", "400")),
 # ---- files --------------------------------------------------------------------------------------
 
 SCRATCH = pathlib.Path(tempfile.mkdtemp(prefix="antkit_fuzz_"))
+atexit.register(shutil.rmtree, SCRATCH, ignore_errors=True)
 
 
 def corpus(name, n=6):
