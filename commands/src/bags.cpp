@@ -292,8 +292,13 @@ std::vector<BagCell> bag_cells(const maps::GridMap& map, const io::bag::PoseTrac
 StcBagCheck check_stc_bag(const std::string& map_file, const std::string& bag,
                           const std::string& topic, io::bag::Stamp stamp,
                           const std::string& child_frame, const testing::StcCheckRequest& request) {
+  return check_stc_bag(maps::load_map(map_file), map_file, bag, topic, stamp, child_frame, request);
+}
+
+StcBagCheck check_stc_bag(maps::GridMap map, const std::string& map_file, const std::string& bag,
+                          const std::string& topic, io::bag::Stamp stamp,
+                          const std::string& child_frame, const testing::StcCheckRequest& request) {
   StcBagCheck out;
-  maps::GridMap map = maps::load_map(map_file);
   out.track = io::bag::read_poses(bag, topic, stamp, child_frame);
   testing::TourFile tour;
   for (const auto& c : bag_cells(map, out.track, map_file)) {

@@ -11,7 +11,8 @@ __version__: str
 PathLike = Union[str, os.PathLike[str]]
 
 class InputError(ValueError):
-    """Bad input: str() is the command line's located message."""
+    """Bad input (a malformed file, an argument of the wrong type, an out-of-range value):
+    str() is 'WHERE: MESSAGE', located in a file or at the argument."""
 
     where: str
     message: str
@@ -20,21 +21,27 @@ class Map:
     """A grid map: x the column, y the row counted down from the first row."""
 
     @property
-    def width(self) -> int: ...
+    def width(self) -> int:
+        """The number of columns (cells along x)."""
     @property
-    def height(self) -> int: ...
+    def height(self) -> int:
+        """The number of rows (cells along y, counted down from the first row)."""
     @property
-    def start(self) -> Optional[Tuple[int, int]]: ...
+    def start(self) -> Optional[Tuple[int, int]]:
+        """The map's own start cell (x, y), or None."""
     @property
-    def source(self) -> str: ...
+    def source(self) -> str:
+        """The file the map was read from; '' for a map made from an array."""
     @property
-    def resolution(self) -> float: ...
+    def resolution(self) -> float:
+        """Metres per cell (a ROS map's; 1.0 otherwise)."""
+    @property
+    def origin(self) -> Tuple[float, float, float]:
+        """A ROS map's origin (x, y, yaw) of its lower-left pixel; zeros otherwise."""
     @staticmethod
-    def from_array(
-        a: npt.NDArray[np.bool_], *, start: Optional[Tuple[int, int]] = ...
-    ) -> Map: ...
+    def from_array(a: npt.ArrayLike, *, start: Optional[Sequence[int]] = ...) -> Map: ...
     def to_array(self) -> npt.NDArray[np.bool_]: ...
-    def write(self, path: str) -> None: ...
+    def write(self, path: PathLike) -> None: ...
     def __eq__(self, other: object) -> bool: ...
 
 MapLike = Union[Map, PathLike]
@@ -66,7 +73,7 @@ class CheckResult(Result):
     first_violation: Any
     def __bool__(self) -> bool: ...
 
-def read_map(path: str) -> Map: ...
+def read_map(path: PathLike) -> Map: ...
 def stc(
     map: MapLike,
     variant: str,
@@ -99,3 +106,38 @@ def buffon_from_logs(
 ) -> Result: ...
 def read_log(path: PathLike) -> Result: ...
 def replay(path: PathLike, until: Optional[int] = ...) -> Result: ...
+
+class PoseTrack(Result):
+    bag: str
+    topic: str
+    type: str
+    stamp: str
+    child_frame: Optional[str]
+    messages: int
+    poses: npt.NDArray[np.float64]  # (n, 3): x, y, yaw
+    t_ns: npt.NDArray[np.int64]
+    bag_ns: npt.NDArray[np.uint64]
+    header_ns: Optional[npt.NDArray[np.int64]]
+
+def bag_info(path: PathLike) -> Result: ...
+def read_bag_poses(
+    path: PathLike, topic: str, stamp: str = ..., child_frame: str = ...
+) -> PoseTrack: ...
+def buffon_from_bags(
+    bag1: PathLike,
+    bag2: PathLike,
+    topic: str,
+    width: float = ...,
+    stamp: str = ...,
+    child_frame: str = ...,
+    arena: Optional[str] = ...,
+) -> Result: ...
+def check_stc_bag(
+    map: MapLike,
+    bag: PathLike,
+    topic: str,
+    stamp: str = ...,
+    child_frame: str = ...,
+    start: Optional[Sequence[int]] = ...,
+    coverage: bool = ...,
+) -> CheckResult: ...

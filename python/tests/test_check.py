@@ -154,4 +154,19 @@ def test_check_cover_equals_the_command(tmp_path, maps_dir):
     assert not antkit.check_cover(str(m), a, sensor=r.sensor).ok
     with pytest.raises(antkit.InputError) as e:
         antkit.check_cover(str(m), a)
-    assert "give the sensor range" in str(e.value)
+    assert e.value.where == "sensor" and "required with a trace array" in e.value.message
+    # an array's values are located by index, not by a line of a text the caller never wrote
+    a[3, 1, 2] = 9
+    with pytest.raises(antkit.InputError) as e:
+        antkit.check_cover(str(m), a, sensor=r.sensor)
+    assert e.value.where == "trace[3, 1]" and "bearing 9 is outside [0, 7]" in e.value.message
+    # a trace file without its "# sensor:" line: the argument named as in Python
+    bare = tmp_path / "bare.csv"
+    bare.write_text("".join(l + "\n" for l in trace.read_text().splitlines() if not l.startswith("#")))
+    with pytest.raises(antkit.InputError) as e:
+        antkit.check_cover(str(m), bare)
+    assert e.value.where == str(bare) and "with sensor=" in e.value.message
+    assert "--" not in str(e.value)
+    with pytest.raises(antkit.InputError) as e:
+        antkit.check_cover(str(m), bare, sensor=300)
+    assert e.value.where == "sensor" and "[0, 255]" in e.value.message

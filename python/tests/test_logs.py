@@ -80,6 +80,12 @@ def test_buffon_from_logs_equals_the_command(tmp_path):
     )
     assert e.area_raw == pytest.approx(got.area_raw, rel=1e-12)
     assert e.erosion_factor == pytest.approx(got.erosion_factor, rel=1e-12)
+    # a bad arena spec is located in the argument `arena`, not in the option --arena
+    with pytest.raises(antkit.InputError) as err:
+        antkit.buffon_from_logs(v1, v2, arena="circle:d=eight")
+    _, stderr = cli("buffon-from-logs", v1, v2, "--arena", "circle:d=eight", status=2)
+    assert err.value.where.startswith("arena") and "--" not in str(err.value)
+    assert stderr.strip() == f"antkit: error: --{err.value}"
     # the same log twice is refused with the command's message
     with pytest.raises(antkit.InputError) as err:
         antkit.buffon_from_logs(v1, v1)

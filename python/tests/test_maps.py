@@ -30,9 +30,10 @@ def test_from_array_round_trip_and_orientation():
 
 
 def test_from_array_refuses_what_it_cannot_read():
-    with pytest.raises(TypeError, match="bool array"):
+    with pytest.raises(antkit.InputError, match="bool array") as e:
         antkit.Map.from_array(np.zeros((2, 2), dtype=np.int8))
-    with pytest.raises(TypeError, match="2-D"):
+    assert e.value.where == "a"
+    with pytest.raises(antkit.InputError, match="2-D"):
         antkit.Map.from_array(np.zeros(4, dtype=bool))
     with pytest.raises(antkit.InputError) as e:
         antkit.Map.from_array(np.zeros((2, 2), dtype=bool), start=(0, 0))

@@ -68,6 +68,12 @@ struct StcBagCheck {
                                         const std::string& topic, io::bag::Stamp stamp,
                                         const std::string& child_frame,
                                         const testing::StcCheckRequest& request);
+// The same on a map in memory (the Python package's Map), `map_name` naming it in messages: its
+// resolution and origin are the map's own (1 m and 0 for a map made from an array).
+[[nodiscard]] StcBagCheck check_stc_bag(maps::GridMap map, const std::string& map_name,
+                                        const std::string& bag, const std::string& topic,
+                                        io::bag::Stamp stamp, const std::string& child_frame,
+                                        const testing::StcCheckRequest& request);
 // check_stc_json's keys, and "bag", "topic", "type", "stamp", "poses", "first_violation_time_ns"
 // (null when the tour passes or the broken rule is about the whole tour).
 [[nodiscard]] nlohmann::json check_stc_bag_json(const StcBagCheck& check, const std::string& map);
