@@ -320,13 +320,21 @@ CoverBagCheck check_cover_bag(const std::string& map_file, const std::string& ba
                               const std::vector<std::string>& topics, io::bag::Stamp stamp,
                               const std::string& child_frame, std::int64_t sensor) {
   testing::check_sensor_range(sensor);
-  if (topics.empty()) throw InputError("--topic", "--bag needs --topic (one per robot)");
+  return check_cover_bag(maps::load_map(map_file), map_file, bag, topics, stamp, child_frame,
+                         sensor);
+}
+
+CoverBagCheck check_cover_bag(const maps::GridMap& map, const std::string& map_file,
+                              const std::string& bag, const std::vector<std::string>& topics,
+                              io::bag::Stamp stamp, const std::string& child_frame,
+                              std::int64_t sensor) {
+  testing::check_sensor_range(sensor);
+  if (topics.empty()) throw InputError("--topic", "no topic given: name one pose topic per robot");
   for (std::size_t i = 0; i < topics.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (topics[i] == topics[j])
         throw InputError("--topic", topics[i] + " given twice: one topic per robot");
   CoverBagCheck out;
-  const maps::GridMap map = maps::load_map(map_file);
   std::vector<std::vector<BagCell>> paths;
   for (const auto& topic : topics) {
     out.tracks.push_back(io::bag::read_poses(bag, topic, stamp, child_frame));

@@ -9,7 +9,7 @@ The same library as the ``antkit`` command, on numpy arrays and plain Python typ
   :func:`buffon_from_logs`;
 * hardware logs: :func:`read_log`, :func:`replay`;
 * ROS 2 bags (.mcap, .db3, bag folders): :func:`bag_info`, :func:`read_bag_poses`,
-  :func:`buffon_from_bags`, :func:`check_stc_bag`.
+  :func:`buffon_from_bags`, :func:`check_stc_bag`, :func:`check_cover_bag`.
 
 Every result is the command's ``--format json`` object (the same keys, values and meanings),
 readable as a mapping (``r["covered"]``) and as attributes (``r.covered``); ``to_dict()`` gives the
@@ -64,6 +64,7 @@ __all__ = [
     "read_bag_poses",
     "buffon_from_bags",
     "check_stc_bag",
+    "check_cover_bag",
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -625,5 +626,37 @@ def check_stc_bag(
             _str(child_frame, "child_frame"),
             _pair(start, "start"),
             _bool(coverage, "coverage"),
+        )
+    )
+
+
+def check_cover_bag(
+    map: MapLike,
+    bag: PathLike,
+    topics: Sequence[str],
+    sensor: int,
+    stamp: str = "bag",
+    child_frame: str = "base_link",
+) -> CheckResult:
+    """A bag's recorded poses checked as a coverage run on ``map`` (``antkit check cover --bag``):
+    each topic of ``topics`` one robot, its cells read as :func:`check_stc_bag` reads them; tick 0
+    puts every robot on its first cell, and each later tick is one robot entering its next cell in
+    bag time (ties in topic order), the others staying. :func:`check_cover`'s rules and fields
+    (free cells, no two robots on one cell, the coverage recomputed with ``sensor`` cells of line
+    of sight), and ``bag``, ``stamp``, ``topics`` (each ``topic``, ``type``, ``poses``) and
+    ``first_violation_time_ns`` (the broken rule's time in the bag). InputError for a pose off the
+    map, with its time, a topic given twice or none."""
+    m = _map(map)
+    if isinstance(topics, (str, bytes)) or not isinstance(topics, Sequence):
+        raise _error("topics", f"expected a sequence of topic names, not {_show(topics)}")
+    names = [_str(t, "topics") for t in topics]
+    return CheckResult(
+        _antkit._check_cover_bag(
+            m,
+            _path(bag, "bag"),
+            names,
+            _int(sensor, "sensor", 0, 255),
+            _str(stamp, "stamp"),
+            _str(child_frame, "child_frame"),
         )
     )

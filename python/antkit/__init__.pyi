@@ -141,3 +141,11 @@ def check_stc_bag(
     start: Optional[Sequence[int]] = ...,
     coverage: bool = ...,
 ) -> CheckResult: ...
+def check_cover_bag(
+    map: MapLike,
+    bag: PathLike,
+    topics: Sequence[str],
+    sensor: int,
+    stamp: str = ...,
+    child_frame: str = ...,
+) -> CheckResult: ...

@@ -716,6 +716,21 @@ py::object check_stc_bag(const PyMap& m, const std::string& bag, const std::stri
   return to_python(j);
 }
 
+py::object check_cover_bag(const PyMap& m, const std::string& bag,
+                           const std::vector<std::string>& topics, std::int64_t sensor,
+                           const std::string& stamp_name, const std::string& child_frame) {
+  const auto stamp = antkit::commands::bag_stamp(stamp_name, "stamp");
+  const std::string name = m.source.empty() ? "map" : m.source;
+  nlohmann::json j;
+  {
+    py::gil_scoped_release release;
+    const auto c =
+        antkit::commands::check_cover_bag(m.map, name, bag, topics, stamp, child_frame, sensor);
+    j = antkit::commands::check_cover_bag_json(c, m.source);
+  }
+  return to_python(j);
+}
+
 // ---- errors ------------------------------------------------------------------------------------
 
 // The library names some parameters by the command line's options (testing's "--start",
@@ -859,4 +874,5 @@ PYBIND11_MODULE(_antkit, m) {
   m.def("_read_bag_poses", &read_bag_poses);
   m.def("_buffon_from_bags", &buffon_from_bags);
   m.def("_check_stc_bag", &check_stc_bag);
+  m.def("_check_cover_bag", &check_cover_bag);
 }

@@ -175,3 +175,31 @@ def test_check_stc_bag_refusals(ros_bags, free_map):
     with pytest.raises(antkit.InputError) as e:
         antkit.check_stc_bag(free_map, ros_bags / "tour.mcap", "/pose", start=(7, 0))
     assert e.value.where == "start" and "--" not in str(e.value)
+
+
+def test_check_cover_bag_equals_the_command(ros_bags, free_map):
+    for name, status in (("cover.mcap", 0), ("cover_collide.mcap", 1)):
+        expected, _ = cli("check", "cover", "--map", free_map, "--bag", ros_bags / name, "--topic",
+                          "/r0/pose", "--topic", "/r1/pose", "--sensor", "1", "--format", "json",
+                          status=status)
+        got = antkit.check_cover_bag(free_map, ros_bags / name, ["/r0/pose", "/r1/pose"], 1)
+        assert got.to_dict() == expected
+        assert got.ok == (status == 0) and got.robots == 2
+    # head on along one row: r0 steps onto r1's cell half-way, at 0.05 s
+    bad = antkit.check_cover_bag(antkit.read_map(free_map), ros_bags / "cover_collide.mcap",
+                                 ("/r0/pose", "/r1/pose"), 1)
+    assert bad.first_violation_time_ns == T0 + STEP // 2 and bad.collisions >= 1
+
+
+def test_check_cover_bag_refusals(ros_bags, free_map):
+    cover = ros_bags / "cover.mcap"
+    for kwargs, where in ((dict(topics="/r0/pose", sensor=1), "topics"),
+                          (dict(topics=["/r0/pose", 3], sensor=1), "topics"),
+                          (dict(topics=["/r0/pose", "/r0/pose"], sensor=1), "topic"),
+                          (dict(topics=[], sensor=1), "topic"),
+                          (dict(topics=["/r0/pose"], sensor=1.0), "sensor"),
+                          (dict(topics=["/r0/pose"], sensor=256), "sensor")):
+        with pytest.raises(antkit.InputError) as e:
+            antkit.check_cover_bag(free_map, cover, **kwargs)
+        assert e.value.where == where, (kwargs, e.value)
+        assert "--" not in str(e.value)

@@ -487,7 +487,7 @@ frames = st.sampled_from(["base_link", "laser", "odom", ""])
 
 def bag_paths(ros_bags):
     names = ["walk1.mcap", "walk1.db3", "walk2_bag", "walk2_zstd.mcap", "walk2_lz4.mcap",
-             "tour.mcap", "tour_repeat.mcap"]
+             "tour.mcap", "tour_repeat.mcap", "cover.mcap", "cover_collide.mcap"]
     bags = ([ros_bags / n for n in names] if ros_bags else []) + corpus("mcap_reader", 8) + [
         SCRATCH, SCRATCH / "no.mcap"]
     return st.sampled_from(bags).flatmap(lambda p: st.sampled_from([p, str(p)]))
@@ -543,7 +543,20 @@ def test_bag_functions(bags_or_corpus):
         if r is not None:
             assert isinstance(r.ok, bool) and r.poses >= 1
 
+    @FUZZ
+    @given(arguments(map=st.one_of(st.just(free), st.just(str(free)), maps()), bag=bag,
+                     topics=st.one_of(st.lists(st.sampled_from(TOPICS + ["/r0/pose", "/r1/pose"]),
+                                               max_size=3), anything),
+                     sensor=st.one_of(st.integers(-2, 300), anything), stamp=stamps,
+                     child_frame=frames))
+    def cover(kw):
+        r = call(antkit.check_cover_bag, kw)
+        if r is not None:
+            assert isinstance(r.ok, bool) and r.robots == len(kw["topics"]) >= 1
+            assert integer(kw["sensor"])
+
     info()
     poses()
     buffon()
     check()
+    cover()

@@ -105,6 +105,12 @@ struct CoverBagCheck {
                                             const std::vector<std::string>& topics,
                                             io::bag::Stamp stamp, const std::string& child_frame,
                                             std::int64_t sensor);
+// The same on a map in memory (the Python package's Map), `map_name` naming it in messages.
+[[nodiscard]] CoverBagCheck check_cover_bag(const maps::GridMap& map, const std::string& map_name,
+                                            const std::string& bag,
+                                            const std::vector<std::string>& topics,
+                                            io::bag::Stamp stamp, const std::string& child_frame,
+                                            std::int64_t sensor);
 // check_cover_json's keys, and "bag", "stamp", "topics" ([{"topic", "type", "poses"}]),
 // "first_violation_time_ns" (null when the run passes or the broken rule is about the whole run).
 [[nodiscard]] nlohmann::json check_cover_bag_json(const CoverBagCheck& check,
