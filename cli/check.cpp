@@ -10,7 +10,7 @@
 //                    origin, the cells between two poses filled in); the JSON adds "bag", "topic",
 //                    "type", "stamp", "poses" and "first_violation_time_ns"
 //   antkit check explore --map F --cells C [--format table|json]
-//   antkit check cover --map F --log L [--sensor R] [--format table|json]
+//   antkit check cover --map F --log L [--sensor R] [--mcap F.mcap] [--format table|json]
 //   antkit check cover --map F --bag BAG --topic T [--topic T2 ...] --sensor R [--stamp ...]
 //                      [--child-frame F]: each topic's poses one robot (check_cover_bag); the
 //                      JSON adds "bag", "stamp", "topics" and "first_violation_time_ns"
@@ -22,8 +22,10 @@
 
 #include <antkit/algorithms/options.hpp>
 #include <antkit/commands/bags.hpp>
+#include <antkit/commands/cover_mcap.hpp>
 #include <antkit/commands/json.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/maps/map_io.hpp>
 #include <antkit/testing/run_audit.hpp>
 #include <antkit/testing/stc_audit.hpp>
 #include <iostream>
@@ -88,7 +90,7 @@ void run_explore(const ExploreCheckCommand& c) {
 }
 
 struct CoverCheckCommand {
-  std::string map, log, bag, stamp = "bag", child_frame = "base_link";
+  std::string map, log, bag, stamp = "bag", child_frame = "base_link", mcap;
   std::vector<std::string> topics;
   std::int64_t sensor = -1;
   Format format = Format::Table;
@@ -99,6 +101,9 @@ void run_cover(const CoverCheckCommand& c) {
     throw antkit::kernel::InputError("--log", "one run: --log TRACE or --bag BAG --topic T");
   if (!c.bag.empty()) {
     if (c.sensor == -1) throw antkit::kernel::InputError("--sensor", "--bag needs --sensor");
+    if (!c.mcap.empty())
+      throw antkit::kernel::InputError("--mcap", "with --log; a bag's run goes out with antkit "
+                                                 "bag export --check cover");
     const auto b = antkit::commands::check_cover_bag(
         c.map, c.bag, c.topics, antkit::commands::bag_stamp(c.stamp, "--stamp"), c.child_frame,
         c.sensor);
@@ -112,6 +117,9 @@ void run_cover(const CoverCheckCommand& c) {
   std::optional<std::int64_t> sensor; // checked by check_cover_files
   if (c.sensor != -1) sensor = c.sensor;
   const auto r = testing::check_cover_files(c.map, c.log, sensor);
+  if (!c.mcap.empty())
+    (void)antkit::commands::cover_trace_mcap(antkit::maps::load_map(c.map).cells, c.log, sensor, &r,
+                                             "check cover " + c.log + " on " + c.map, c.mcap);
   const auto& a = r.audit;
   const nlohmann::json j = antkit::commands::check_cover_json(r, c.map);
   antkit::cli::emit(j, c.format, std::cout);
@@ -185,6 +193,9 @@ void register_check(CLI::App& app) {
   cover->add_option("--stamp", v->stamp, "With --bag: the poses' time, bag or header");
   cover->add_option("--child-frame", v->child_frame,
                     "With --bag on a TFMessage topic: the child frame (default base_link)");
+  cover->add_option("--mcap", v->mcap,
+                    "With --log: also write the run and the verdict as MCAP for Foxglove (the "
+                    "first broken rule an ERROR at its tick)");
   cover->add_option("--sensor", v->sensor,
                     "Sensor distance in cells (default: the trace's '# sensor:' line; required "
                     "with --bag)");

@@ -2,7 +2,9 @@
 //   antkit cover (--map FILE | --size WxH --density P) [--seed S]
 //                --algo rw|pm|astar|astar-coord|frontier
 //                [--robots N] [--sensor R] [--limit T] [--trial K] [--format table|json]
-//                [--svg FILE] [--png FILE] [--trace FILE]
+//                [--svg FILE] [--png FILE] [--trace FILE] [--mcap FILE.mcap]
+// --mcap writes the run for Foxglove from its trace (commands/cover_mcap.hpp): the map, every
+// robot's pose each tick, and on /log the run and its trace's check (antkit check cover's).
 // Prints {"algo", "robots", "coverage", "viewed", "viewable", "movements", "moves", "hash", ...}.
 // Maps: Blocked and Unknown cells both block sight and movement, and only Free cells count for
 // coverage. A map's start cell ('S' in ASCII maps) is robot 0's start.
@@ -11,12 +13,14 @@
 #include "output.hpp"
 
 #include <algorithm>
+#include <antkit/commands/cover_mcap.hpp>
 #include <antkit/experiments/coverage_run.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <antkit/uniform/coverage.hpp>
 #include <antkit/uniform/scenario.hpp>
 #include <antkit/uniform/world.hpp>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -31,7 +35,7 @@ struct CoverOptions : antkit::cli::CoverMapOptions { // --map or --size and --de
   std::string algo;
   std::int64_t robots = 1;
   std::string svg, png;
-  std::string trace;
+  std::string trace, mcap;
   Format format = Format::Table;
 };
 
@@ -52,12 +56,32 @@ nlohmann::json run_cover(const CoverOptions& o) {
   const auto limit = antkit::cli::cover_limit(o, grid.cells);
   uniform::CoverageWorld world(std::move(grid.cells), poses, static_cast<std::int32_t>(o.sensor));
   uniform::CoverageResult r;
-  if (o.trace.empty()) {
+  const antkit::kernel::OccupancyGrid start_map = world.map();
+  if (o.trace.empty() && o.mcap.empty()) {
     r = uniform::run_coverage(world, *algo, o.seed, o.trial, limit);
   } else {
-    // The trace `antkit check cover` reads, streamed into a file that replaces --trace only whole.
+    // The trace `antkit check cover` reads, streamed into a file that replaces --trace only whole
+    // (for --mcap alone, a scratch file beside it, removed after).
+    const std::string trace = o.trace.empty() ? o.mcap + ".trace.tmp" : o.trace;
     r = antkit::experiments::run_coverage_traced(world, *algo, o.seed, o.trial, limit, o.sensor,
-                                                 o.trace);
+                                                 trace);
+    if (!o.mcap.empty()) {
+      const auto removed = [&] {
+        if (o.trace.empty()) std::filesystem::remove(trace);
+      };
+      try {
+        (void)antkit::commands::cover_trace_mcap(
+            start_map, trace, std::nullopt, nullptr,
+            "cover " + o.algo + ", " + std::to_string(o.robots) + " robot(s), sensor " +
+                std::to_string(o.sensor) + ", seed " + std::to_string(o.seed) + ", trial " +
+                std::to_string(o.trial),
+            o.mcap);
+      } catch (...) {
+        removed();
+        throw;
+      }
+      removed();
+    }
   }
   if (!o.svg.empty() || !o.png.empty())
     antkit::experiments::save_coverage_figure(o.algo, world, r, o.sensor, o.svg, o.png);
@@ -106,6 +130,9 @@ void register_cover(CLI::App& app) {
   sub->add_option("--trace", o->trace,
                   "Write every robot's pose after every tick as CSV (tick,robot,x,y,bearing), "
                   "with the sensor and the coverage claimed, for antkit check cover");
+  sub->add_option("--mcap", o->mcap,
+                  "Write the run as MCAP for Foxglove: the map, every robot's pose each tick (10 "
+                  "a second), the run's check (at most 2^22 robot-ticks)");
   antkit::cli::add_format_option(*sub, o->format);
   sub->callback([o] { antkit::cli::emit(run_cover(*o), o->format, std::cout); });
 }

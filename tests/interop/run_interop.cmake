@@ -6,6 +6,7 @@
 #   export mcap (bad log)  exit 2, a located error, no file
 #   bag export             a ROS 2 bag's poses, the map and a check's result (both checks)
 #   stc --mcap             an STC tour: the map, the spanning tree, a pose a step
+#   cover --mcap           a coverage run: the map, every robot each tick, its check
 # Fails when the node packages are not installed (run `scripts/bootstrap.sh --node-packages` or
 # `npm ci`); skipped only when node itself is absent.
 # Inputs: -DANTKIT=... -DNODE=... (empty when not found) -DSRC=<checkout> -DOUT=<scratch dir>
@@ -73,3 +74,8 @@ run(0 ${check} ${OUT}/bag_tour.mcap /map=1 /visits=1 /log=2 /robot0/pose=4)
 run(0 ${ANTKIT} stc --map ${SRC}/data/maps/movingai/empty-32-32.map --variant ant
     --mcap ${OUT}/stc.mcap)
 run(0 ${check} ${OUT}/stc.mcap /map=1 /tree=1 /pose=1024 /trail=94 /log=2)
+# A coverage run (antkit cover --mcap): three robots, 40 ticks at most; the map, each robot's pose
+# every tick, and the run's own check on /log (the ticks it ran are the trace's).
+run(0 ${ANTKIT} cover --map ${SRC}/data/maps/movingai/empty-32-32.map --algo pm --robots 3
+    --limit 40 --mcap ${OUT}/cover.mcap)
+run(0 ${check} ${OUT}/cover.mcap /map=1 /log=2)

@@ -1,6 +1,7 @@
-// `antkit stc --mcap` (issue 42: --mcap where a run has a timeline): the tour read back with the
-// tests' own MCAP reader (every CRC, index and offset checked): a pose a step at step * 100 ms, the
-// spanning tree, and on /log an exact variant's first repeat as an ERROR at its step.
+// `antkit stc --mcap`, `cover --mcap` and `check cover --mcap` (issue 42: --mcap where a run has a
+// timeline), read back with the tests' own MCAP reader (every CRC, index and offset checked): a
+// pose a step (a tick) at k * 100 ms, STC's spanning tree, and on /log the verdict: an exact
+// variant's first repeat, or a trace's first broken rule, as an ERROR at its step.
 #include "mcap_reader.hpp"
 #include "run_antkit.hpp"
 #include "test_paths.hpp"
@@ -12,6 +13,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 
@@ -91,5 +93,73 @@ TEST_CASE("antkit stc --mcap: a pose a step, the tree, and the first repeat at i
   CHECK_THAT(big.err, Contains("--mcap"));
   CHECK(big.out.empty());
   CHECK_FALSE(std::filesystem::exists(dir / "big.mcap"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("antkit cover --mcap and check cover --mcap: every robot each tick, the broken rule at "
+          "its tick",
+          "[cli][mcap]") {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("antkit-cover-mcap-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string map = antkit::test::source_path("data/maps/movingai/empty-32-32.map");
+  const std::string trace = (dir / "run.trace").string(), mcap = (dir / "run.mcap").string();
+  const auto r = run_antkit("cover --map " + map +
+                            " --algo pm --robots 3 --limit 40 --format json "
+                            "--trace " +
+                            trace + " --mcap " + mcap);
+  REQUIRE(r.status == 0);
+  const auto file = antkit::test::mcap::read(slurp(mcap));
+  std::map<std::string, std::size_t> counts;
+  for (const auto& m : file.messages) {
+    const std::string topic = file.channels.at(m.channel_id).topic;
+    ++counts[topic];
+    if (topic == "/log")
+      CHECK(nlohmann::json::parse(m.data)["level"] == 2); // the run keeps every rule
+    if (topic.rfind("/robot", 0) == 0) CHECK(m.log_time == m.sequence * 100000000ULL);
+  }
+  const auto ticks = counts["/robot0/pose"];
+  CHECK(ticks >= 2);
+  CHECK(counts["/robot1/pose"] == ticks);
+  CHECK(counts["/robot2/pose"] == ticks);
+  CHECK(counts["/log"] == 2);
+  // Without --trace the scratch trace beside the MCAP file is gone.
+  const auto alone = run_antkit("cover --map " + map + " --algo rw --limit 10 --mcap " +
+                                (dir / "alone.mcap").string());
+  CHECK(alone.status == 0);
+  CHECK(std::filesystem::exists(dir / "alone.mcap"));
+  CHECK_FALSE(std::filesystem::exists(dir / "alone.mcap.trace.tmp"));
+  // A trace edited to teleport robot 1 at tick 2: check cover exits 1 and the MCAP file holds
+  // the broken rule as an ERROR at tick 2's time.
+  std::istringstream lines(slurp(trace));
+  std::string edited, line;
+  while (std::getline(lines, line)) {
+    if (line.rfind("2,1,", 0) == 0) line = "2,1,30,30,0";
+    edited += line + "\n";
+  }
+  std::ofstream(dir / "edited.trace") << edited;
+  const auto bad =
+      run_antkit("check cover --map " + map + " --log " + (dir / "edited.trace").string() +
+                 " --mcap " + (dir / "edited.mcap").string());
+  CHECK(bad.status == 1);
+  const auto edited_file = antkit::test::mcap::read(slurp((dir / "edited.mcap").string()));
+  std::size_t errors = 0;
+  for (const auto& m : edited_file.messages)
+    if (edited_file.channels.at(m.channel_id).topic == "/log") {
+      const auto body = nlohmann::json::parse(m.data);
+      if (body["level"] != 4) continue;
+      ++errors;
+      CHECK(m.sequence == 2);
+      CHECK(m.log_time == 200000000ULL);
+      CHECK_THAT(body["message"].get<std::string>(), Contains("tick 2, robot 1"));
+    }
+  CHECK(errors == 1);
+  // --mcap with --bag is refused (bag export writes a bag's run).
+  const auto refused = run_antkit("check cover --map " + map +
+                                  " --bag x.mcap --topic /p "
+                                  "--sensor 1 --mcap " +
+                                  (dir / "no.mcap").string());
+  CHECK(refused.status == 2);
+  CHECK_THAT(refused.err, Contains("bag export"));
   std::filesystem::remove_all(dir);
 }
