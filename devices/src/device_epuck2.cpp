@@ -30,6 +30,7 @@
 // with the e-puck's description: the e-puck2's body is taken as the e-puck1's); odo the step
 // counters' travel since the start, unwrapped from their 16 bits.
 // Controllers: buffon and rs. The wanderer (several reads per step) is not supported here yet.
+#include "emulate_serve.hpp"
 #include "registry.hpp"
 
 #include <antkit/devices/controllers.hpp>
@@ -524,42 +525,12 @@ public:
   [[nodiscard]] EmulateReport
   emulate(const EmulateOptions& o,
           const std::function<void(const std::string&)>& ready) const override {
-    const std::string others = " is an option of the stc-floor robot";
-    if (o.map) throw kernel::InputError("floor map", others);
-    if (o.start) throw kernel::InputError("start sub-cell", others);
-    if (o.heading) throw kernel::InputError("start heading", others);
-    if (o.noise) throw kernel::InputError("camera noise", others);
-    if (o.dark_offset) throw kernel::InputError("dark offset", others);
-    if (o.fade_s) throw kernel::InputError("fade half-life", others);
-    if (o.rotation_error) throw kernel::InputError("rotation error", others);
-    if (o.drift) throw kernel::InputError("drift", others);
+    detail::refuse_floor_options(o);
     if (o.pace) throw kernel::InputError("pacing", "is not supported by the epuck2 emulator yet");
-    EmulatorOptions options;
-    options.seed = o.seed;
-    options.faults = parse_faults(o.faults);
-    std::optional<TcpListener> listener;
-    if (o.listen)
-      listener.emplace(TcpListener::listen(parse_tcp_endpoint(*o.listen, "listen address", true),
-                                           "listen address"));
+    const EmulatorOptions options = detail::emulator_options(o);
+    std::optional<TcpListener> listener = detail::listen_for(o);
     epuck2::Emulator emulator(o.walls, options);
-    EmulateReport r;
-    if (listener) {
-      r.listen = listener->port_spec();
-      ready(r.listen);
-      emulator.serve(*listener);
-    } else {
-      Pty pty = Pty::open();
-      ready(pty.slave_path());
-      emulator.serve(pty);
-    }
-    r.sessions = emulator.sessions();
-    r.commands = emulator.commands();
-    r.faults = emulator.faults();
-    const auto& body = emulator.body();
-    r.periods = body.trail().size() - 1;
-    r.position = {static_cast<double>(body.pose().position.x.raw()) / 65536.0,
-                  static_cast<double>(body.pose().position.y.raw()) / 65536.0};
-    return r;
+    return detail::serve_emulator(emulator, listener, ready, emulator.body());
   }
 };
 
