@@ -25,7 +25,8 @@ public:
   SerialSession(SerialPort port, RobotKind robot, const LinkOptions& link,
                 std::unique_ptr<LoggedController> controller, bool wander,
                 std::chrono::nanoseconds period)
-      : link_(std::move(port), robot, link), body_(link_, period),
+      : framing_(std::make_shared<const LineFraming>(robot)),
+        link_(std::move(port), framing_, link), body_(link_, framing_->codec(), period),
         controller_(std::move(controller)), wander_(wander) {}
 
   void start(std::vector<Exchange>& io) override { body_.start(io); }
@@ -47,6 +48,7 @@ public:
   [[nodiscard]] LinkStats stats() const override { return link_.stats(); }
 
 private:
+  std::shared_ptr<const LineFraming> framing_;
   RobotLink link_;
   detail::Body body_;
   std::unique_ptr<LoggedController> controller_;
