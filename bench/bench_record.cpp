@@ -71,7 +71,7 @@ void BM_PtyExchanges(benchmark::State& state) {
   devices::RobotLink link(
       devices::SerialPort::open(emu.port(), devices::describe(devices::RobotKind::Khepera).line),
       devices::RobotKind::Khepera);
-  const auto& codec = link.codec();
+  const devices::Codec codec(devices::RobotKind::Khepera);
   std::vector<devices::Exchange> io;
   std::int64_t steps = 0;
   for (auto _ : state) {

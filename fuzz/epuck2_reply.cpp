@@ -4,7 +4,9 @@
 // values re-encoded (16-bit little-endian), and a refusal points into the reply or just past it.
 // The emulator takes any stream: after it, "\rx\r" and a resync bring the firmware back to the top
 // of its loop whatever state the stream left it in, and its reply to a step sequence is 20 bytes
-// that the step decoder accepts.
+// that the step decoder accepts. The binary framing (SequenceFraming, which the link classifies
+// replies by) accepts a reply to a step or a stop sequence exactly when the decoder does, and
+// sizes any bytes taken as a sequence without crashing.
 #include <antkit/devices/epuck2.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <cstddef>
@@ -47,6 +49,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       __builtin_trap();
     }
   }
+  // The framing the link reads by agrees with the decoders.
+  const epuck2::SequenceFraming framing;
+  const auto accepts = [&](const std::string& request) {
+    return framing.classify(request, reply).kind == ReplyKind::Reply;
+  };
+  if (accepts(epuck2::step_sequence(1, -1)) != bool(epuck2::decode_step(reply))) __builtin_trap();
+  if (accepts(epuck2::stop_sequence()) != bool(epuck2::decode_pair(reply))) __builtin_trap();
+  (void)framing.reply_size(reply);
   // The firmware on the stream; then back to the top of its loop, and a step.
   static epuck2::Emulator emulator(
       antkit::geometry::build_arena_spec("circle:d=8").arena.walls_fx());

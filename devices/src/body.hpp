@@ -25,7 +25,8 @@ class Body {
 public:
   // `period`: the shortest time between two sensor reads (0: as fast as the link allows; a replay
   // passes 0, it does not wait).
-  explicit Body(CommandLink& link, std::chrono::nanoseconds period = {});
+  // `codec`: the text robot's, which encodes its commands and decodes the replies `link` returns.
+  Body(CommandLink& link, const Codec& codec, std::chrono::nanoseconds period = {});
 
   // Before the first step: the wheel counters to zero (robots with encoders), or, where the robot
   // cannot set them (the Webots relay acknowledges G and does nothing, PROTOCOLS.md), their value
@@ -44,6 +45,7 @@ private:
   // one (link.last_send_ns(): the recording's clock, or the logged time in a replay).
   void reckon_until(std::int64_t t_ns);
   CommandLink& link_;
+  const Codec& codec_;
   const RobotDescription& robot_;
   std::chrono::nanoseconds period_;
   std::chrono::steady_clock::time_point next_read_{};

@@ -1,42 +1,34 @@
 // The e-puck2 in binary mode as a device (device.hpp, `--device epuck2`): one binary sequence per
-// control step (epuck2.hpp), the record loop, log and replay every device shares, and its own
-// link, since a binary reply has no letter, no line and no terminator to classify by.
+// control step (epuck2.hpp), driven through its binary framing (epuck2::SequenceFraming,
+// framing.hpp) by the link, the safe stop, the record loop, the log and the replay every device
+// shares (link.hpp, logged_link.hpp).
 //
-// The sequence link (SequenceLink), one sequence and its reply of a known size, attempt after
-// attempt up to `tries` sends:
-//   1. after a failed attempt: the back-off, then a resynchronisation -- kResyncZeros 0 bytes sent,
-//      and whatever comes back read until the line stays quiet for `backoff_max` (at least 20 ms,
-//      at most one timeout), logged as its own exchange: the firmware, which waits forever for a
-//      sequence's 0, is back at the top of its loop, and the reply of a sequence that this ended is
-//      gone;
-//   2. drain: whatever waits on the line cannot be this send's reply (logged with nothing sent);
-//   3. send the sequence and read exactly its reply's size within the timeout, then whatever is
-//      already waiting after it. The reply is taken when exactly that many bytes came and nothing
-//      after them, and the codec validates them (decode_step, decode_pair). A short reply (a cut,
-//      a lost terminator, a silent robot), bytes after it (a banner or ASCII text in front of the
-//      reply, a late reply) or a reply that does not validate is a fault: the next attempt.
-// The same ambiguity as the text robots' link (link.hpp): a late reply that arrives whole, alone,
-// after a resend, is taken as the resend's; every request here reads the robot's state (or sets
-// given speeds), so it is harmless.
+// What the framing makes of the shared link: a reply is read as exactly the size its sequence
+// asks for, and bytes after it are a fault; after a failed attempt the link resynchronises
+// (kResyncZeros 0 bytes sent, whatever comes back read until the line stays quiet, logged as its
+// own exchange: the firmware, which waits forever for a sequence's 0, is back at the top of its
+// loop, and the reply of a sequence that this ended is gone); replies are validated by the codec
+// (the proximity readings below 4096, the rest by size).
 //
-// The safe stop (no acknowledgement exists in binary mode, PROTOCOLS.md): a resynchronisation,
-// then [-'D' 0 0][-'E'][0] until the speeds read back 0, 0, in up to stop_rounds rounds of tries,
-// bounded by stop_within (no send starts after it); a second stop signal cuts it short. The
-// wheels are stopped only when read back at 0, 0: acknowledged, stopped and complete are then all
-// true, and otherwise all false.
+// The safe stop (no acknowledgement exists in binary mode, PROTOCOLS.md): the framing's stop plan,
+// a resynchronisation, then [-'D' 0 0][-'E'][0] until the speeds read back 0, 0, in up to
+// stop_rounds rounds of tries, bounded by stop_within (no send starts after it); a second stop
+// signal cuts it short. The wheels are stopped only when read back at 0, 0: acknowledged, stopped
+// and complete are then all true, and otherwise all false.
 //
 // Its log: the same schema (log.hpp); the bytes as JSON strings, one character per byte (binary
 // bytes as \u00XX escapes, log_schema.hpp). obs, cmd and state as the e-puck's (controllers.hpp,
 // with the e-puck's description: the e-puck2's body is taken as the e-puck1's); odo the step
 // counters' travel since the start, unwrapped from their 16 bits.
 // Controllers: buffon and rs. The wanderer (several reads per step) is not supported here yet.
+#include "emulate_serve.hpp"
+#include "logged_link.hpp"
 #include "registry.hpp"
 
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/device.hpp>
 #include <antkit/devices/epuck2.hpp>
 #include <antkit/devices/link.hpp>
-#include <antkit/devices/stop_signals.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <thread>
@@ -46,216 +38,22 @@ namespace antkit::devices {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using Check = std::string (*)(std::string_view);
-// The quiet that ends a resynchronisation's read, at least (a choice: a robot answers within a few
-// milliseconds; a host under load, or an emulator between two polls, a little later).
-constexpr std::chrono::milliseconds kSettleMin{20};
-
-std::string check_step(std::string_view b) {
-  const auto d = epuck2::decode_step(b);
-  return d ? std::string() : "byte " + std::to_string(d.error.column) + ": " + d.error.message;
-}
-std::string check_pair(std::string_view b) {
-  const auto d = epuck2::decode_pair(b);
-  return d ? std::string() : "byte " + std::to_string(d.error.column) + ": " + d.error.message;
-}
-
-std::chrono::milliseconds backoff_for(const LinkOptions& o, std::uint32_t attempt) noexcept {
-  auto d = o.backoff;
-  for (std::uint32_t k = 1; k < attempt && d < o.backoff_max; ++k) d *= 2;
-  return std::min(d, std::max(o.backoff, o.backoff_max));
-}
-
-// A divergence found inside the shared steps (a replay): ends the record's check.
-struct Diverged {
-  Divergence d;
-};
-
-class SequenceLink {
-public:
-  virtual ~SequenceLink() = default;
-  [[nodiscard]] virtual const LinkOptions& options() const noexcept = 0;
-  // The reply (exactly n bytes that `check` accepts) to `seq`; LinkError as RobotLink::transact.
-  virtual std::string transact(const std::string& seq, std::size_t n, Check check,
-                               std::vector<Exchange>& io) = 0;
-  // Step 1 above, on its own (the start's and the safe stop's first exchange).
-  virtual void resync(std::vector<Exchange>& io) = 0;
-  virtual void pause(std::chrono::milliseconds d) = 0;
-  virtual void set_deadline(std::optional<Clock::time_point> deadline) noexcept = 0;
-};
-
-class LiveLink final : public SequenceLink {
-public:
-  LiveLink(SerialPort port, LinkOptions options) : port_(std::move(port)), options_(options) {
-    if (options_.tries == 0) options_.tries = 1;
-  }
-  [[nodiscard]] const LinkOptions& options() const noexcept override { return options_; }
-  [[nodiscard]] const LinkStats& stats() const noexcept { return stats_; }
-  void pause(std::chrono::milliseconds d) override { std::this_thread::sleep_for(d); }
-  void set_deadline(std::optional<Clock::time_point> deadline) noexcept override {
-    deadline_ = deadline;
-  }
-
-  void resync(std::vector<Exchange>& io) override {
-    io.push_back({epuck2::resync_bytes(), {}, now_ns()});
-    const std::size_t at = io.size() - 1;
-    ++stats_.exchanges;
-    port_.write_all(io[at].sent, options_.timeout);
-    const auto settle = std::min(std::max(options_.backoff_max, kSettleMin), options_.timeout);
-    const auto end = Clock::now() + options_.timeout;
-    while (Clock::now() < end) {
-      std::string b = port_.read_bytes(1, settle);
-      if (b.empty()) break;
-      io[at].received += b;
-      io[at].received += port_.read_bytes(65536, std::chrono::milliseconds(0));
-    }
-    if (!io[at].received.empty()) ++stats_.stale;
-  }
-
-  std::string transact(const std::string& seq, std::size_t n, Check check,
-                       std::vector<Exchange>& io) override {
-    std::string why;
-    for (std::uint32_t attempt = 0; attempt < options_.tries; ++attempt) {
-      if (attempt > 0) {
-        ++stats_.retries;
-        std::this_thread::sleep_for(backoff_for(options_, attempt));
-      }
-      if (StopSignals::requested())
-        throw LinkError(LinkError::Kind::Interrupted,
-                        port_.name() + ": interrupted by a stop signal");
-      if (deadline_ && Clock::now() >= *deadline_)
-        throw LinkError(LinkError::Kind::Timeout,
-                        port_.name() + ": the safe stop's time is up" +
-                            (why.empty() ? std::string() : " (last: " + why + ")"));
-      try {
-        if (attempt > 0) resync(io);
-        drain(io);
-      } catch (const LinkError&) {
-        io.push_back({seq, {}, now_ns()}); // every attempt logged, as RobotLink does
-        ++stats_.exchanges;
-        throw;
-      }
-      io.push_back({seq, {}, now_ns()});
-      const std::size_t at = io.size() - 1;
-      ++stats_.exchanges;
-      port_.write_all(seq, options_.timeout);
-      std::string got = port_.read_bytes(n, options_.timeout);
-      io[at].received = got;
-      if (got.size() < n) {
-        ++stats_.timeouts;
-        why = got.empty() ? "no reply within " + std::to_string(options_.timeout.count()) + " ms"
-                          : "a short reply of " + std::to_string(got.size()) + " of " +
-                                std::to_string(n) + " bytes";
-        continue;
-      }
-      const std::string extra = port_.read_bytes(65536, std::chrono::milliseconds(0));
-      io[at].received += extra;
-      if (!extra.empty()) {
-        ++stats_.bad_replies;
-        why = std::to_string(extra.size()) + " bytes after the " + std::to_string(n) +
-              "-byte reply '" + printable(io[at].received) + "'";
-        continue;
-      }
-      if (std::string e = check(got); !e.empty()) {
-        ++stats_.bad_replies;
-        why = "reply '" + printable(got) + "': " + e;
-        continue;
-      }
-      return got;
-    }
-    throw LinkError(LinkError::Kind::Timeout,
-                    port_.name() + ": no valid reply to the sequence '" + printable(seq) +
-                        "' after " + std::to_string(options_.tries) + " tries: " + why);
-  }
-
-private:
-  void drain(std::vector<Exchange>& io) {
-    std::string bytes;
-    for (std::string b; !(b = port_.read_bytes(65536, std::chrono::milliseconds(0))).empty();)
-      bytes += b;
-    if (bytes.empty()) return;
-    ++stats_.stale;
-    io.push_back({{}, std::move(bytes), now_ns()});
-  }
-  [[nodiscard]] std::int64_t now_ns() const noexcept {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - options_.origin)
-        .count();
-  }
-  SerialPort port_;
-  LinkOptions options_;
-  LinkStats stats_;
-  std::optional<Clock::time_point> deadline_;
-};
-
-// A replay's link: the live link's decisions re-run on the logged bytes.
-class LoggedLink final : public SequenceLink {
-public:
-  void load(const std::vector<Exchange>& io, std::int64_t step, std::string field) {
-    io_ = &io;
-    k_ = 0;
-    step_ = step;
-    field_ = std::move(field);
-  }
-  void set_end_is_failure(bool on) noexcept { end_is_failure_ = on; }
-  [[nodiscard]] std::size_t position() const noexcept { return k_; }
-  [[nodiscard]] bool at_end() const noexcept { return k_ >= io_->size(); }
-  [[nodiscard]] const LinkOptions& options() const noexcept override { return options_; }
-  void pause(std::chrono::milliseconds) override {}
-  void set_deadline(std::optional<Clock::time_point>) noexcept override {}
-
-  void resync(std::vector<Exchange>&) override { (void)expect(epuck2::resync_bytes()); }
-
-  std::string transact(const std::string& seq, std::size_t n, Check check,
-                       std::vector<Exchange>&) override {
-    for (std::uint32_t attempt = 0;; ++attempt) {
-      if (attempt > 0) (void)expect(epuck2::resync_bytes());
-      const Exchange& e = expect(seq);
-      if (e.received.size() == n && check(e.received).empty()) return e.received;
-    }
-  }
-
-private:
-  const Exchange& expect(const std::string& sent) {
-    while (k_ < io_->size() && (*io_)[k_].sent.empty()) ++k_; // drained bytes
-    if (k_ >= io_->size()) {
-      if (end_is_failure_)
-        throw LinkError(LinkError::Kind::Timeout, "the log ends before a valid reply");
-      throw Diverged{{step_, field_ + "[" + std::to_string(k_) + "]", "(no exchange)",
-                      "a send of '" + printable(sent) + "'"}};
-    }
-    const Exchange& e = (*io_)[k_];
-    if (e.sent != sent) {
-      if (end_is_failure_)
-        throw LinkError(LinkError::Kind::Timeout, "no valid reply (the log goes on)");
-      throw Diverged{{step_, field_ + "[" + std::to_string(k_) + "].sent",
-                      "'" + printable(e.sent) + "'", "'" + printable(sent) + "'"}};
-    }
-    ++k_;
-    return e;
-  }
-  LinkOptions options_;
-  const std::vector<Exchange>* io_ = nullptr;
-  std::size_t k_ = 0;
-  std::int64_t step_ = 0;
-  std::string field_;
-  bool end_is_failure_ = false;
-};
+using detail::Diverged;
+using detail::LoggedLink;
 
 // The robot's half of a step, over either link: the same code records and replays.
 class Body {
 public:
-  void start(SequenceLink& link, std::vector<Exchange>& io) {
+  void start(CommandLink& link, std::vector<Exchange>& io) {
     link.resync(io); // the firmware's state at connect is unknown; its banner may be waiting
-    const auto reply =
-        link.transact(epuck2::start_sequence(), epuck2::kPairReplySize, check_pair, io);
+    const auto reply = link.transact(epuck2::start_sequence(), io);
     const WheelPair w = *epuck2::decode_pair(reply).value;
     total_[0] = base_[0] = w.left;
     total_[1] = base_[1] = w.right;
   }
   // The step's sequence (the last command's speeds, the proximity and the counters).
-  Proximity read(SequenceLink& link, std::vector<Exchange>& io) {
-    const auto reply =
-        link.transact(epuck2::step_sequence(left_, right_), epuck2::kStepReplySize, check_step, io);
+  Proximity read(CommandLink& link, std::vector<Exchange>& io) {
+    const auto reply = link.transact(epuck2::step_sequence(left_, right_), io);
     const epuck2::StepReply r = *epuck2::decode_step(reply).value;
     total_[0] = epuck2::unwrap(total_[0], r.left);
     total_[1] = epuck2::unwrap(total_[1], r.right);
@@ -274,73 +72,13 @@ private:
   std::int64_t total_[2] = {0, 0}, base_[2] = {0, 0};
 };
 
-SafeStopResult stop_steps(SequenceLink& link, std::vector<Exchange>& io) {
-  SafeStopResult out;
-  const auto& o = link.options();
-  const auto rounds = std::max<std::uint32_t>(1, o.stop_rounds);
-  const auto deadline = Clock::now() + o.stop_within;
-  link.set_deadline(deadline);
-  const auto notice = [&](const std::string& what) {
-    if (o.on_stop_notice) o.on_stop_notice(what);
-  };
-  const auto time_up = [&] { return Clock::now() >= deadline; };
-  bool cut = false, gone = false, late = false;
-  std::string why = "no reply";
-  const auto failed = [&](const LinkError& e) {
-    why = e.what();
-    if (e.kind() == LinkError::Kind::Interrupted) cut = true;
-    if (e.kind() == LinkError::Kind::Disconnected) gone = true;
-    if (time_up()) late = true;
-  };
-  try {
-    link.resync(io);
-  } catch (const LinkError& e) {
-    failed(e);
-  }
-  for (std::uint32_t round = 0; round < rounds && !cut && !gone && !late; ++round) {
-    if (round > 0) {
-      if (time_up()) {
-        late = true;
-        break;
-      }
-      notice("the wheels not read back at 0, 0 yet (" + why + "); round " +
-             std::to_string(round + 1) + " of " + std::to_string(rounds) +
-             " (Ctrl-C again to give up)");
-      link.pause(o.backoff_max);
-    }
-    try {
-      const auto reply =
-          link.transact(epuck2::stop_sequence(), epuck2::kPairReplySize, check_pair, io);
-      const WheelPair w = *epuck2::decode_pair(reply).value;
-      if (w.left == 0 && w.right == 0) {
-        out.stopped = out.acknowledged = out.complete = true;
-        break;
-      }
-      why =
-          "the robot reads back speeds " + std::to_string(w.left) + ", " + std::to_string(w.right);
-    } catch (const LinkError& e) {
-      failed(e);
-    }
-  }
-  link.set_deadline(std::nullopt);
-  if (!out.stopped) {
-    out.failure = "wheels not read back at 0, 0 (" + why + ")";
-    if (cut) out.failure += "; cut short by a stop signal";
-    if (late) {
-      const std::string gave_up =
-          "gave up after " + std::to_string(o.stop_within.count()) + " ms (--stop-within)";
-      out.failure += "; " + gave_up;
-      notice("the safe stop " + gave_up);
-    }
-  }
-  return out;
-}
-
 class Epuck2Session final : public Session {
 public:
   Epuck2Session(SerialPort port, const LinkOptions& link,
                 std::unique_ptr<LoggedController> controller, std::chrono::nanoseconds period)
-      : link_(std::move(port), link), controller_(std::move(controller)), period_(period) {}
+      : link_(std::move(port), std::make_shared<const epuck2::SequenceFraming>(),
+              without_watchdog(link)),
+        controller_(std::move(controller)), period_(period) {}
 
   void start(std::vector<Exchange>& io) override { body_.start(link_, io); }
 
@@ -361,18 +99,18 @@ public:
   }
 
   SafeStopResult safe_stop(std::vector<Exchange>& io) noexcept override {
-    try {
-      return stop_steps(link_, io);
-    } catch (const std::exception& e) {
-      SafeStopResult out;
-      out.failure = std::string("the safe stop failed: ") + e.what();
-      return out;
-    }
+    return devices::safe_stop(link_, io);
   }
   [[nodiscard]] LinkStats stats() const override { return link_.stats(); }
 
 private:
-  LiveLink link_;
+  // The e-puck2's link has no watchdog yet (--watchdog is not applied to it: its own link never
+  // had one, and the shared link keeps that until the e-puck2's tests cover one).
+  static LinkOptions without_watchdog(LinkOptions o) {
+    o.watchdog = std::chrono::milliseconds(0);
+    return o;
+  }
+  RobotLink link_;
   Body body_;
   std::unique_ptr<LoggedController> controller_;
   std::chrono::nanoseconds period_;
@@ -400,13 +138,14 @@ std::optional<Divergence> check_stop(const LogStop& stop) {
     if (stop.io[from].sent != epuck2::resync_bytes()) continue;
     const std::vector<Exchange> tail(stop.io.begin() + static_cast<std::ptrdiff_t>(from),
                                      stop.io.end());
-    LoggedLink link;
+    const epuck2::SequenceFraming framing;
+    LoggedLink link(framing, {});
     link.load(tail, stop.step, "stop.io");
     link.set_end_is_failure(true);
     std::vector<Exchange> seen;
     SafeStopResult r;
     try {
-      r = stop_steps(link, seen);
+      r = detail::safe_stop_steps(link, seen);
     } catch (const Diverged& d) {
       last = d.d;
       continue;
@@ -443,7 +182,8 @@ ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
     throw kernel::InputError(path, 1, 1, e.message());
   }
   const RobotDescription& robot = describe(RobotKind::Epuck);
-  LoggedLink link;
+  const epuck2::SequenceFraming framing;
+  LoggedLink link(framing, {});
   Body body;
   std::vector<std::int64_t> obs;
   std::vector<Exchange> seen;
@@ -524,42 +264,12 @@ public:
   [[nodiscard]] EmulateReport
   emulate(const EmulateOptions& o,
           const std::function<void(const std::string&)>& ready) const override {
-    const std::string others = " is an option of the stc-floor robot";
-    if (o.map) throw kernel::InputError("floor map", others);
-    if (o.start) throw kernel::InputError("start sub-cell", others);
-    if (o.heading) throw kernel::InputError("start heading", others);
-    if (o.noise) throw kernel::InputError("camera noise", others);
-    if (o.dark_offset) throw kernel::InputError("dark offset", others);
-    if (o.fade_s) throw kernel::InputError("fade half-life", others);
-    if (o.rotation_error) throw kernel::InputError("rotation error", others);
-    if (o.drift) throw kernel::InputError("drift", others);
+    detail::refuse_floor_options(o);
     if (o.pace) throw kernel::InputError("pacing", "is not supported by the epuck2 emulator yet");
-    EmulatorOptions options;
-    options.seed = o.seed;
-    options.faults = parse_faults(o.faults);
-    std::optional<TcpListener> listener;
-    if (o.listen)
-      listener.emplace(TcpListener::listen(parse_tcp_endpoint(*o.listen, "listen address", true),
-                                           "listen address"));
+    const EmulatorOptions options = detail::emulator_options(o);
+    std::optional<TcpListener> listener = detail::listen_for(o);
     epuck2::Emulator emulator(o.walls, options);
-    EmulateReport r;
-    if (listener) {
-      r.listen = listener->port_spec();
-      ready(r.listen);
-      emulator.serve(*listener);
-    } else {
-      Pty pty = Pty::open();
-      ready(pty.slave_path());
-      emulator.serve(pty);
-    }
-    r.sessions = emulator.sessions();
-    r.commands = emulator.commands();
-    r.faults = emulator.faults();
-    const auto& body = emulator.body();
-    r.periods = body.trail().size() - 1;
-    r.position = {static_cast<double>(body.pose().position.x.raw()) / 65536.0,
-                  static_cast<double>(body.pose().position.y.raw()) / 65536.0};
-    return r;
+    return detail::serve_emulator(emulator, listener, ready, emulator.body());
   }
 };
 

@@ -7,6 +7,7 @@
 // the wheel travel [left, right] (counters less the start's baseline; the Hemisson's commanded
 // travel in micrometres), state the controller's state hash.
 #include "body.hpp"
+#include "emulate_serve.hpp"
 #include "registry.hpp"
 
 #include <antkit/devices/device.hpp>
@@ -24,7 +25,8 @@ public:
   SerialSession(SerialPort port, RobotKind robot, const LinkOptions& link,
                 std::unique_ptr<LoggedController> controller, bool wander,
                 std::chrono::nanoseconds period)
-      : link_(std::move(port), robot, link), body_(link_, period),
+      : framing_(std::make_shared<const LineFraming>(robot)),
+        link_(std::move(port), framing_, link), body_(link_, framing_->codec(), period),
         controller_(std::move(controller)), wander_(wander) {}
 
   void start(std::vector<Exchange>& io) override { body_.start(io); }
@@ -46,6 +48,7 @@ public:
   [[nodiscard]] LinkStats stats() const override { return link_.stats(); }
 
 private:
+  std::shared_ptr<const LineFraming> framing_;
   RobotLink link_;
   detail::Body body_;
   std::unique_ptr<LoggedController> controller_;
@@ -99,44 +102,15 @@ public:
   [[nodiscard]] EmulateReport
   emulate(const EmulateOptions& o,
           const std::function<void(const std::string&)>& ready) const override {
-    const std::string others = " is an option of the stc-floor robot";
-    if (o.map) throw kernel::InputError("floor map", others);
-    if (o.start) throw kernel::InputError("start sub-cell", others);
-    if (o.heading) throw kernel::InputError("start heading", others);
-    if (o.noise) throw kernel::InputError("camera noise", others);
-    if (o.dark_offset) throw kernel::InputError("dark offset", others);
-    if (o.fade_s) throw kernel::InputError("fade half-life", others);
-    if (o.rotation_error) throw kernel::InputError("rotation error", others);
-    if (o.drift) throw kernel::InputError("drift", others);
-    EmulatorOptions options;
-    options.seed = o.seed;
-    options.faults = parse_faults(o.faults);
+    detail::refuse_floor_options(o);
+    EmulatorOptions options = detail::emulator_options(o);
     if (options.faults.unterminated_ppm > 0)
       throw kernel::InputError("fault", "unterminated=P is a fault of the epuck2's binary "
                                         "sequences (the text robots' lines have no 0 to lose)");
     options.pace = o.pace;
-    std::optional<TcpListener> listener;
-    if (o.listen)
-      listener.emplace(TcpListener::listen(parse_tcp_endpoint(*o.listen, "listen address", true),
-                                           "listen address"));
+    std::optional<TcpListener> listener = detail::listen_for(o);
     FirmwareEmulator emulator(robot_, o.walls, options);
-    EmulateReport r;
-    if (listener) {
-      r.listen = listener->port_spec();
-      ready(r.listen);
-      emulator.serve(*listener);
-    } else {
-      Pty pty = Pty::open();
-      ready(pty.slave_path());
-      emulator.serve(pty);
-    }
-    r.sessions = emulator.sessions();
-    r.commands = emulator.commands();
-    r.faults = emulator.faults();
-    r.periods = emulator.trail().size() - 1;
-    r.position = {static_cast<double>(emulator.pose().position.x.raw()) / 65536.0,
-                  static_cast<double>(emulator.pose().position.y.raw()) / 65536.0};
-    return r;
+    return detail::serve_emulator(emulator, listener, ready, emulator);
   }
 
 private:

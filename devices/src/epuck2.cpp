@@ -78,6 +78,58 @@ int argument_count(char req) noexcept {
   }
 }
 
+// The reply bytes of each request (PROTOCOLS.md's table, the e-puck2's sizes); 0: none, or not
+// framed here (-'I', whose size depends on the camera's mode).
+std::size_t reply_bytes(char req) noexcept {
+  switch (static_cast<unsigned char>(req)) {
+  case 0xF8: // -0x08 all sensors
+    return 103;
+  case 0xB2: // -'N'
+  case 0xB1: // -'O'
+    return 16;
+  case 0xBF: // -'A'
+    return 12;
+  case 0xB3: // -'M'
+  case 0xF4:
+    return 8;
+  case 0x9F: // -'a'
+  case 0x99: // -'g'
+  case 0x8B: // -'u'
+    return 6;
+  case 0xBB: // -'E'
+  case 0xAF: // -'Q'
+    return 4;
+  case 0x9E: // -'b'
+  case 0xF3:
+    return 2;
+  case 0x8C: // -'t'
+  case 0xA7: // -'Y'
+  case 0xF5:
+  case 0xF2:
+  case 0xF1:
+  case 0xF0:
+  case 0xEF:
+    return 1;
+  default:
+    return 0;
+  }
+}
+
+// Each request of a sequence, in order, with its argument count known (unknown bytes skipped, as
+// the firmware skips them), up to the 0 that ends it.
+template <class F>
+void for_each_request(std::string_view sequence, F&& f) {
+  for (std::size_t i = 0; i < sequence.size();) {
+    const char c = sequence[i];
+    if (c == 0) return;
+    const int n = argument_count(c);
+    ++i;
+    if (n < 0) continue;
+    f(c);
+    i += static_cast<std::size_t>(n);
+  }
+}
+
 // The values of an ASCII reply line of the e-puck emulator ("q,12,-3\r\n").
 std::vector<std::int32_t> values_of(std::string_view line) {
   std::vector<std::int32_t> out;
@@ -157,6 +209,47 @@ Decoded<WheelPair> decode_pair(std::string_view bytes) {
   out.value = WheelPair{static_cast<std::int16_t>(get16(bytes, 0)),
                         static_cast<std::int16_t>(get16(bytes, 2))};
   return out;
+}
+
+std::size_t reply_size(std::string_view sequence) noexcept {
+  std::size_t n = 0;
+  for_each_request(sequence, [&](char req) { n += reply_bytes(req); });
+  return n;
+}
+
+Verdict SequenceFraming::classify(std::string_view request, std::string_view unit) const {
+  Verdict v;
+  const std::size_t n = reply_size(request);
+  if (unit.size() != n) {
+    v.why = "byte " + std::to_string(std::min(unit.size(), n) + 1) + ": expected " +
+            std::to_string(n) + " bytes, got " + std::to_string(unit.size());
+    return v;
+  }
+  std::size_t at = 0;
+  for_each_request(request, [&](char req) {
+    if (req == epuck2::request('N') && v.why.empty())
+      for (std::size_t i = 0; i < 8 && v.why.empty(); ++i) {
+        const std::uint16_t reading = get16(unit, at + 2 * i);
+        if (reading >= kProximityLimit)
+          v.why = "byte " + std::to_string(at + 2 * i + 1) + ": proximity IR" + std::to_string(i) +
+                  " reads " + std::to_string(reading) + ": expected 0 to 4095";
+      }
+    at += reply_bytes(req);
+  });
+  if (v.why.empty()) v.kind = ReplyKind::Reply;
+  return v;
+}
+
+StopPlan SequenceFraming::stop_plan() const {
+  StopPlan plan;
+  plan.resync_first = true;
+  plan.read_back = stop_sequence();
+  plan.read_back_stops = true;
+  return plan;
+}
+
+std::string SequenceFraming::describe(std::string_view request) const {
+  return "the sequence '" + printable(request) + "'";
 }
 
 std::int64_t unwrap(std::int64_t total, std::int16_t low) noexcept {

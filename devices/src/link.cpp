@@ -9,6 +9,10 @@ namespace antkit::devices {
 namespace {
 using Clock = std::chrono::steady_clock;
 
+// The quiet that ends a resynchronisation's read, at least (a choice: a robot answers within a few
+// milliseconds; a host under load, or an emulator between two polls, a little later).
+constexpr std::chrono::milliseconds kSettleMin{20};
+
 char lower(char c) noexcept {
   return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
 }
@@ -61,7 +65,11 @@ ReplyKind classify_reply(const Codec& codec, std::string_view command, std::stri
 }
 
 RobotLink::RobotLink(SerialPort port, RobotKind robot, LinkOptions options)
-    : port_(std::move(port)), codec_(robot), options_(options), last_ok_(Clock::now()) {
+    : RobotLink(std::move(port), std::make_shared<const LineFraming>(robot), std::move(options)) {}
+
+RobotLink::RobotLink(SerialPort port, std::shared_ptr<const Framing> framing, LinkOptions options)
+    : port_(std::move(port)), framing_(std::move(framing)), options_(std::move(options)),
+      last_ok_(Clock::now()) {
   if (options_.tries == 0) options_.tries = 1;
 }
 
@@ -70,17 +78,41 @@ void RobotLink::pause(std::chrono::milliseconds d) {
 }
 
 void RobotLink::drain(std::vector<Exchange>& io) {
-  // Whatever waits now arrived before this send: it cannot be its reply. Read without waiting.
+  // Whatever waits now arrived before this send: it cannot be its reply. Read without waiting,
+  // as the framing reads (whole lines; or every byte there is).
   std::string bytes;
-  for (;;) {
-    const ReadResult r = port_.read_line(std::chrono::milliseconds(0), LineEnd::Lf);
-    if (r.bytes.empty()) break;
-    bytes += r.bytes;
-    if (!r.complete && !r.overflow) break; // a partial line: all there was
+  if (framing_->reading() == Reading::Lines) {
+    for (;;) {
+      const ReadResult r = port_.read_line(std::chrono::milliseconds(0), LineEnd::Lf);
+      if (r.bytes.empty()) break;
+      bytes += r.bytes;
+      if (!r.complete && !r.overflow) break; // a partial line: all there was
+    }
+  } else {
+    for (std::string b; !(b = port_.read_bytes(65536, std::chrono::milliseconds(0))).empty();)
+      bytes += b;
   }
   if (bytes.empty()) return;
   ++stats_.stale;
   io.push_back({{}, std::move(bytes), now_ns()});
+}
+
+void RobotLink::resync(std::vector<Exchange>& io) {
+  std::string bytes = framing_->resync();
+  if (bytes.empty()) return;
+  io.push_back({std::move(bytes), {}, now_ns()});
+  const std::size_t at = io.size() - 1;
+  ++stats_.exchanges;
+  port_.write_all(io[at].sent, options_.timeout);
+  const auto settle = std::min(std::max(options_.backoff_max, kSettleMin), options_.timeout);
+  const auto end = Clock::now() + options_.timeout;
+  while (Clock::now() < end) {
+    std::string b = port_.read_bytes(1, settle);
+    if (b.empty()) break;
+    io[at].received += b;
+    io[at].received += port_.read_bytes(65536, std::chrono::milliseconds(0));
+  }
+  if (!io[at].received.empty()) ++stats_.stale;
 }
 
 std::int64_t RobotLink::now_ns() const noexcept {
@@ -88,7 +120,10 @@ std::int64_t RobotLink::now_ns() const noexcept {
       .count();
 }
 
-std::string RobotLink::transact(const std::string& command, std::vector<Exchange>& io) {
+std::string RobotLink::transact(const std::string& request, std::vector<Exchange>& io) {
+  const Framing& framing = *framing_;
+  const bool lines = framing.reading() == Reading::Lines;
+  const bool resyncs = !framing.resync().empty();
   std::string why;
   for (std::uint32_t attempt = 0; attempt < options_.tries; ++attempt) {
     if (attempt > 0) {
@@ -112,25 +147,33 @@ std::string RobotLink::transact(const std::string& command, std::vector<Exchange
                           std::to_string(silent.count()) + " ms" +
                           (why.empty() ? std::string() : " (last: " + why + ")"));
     try {
+      if (attempt > 0 && resyncs) resync(io);
       drain(io);
     } catch (const LinkError&) {
-      // A line already gone: the attempt is still logged, so that a log shows every command tried
-      // (replay finds the safe stop by its first command even when nothing could be sent).
-      io.push_back({command, {}, now_ns()});
+      // A line already gone: the attempt is still logged, so that a log shows every request tried
+      // (replay finds the safe stop by its first request even when nothing could be sent).
+      io.push_back({request, {}, now_ns()});
       ++stats_.exchanges;
       throw;
     }
     last_send_ns_ = now_ns();
-    io.push_back({command, {}, last_send_ns_});
+    io.push_back({request, {}, last_send_ns_});
     const std::size_t at = io.size() - 1;
     ++stats_.exchanges;
-    port_.write_all(command, options_.timeout);
+    port_.write_all(request, options_.timeout);
+    const std::size_t n = lines ? 0 : framing.reply_size(request);
     const auto deadline = Clock::now() + options_.timeout;
     for (;;) {
       const auto left =
-          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
-      const ReadResult r =
-          port_.read_line(std::max(left, std::chrono::milliseconds(0)), LineEnd::Lf);
+          std::max(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()),
+                   std::chrono::milliseconds(0));
+      ReadResult r;
+      if (lines) {
+        r = port_.read_line(left, LineEnd::Lf);
+      } else {
+        r.bytes = port_.read_bytes(n, left);
+        r.complete = r.bytes.size() == n;
+      }
       io[at].received += r.bytes;
       if (r.overflow) {
         ++stats_.overflows;
@@ -141,29 +184,39 @@ std::string RobotLink::transact(const std::string& command, std::vector<Exchange
         ++stats_.timeouts;
         why = r.bytes.empty()
                   ? "no reply within " + std::to_string(options_.timeout.count()) + " ms"
-                  : "a partial reply '" + printable(r.bytes) + "'";
+              : lines ? "a partial reply '" + printable(r.bytes) + "'"
+                      : "a short reply of " + std::to_string(r.bytes.size()) + " of " +
+                            std::to_string(n) + " bytes";
         break;
       }
-      const ReplyKind kind = classify_reply(codec_, command, r.bytes);
-      if (kind == ReplyKind::Stale) {
+      if (!lines) {
+        // A reply without a terminator: bytes already waiting after it mean it was not the reply
+        // alone (a banner or text in front of it, a late reply).
+        const std::string extra = port_.read_bytes(65536, std::chrono::milliseconds(0));
+        io[at].received += extra;
+        if (!extra.empty()) {
+          ++stats_.bad_replies;
+          why = std::to_string(extra.size()) + " bytes after the " + std::to_string(n) +
+                "-byte reply '" + printable(io[at].received) + "'";
+          break;
+        }
+      }
+      const Verdict v = framing.classify(request, r.bytes);
+      if (v.kind == ReplyKind::Stale) {
         ++stats_.stale;
         continue;
       }
-      if (kind == ReplyKind::Bad) {
+      if (v.kind == ReplyKind::Bad) {
         ++stats_.bad_replies;
-        const auto decoded = codec_.decode_reply(command, r.bytes);
-        why = "reply '" + printable(r.bytes) + "'" +
-              (decoded ? std::string()
-                       : ": column " + std::to_string(decoded.error.column) + ": " +
-                             decoded.error.message);
+        why = "reply '" + printable(r.bytes) + "'" + (v.why.empty() ? std::string() : ": " + v.why);
         break;
       }
       last_ok_ = Clock::now();
       return r.bytes;
     }
   }
-  throw LinkError(LinkError::Kind::Timeout, port_.name() + ": no valid reply to '" +
-                                                printable(command) + "' after " +
+  throw LinkError(LinkError::Kind::Timeout, port_.name() + ": no valid reply to " +
+                                                framing.describe(request) + " after " +
                                                 std::to_string(options_.tries) + " tries: " + why);
 }
 
@@ -171,10 +224,11 @@ namespace detail {
 
 SafeStopResult safe_stop_steps(CommandLink& link, std::vector<Exchange>& io) {
   SafeStopResult out;
-  const Codec& codec = link.codec();
+  const Framing& framing = link.framing();
   const auto& o = link.options();
   const auto rounds = std::max<std::uint32_t>(1, o.stop_rounds);
-  const auto commands = codec.safe_stop();
+  const StopPlan plan = framing.stop_plan();
+  const auto& commands = plan.commands;
   const auto began = Clock::now();
   const auto deadline = began + o.stop_within;
   link.set_deadline(deadline);
@@ -190,44 +244,68 @@ SafeStopResult safe_stop_steps(CommandLink& link, std::vector<Exchange>& io) {
   };
   // A stop signal during the stop (a second Ctrl-C; the record loop took the first) ends it here.
   bool cut = false, gone = false, late = false;
-  // One command until acknowledged: its rounds of tries, with a word between rounds when the
-  // robot has not answered.
-  const auto until_acknowledged = [&](const std::string& command, const std::string& name,
-                                      const std::function<bool(const std::string&)>& accept,
-                                      std::string& why) {
+  // A link failure: whether the stop can go on (a timeout while time is left).
+  const auto goes_on = [&](const LinkError& e, std::string& why) {
+    why = e.what();
+    if (e.kind() == LinkError::Kind::Interrupted) {
+      cut = true;
+      return false;
+    }
+    if (e.kind() == LinkError::Kind::Disconnected) {
+      gone = true;
+      return false;
+    }
+    if (time_up()) {
+      late = true;
+      return false;
+    }
+    return true;
+  };
+  // One request until accepted: its rounds of tries, with a word between rounds when the robot
+  // has not answered (`waiting`: "no acknowledgement of 'D,0,0\r'", what has not come yet).
+  const auto until_accepted = [&](const std::string& request, const std::string& waiting,
+                                  const std::function<bool(const std::string&)>& accept,
+                                  std::string& why) {
     for (std::uint32_t round = 0; round < rounds; ++round) {
       if (round > 0) {
         if (time_up()) {
           late = true;
           return false;
         }
-        notice("no acknowledgement of " + name + " yet (" + why + "); round " +
-               std::to_string(round + 1) + " of " + std::to_string(rounds) +
-               " (Ctrl-C again to give up)");
+        notice(waiting + " yet (" + why + "); round " + std::to_string(round + 1) + " of " +
+               std::to_string(rounds) + " (Ctrl-C again to give up)");
         link.pause(o.backoff_max);
       }
       link.rearm();
       try {
-        if (accept(link.transact(command, io))) return true;
+        if (accept(link.transact(request, io))) return true;
       } catch (const LinkError& e) {
-        why = e.what();
-        if (e.kind() == LinkError::Kind::Interrupted) {
-          cut = true;
-          return false;
-        }
-        if (e.kind() == LinkError::Kind::Disconnected) {
-          gone = true;
-          return false;
-        }
-        if (time_up()) {
-          late = true;
-          return false;
-        }
+        if (!goes_on(e, why)) return false;
       }
     }
     return false;
   };
+  // The speeds read back: 0, 0 accepts; otherwise `why` says what was read, and where the
+  // read-back does not stop the wheels itself, the wheels' command goes again before the next.
+  const auto at_zero = [&](const std::string& reply, std::string& why) {
+    const auto speeds = framing.decode_speeds(reply);
+    if (speeds && speeds.value->left == 0 && speeds.value->right == 0) return true;
+    why = speeds ? "the robot reads back speeds " + std::to_string(speeds.value->left) + ", " +
+                       std::to_string(speeds.value->right)
+                 : "a bad speed reply";
+    if (!plan.read_back_stops) link.transact(commands.at(0), io);
+    return false;
+  };
 
+  std::string resync_why;
+  if (plan.resync_first) {
+    // The robot's state is unknown (a sequence may be open): back to a known one first.
+    try {
+      link.resync(io);
+    } catch (const LinkError& e) {
+      (void)goes_on(e, resync_why);
+    }
+  }
   bool wheels_acknowledged = false;
   for (std::size_t i = 0; i < commands.size(); ++i) {
     if (i > 0 && (!wheels_acknowledged || cut || gone || late)) {
@@ -241,33 +319,33 @@ SafeStopResult safe_stop_steps(CommandLink& link, std::vector<Exchange>& io) {
       break;
     }
     std::string why;
-    const bool acknowledged = until_acknowledged(
-        commands[i], "'" + printable(commands[i]) + "'", [](const std::string&) { return true; },
-        why);
+    const bool acknowledged = until_accepted(
+        commands[i], "no acknowledgement of " + framing.describe(commands[i]),
+        [](const std::string&) { return true; }, why);
     if (i == 0) wheels_acknowledged = acknowledged;
     if (!acknowledged) add(printable(commands[i]) + " not acknowledged (" + why + ")");
   }
   out.acknowledged = out.stopped = wheels_acknowledged;
-  // Confirmed by the robot's own state: the speeds read back as zero.
-  if (wheels_acknowledged && codec.robot().reads_speed) {
+  if (plan.read_back_stops) {
+    // No acknowledgement exists: the wheels are stopped when, and only when, they read back at
+    // 0, 0.
+    std::string why = resync_why.empty() ? "no reply" : resync_why;
+    if (!cut && !gone && !late)
+      out.stopped = until_accepted(
+          plan.read_back, "the wheels not read back at 0, 0",
+          [&](const std::string& reply) { return at_zero(reply, why); }, why);
+    out.acknowledged = out.stopped;
+    if (!out.stopped) add("wheels not read back at 0, 0 (" + why + ")");
+  } else if (wheels_acknowledged && !plan.read_back.empty()) {
+    // Confirmed by the robot's own state: the speeds read back as zero.
     out.stopped = false;
     if (cut || gone || late) {
       add("wheels not confirmed at 0 (not read back)");
     } else {
       std::string why = "no reading";
-      out.stopped = until_acknowledged(
-          codec.read_speed(), "the wheels at 0, 0",
-          [&](const std::string& reply) {
-            const auto speeds = codec.decode_speed(reply);
-            if (speeds && speeds.value->left == 0 && speeds.value->right == 0) return true;
-            why = speeds ? "the robot reads back speeds " + std::to_string(speeds.value->left) +
-                               ", " + std::to_string(speeds.value->right)
-                         : "a bad speed reply";
-            // Not at zero: the wheels command again before the next reading.
-            link.transact(commands[0], io);
-            return false;
-          },
-          why);
+      out.stopped = until_accepted(
+          plan.read_back, "no acknowledgement of the wheels at 0, 0",
+          [&](const std::string& reply) { return at_zero(reply, why); }, why);
       if (!out.stopped) add("wheels not confirmed at 0 (" + why + ")");
     }
   }

@@ -79,17 +79,17 @@ std::string signal_name(int sig) {
 
 namespace detail {
 
-Body::Body(CommandLink& link, std::chrono::nanoseconds period)
-    : link_(link), robot_(link.codec().robot()), period_(period) {}
+Body::Body(CommandLink& link, const Codec& codec, std::chrono::nanoseconds period)
+    : link_(link), codec_(codec), robot_(codec.robot()), period_(period) {}
 
 void Body::start(std::vector<Exchange>& io) {
   if (!robot_.has_odometry) return;
   if (robot_.odometry_set != 0) {
-    link_.transact(link_.codec().set_odometry(0, 0), io);
+    link_.transact(codec_.set_odometry(0, 0), io);
     return;
   }
-  const std::string reply = link_.transact(link_.codec().read_odometry(), io);
-  const WheelPair w = *link_.codec().decode_odometry(reply).value;
+  const std::string reply = link_.transact(codec_.read_odometry(), io);
+  const WheelPair w = *codec_.decode_odometry(reply).value;
   baseline_ = {w.left, w.right};
 }
 
@@ -99,14 +99,14 @@ Proximity Body::read_sensors(std::vector<Exchange>& io) {
     std::this_thread::sleep_until(next_read_);
     next_read_ = Clock::now() + period_;
   }
-  const std::string reply = link_.transact(link_.codec().read_proximity(), io);
+  const std::string reply = link_.transact(codec_.read_proximity(), io);
   // The robot senses where the wheels took it by the time the read was sent.
   if (!robot_.has_odometry) reckon_until(link_.last_send_ns());
-  return *link_.codec().decode_proximity(reply).value;
+  return *codec_.decode_proximity(reply).value;
 }
 
 void Body::set_wheels(std::int32_t left, std::int32_t right, std::vector<Exchange>& io) {
-  link_.transact(link_.codec().set_speed(left, right), io);
+  link_.transact(codec_.set_speed(left, right), io);
   // The old speeds were in force until the acknowledged command was sent (a choice: an earlier
   // attempt whose reply was lost may have reached the robot sooner; the difference is one timeout
   // at most, and only on a faulty line).
@@ -126,8 +126,8 @@ WheelTravel Body::odometry(std::vector<Exchange>& io) {
     return {static_cast<std::int64_t>(weighted_.left * um_per_s / den),
             static_cast<std::int64_t>(weighted_.right * um_per_s / den)};
   }
-  const std::string reply = link_.transact(link_.codec().read_odometry(), io);
-  const WheelPair w = *link_.codec().decode_odometry(reply).value;
+  const std::string reply = link_.transact(codec_.read_odometry(), io);
+  const WheelPair w = *codec_.decode_odometry(reply).value;
   return {w.left - baseline_.left, w.right - baseline_.right};
 }
 

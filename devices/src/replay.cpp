@@ -1,5 +1,6 @@
 // Replay of a hardware log through its controller (replay.hpp).
 #include "body.hpp"
+#include "logged_link.hpp"
 
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/device.hpp>
@@ -15,99 +16,15 @@ namespace antkit::devices {
 
 namespace {
 
-// A divergence found inside the shared body code (a sent byte, a reply): ends the record's check.
-struct Diverged {
-  Divergence d;
-};
-
-// The link of a replay: serves the body's commands from a log's exchanges, running the live
-// link's classification (link.hpp) on the logged bytes. Each command the body asks for must be the
-// bytes the log says were sent; each attempt's received bytes must be what the live link could
-// have read (stale lines, then the reply or a fault, nothing after a reply); the attempts of one
-// command end at its first valid reply, as live.
-class LoggedLink final : public CommandLink {
-public:
-  LoggedLink(const Codec& codec, LinkOptions options) : codec_(codec), options_(options) {}
-  void load(const std::vector<Exchange>& io, std::int64_t step, std::string field) {
-    io_ = &io;
-    k_ = 0;
-    step_ = step;
-    field_ = std::move(field);
-  }
-  [[nodiscard]] std::size_t position() const noexcept { return k_; }
-  [[nodiscard]] bool at_end() const noexcept { return k_ >= io_->size(); }
-  // In the stop record the log may end in the middle of a command (the run ended there): that is
-  // a link failure, not a divergence.
-  void set_end_is_failure(bool on) noexcept { end_is_failure_ = on; }
-
-  [[nodiscard]] const Codec& codec() const noexcept override { return codec_; }
-  [[nodiscard]] const LinkOptions& options() const noexcept override { return options_; }
-  void pause(std::chrono::milliseconds) override {}
-  void rearm() noexcept override {}
-  [[nodiscard]] std::uint64_t sends() const noexcept override { return sends_; }
-  [[nodiscard]] std::int64_t last_send_ns() const noexcept override { return last_send_ns_; }
-
-  // The exchanges are the log's: nothing is appended to `io`.
-  std::string transact(const std::string& command, std::vector<Exchange>&) override {
-    bool sent = false;
-    for (;;) {
-      while (k_ < io_->size() && (*io_)[k_].sent.empty()) ++k_; // drained bytes
-      if (k_ >= io_->size()) {
-        if (end_is_failure_)
-          throw LinkError(LinkError::Kind::Timeout, "the log ends before a valid reply");
-        throw Diverged{
-            {step_, field_ + "[" + std::to_string(k_) + "]", "(no exchange)",
-             std::string(sent ? "a resend" : "a send") + " of '" + printable(command) + "'"}};
-      }
-      const Exchange& e = (*io_)[k_];
-      if (e.sent != command) {
-        // In the stop record a command may end unanswered, or not be sent at all (the watchdog
-        // fires before a send): the safe stop's verdict, checked against the reason, says which.
-        if (end_is_failure_)
-          throw LinkError(LinkError::Kind::Timeout, "no valid reply (the log goes on)");
-        throw Diverged{{step_, field_ + "[" + std::to_string(k_) + "].sent",
-                        "'" + printable(e.sent) + "'", "'" + printable(command) + "'"}};
-      }
-      ++sends_;
-      last_send_ns_ = e.t_ns;
-      const std::size_t at = k_++;
-      sent = true;
-      // The attempt's bytes, line by line, as the live link read them.
-      std::string_view rest = e.received;
-      while (!rest.empty()) {
-        const auto nl = rest.find('\n');
-        if (nl == std::string_view::npos) break; // a partial line: the attempt timed out
-        const std::string_view line = rest.substr(0, nl + 1);
-        rest.remove_prefix(nl + 1);
-        const ReplyKind kind = classify_reply(codec_, command, line);
-        if (kind == ReplyKind::Stale) continue;
-        if (!rest.empty())
-          throw Diverged{{step_, field_ + "[" + std::to_string(at) + "].received",
-                          "'" + printable(e.received) + "'",
-                          "nothing read after the line '" + printable(line) + "'"}};
-        if (kind == ReplyKind::Reply) return std::string(line);
-        break; // a bad line: the live link resent
-      }
-    }
-  }
-
-private:
-  const Codec& codec_;
-  LinkOptions options_;
-  const std::vector<Exchange>* io_ = nullptr;
-  std::size_t k_ = 0;
-  std::int64_t step_ = 0;
-  std::string field_;
-  bool end_is_failure_ = false;
-  std::uint64_t sends_ = 0;
-  std::int64_t last_send_ns_ = -1;
-};
+using detail::Diverged;
+using detail::LoggedLink;
 
 // The stop record against the run: its reason in the words stop_reason() writes, and its safe
 // stop re-run on its exchanges. The exchanges of an unfinished step come first; the safe stop is
 // the shortest tail, starting with the safe stop's first command, on which safe_stop() replays to
 // the verdict the reason states. Returns the difference, if any.
-std::optional<Divergence> check_stop(const LogStop& stop, const Codec& codec) {
+std::optional<Divergence> check_stop(const LogStop& stop, const LineFraming& framing) {
+  const Codec& codec = framing.codec();
   const std::string& reason = stop.reason;
   const auto field = [&](std::string what) { return "stop." + std::move(what); };
   // The kind and its words.
@@ -140,7 +57,7 @@ std::optional<Divergence> check_stop(const LogStop& stop, const Codec& codec) {
     if (stop.io[from].sent != first) continue;
     const std::vector<Exchange> tail(stop.io.begin() + static_cast<std::ptrdiff_t>(from),
                                      stop.io.end());
-    LoggedLink link(codec, {});
+    LoggedLink link(framing, {});
     link.load(tail, stop.step, "stop.io");
     link.set_end_is_failure(true);
     std::vector<Exchange> seen;
@@ -297,12 +214,12 @@ ReplayResult replay_serial(LogReader& reader, const std::string& path,
   } catch (const kernel::InputError& e) {
     throw kernel::InputError(path, 1, 1, e.message());
   }
-  const Codec codec(kind);
-  const RobotDescription& robot = codec.robot();
+  const LineFraming framing(kind);
+  const RobotDescription& robot = framing.codec().robot();
   const bool wander = header.controller == "wander";
   // The same body as record() (body.hpp), over the log's exchanges.
-  LoggedLink link(codec, {});
-  detail::Body body(link);
+  LoggedLink link(framing, {});
+  detail::Body body(link, framing.codec());
   std::vector<std::int64_t> obs;
   std::vector<Exchange> seen;
   return replay_records(
@@ -352,7 +269,7 @@ ReplayResult replay_serial(LogReader& reader, const std::string& path,
                          "no further exchange in this step"});
         return d;
       },
-      [&](const LogStop& stop) { return check_stop(stop, codec); });
+      [&](const LogStop& stop) { return check_stop(stop, framing); });
 }
 
 } // namespace detail

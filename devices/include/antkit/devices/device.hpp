@@ -17,8 +17,9 @@
 //                                              (robot.hpp), running the controllers of
 //                                              controllers.hpp (buffon, rs, wander)
 //   epuck2                                     the e-puck2 in binary mode (epuck2.hpp,
-//                                              device_epuck2.cpp): its own binary codec, link
-//                                              and emulator; the e-puck's body and controllers
+//                                              device_epuck2.cpp): its binary codec and framing
+//                                              (Framing, framing.hpp) over the shared link, and
+//                                              its emulator; the e-puck's body and controllers
 //   stc-floor                                  paper 002's marker-floor robot (stc_floor/), running
 //                                              ant or ant-edge through the camera pipeline
 // Adding a robot is one set of files (its description or codec, its Session, its Device) and one

@@ -33,6 +33,7 @@
 //    speeds again. An ASCII line left open (only line noise could open one: this driver sends no
 //    ASCII) is not resynchronised: it shows as faults until the tries run out.
 #include <antkit/devices/emulator.hpp>
+#include <antkit/devices/framing.hpp>
 #include <antkit/devices/protocol.hpp>
 #include <antkit/devices/serial.hpp>
 #include <array>
@@ -74,6 +75,35 @@ struct StepReply {
 Decoded<StepReply> decode_step(std::string_view bytes);
 // Exactly kPairReplySize bytes: two int16 LE (counters, or speeds). Never throws.
 Decoded<WheelPair> decode_pair(std::string_view bytes);
+
+// The size of the reply to a sequence: its requests' reply sizes added up (PROTOCOLS.md's table),
+// walking each request's argument bytes, up to the 0 that ends it; unknown bytes add nothing, as
+// the firmware skips them. -'I' (the camera image, its size depends on the camera's mode) is not
+// framed here (0).
+std::size_t reply_size(std::string_view sequence) noexcept;
+
+// The e-puck2's binary framing (framing.hpp), for the link, its replay and the safe stop:
+//  * a reply is read as exactly reply_size() bytes (Reading::Bytes); bytes after it are a fault;
+//  * it is validated by its requests' parts: every -'N' reading below kProximityLimit (as
+//    decode_step; a byte column counts from 1 in the whole reply); the rest by its size only;
+//  * after a failed attempt, resync_bytes() (36 zeros) end any sequence the firmware still reads;
+//  * the safe stop: no acknowledgement exists in binary mode, so a resynchronisation, then
+//    stop_sequence() until the speeds read back 0, 0 (decode_pair);
+//  * a request is named "the sequence '...'" in messages.
+class SequenceFraming final : public Framing {
+public:
+  [[nodiscard]] Reading reading() const noexcept override { return Reading::Bytes; }
+  [[nodiscard]] std::size_t reply_size(std::string_view request) const override {
+    return epuck2::reply_size(request);
+  }
+  [[nodiscard]] Verdict classify(std::string_view request, std::string_view unit) const override;
+  [[nodiscard]] std::string resync() const override { return resync_bytes(); }
+  [[nodiscard]] StopPlan stop_plan() const override;
+  [[nodiscard]] Decoded<WheelPair> decode_speeds(std::string_view reply) const override {
+    return decode_pair(reply);
+  }
+  [[nodiscard]] std::string describe(std::string_view request) const override;
+};
 
 // The 16-bit counter's continuation: `total` (the running count) moved by the int16 difference
 // from its low 16 bits to `low` (steps between two reads stay far below 32768).

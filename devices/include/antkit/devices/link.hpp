@@ -1,29 +1,40 @@
 #pragma once
-// A robot on a serial link: one command, one validated reply, with the resynchronisation that
+// A robot on a serial link: one request, one validated reply, with the resynchronisation that
 // drivers in the field do (PROTOCOLS.md, Common: on junk, a partial line or a timeout they flush
-// the input, resend, and give up after a few tries).
+// the input, resend, and give up after a few tries). The link drives any robot's wire format
+// through its Framing (framing.hpp) and does not know which one it is: text lines (LineFraming,
+// the text robots) or the e-puck2's binary sequences (epuck2::SequenceFraming).
 //
-// transact(command), one attempt after another, up to `tries` sends:
+// transact(request), one attempt after another, up to `tries` sends:
+//   0. after a failed attempt: the back-off (`backoff`, doubling, at most `backoff_max`), then,
+//      when the framing has one, a resynchronisation (resync() below);
 //   1. drain: whatever is waiting on the line now cannot be this send's reply (a late reply to an
 //      earlier send, the tail of junk); it is logged as an exchange with nothing sent, and dropped;
-//   2. send the command (the attempt is appended to the caller's exchange list);
-//   3. read lines until the timeout. A line is the reply when classify_reply() says so: its
-//      letter is the command's, in lower case, and the codec validates it completely. A complete,
-//      well-formed reply line of ANOTHER letter is stale (a late answer to an earlier command,
-//      PROTOCOLS.md: "a reply whose first letter is not the expected one ... is not a reply to this
-//      command"): it is kept in the exchange's bytes, counted, and skipped, and the wait goes on
-//      within the same timeout. Anything else -- a timeout, a partial line, junk, an over-long
-//      line, a reply of the right letter that does not validate -- is a fault: back off
-//      (`backoff`, doubling, at most `backoff_max`), then the next attempt.
+//   2. send the request (the attempt is appended to the caller's exchange list);
+//   3. read until the timeout, unit by unit as the framing reads (Reading::Lines: a line;
+//      Reading::Bytes: the reply's size, then whatever already waits after it, which is a fault).
+//      A unit is the reply when the framing's classify() says so (text robots, classify_reply():
+//      its letter is the command's, in lower case, and the codec validates it completely). A unit
+//      the framing calls Stale (a complete, well-formed reply line of ANOTHER letter: a late
+//      answer to an earlier command, PROTOCOLS.md: "a reply whose first letter is not the
+//      expected one ... is not a reply to this command") is kept in the exchange's bytes,
+//      counted, and skipped, and the wait goes on within the same timeout. Anything else -- a
+//      timeout, a partial line or a short reply, junk, an over-long line, bytes after a binary
+//      reply, a reply that does not validate -- is a fault: the next attempt.
 // An exchange's `received` is every byte read between its send and the next send: its reply, when
-// it has one, is its last line, and any lines before it are stale. So a log holds exactly what
+// it has one, is its last unit, and any lines before it are stale. So a log holds exactly what
 // went over the wire, in order, and replay (replay.hpp) re-runs this very classification on it.
 //
+// resync(): the framing's resync bytes sent (the e-puck2: 36 zeros, which end any sequence its
+// firmware may still be reading) as an exchange of its own, and whatever comes back read until the
+// line stays quiet for `backoff_max` (at least 20 ms, at most one timeout): the robot is back in a
+// known state and the reply of a request this ended is gone. Nothing for a framing without one.
+//
 // What stays ambiguous without sequence numbers: a late reply with the SAME letter as the command
-// now in flight is taken as its answer. For the commands resent here that is harmless: reads (N,
-// E, H, Q) answer with the robot's state, and setting speeds or counters to given values is
-// idempotent. The record loop never sends two commands of one letter in a row except the
-// wanderer's sensor reads.
+// now in flight (or, binary, a late reply that arrives whole and alone after a resend) is taken as
+// its answer. For the requests resent here that is harmless: reads (N, E, H, Q) answer with the
+// robot's state, and setting speeds or counters to given values is idempotent. The record loop
+// never sends two commands of one letter in a row except the wanderer's sensor reads.
 //
 // A disconnect (EOF or EIO on the tty, a reset TCP connection) or a stop signal ends the exchange
 // at once (LinkError Disconnected / Interrupted); so does the watchdog, when one is set, when no
@@ -46,11 +57,15 @@
 //  * The back-off is short (5 ms doubling to 40 ms): the robots answer within milliseconds, and a
 //    long back-off would only add to the time a faulty link steals from the control period.
 //
-// safe_stop(link): the robot's safe-stop commands (codec().safe_stop(): wheels to zero first),
-// each until acknowledged, in up to `stop_rounds` rounds of `tries` sends with the back-off
-// between rounds; then, on robots that can read their speeds (E), the wheels are read back and
-// must be 0, 0 -- the stop is confirmed by the robot's own state, not only by an acknowledgement
-// that could be stale. It never throws; its result says whether the wheels are known to be
+// safe_stop(link): the framing's stop plan (StopPlan, framing.hpp). Where set commands are
+// acknowledged (the text robots): the robot's safe-stop commands (Codec::safe_stop(): wheels to
+// zero first), each until acknowledged, in up to `stop_rounds` rounds of `tries` sends with the
+// back-off between rounds; then, on robots that can read their speeds (E), the wheels are read
+// back and must be 0, 0 -- the stop is confirmed by the robot's own state, not only by an
+// acknowledgement that could be stale. Where nothing is acknowledged (the e-puck2 in binary
+// mode): a resynchronisation, then the request that stops the wheels and reads their speeds back,
+// in the same rounds, until they read 0, 0; acknowledged, stopped and complete are then all true,
+// and otherwise all false. It never throws; its result says whether the wheels are known to be
 // stopped, which a run's exit status follows (a robot that may still be driving is not a success).
 // It is bounded (issue 43): it gives up `stop_within` after it began (no send starts after that, so
 // it ends within stop_within plus one reply's timeout); the commands after the wheels' (LEDs off)
@@ -60,12 +75,14 @@
 // result says so and claims nothing it did not see: the wheels are stopped only when acknowledged
 // and, where they can be, read back at 0, 0. `on_stop_notice` hears what it is doing while it takes
 // long (a round without an acknowledgement, giving up), for a person waiting at a terminal.
+#include <antkit/devices/framing.hpp>
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/protocol.hpp>
 #include <antkit/devices/serial.hpp>
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -96,28 +113,21 @@ struct LinkStats {
   std::uint64_t stale = 0;       // late replies to earlier commands, dropped (lines and drains)
 };
 
-// What a line read after sending `command` is.
-enum class ReplyKind : std::uint8_t {
-  Reply, // the command's reply, validated by the codec
-  Stale, // a well-formed reply line of another letter: a late answer to an earlier command
-  Bad    // anything else: junk, a wrong value, a reply of this letter that does not validate
-};
-ReplyKind classify_reply(const Codec& codec, std::string_view command, std::string_view line);
-
-// Printable form of wire bytes for messages: \r, \n, \xHH.
-std::string printable(std::string_view bytes);
-
-// What the record loop needs of a link: one command, its validated reply. RobotLink drives a real
-// port; replay (replay.cpp) serves the same calls from a log's exchanges.
+// What the record loop needs of a link: one request, its validated reply. RobotLink drives a real
+// port; replay (logged_link.hpp) serves the same calls from a log's exchanges.
 class CommandLink {
 public:
   virtual ~CommandLink() = default;
-  [[nodiscard]] virtual const Codec& codec() const noexcept = 0;
+  [[nodiscard]] virtual const Framing& framing() const noexcept = 0;
   [[nodiscard]] virtual const LinkOptions& options() const noexcept = 0;
-  // Sends `command` (terminator included) and returns its validated reply line (with its CR LF).
+  // Sends `request` (a text command with its terminator, a binary sequence with its 0) and
+  // returns its validated reply (a text reply line with its CR LF; a binary reply's bytes).
   // Throws LinkError (Timeout after the last try; Disconnected; Interrupted). Every attempt is
   // appended to `io`, also when it throws.
-  virtual std::string transact(const std::string& command, std::vector<Exchange>& io) = 0;
+  virtual std::string transact(const std::string& request, std::vector<Exchange>& io) = 0;
+  // The framing's resynchronisation on its own (see above; nothing when the framing has none):
+  // the start's and the safe stop's first exchange where the robot's state is unknown.
+  virtual void resync(std::vector<Exchange>& io) = 0;
   // Waits `d` (a back-off between safe-stop rounds; a replay does not wait).
   virtual void pause(std::chrono::milliseconds d) = 0;
   // Re-arms the watchdog: the safe stop is tried in full even after the link went quiet.
@@ -138,14 +148,17 @@ public:
 
 class RobotLink final : public CommandLink {
 public:
+  // A text robot (LineFraming).
   RobotLink(SerialPort port, RobotKind robot, LinkOptions options = {});
+  RobotLink(SerialPort port, std::shared_ptr<const Framing> framing, LinkOptions options = {});
 
-  [[nodiscard]] const Codec& codec() const noexcept override { return codec_; }
+  [[nodiscard]] const Framing& framing() const noexcept override { return *framing_; }
   [[nodiscard]] const LinkOptions& options() const noexcept override { return options_; }
   [[nodiscard]] const LinkStats& stats() const noexcept { return stats_; }
   [[nodiscard]] const SerialPort& port() const noexcept { return port_; }
 
-  std::string transact(const std::string& command, std::vector<Exchange>& io) override;
+  std::string transact(const std::string& request, std::vector<Exchange>& io) override;
+  void resync(std::vector<Exchange>& io) override;
   void pause(std::chrono::milliseconds d) override;
   void rearm() noexcept override { last_ok_ = std::chrono::steady_clock::now(); }
   void
@@ -160,7 +173,7 @@ private:
   [[nodiscard]] std::int64_t now_ns() const noexcept;
   std::int64_t last_send_ns_ = -1;
   SerialPort port_;
-  Codec codec_;
+  std::shared_ptr<const Framing> framing_;
   LinkOptions options_;
   LinkStats stats_;
   std::chrono::steady_clock::time_point last_ok_;

@@ -1,0 +1,64 @@
+#pragma once
+// The link of a replay (internal; replay.cpp, device_epuck2.cpp): serves a body's requests from a
+// log's exchanges, running the live link's decisions (link.hpp) on the logged bytes, whatever the
+// framing. Each request the body asks for must be the bytes the log says were sent; after a
+// failed attempt, the framing's resynchronisation must come next (when it has one); each
+// attempt's received bytes must be what the live link could have read (Reading::Lines: stale
+// lines, then the reply or a fault, nothing after a reply; Reading::Bytes: the reply's size
+// exactly, or a fault); the attempts of one request end at its first valid reply, as live.
+#include <antkit/devices/framing.hpp>
+#include <antkit/devices/link.hpp>
+#include <antkit/devices/replay.hpp>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace antkit::devices::detail {
+
+// A divergence found inside the shared body code (a sent byte, a reply): ends the record's check.
+struct Diverged {
+  Divergence d;
+};
+
+class LoggedLink final : public CommandLink {
+public:
+  LoggedLink(const Framing& framing, LinkOptions options)
+      : framing_(framing), options_(std::move(options)) {}
+  void load(const std::vector<Exchange>& io, std::int64_t step, std::string field) {
+    io_ = &io;
+    k_ = 0;
+    step_ = step;
+    field_ = std::move(field);
+  }
+  [[nodiscard]] std::size_t position() const noexcept { return k_; }
+  [[nodiscard]] bool at_end() const noexcept { return k_ >= io_->size(); }
+  // In the stop record the log may end in the middle of a request (the run ended there): that is
+  // a link failure, not a divergence.
+  void set_end_is_failure(bool on) noexcept { end_is_failure_ = on; }
+
+  [[nodiscard]] const Framing& framing() const noexcept override { return framing_; }
+  [[nodiscard]] const LinkOptions& options() const noexcept override { return options_; }
+  void pause(std::chrono::milliseconds) override {}
+  void rearm() noexcept override {}
+  [[nodiscard]] std::uint64_t sends() const noexcept override { return sends_; }
+  [[nodiscard]] std::int64_t last_send_ns() const noexcept override { return last_send_ns_; }
+
+  // The exchanges are the log's: nothing is appended to `io`.
+  std::string transact(const std::string& request, std::vector<Exchange>& io) override;
+  void resync(std::vector<Exchange>& io) override;
+
+private:
+  // The next exchange that sent something (drained bytes skipped): it must have sent `sent`.
+  const Exchange& expect(const std::string& sent, bool resend);
+  const Framing& framing_;
+  LinkOptions options_;
+  const std::vector<Exchange>* io_ = nullptr;
+  std::size_t k_ = 0;
+  std::int64_t step_ = 0;
+  std::string field_;
+  bool end_is_failure_ = false;
+  std::uint64_t sends_ = 0;
+  std::int64_t last_send_ns_ = -1;
+};
+
+} // namespace antkit::devices::detail
