@@ -153,11 +153,9 @@ BuffonFromBags buffon_from_bags(const std::string& bag1, const std::string& bag2
     out.arena = arena;
     const double truth = arena_spec_area(arena, "--arena");
     out.area_true = truth;
-    const auto error = [truth](const std::optional<double>& a) {
-      return a && truth > 0 ? std::optional<double>((*a - truth) / truth) : std::nullopt;
-    };
-    out.relative_error = error(out.estimate.area_corrected);
-    out.relative_error_raw = error(out.estimate.area_raw);
+    const auto e = devices::relative_errors(out.estimate, truth);
+    out.relative_error = e.corrected;
+    out.relative_error_raw = e.raw;
   }
   return out;
 }

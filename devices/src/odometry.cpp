@@ -186,6 +186,13 @@ LoggedTrail trail_from_log(const std::string& path) {
   return read_trail(reader, path, nullptr);
 }
 
+RelativeErrors relative_errors(const BuffonEstimate& estimate, double truth) {
+  const auto error = [truth](const std::optional<double>& a) {
+    return a && truth > 0 ? std::optional<double>((*a - truth) / truth) : std::nullopt;
+  };
+  return {error(estimate.area_corrected), error(estimate.area_raw)};
+}
+
 BuffonEstimate estimate_area(const BuffonCounts& c) {
   // The per-trial report of `antkit buffon --precision` (buffon::precision_estimate), from the
   // logs' counts (two visits: pair_share 1).
@@ -353,11 +360,9 @@ BuffonFromLogs buffon_from_logs(const std::string& visit1, const std::string& vi
             : (out.arena_source == ArenaSource::visit2 ? visit2 : visit1) + " (header \"arena\")";
     const double truth = arena.area_of(out.arena, where);
     out.area_true = truth;
-    const auto error = [truth](const std::optional<double>& a) {
-      return a && truth > 0 ? std::optional<double>((*a - truth) / truth) : std::nullopt;
-    };
-    out.relative_error = error(out.estimate.area_corrected);
-    out.relative_error_raw = error(out.estimate.area_raw);
+    const RelativeErrors e = relative_errors(out.estimate, truth);
+    out.relative_error = e.corrected;
+    out.relative_error_raw = e.raw;
   }
   return out;
 }

@@ -118,6 +118,13 @@ struct BuffonEstimate {
 };
 BuffonEstimate estimate_area(const BuffonCounts& counts);
 
+// An estimate against the arena's true area: (area - truth) / truth of its corrected and raw areas;
+// none for an area the estimate lacks or a truth that is not positive.
+struct RelativeErrors {
+  std::optional<double> corrected, raw;
+};
+[[nodiscard]] RelativeErrors relative_errors(const BuffonEstimate& estimate, double truth);
+
 // The arena a measurement took place in, for its true area. The logs' headers may name it
 // (LogHeader::arena, written by `record --arena`); `spec` supplies it when they do not (`--arena`),
 // and must agree with them when they do. area_of gives a spec's exact area in body diameters
