@@ -126,6 +126,13 @@ void run_cover(const CoverCheckCommand& c) {
   if (!a.ok()) throw antkit::cli::CheckFailed(c.log + ": " + a.first);
 }
 
+// --stamp and --child-frame, as check stc and check cover take them with --bag.
+void add_bag_time_options(CLI::App& sub, std::string& stamp, std::string& child_frame) {
+  sub.add_option("--stamp", stamp, "With --bag: the poses' time, bag or header");
+  sub.add_option("--child-frame", child_frame,
+                 "With --bag on a TFMessage topic: the child frame (default base_link)");
+}
+
 void register_check(CLI::App& app) {
   auto* check = app.add_subcommand(
       "check", "Check a planner's output against the map: the invariants of antkit's own tests, "
@@ -144,9 +151,7 @@ void register_check(CLI::App& app) {
                   "A ROS 2 bag (.mcap, .db3, folder) whose --topic poses are the tour, through "
                   "the map's resolution and origin");
   stc->add_option("--topic", s->topic, "With --bag: the pose topic");
-  stc->add_option("--stamp", s->stamp, "With --bag: the poses' time, bag or header");
-  stc->add_option("--child-frame", s->child_frame,
-                  "With --bag on a TFMessage topic: the child frame (default base_link)");
+  add_bag_time_options(*stc, s->stamp, s->child_frame);
   stc->add_option("--start", s->start,
                   "The start sub-cell X,Y (default: the tour file's start, else the map's, else "
                   "the tour's first position)");
@@ -190,9 +195,7 @@ void register_check(CLI::App& app) {
                     "A ROS 2 bag (.mcap, .db3, folder): each --topic's poses are one robot, "
                     "through the map's resolution and origin (commands/bags.hpp)");
   cover->add_option("--topic", v->topics, "With --bag: a robot's pose topic (repeat for more)");
-  cover->add_option("--stamp", v->stamp, "With --bag: the poses' time, bag or header");
-  cover->add_option("--child-frame", v->child_frame,
-                    "With --bag on a TFMessage topic: the child frame (default base_link)");
+  add_bag_time_options(*cover, v->stamp, v->child_frame);
   cover->add_option("--mcap", v->mcap,
                     "With --log: also write the run and the verdict as MCAP for Foxglove (the "
                     "first broken rule an ERROR at its tick)");

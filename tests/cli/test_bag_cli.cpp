@@ -19,6 +19,15 @@ using Catch::Matchers::StartsWith;
 
 namespace {
 
+// A 4 x 2 free map, 0.5 m cells, its lower-left corner at (-1, -2) m: write_bags.mjs's tours and
+// two-robot runs lie on it.
+void write_free_map(const std::string& d) {
+  std::ofstream(d + "/free.yaml") << "image: free.pgm\nresolution: 0.5\norigin: [-1.0, -2.0, 0.0]\n"
+                                     "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  std::ofstream(d + "/free.pgm", std::ios::binary)
+      << std::string("P5\n4 2\n255\n") + std::string(8, '\xfe');
+}
+
 std::string bags() {
   const std::string dir = antkit::test::ros_bags_dir();
   if (dir.empty()) WARN("SKIPPED: node (Node.js 20) is not installed: no test bags are written");
@@ -102,11 +111,7 @@ TEST_CASE("antkit buffon-from-logs --topic: refusals exit 2, located", "[cli][ba
 TEST_CASE("antkit check stc --bag: a bag's poses as a tour on a ROS map", "[cli][bag]") {
   const std::string d = bags();
   if (d.empty()) return;
-  // A 4 x 2 free map, 0.5 m cells, its lower-left corner at (-1, -2) m (write_bags.mjs's tours).
-  std::ofstream(d + "/free.yaml") << "image: free.pgm\nresolution: 0.5\norigin: [-1.0, -2.0, 0.0]\n"
-                                     "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
-  std::ofstream(d + "/free.pgm", std::ios::binary)
-      << std::string("P5\n4 2\n255\n") + std::string(8, '\xfe');
+  write_free_map(d);
   const std::string map = " --map '" + d + "/free.yaml' --topic /pose --format json --bag '" + d;
   // Four poses at the corners' cells: the cells between them filled in, every cell once.
   const auto ok = run_antkit("check stc" + map + "/tour.mcap'");
@@ -138,10 +143,7 @@ TEST_CASE("antkit check cover --bag: each topic one robot, collisions at their b
           "[cli][bag]") {
   const std::string d = bags();
   if (d.empty()) return;
-  std::ofstream(d + "/free.yaml") << "image: free.pgm\nresolution: 0.5\norigin: [-1.0, -2.0, 0.0]\n"
-                                     "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
-  std::ofstream(d + "/free.pgm", std::ios::binary)
-      << std::string("P5\n4 2\n255\n") + std::string(8, '\xfe');
+  write_free_map(d);
   const std::string args = " --map '" + d + "/free.yaml' --topic /r0/pose --topic /r1/pose";
   // Row 0 and row 1 swept in opposite directions: three steps each, no two robots on one cell,
   // and with sensor 0 each robot views the cells it stands on: all 8.
@@ -188,10 +190,7 @@ TEST_CASE("antkit bag export: the poses, the map and the check's verdict at its 
           "[cli][bag]") {
   const std::string d = bags();
   if (d.empty()) return;
-  std::ofstream(d + "/free.yaml") << "image: free.pgm\nresolution: 0.5\norigin: [-1.0, -2.0, 0.0]\n"
-                                     "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
-  std::ofstream(d + "/free.pgm", std::ios::binary)
-      << std::string("P5\n4 2\n255\n") + std::string(8, '\xfe');
+  write_free_map(d);
   const std::string out = d + "/collide.mcap";
   const auto r = run_antkit("bag export '" + d + "/cover_collide.mcap' --map '" + d +
                             "/free.yaml' --topic /r0/pose --topic /r1/pose --check cover "
