@@ -143,6 +143,7 @@ public:
     }
     if (kept != narrowed_.end()) narrowed_.erase(kept);
     last_arenas_[unit] = count;
+    extended_[unit] = arenas;
     t.extend(trials.buffon, arenas, runner);
     if (runner.root()) results_.figures[figure] = t.finish();
   }
@@ -150,6 +151,25 @@ public:
   // part's samples are rows' per-trial vectors (nBC, visit-1 length or BC), so the rows are
   // found by comparing them. A part with a sample no row holds (one derived from several), or
   // none, keeps the whole figure; so does Figure 14, whose calibration reads every circle.
+  // The parts' rows (found as narrow() finds them) were all extended by the figure's last run;
+  // Figure 14 always runs whole.
+  [[nodiscard]] bool fresh(const std::string& unit, const std::vector<Part>& parts) const override {
+    const auto ran = extended_.find(unit);
+    const int figure = std::stoi(unit.substr(std::string("buffon/figure").size()));
+    const auto found = results_.figures.find(figure);
+    if (figure == 14 || ran == extended_.end() || found == results_.figures.end()) return true;
+    const auto& rows = found->second.rows;
+    for (const auto& part : parts)
+      for (const auto& sample : part.samples) {
+        bool current = false;
+        for (std::size_t k = 0; k < rows.size() && k < ran->second.size(); ++k)
+          if (ran->second[k] && (sample == rows[k].nbc_trials || sample == rows[k].length1_trials ||
+                                 sample == rows[k].bc_trials))
+            current = true;
+        if (!current) return false;
+      }
+    return true;
+  }
   [[nodiscard]] std::string narrowed_text(const std::string& unit) const override {
     const auto kept = narrowed_.find(unit);
     if (kept == narrowed_.end()) return {};
@@ -243,7 +263,8 @@ private:
   std::uint64_t seed_;
   std::map<int, BuffonFigureTrials> trials_;
   std::map<std::string, std::vector<bool>> narrowed_; // the next run's arenas (rank 0)
-  std::map<std::string, std::size_t> last_arenas_;    // the arenas each unit's last run extended
+  std::map<std::string, std::size_t> last_arenas_;    // how many arenas each unit's last run ran
+  std::map<std::string, std::vector<bool>> extended_; // which arenas each unit's last run ran
   std::optional<Figure14Trials> fig14_;
   BuffonResults results_;
 };

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -101,19 +102,27 @@ double settling_ratio(const std::vector<Part>& parts) {
 // with probability at least 1 - sum alpha_k >= 95 %.
 class Settling {
 public:
-  // Evaluates the claim at this look unless it is settled or stopped asking; returns whether it
-  // still asks for trials (unsettled, and its estimate within kFutile times this look's). When it
-  // asks, its undecided parts are added to `undecided` (what the next look must extend). A claim
-  // that stopped asking keeps the look at which it stopped: a later look extends only what the
-  // claims still asking read, so its rows would no longer be at one look's count.
+  // Evaluates the claim at this look unless it is settled; returns whether it still asks for
+  // trials (unsettled, and its estimate within kFutile times this look's). When it asks, its
+  // undecided parts are added to `undecided` (what the next look must extend). A claim that
+  // stopped asking is evaluated again only when this look ran everything its undecided parts read
+  // (`fresh`: another claim asked for the same rows), so that its parts stay at one look's count;
+  // otherwise it keeps the look at which it stopped.
   bool look(const ClaimSpec& spec, const ClaimInputs& inputs, std::uint64_t seed, int look,
-            std::vector<Part>& undecided) {
+            std::vector<Part>& undecided,
+            const std::function<bool(const std::vector<Part>&)>& fresh) {
     auto& st = states_[spec.id];
-    if (st.settled || st.stopped) return false;
+    if (st.settled) return false;
     std::vector<Part> parts = evaluate_parts(spec, inputs, seed, look_alpha(look));
     if (st.parts.size() == parts.size())
       for (std::size_t i = 0; i < parts.size(); ++i)
         if (st.parts[i].verdict != Verdict::Inconclusive) parts[i] = st.parts[i];
+    if (st.stopped) {
+      std::vector<Part> open;
+      for (const auto& p : parts)
+        if (p.verdict == Verdict::Inconclusive) open.push_back(p);
+      if (!fresh(open)) return false;
+    }
     st.parts = parts;
     st.claim = claim_of(spec, inputs, parts);
     st.claim.look = look;
@@ -252,8 +261,8 @@ std::string decide_section(const std::vector<Claim>& claims, int looks, const Tr
        "asking is evaluated again; a part whose interval decides it keeps that look's figure and "
        "verdict, and a claim is settled once its combined verdict is decided (holds, does not "
        "hold or partly: none can change as more parts decide). A claim that would need more "
-       "than 16 times its look's trials (its estimate below) stops asking for them and keeps "
-       "that look's verdict. The looks end when nothing asks, or when the next would pass the "
+       "than 16 times its look's trials (its estimate below) stops asking for them; it is "
+       "evaluated again only at a look that reran everything it reads for another claim. The looks end when nothing asks, or when the next would pass the "
        "budget.\n\n"
     << "The error across the repeated looks: alpha spending over an open-ended series of looks. "
        "Look k (from 0) evaluates at alpha_k = 0.05 / ((k + 1)(k + 2)) per claim (0.025, "
@@ -446,7 +455,11 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
       for (const auto& p : ran)
         for (const auto& spec : p.entry->claims()) {
           const std::string unit = p.run->unit_of(spec);
-          if (unit_look[unit] == look && settling.look(spec, inputs, o.seed, look, undecided[unit]))
+          const auto fresh = [&](const std::vector<Part>& parts) {
+            return p.run->fresh(unit, parts);
+          };
+          if (unit_look[unit] == look &&
+              settling.look(spec, inputs, o.seed, look, undecided[unit], fresh))
             open.insert(unit);
         }
       for (const auto& p : ran)

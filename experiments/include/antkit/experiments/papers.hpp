@@ -64,6 +64,13 @@ public:
   virtual double narrow(const std::string& /*unit*/, const std::vector<Part>& /*undecided*/) {
     return 1.0;
   }
+  // Whether `unit`'s last run extended everything these parts read, so that they are at that
+  // look's count (rank 0): a claim that stopped asking is evaluated again only then. Default: a
+  // unit always runs whole, so true.
+  [[nodiscard]] virtual bool fresh(const std::string& /*unit*/,
+                                   const std::vector<Part>& /*parts*/) const {
+    return true;
+  }
   // What narrow() kept of `unit` for its next run, for the progress line ("3 of 17 arenas"), or
   // "" for all of it (rank 0).
   [[nodiscard]] virtual std::string narrowed_text(const std::string& /*unit*/) const { return {}; }
