@@ -147,27 +147,16 @@ public:
     t.extend(trials.buffon, arenas, runner);
     if (runner.root()) results_.figures[figure] = t.finish();
   }
-  // A figure's next run extends only the arenas whose trials the undecided parts resample: a
-  // part's samples are rows' per-trial vectors (nBC, visit-1 length or BC), so the rows are
-  // found by comparing them. A part with a sample no row holds (one derived from several), or
-  // none, keeps the whole figure; so does Figure 14, whose calibration reads every circle.
-  // The parts' rows (found as narrow() finds them) were all extended by the figure's last run;
-  // Figure 14 always runs whole.
+  // Whether `unit`'s last run extended every row these parts read (rows_read); Figure 14 always
+  // runs whole.
   [[nodiscard]] bool fresh(const std::string& unit, const std::vector<Part>& parts) const override {
     const auto ran = extended_.find(unit);
     const int figure = std::stoi(unit.substr(std::string("buffon/figure").size()));
-    const auto found = results_.figures.find(figure);
-    if (figure == 14 || ran == extended_.end() || found == results_.figures.end()) return true;
-    const auto& rows = found->second.rows;
-    for (const auto& part : parts)
-      for (const auto& sample : part.samples) {
-        bool current = false;
-        for (std::size_t k = 0; k < rows.size() && k < ran->second.size(); ++k)
-          if (ran->second[k] && (sample == rows[k].nbc_trials || sample == rows[k].length1_trials ||
-                                 sample == rows[k].bc_trials))
-            current = true;
-        if (!current) return false;
-      }
+    if (figure == 14 || ran == extended_.end()) return true;
+    const auto read = rows_read(figure, parts);
+    if (!read) return false;
+    for (std::size_t k = 0; k < read->size(); ++k)
+      if ((*read)[k] && !(k < ran->second.size() && ran->second[k])) return false;
     return true;
   }
   [[nodiscard]] std::string narrowed_text(const std::string& unit) const override {
@@ -176,28 +165,19 @@ public:
     return std::to_string(std::count(kept->second.begin(), kept->second.end(), true)) + " of " +
            std::to_string(kept->second.size()) + " arenas";
   }
+  // A figure's next run extends only the arenas whose trials the undecided parts resample
+  // (rows_read); a part it cannot place keeps the whole figure, and Figure 14 always runs whole
+  // (its calibration reads every circle).
   double narrow(const std::string& unit, const std::vector<Part>& undecided) override {
     narrowed_.erase(unit);
     const int figure = std::stoi(unit.substr(std::string("buffon/figure").size()));
-    const auto found = results_.figures.find(figure);
-    if (figure == 14 || found == results_.figures.end() || undecided.empty()) return 1.0;
-    const auto& rows = found->second.rows;
-    if (rows.size() != trials_.at(figure).arenas()) return 1.0;
-    std::vector<bool> keep(rows.size(), false);
-    for (const auto& part : undecided) {
-      if (part.samples.empty()) return 1.0;
-      for (const auto& sample : part.samples) {
-        bool matched = false;
-        for (std::size_t k = 0; k < rows.size(); ++k)
-          if (sample == rows[k].nbc_trials || sample == rows[k].length1_trials ||
-              sample == rows[k].bc_trials)
-            keep[k] = matched = true;
-        if (!matched) return 1.0;
-      }
-    }
-    const auto kept = static_cast<double>(std::count(keep.begin(), keep.end(), true));
-    const auto last = last_arenas_.count(unit) > 0 ? last_arenas_.at(unit) : rows.size();
-    narrowed_[unit] = std::move(keep);
+    if (figure == 14 || undecided.empty()) return 1.0;
+    auto keep = rows_read(figure, undecided);
+    if (!keep) return 1.0;
+    const auto kept = static_cast<double>(std::count(keep->begin(), keep->end(), true));
+    const auto last =
+        last_arenas_.count(unit) > 0 ? last_arenas_.at(unit) : trials_.at(figure).arenas();
+    narrowed_[unit] = std::move(*keep);
     return last > 0 ? kept / static_cast<double>(last) : 1.0;
   }
   void inputs(ClaimInputs& in) const override { in.put(results_); }
@@ -260,6 +240,31 @@ public:
   }
 
 private:
+  // The rows of Figure `figure` (5-9) whose trials these parts resample: a part's samples are
+  // rows' per-trial vectors (nBC, visit-1 length or BC), so the rows are found by comparing them.
+  // None when a part has no samples or one no row holds (derived from several), or the figure has
+  // not run (rank 0's results).
+  [[nodiscard]] std::optional<std::vector<bool>> rows_read(int figure,
+                                                           const std::vector<Part>& parts) const {
+    const auto found = results_.figures.find(figure);
+    if (found == results_.figures.end()) return std::nullopt;
+    const auto& rows = found->second.rows;
+    if (rows.size() != trials_.at(figure).arenas()) return std::nullopt;
+    std::vector<bool> read(rows.size(), false);
+    for (const auto& part : parts) {
+      if (part.samples.empty()) return std::nullopt;
+      for (const auto& sample : part.samples) {
+        bool matched = false;
+        for (std::size_t k = 0; k < rows.size(); ++k)
+          if (sample == rows[k].nbc_trials || sample == rows[k].length1_trials ||
+              sample == rows[k].bc_trials)
+            read[k] = matched = true;
+        if (!matched) return std::nullopt;
+      }
+    }
+    return read;
+  }
+
   std::uint64_t seed_;
   std::map<int, BuffonFigureTrials> trials_;
   std::map<std::string, std::vector<bool>> narrowed_; // the next run's arenas (rank 0)
