@@ -31,19 +31,22 @@ BagMcapSummary export_bag_mcap(const BagMcapRequest& r) {
     throw InputError("--check", "check stc takes one robot: one --topic");
   BagMcapSummary out;
   // The check first: its refusals (a pose off the map, a bad sensor range) come before any file.
+  const maps::GridMap map = maps::load_map(r.map_file);
   std::vector<io::bag::PoseTrack> tracks;
   std::optional<std::int64_t> violation_ns;
   if (r.check == "stc") {
     testing::StcCheckRequest request;
     request.map_file = r.map_file;
-    const auto c = check_stc_bag(r.map_file, r.bag, r.topics[0], r.stamp, r.child_frame, request);
+    const auto c =
+        check_stc_bag(map, r.map_file, r.bag, r.topics[0], r.stamp, r.child_frame, request);
     tracks.push_back(c.track);
     out.check_ok = c.report.audit.ok();
     out.check_text = out.check_ok ? "check stc: every reachable cell entered exactly once"
                                   : "check stc: " + c.report.audit.first.describe();
     violation_ns = c.violation_ns();
   } else if (r.check == "cover") {
-    const auto c = check_cover_bag(r.map_file, r.bag, r.topics, r.stamp, r.child_frame, r.sensor);
+    const auto c =
+        check_cover_bag(map, r.map_file, r.bag, r.topics, r.stamp, r.child_frame, r.sensor);
     tracks = c.tracks;
     out.check_ok = c.report.audit.ok();
     out.check_text = out.check_ok ? "check cover: " + std::to_string(c.report.audit.viewed) +
@@ -55,7 +58,6 @@ BagMcapSummary export_bag_mcap(const BagMcapRequest& r) {
     for (const auto& topic : r.topics)
       tracks.push_back(io::bag::read_poses(r.bag, topic, r.stamp, r.child_frame));
   }
-  const maps::GridMap map = maps::load_map(r.map_file);
   // Each robot's cells (the same reading as the checks'), counted per cell for /visits.
   std::vector<std::vector<BagCell>> cells;
   std::map<std::pair<std::int32_t, std::int32_t>, std::uint32_t> visits;
@@ -114,19 +116,14 @@ BagMcapSummary export_bag_mcap(const BagMcapRequest& r) {
               }()));
   for (std::size_t i = 0; i < tracks.size(); ++i) {
     const auto& poses = tracks[i].poses;
-    // The trail: every ceil(n / 100)-th pose and the last, each at most 1000 poses (its last the
-    // message's own), as antkit's own logs' /trail.
-    const std::size_t every = std::max<std::size_t>(1, (poses.size() + 99) / 100);
     for (std::size_t k = 0; k < poses.size(); ++k) {
       const auto& p = poses[k];
       const std::uint64_t t = at_or_zero(p.t_ns);
       add(t, pose_channels[i], static_cast<std::uint32_t>(k),
           {{"timestamp", stamp_of(t)}, {"frame_id", "map"}, {"pose", pose_json(p.x, p.y, p.yaw)}});
-      if (k % every != 0 && k + 1 != poses.size()) continue;
-      const std::size_t stride = std::max<std::size_t>(1, (k + 1 + 999) / 1000);
-      nlohmann::json trail = nlohmann::json::array();
-      for (std::size_t j = k % stride; j <= k; j += stride)
-        trail.push_back(pose_json(poses[j].x, poses[j].y, poses[j].yaw));
+      if (!foxglove::trail_due(k, poses.size())) continue;
+      const auto trail = foxglove::trail_poses(
+          k, [&](std::size_t j) { return pose_json(poses[j].x, poses[j].y, poses[j].yaw); });
       add(t, trail_channels[i], static_cast<std::uint32_t>(k),
           {{"timestamp", stamp_of(t)}, {"frame_id", "map"}, {"poses", trail}});
     }

@@ -58,16 +58,13 @@ McapWritten write_cover_mcap(const kernel::OccupancyGrid& cells, const testing::
       }));
   put(log_ch, 0, 0, log_json(0, 2, what));
   const std::int64_t first_tick = check && !check->audit.ok() ? check->audit.first_tick : -1;
-  const std::size_t every = std::max<std::size_t>(1, (ticks + 99) / 100);
   for (std::size_t k = 0; k < ticks; ++k) {
     const std::uint64_t t = t_of(k);
     for (std::size_t r = 0; r < robots; ++r) {
       put(pose_ch[r], k, t,
           {{"timestamp", stamp_of(t)}, {"frame_id", "map"}, {"pose", pose_of(k, r)}});
-      if (k % every != 0 && k + 1 != ticks) continue;
-      const std::size_t stride = std::max<std::size_t>(1, (k + 1 + 999) / 1000);
-      nlohmann::json trail = nlohmann::json::array();
-      for (std::size_t j = k % stride; j <= k; j += stride) trail.push_back(pose_of(j, r));
+      if (!foxglove::trail_due(k, ticks)) continue;
+      const auto trail = foxglove::trail_poses(k, [&](std::size_t j) { return pose_of(j, r); });
       put(trail_ch[r], k, t, {{"timestamp", stamp_of(t)}, {"frame_id", "map"}, {"poses", trail}});
     }
     if (first_tick >= 0 && static_cast<std::size_t>(first_tick) == k)

@@ -2,9 +2,11 @@
 // Foxglove messages as JSON for the commands' MCAP writers (bag_mcap.cpp, stc_mcap.cpp): the
 // fields devices::mcap_schema's texts name, built with nlohmann (keys sorted, numbers round-trip:
 // the bytes depend on the values alone).
+#include <algorithm>
 #include <antkit/devices/mcap_export.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -48,6 +50,21 @@ inline nlohmann::json grid_json(const maps::GridMap& map, std::uint64_t t, const
 inline nlohmann::json log_json(std::uint64_t t, int level, const std::string& message) {
   return {{"timestamp", stamp_of(t)}, {"level", level}, {"message", message},
           {"name", "antkit"},         {"file", ""},     {"line", 0}};
+}
+
+// The trail of a run of n poses: a PosesInFrame message at every ceil(n / 100)-th pose and the
+// last (trail_due), each holding at most 1000 of the poses so far, its last the message's own
+// (trail_poses; pose_at(j) gives pose j's JSON), as antkit's own logs' /trail.
+inline bool trail_due(std::size_t k, std::size_t n) {
+  const std::size_t every = std::max<std::size_t>(1, (n + 99) / 100);
+  return k % every == 0 || k + 1 == n;
+}
+template <class PoseAt>
+nlohmann::json trail_poses(std::size_t k, PoseAt pose_at) {
+  const std::size_t stride = std::max<std::size_t>(1, (k + 1 + 999) / 1000);
+  nlohmann::json trail = nlohmann::json::array();
+  for (std::size_t j = k % stride; j <= k; j += stride) trail.push_back(pose_at(j));
+  return trail;
 }
 
 } // namespace antkit::commands::foxglove

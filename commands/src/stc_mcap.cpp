@@ -122,7 +122,6 @@ McapWritten write_stc_mcap(const maps::GridMap& map, const stc::RunResult& r,
                                      static_cast<std::size_t>(map.cells.height()),
                                  0);
   bool repeat_logged = false;
-  const std::size_t every = std::max<std::size_t>(1, (at.size() + 99) / 100);
   for (std::size_t k = 0; k < at.size(); ++k) {
     const std::uint64_t t = t_of(k);
     const auto seq = static_cast<std::uint32_t>(k);
@@ -130,13 +129,13 @@ McapWritten write_stc_mcap(const maps::GridMap& map, const stc::RunResult& r,
         {{"timestamp", stamp_of(t)},
          {"frame_id", "map"},
          {"pose", pose_json(at[k].x, at[k].y, yaw_at(k))}});
-    if (k % every == 0 || k + 1 == at.size()) {
-      const std::size_t stride = std::max<std::size_t>(1, (k + 1 + 999) / 1000);
-      nlohmann::json trail = nlohmann::json::array();
-      for (std::size_t j = k % stride; j <= k; j += stride)
-        trail.push_back(pose_json(at[j].x, at[j].y, yaw_at(j)));
-      put(trail_ch, seq, t, {{"timestamp", stamp_of(t)}, {"frame_id", "map"}, {"poses", trail}});
-    }
+    if (foxglove::trail_due(k, at.size()))
+      put(trail_ch, seq, t,
+          {{"timestamp", stamp_of(t)},
+           {"frame_id", "map"},
+           {"poses", foxglove::trail_poses(k, [&](std::size_t j) {
+              return pose_json(at[j].x, at[j].y, yaw_at(j));
+            })}});
     auto& s =
         seen[static_cast<std::size_t>(r.path[k].y) * static_cast<std::size_t>(map.cells.width()) +
              static_cast<std::size_t>(r.path[k].x)];
