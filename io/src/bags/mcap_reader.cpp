@@ -1,6 +1,4 @@
 // The MCAP reader (mcap_reader.hpp), from the specification's Records and Serialization sections.
-#include "crc32_combine.hpp"
-
 #include <antkit/io/crc32.hpp>
 #include <antkit/io/mcap_reader.hpp>
 #include <antkit/kernel/input_error.hpp>

@@ -1,6 +1,5 @@
-// crc32_combine (crc32_combine.hpp).
-#include "crc32_combine.hpp"
-
+// crc32_combine (crc32.hpp).
+#include <antkit/io/crc32.hpp>
 #include <array>
 
 namespace antkit::io {
