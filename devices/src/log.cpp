@@ -627,6 +627,28 @@ void LogReader::read_header() {
   pos_ = nl == std::string::npos ? data_.size() : nl + 1;
 }
 
+std::size_t LogReader::records_ahead() const noexcept {
+  std::size_t lines = 0;
+  std::string_view last;
+  bool last_cut = false;
+  for (std::size_t at = pos_; at < data_.size();) {
+    const auto nl = data_.find('\n', at);
+    const std::size_t end = nl == std::string_view::npos ? data_.size() : nl;
+    const std::string_view line = data_.substr(at, end - at);
+    if (line.find_first_not_of(" \t\r") != std::string_view::npos) {
+      ++lines;
+      last = line;
+      last_cut = nl == std::string_view::npos;
+    }
+    at = end + 1;
+  }
+  if (lines == 0) return 0;
+  const auto close = last.find_last_not_of(" \t\r");
+  const bool cut = last_cut && last[close] != '}';
+  const bool stop = last.find("\"stop\":") != std::string_view::npos;
+  return lines - (cut || stop ? 1 : 0);
+}
+
 bool LogReader::next(LogRecord& out) {
   while (pos_ < data_.size()) {
     const auto nl = data_.find('\n', pos_);

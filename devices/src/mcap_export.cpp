@@ -1,5 +1,6 @@
 // A hardware log as MCAP (mcap_export.hpp).
 #include <algorithm>
+#include <antkit/devices/log_prefetch.hpp>
 #include <antkit/devices/mcap_export.hpp>
 #include <antkit/devices/odometry.hpp>
 #include <antkit/devices/robot.hpp>
@@ -123,9 +124,16 @@ std::string mcap_schema(std::string_view name) {
 namespace {
 
 // JSON text, written by hand so that every byte is fixed by the values (strings as the log
-// writes its byte strings, log.hpp).
+// writes its byte strings, log.hpp), appended in place: the per-step messages go straight into
+// the MCAP writer's chunk (Writer::begin_message), with no string built per field.
 void put_number(std::string& out, double v) {
   std::array<char, 32> buf{};
+  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  out.append(buf.data(), r.ptr);
+}
+template <typename Int>
+void put_int(std::string& out, Int v) {
+  std::array<char, 24> buf{};
   const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
   out.append(buf.data(), r.ptr);
 }
@@ -133,17 +141,33 @@ void put_ints(std::string& out, const std::vector<std::int64_t>& v) {
   out += '[';
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (i > 0) out += ',';
-    out += std::to_string(v[i]);
+    put_int(out, v[i]);
   }
   out += ']';
+}
+void put_hash(std::string& out, std::uint64_t h) { // kernel::hash_hex, quoted
+  constexpr char digits[] = "0123456789abcdef";
+  std::array<char, 18> b{};
+  b[0] = b[17] = '"';
+  for (int i = 16; i >= 1; --i, h >>= 4) b[static_cast<std::size_t>(i)] = digits[h & 0xFU];
+  out.append(b.data(), b.size());
 }
 
 std::uint64_t log_time(std::int64_t t_ns) {
   return t_ns < 0 ? 0 : static_cast<std::uint64_t>(t_ns);
 }
+// "timestamp":{"sec":S,"nsec":N}
+void put_timestamp(std::string& out, std::uint64_t t) {
+  out += R"("timestamp":{"sec":)";
+  put_int(out, t / 1000000000U);
+  out += ",\"nsec\":";
+  put_int(out, t % 1000000000U);
+  out += '}';
+}
 std::string timestamp(std::uint64_t t) {
-  return R"("timestamp":{"sec":)" + std::to_string(t / 1000000000U) +
-         ",\"nsec\":" + std::to_string(t % 1000000000U) + "}";
+  std::string out;
+  put_timestamp(out, t);
+  return out;
 }
 
 struct Pose {
@@ -208,11 +232,13 @@ private:
   std::optional<DeadReckoning> dr_;
 };
 
+void put_base64(std::string& out, std::string_view bytes);
+
 // The channels of one run (recorded or exported) and the messages of its steps.
 class RunChannels {
 public:
   RunChannels(mcap::Writer& w, const std::function<std::uint16_t(std::string_view)>& schema,
-              const std::string& prefix)
+              const std::string& prefix, const std::string& frame)
       : w_(w) {
     // Exported: /pose, /trail, /antkit/step, /antkit/io; a replay's: /recorded/...
     const std::string own = prefix.empty() ? "/antkit" : prefix;
@@ -220,65 +246,95 @@ public:
     trail_ = w.add_channel(schema("foxglove.PosesInFrame"), prefix + "/trail", "json");
     step_ = w.add_channel(schema("antkit.Step"), own + "/step", "json");
     io_ = w.add_channel(schema("antkit.Exchanges"), own + "/io", "json");
+    frame_ = ",\"frame_id\":";
+    append_json_bytes(frame_, frame);
   }
-  void write(const LogRecord& r, const std::optional<Pose>& pose, const std::string& frame,
-             const std::vector<Pose>& trail, bool trail_now) {
+  // The step's messages; `poses` holds the poses so far (the step's last, when it has one).
+  void write(const LogRecord& r, const LogPrefetch::Prepared& prepared, bool has_pose,
+             const std::vector<Pose>& poses, bool trail_now) {
     const auto t = log_time(r.time_ns);
     const auto seq = static_cast<std::uint32_t>(r.step);
-    if (pose) {
-      std::string m = "{" + timestamp(t) + ",\"frame_id\":";
-      append_json_bytes(m, frame);
+    if (has_pose) {
+      std::string& m = w_.begin_message(pose_, seq, t, t);
+      m += '{';
+      put_timestamp(m, t);
+      m += frame_;
       m += ",\"pose\":";
-      put_pose(m, *pose);
-      m += "}";
-      w_.write({pose_, seq, t, t, std::move(m)});
+      put_pose(m, poses.back());
+      m += '}';
+      w_.end_message();
     }
-    if (trail_now && !trail.empty()) {
-      std::string m = "{" + timestamp(t) + ",\"frame_id\":";
-      append_json_bytes(m, frame);
+    if (trail_now && !poses.empty()) {
+      std::string& m = w_.begin_message(trail_, seq, t, t);
+      m += '{';
+      put_timestamp(m, t);
+      m += frame_;
       m += ",\"poses\":[";
-      const std::size_t n = std::min<std::size_t>(trail.size(), kTrailPoses);
+      const std::size_t n = std::min<std::size_t>(poses.size(), kTrailPoses);
       for (std::size_t j = 0; j < n; ++j) {
         if (j > 0) m += ',';
         // Thinned evenly, first and last kept.
-        const std::size_t k = n == 1 ? trail.size() - 1 : j * (trail.size() - 1) / (n - 1);
-        put_pose(m, trail[k]);
+        const std::size_t k = n == 1 ? poses.size() - 1 : j * (poses.size() - 1) / (n - 1);
+        put_pose(m, poses[k]);
       }
       m += "]}";
-      w_.write({trail_, seq, t, t, std::move(m)});
+      w_.end_message();
     }
-    w_.write({step_, seq, t, t, step_json(r, t)});
-    std::string m = "{" + timestamp(t) + ",\"step\":" + std::to_string(r.step) + ",\"io\":[";
-    for (std::size_t k = 0; k < r.io.size(); ++k) {
-      if (k > 0) m += ',';
-      m += "{\"sent\":";
-      append_json_bytes(m, base64(r.io[k].sent));
-      m += ",\"received\":";
-      append_json_bytes(m, base64(r.io[k].received));
-      m += ",\"t_ns\":" + (r.io[k].t_ns < 0 ? std::string("null") : std::to_string(r.io[k].t_ns));
-      m += '}';
-    }
-    m += "]}";
-    w_.write({io_, seq, t, t, std::move(m)});
+    const std::string_view text = prepared.text;
+    std::string& step = w_.begin_message(step_, seq, t, t);
+    step += text.substr(0, prepared.cuts[1]);
+    w_.end_message();
+    w_.begin_message(io_, seq, t, t) += text.substr(prepared.cuts[1]);
+    w_.end_message();
   }
-  static std::string step_fields(const LogRecord& r) {
-    std::string m = ",\"obs\":";
+
+  // What a step's messages hold that depends on its record alone, written on the log's reading
+  // thread (LogPrefetch): /antkit/step's text, cut after its step number (cuts[0], where a
+  // replay's /replayed/step adds its "identical"), then /antkit/io's (from cuts[1]).
+  static void prepare(const LogRecord& r, LogPrefetch::Prepared& p) {
+    std::string& m = p.text;
+    m.clear();
+    m += '{';
+    put_timestamp(m, log_time(r.time_ns));
+    m += ",\"step\":";
+    put_int(m, r.step);
+    p.cuts[0] = m.size();
+    m += ",\"obs\":";
     put_ints(m, r.obs);
     m += ",\"cmd\":";
     put_ints(m, r.cmd);
     m += ",\"odo\":";
     put_ints(m, r.odo);
-    m += ",\"state\":\"" + kernel::hash_hex(r.state) + "\"";
-    return m;
-  }
-  static std::string step_json(const LogRecord& r, std::uint64_t t) {
-    return "{" + timestamp(t) + ",\"step\":" + std::to_string(r.step) + step_fields(r) + "}";
+    m += ",\"state\":";
+    put_hash(m, r.state);
+    m += '}';
+    p.cuts[1] = m.size();
+    m += '{';
+    put_timestamp(m, log_time(r.time_ns));
+    m += ",\"step\":";
+    put_int(m, r.step);
+    m += ",\"io\":[";
+    for (std::size_t k = 0; k < r.io.size(); ++k) {
+      if (k > 0) m += ',';
+      m += "{\"sent\":";
+      put_base64(m, r.io[k].sent);
+      m += ",\"received\":";
+      put_base64(m, r.io[k].received);
+      m += ",\"t_ns\":";
+      if (r.io[k].t_ns < 0)
+        m += "null";
+      else
+        put_int(m, r.io[k].t_ns);
+      m += '}';
+    }
+    m += "]}";
   }
   static constexpr std::size_t kTrailPoses = 1000;
 
 private:
   mcap::Writer& w_;
   std::uint16_t pose_ = 0, trail_ = 0, step_ = 0, io_ = 0;
+  std::string frame_; // ,"frame_id":"..."
 };
 
 std::string log_message(std::uint64_t t, int level, const std::string& text) {
@@ -322,39 +378,50 @@ std::string header_text(const LogHeader& h) {
 
 } // namespace
 
-std::string base64(std::string_view bytes) {
+namespace {
+
+// `bytes` in base64 (RFC 4648, padded), quoted: base64 needs no JSON escapes.
+void put_base64(std::string& out, std::string_view bytes) {
   static constexpr char kAlphabet[] =
       "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
+  const std::size_t at = out.size();
+  out.resize(at + (bytes.size() + 2) / 3 * 4 + 2);
+  char* o = out.data() + at;
+  *o++ = '"';
   const auto byte = [&](std::size_t k) {
     return static_cast<std::uint32_t>(static_cast<std::uint8_t>(bytes[k]));
   };
   std::size_t i = 0;
   for (; i + 3 <= bytes.size(); i += 3) {
     const std::uint32_t v = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
-    for (int k = 18; k >= 0; k -= 6) out += kAlphabet[(v >> k) & 63U];
+    for (int k = 18; k >= 0; k -= 6) *o++ = kAlphabet[(v >> k) & 63U];
   }
   if (const std::size_t rest = bytes.size() - i; rest > 0) {
     std::uint32_t v = byte(i) << 16;
     if (rest == 2) v |= byte(i + 1) << 8;
-    out += kAlphabet[(v >> 18) & 63U];
-    out += kAlphabet[(v >> 12) & 63U];
-    out += rest == 2 ? kAlphabet[(v >> 6) & 63U] : '=';
-    out += '=';
+    *o++ = kAlphabet[(v >> 18) & 63U];
+    *o++ = kAlphabet[(v >> 12) & 63U];
+    *o++ = rest == 2 ? kAlphabet[(v >> 6) & 63U] : '=';
+    *o++ = '=';
   }
-  return out;
+  *o = '"';
+}
+
+} // namespace
+
+std::string base64(std::string_view bytes) {
+  std::string quoted;
+  put_base64(quoted, bytes);
+  return quoted.substr(1, quoted.size() - 2);
 }
 
 namespace {
 
-// The file, streamed to `bytes`; the log is read whole first, so that a malformed one throws before
-// a byte is written.
+// The file, streamed to `bytes` as the log is read, one record ahead (a malformed log throws part
+// way; export_mcap writes beside the target and renames, so nothing half-written is left).
 void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_name,
                 const McapOptions& options, const ReplayResult* replay, McapSummary* summary) {
   const LogHeader& header = reader.header();
-  std::vector<LogRecord> records;
-  for (LogRecord r; reader.next(r); r = LogRecord{}) records.push_back(std::move(r));
   Poser poser(header);
   std::vector<kernel::FxSegment> walls;
   if (!header.arena.empty() && options.arena_walls && poser.diameter_m() > 0) try {
@@ -379,7 +446,7 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
       if (known == name) return id;
     return 0;
   };
-  RunChannels run(w, id_of, replay != nullptr ? "/recorded" : "");
+  RunChannels run(w, id_of, replay != nullptr ? "/recorded" : "", poser.frame());
   const std::uint16_t log = w.add_channel(id_of("foxglove.Log"), "/log", "json");
   const std::uint16_t arena =
       walls.empty() ? 0 : w.add_channel(id_of("foxglove.SceneUpdate"), "/arena", "json");
@@ -389,9 +456,11 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
   w.write({log, 0, 0, 0, log_message(0, 2, header_text(header))});
   if (arena != 0) w.write({arena, 0, 0, 0, arena_message(walls, poser.diameter_m())});
 
-  const std::size_t n = records.size();
-  const std::size_t every = std::max<std::size_t>(1, (n + 99) / 100);
-  std::vector<Pose> trail;
+  // The trail every 1 % of the steps, and at the last.
+  const std::size_t ahead_count = reader.records_ahead();
+  const std::size_t every = std::max<std::size_t>(1, (ahead_count + 99) / 100);
+  std::vector<Pose> poses;
+  poses.reserve(ahead_count);
   const std::optional<Divergence> divergence =
       replay != nullptr ? replay->first_divergence : std::nullopt;
   bool divergence_written = false;
@@ -412,22 +481,36 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
                              d.expected + ", the replay derived " + d.actual)});
     divergence_written = true;
   };
-  for (std::size_t i = 0; i < n; ++i) {
-    const LogRecord& r = records[i];
-    const auto pose = poser.after(r);
-    if (pose) trail.push_back(*pose);
-    run.write(r, pose, poser.frame(), trail, (i + 1) % every == 0 || i + 1 == n);
-    if (replay == nullptr) continue;
-    const auto t = log_time(r.time_ns);
-    const auto seq = static_cast<std::uint32_t>(r.step);
-    if (r.step < replay->steps)
-      w.write({replayed, seq, t, t,
-               "{" + timestamp(t) + ",\"step\":" + std::to_string(r.step) + ",\"identical\":true" +
-                   RunChannels::step_fields(r) + "}"});
-    else if (divergence && divergence->step == r.step && !divergence_written)
-      write_divergence(t, seq);
-  }
-  const std::uint64_t last_t = n > 0 ? log_time(records.back().time_ns) : 0;
+  // The records parsed a batch ahead on a second thread (log_prefetch.hpp); each batch says
+  // whether it is the last, so that the last step's trail is written with it.
+  LogPrefetch prefetch(reader, &RunChannels::prepare);
+  std::size_t n = 0;
+  std::uint64_t last_t = 0;
+  for (auto batch = prefetch.next(); !batch.records.empty(); batch = prefetch.next())
+    for (std::size_t j = 0; j < batch.records.size(); ++j) {
+      const LogRecord& r = batch.records[j];
+      const bool final = batch.last && j + 1 == batch.records.size();
+      last_t = log_time(r.time_ns);
+      const auto pose = poser.after(r);
+      if (pose) poses.push_back(*pose);
+      const LogPrefetch::Prepared& prepared = batch.prepared[j];
+      run.write(r, prepared, pose.has_value(), poses, (n + 1) % every == 0 || final);
+      ++n;
+      const auto t = log_time(r.time_ns);
+      const auto seq = static_cast<std::uint32_t>(r.step);
+      if (replay != nullptr && r.step < replay->steps) {
+        // /antkit/step's text with "identical" after the step number.
+        const std::string_view text = prepared.text;
+        std::string& m = w.begin_message(replayed, seq, t, t);
+        m += text.substr(0, prepared.cuts[0]);
+        m += ",\"identical\":true";
+        m += text.substr(prepared.cuts[0], prepared.cuts[1] - prepared.cuts[0]);
+        w.end_message();
+      } else if (replay != nullptr && divergence && divergence->step == r.step &&
+                 !divergence_written) {
+        write_divergence(t, seq);
+      }
+    }
   const auto& stop = reader.stop();
   const auto last_seq =
       static_cast<std::uint32_t>(stop ? stop->step : static_cast<std::int64_t>(n));

@@ -47,17 +47,26 @@ std::string channel_content(std::uint16_t id, std::uint16_t schema_id, std::stri
 
 } // namespace
 
+namespace {
+template <std::size_t N>
+void put_le(std::string& out, std::uint64_t v) {
+  std::array<char, N> b{};
+  for (std::size_t i = 0; i < N; ++i) b[i] = static_cast<char>((v >> (8 * i)) & 0xFFU);
+  out.append(b.data(), N);
+}
+} // namespace
+
 void put_u8(std::string& out, std::uint8_t v) {
   out.push_back(static_cast<char>(v));
 }
 void put_u16(std::string& out, std::uint16_t v) {
-  for (int i = 0; i < 2; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFU));
+  put_le<2>(out, v);
 }
 void put_u32(std::string& out, std::uint32_t v) {
-  for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFU));
+  put_le<4>(out, v);
 }
 void put_u64(std::string& out, std::uint64_t v) {
-  for (int i = 0; i < 8; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFFU));
+  put_le<8>(out, v);
 }
 void put_string(std::string& out, std::string_view s) {
   if (s.size() > std::numeric_limits<std::uint32_t>::max())
@@ -81,14 +90,19 @@ Writer::Writer(std::ostream& out, WriterOptions options) : out_(out), options_(s
 }
 
 void Writer::emit(std::string_view bytes) {
+  emit(bytes, crc32(bytes));
+}
+
+void Writer::emit(std::string_view bytes, std::uint32_t crc) {
   out_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   position_ += bytes.size();
-  data_crc_ = crc32(bytes, data_crc_);
+  data_crc_ = crc32_combine(data_crc_, crc, bytes.size());
 }
 
 std::uint16_t Writer::add_schema(std::string_view name, std::string_view encoding,
                                  std::string_view data) {
   if (finished_) throw std::logic_error("mcap: add_schema after finish");
+  if (open_message_) throw std::logic_error("mcap: add_schema before end_message");
   if (schemas_.size() >= 65535) throw std::logic_error("mcap: more than 65535 schemas");
   const auto id = static_cast<std::uint16_t>(schemas_.size() + 1);
   schemas_.push_back({id, std::string(name), std::string(encoding), std::string(data)});
@@ -103,6 +117,7 @@ Writer::add_channel(std::uint16_t schema_id, std::string_view topic,
                     std::string_view message_encoding,
                     const std::vector<std::pair<std::string, std::string>>& metadata) {
   if (finished_) throw std::logic_error("mcap: add_channel after finish");
+  if (open_message_) throw std::logic_error("mcap: add_channel before end_message");
   if (schema_id > schemas_.size()) throw std::logic_error("mcap: a channel of an unknown schema");
   if (channels_.size() >= 65535) throw std::logic_error("mcap: more than 65535 channels");
   const auto id = static_cast<std::uint16_t>(channels_.size() + 1);
@@ -115,28 +130,45 @@ Writer::add_channel(std::uint16_t schema_id, std::string_view topic,
 }
 
 void Writer::write(const Message& m) {
+  begin_message(m.channel_id, m.sequence, m.log_time, m.publish_time).append(m.data);
+  end_message();
+}
+
+std::string& Writer::begin_message(std::uint16_t channel_id, std::uint32_t sequence,
+                                   std::uint64_t log_time, std::uint64_t publish_time) {
   if (finished_) throw std::logic_error("mcap: write after finish");
-  if (m.channel_id == 0 || m.channel_id > channels_.size())
+  if (open_message_) throw std::logic_error("mcap: begin_message before end_message");
+  if (channel_id == 0 || channel_id > channels_.size())
     throw std::logic_error("mcap: a message on an unknown channel");
   if (chunk_index_.empty()) {
-    chunk_start_ = m.log_time;
-    chunk_end_ = m.log_time;
+    chunk_start_ = log_time;
+    chunk_end_ = log_time;
   }
-  chunk_start_ = std::min(chunk_start_, m.log_time);
-  chunk_end_ = std::max(chunk_end_, m.log_time);
-  chunk_index_[m.channel_id].emplace_back(m.log_time, chunk_.size());
-  // The Message record, straight into the chunk.
+  chunk_start_ = std::min(chunk_start_, log_time);
+  chunk_end_ = std::max(chunk_end_, log_time);
+  chunk_index_[channel_id].emplace_back(log_time, chunk_.size());
+  // The Message record, straight into the chunk; its length is set by end_message().
+  message_start_ = chunk_.size();
   put_u8(chunk_, static_cast<std::uint8_t>(Op::Message));
-  put_u64(chunk_, 2 + 4 + 8 + 8 + m.data.size());
-  put_u16(chunk_, m.channel_id);
-  put_u32(chunk_, m.sequence);
-  put_u64(chunk_, m.log_time);
-  put_u64(chunk_, m.publish_time);
-  chunk_.append(m.data);
-  start_time_ = message_count_ == 0 ? m.log_time : std::min(start_time_, m.log_time);
-  end_time_ = message_count_ == 0 ? m.log_time : std::max(end_time_, m.log_time);
+  put_u64(chunk_, 0);
+  put_u16(chunk_, channel_id);
+  put_u32(chunk_, sequence);
+  put_u64(chunk_, log_time);
+  put_u64(chunk_, publish_time);
+  start_time_ = message_count_ == 0 ? log_time : std::min(start_time_, log_time);
+  end_time_ = message_count_ == 0 ? log_time : std::max(end_time_, log_time);
   ++message_count_;
-  ++channel_counts_[m.channel_id];
+  ++channel_counts_[channel_id];
+  open_message_ = true;
+  return chunk_;
+}
+
+void Writer::end_message() {
+  if (!open_message_) throw std::logic_error("mcap: end_message without begin_message");
+  open_message_ = false;
+  const std::uint64_t length = chunk_.size() - message_start_ - 9;
+  for (std::size_t i = 0; i < 8; ++i)
+    chunk_[message_start_ + 1 + i] = static_cast<char>((length >> (8 * i)) & 0xFFU);
   if (chunk_.size() >= options_.chunk_size) close_chunk();
 }
 
@@ -150,11 +182,13 @@ void Writer::close_chunk() {
   put_u64(head, chunk_start_);
   put_u64(head, chunk_end_);
   put_u64(head, chunk_.size());
-  put_u32(head, crc32(chunk_));
+  const std::uint32_t records_crc = crc32(chunk_);
+  put_u32(head, records_crc);
   put_string(head, ""); // no compression
   put_u64(head, chunk_.size());
   emit(head);
-  emit(chunk_);
+  emit(chunk_, records_crc); // one pass over the records for both CRCs
+
   const std::uint64_t chunk_length = head.size() + chunk_.size();
   // One MessageIndex per channel, in channel id order; entries in log time order (stable: equal
   // times keep the order they were written in).
@@ -199,6 +233,7 @@ std::vector<std::pair<std::string, std::uint64_t>> Writer::channel_counts() cons
 
 void Writer::finish() {
   if (finished_) throw std::logic_error("mcap: finish twice");
+  if (open_message_) throw std::logic_error("mcap: finish before end_message");
   close_chunk();
   std::string end;
   std::string dc;

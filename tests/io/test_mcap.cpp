@@ -126,6 +126,49 @@ TEST_CASE("mcap writer refuses a message on an unknown channel", "[io][mcap]") {
   CHECK_THROWS_AS(w.add_channel(3, "/x", "json"), std::logic_error);
 }
 
+TEST_CASE("a message written in place is the same bytes as write()", "[io][mcap]") {
+  // Small chunks, so that messages land in several and the data section's CRC (combined from
+  // each chunk's) covers them all.
+  const auto file = [](bool in_place) {
+    std::ostringstream out;
+    mcap::Writer w(out, {"", "antkit", 100});
+    const auto s = w.add_schema("s", "jsonschema", "{}");
+    const auto c = w.add_channel(s, "/c", "json");
+    for (std::uint32_t k = 0; k < 20; ++k) {
+      const std::string data(k * 7, static_cast<char>('a' + k));
+      if (in_place) {
+        w.begin_message(c, k, 10U * k, 10U * k + 1) += data;
+        w.end_message();
+      } else {
+        w.write({c, k, 10U * k, 10U * k + 1, data});
+      }
+    }
+    w.finish();
+    return std::move(out).str();
+  };
+  const std::string a = file(true);
+  CHECK(a == file(false));
+  const auto f = reader::read(a);
+  CHECK(f.messages.size() == 20);
+  CHECK(f.messages[19].data == std::string(133, 't'));
+}
+
+TEST_CASE("mcap writer refuses calls between begin_message and end_message", "[io][mcap]") {
+  std::ostringstream out;
+  mcap::Writer w(out);
+  const auto c = w.add_channel(0, "/c", "json");
+  CHECK_THROWS_AS(w.end_message(), std::logic_error);
+  w.begin_message(c, 0, 0, 0) += "x";
+  CHECK_THROWS_AS(w.begin_message(c, 1, 0, 0), std::logic_error);
+  CHECK_THROWS_AS(w.write({c, 1, 0, 0, ""}), std::logic_error);
+  CHECK_THROWS_AS(w.add_channel(0, "/d", "json"), std::logic_error);
+  CHECK_THROWS_AS(w.add_schema("s", "jsonschema", "{}"), std::logic_error);
+  CHECK_THROWS_AS(w.finish(), std::logic_error);
+  w.end_message();
+  w.finish();
+  CHECK(w.messages() == 1);
+}
+
 TEST_CASE("a damaged byte is caught by the reader's CRCs", "[io][mcap]") {
   std::ostringstream out;
   mcap::Writer w(out);

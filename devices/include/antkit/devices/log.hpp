@@ -133,6 +133,11 @@ public:
   [[nodiscard]] bool truncated() const noexcept { return truncated_; }
   [[nodiscard]] const std::optional<LogStop>& stop() const noexcept { return stop_; }
   [[nodiscard]] std::size_t line() const noexcept { return line_; }
+  // The step records still to read, counted from the lines ahead without parsing them (one scan
+  // for newlines): the non-blank lines, less a last one that holds a "stop" key or is cut short
+  // (no newline and no closing brace). Exact for a log that reads whole; for a damaged one it may
+  // be off, as next() is the judge. The MCAP export spaces its trail messages by it.
+  [[nodiscard]] std::size_t records_ahead() const noexcept;
 
 private:
   void read_header();

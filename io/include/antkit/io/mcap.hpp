@@ -73,6 +73,13 @@ public:
                             const std::vector<std::pair<std::string, std::string>>& metadata = {});
   // Throws std::logic_error for a channel not added.
   void write(const Message& message);
+  // The same record written in place, without a copy of the data: begin_message() writes the
+  // record's head into the open chunk and returns that chunk; the caller appends the message's
+  // bytes to it (nothing else), then end_message() sets the record's length. Between the two no
+  // other call may be made (std::logic_error).
+  std::string& begin_message(std::uint16_t channel_id, std::uint32_t sequence,
+                             std::uint64_t log_time, std::uint64_t publish_time);
+  void end_message();
   // Closes the last chunk and writes DataEnd, the summary, its offsets, the Footer and the magic.
   void finish();
 
@@ -92,6 +99,7 @@ private:
     std::vector<std::pair<std::string, std::string>> metadata;
   };
   void emit(std::string_view bytes); // to the file, counted and (before DataEnd) into the data CRC
+  void emit(std::string_view bytes, std::uint32_t crc); // the same, its CRC-32 known
   void close_chunk();
 
   std::ostream& out_;
@@ -103,6 +111,8 @@ private:
   std::vector<ChannelRecord> channels_;
   // The open chunk: its records, their time range and each channel's (log time, offset) index.
   std::string chunk_;
+  std::size_t message_start_ = 0; // the open message's record in chunk_ (begin_message)
+  bool open_message_ = false;
   std::uint64_t chunk_start_ = 0, chunk_end_ = 0;
   std::map<std::uint16_t, std::vector<std::pair<std::uint64_t, std::uint64_t>>> chunk_index_;
   std::string chunk_indexes_; // the summary's ChunkIndex records so far
