@@ -7,6 +7,7 @@
 #   bag export             a ROS 2 bag's poses, the map and a check's result (both checks)
 #   stc --mcap             an STC tour: the map, the spanning tree, a pose a step
 #   cover --mcap           a coverage run: the map, every robot each tick, its check
+#   check stc --mcap       a tour with a repeat at position 3: exit 1, one ERROR log at step 3
 # Fails when the node packages are not installed (run `scripts/bootstrap.sh --node-packages` or
 # `npm ci`); skipped only when node itself is absent.
 # Inputs: -DANTKIT=... -DNODE=... (empty when not found) -DSRC=<checkout> -DOUT=<scratch dir>
@@ -79,3 +80,10 @@ run(0 ${check} ${OUT}/stc.mcap /map=1 /tree=1 /pose=1024 /trail=94 /log=2)
 run(0 ${ANTKIT} cover --map ${SRC}/data/maps/movingai/empty-32-32.map --algo pm --robots 3
     --limit 40 --mcap ${OUT}/cover.mcap)
 run(0 ${check} ${OUT}/cover.mcap /map=1 /log=2)
+# A checked tour (antkit check stc --mcap): a 4 x 2 free map, a tour back on (1, 0) at position 3:
+# exit 1 (the rule is broken; the file is whole), a pose a position, the ERROR at position 3.
+file(WRITE ${OUT}/free.txt "....\n....\n")
+file(WRITE ${OUT}/repeat.json "[[0,0],[1,0],[2,0],[1,0],[2,0],[3,0],[3,1],[2,1],[1,1],[0,1]]")
+run(1 ${ANTKIT} check stc --map ${OUT}/free.txt --path ${OUT}/repeat.json
+    --mcap ${OUT}/check_stc.mcap)
+run(0 ${check} ${OUT}/check_stc.mcap /map=1 /pose=10 /trail=10 /log=2 error@3)
