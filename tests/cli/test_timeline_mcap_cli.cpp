@@ -136,3 +136,95 @@ TEST_CASE("antkit check stc --mcap: a pose a position, the first broken rule at 
   CHECK_THAT(too_long.err, Contains("--mcap"));
   CHECK_FALSE(std::filesystem::exists(dir / "no4.mcap"));
 }
+
+namespace {
+
+std::string unbase64(const std::string& s) {
+  static const std::string alphabet =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  std::uint32_t bits = 0;
+  int n = 0;
+  for (const char ch : s) {
+    if (ch == '=') break;
+    bits = (bits << 6) | static_cast<std::uint32_t>(alphabet.find(ch));
+    n += 6;
+    if (n >= 8) {
+      n -= 8;
+      out.push_back(static_cast<char>((bits >> n) & 0xff));
+    }
+  }
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("antkit explore --mcap: both robots each tick, the line of sight's events at their "
+          "ticks, the explored map at the end",
+          "[cli][mcap]") {
+  const TempDir dir("explore-mcap");
+  const std::string map = antkit::test::source_path("data/maps/movingai/room-32-32-4.map");
+  const auto r = run_antkit("explore --map " + map +
+                            " --algo fast-wall-follow --format json --mcap " + (dir / "run.mcap"));
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const auto ticks = j["steps"].get<std::size_t>() + 1; // the last tick's observation completes it
+  const Read run = read_mcap(dir / "run.mcap");
+  CHECK(run.counts.at("/map") == 1);
+  CHECK(run.counts.at("/robotA/pose") == ticks);
+  CHECK(run.counts.at("/robotB/pose") == ticks);
+  CHECK(run.counts.at("/robotA/trail") == run.counts.at("/robotB/trail"));
+  CHECK(run.counts.at("/robotA/trail") <= 101);
+  REQUIRE(run.counts.at("/explored") == 1);
+  for (const auto& topic : {"/robotA/pose", "/robotB/pose"})
+    for (const auto& m : run.by_topic.at(topic)) CHECK(m.log_time == m.sequence * 100000000ULL);
+  // Robot A's moves: the ticks where its cell changed.
+  std::size_t moves = 0;
+  const auto& poses = run.by_topic.at("/robotA/pose");
+  for (std::size_t k = 1; k < poses.size(); ++k)
+    if (nlohmann::json::parse(poses[k].data)["pose"]["position"] !=
+        nlohmann::json::parse(poses[k - 1].data)["pose"]["position"])
+      ++moves;
+  CHECK(moves == j["moves"][0].get<std::size_t>());
+  // /log: what ran at 0, the line of sight's changes at their ticks, the result at the last tick.
+  const auto& logs = run.by_topic.at("/log");
+  REQUIRE(logs.size() >= 2);
+  CHECK(logs.front().log_time == 0);
+  CHECK(logs.back().sequence == ticks - 1);
+  const auto result = nlohmann::json::parse(logs.back().data);
+  CHECK(result["level"] == 2);
+  CHECK_THAT(result["message"].get<std::string>(),
+             Contains("explored " + std::to_string(j["explored"].get<int>()) + " cells"));
+  CHECK_THAT(result["message"].get<std::string>(), Contains(j["hash"].get<std::string>()));
+  std::size_t events = 0;
+  for (std::size_t i = 1; i + 1 < logs.size(); ++i) {
+    const std::string text = nlohmann::json::parse(logs[i].data)["message"];
+    CHECK(text.rfind("tick " + std::to_string(logs[i].sequence) + ": line of sight", 0) == 0);
+    CHECK(logs[i].log_time == logs[i].sequence * 100000000ULL);
+    ++events;
+  }
+  CHECK(events > 0); // the room's walls break the pair's line of sight
+  // /explored: the JSON's cells (F S L B N O as 0..5), row 0 the map's bottom row.
+  const auto grid = nlohmann::json::parse(run.by_topic.at("/explored")[0].data);
+  const std::string data = unbase64(grid["data"].get<std::string>());
+  const auto& rows = j["cells"];
+  const std::size_t h = rows.size(), w = rows[0].get<std::string>().size();
+  REQUIRE(data.size() == w * h);
+  const std::string codes = "FSLBNO";
+  std::size_t mismatches = 0;
+  for (std::size_t y = 0; y < h; ++y)
+    for (std::size_t x = 0; x < w; ++x)
+      if (codes[static_cast<std::size_t>(data[(h - 1 - y) * w + x])] !=
+          rows[y].get<std::string>()[x])
+        ++mismatches;
+  CHECK(mismatches == 0);
+  // Bad input: exit 2, nothing written.
+  const auto off = run_antkit("explore --map " + map + " --algo frontier --start 99,99 --mcap " +
+                              (dir / "no.mcap"));
+  CHECK(off.status == 2);
+  CHECK_FALSE(std::filesystem::exists(dir / "no.mcap"));
+  const auto los_off = run_antkit("explore --size 10x10 --algo fast-wall-follow --los off --mcap " +
+                                  (dir / "no2.mcap"));
+  CHECK(los_off.status == 2);
+  CHECK_FALSE(std::filesystem::exists(dir / "no2.mcap"));
+}

@@ -8,6 +8,7 @@
 #   stc --mcap             an STC tour: the map, the spanning tree, a pose a step
 #   cover --mcap           a coverage run: the map, every robot each tick, its check
 #   check stc --mcap       a tour with a repeat at position 3: exit 1, one ERROR log at step 3
+#   explore --mcap         paper 001's pair: the map, both robots each tick, the explored map
 # Fails when the node packages are not installed (run `scripts/bootstrap.sh --node-packages` or
 # `npm ci`); skipped only when node itself is absent.
 # Inputs: -DANTKIT=... -DNODE=... (empty when not found) -DSRC=<checkout> -DOUT=<scratch dir>
@@ -87,3 +88,9 @@ file(WRITE ${OUT}/repeat.json "[[0,0],[1,0],[2,0],[1,0],[2,0],[3,0],[3,1],[2,1],
 run(1 ${ANTKIT} check stc --map ${OUT}/free.txt --path ${OUT}/repeat.json
     --mcap ${OUT}/check_stc.mcap)
 run(0 ${check} ${OUT}/check_stc.mcap /map=1 /pose=10 /trail=10 /log=2 error@3)
+# A two-robot LOS exploration (antkit explore --mcap): 367 steps in the 32 x 32 rooms, so 368
+# ticks; the map at 0, the explored map at the end, both robots each tick.
+run(0 ${ANTKIT} explore --map ${SRC}/data/maps/movingai/room-32-32-4.map --algo fast-wall-follow
+    --mcap ${OUT}/explore.mcap)
+run(0 ${check} ${OUT}/explore.mcap /map=1 /explored=1 /robotA/pose=368 /robotB/pose=368
+    /robotA/trail=93 /robotB/trail=93)
