@@ -228,3 +228,72 @@ TEST_CASE("antkit explore --mcap: both robots each tick, the line of sight's eve
   CHECK(los_off.status == 2);
   CHECK_FALSE(std::filesystem::exists(dir / "no2.mcap"));
 }
+
+TEST_CASE("antkit buffon --mcap: trial 0's two visits one after the other, visit 2's crossings at "
+          "their steps",
+          "[cli][mcap]") {
+  const TempDir dir("buffon-mcap");
+  const auto r = run_antkit("buffon --arena circle:d=20 --steps 2000 --trials 2 --format json "
+                            "--mcap " +
+                            (dir / "run.mcap"));
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& trial = j["trials"][0];
+  const std::size_t n = 2001; // the start and 2000 steps, each visit
+  const Read run = read_mcap(dir / "run.mcap");
+  CHECK(run.counts.at("/arena") == 1);
+  CHECK(run.counts.at("/visit1/pose") == n);
+  CHECK(run.counts.at("/visit2/pose") == n);
+  CHECK(run.counts.at("/visit1/trail") == 97); // positions 0, 21, ..., 1995 and the last
+  CHECK(run.counts.at("/visit2/trail") == 97);
+  // Visit 1 from time 0, visit 2 from position n, 100 ms a position.
+  const auto& v1 = run.by_topic.at("/visit1/pose");
+  const auto& v2 = run.by_topic.at("/visit2/pose");
+  CHECK(v1.front().log_time == 0);
+  CHECK(v2.front().sequence == n);
+  for (const auto* visit : {&v1, &v2})
+    for (const auto& m : *visit) CHECK(m.log_time == m.sequence * 100000000ULL);
+  // /log: what ran, one line per step of visit 2 that crosses visit 1's trail (at that step), the
+  // result; the crossings' running count ends at the trial's exact count.
+  const auto& logs = run.by_topic.at("/log");
+  REQUIRE(logs.size() >= 2);
+  CHECK_THAT(nlohmann::json::parse(logs.front().data)["message"].get<std::string>(),
+             Contains("trial 0 of 2"));
+  const auto crossings = trial["crossings_exact"].get<std::uint64_t>();
+  REQUIRE(crossings > 0);
+  CHECK(logs.size() >= 2 + 1);
+  CHECK(logs.size() <= 2 + crossings);
+  for (std::size_t i = 1; i + 1 < logs.size(); ++i) {
+    CHECK(logs[i].sequence >= n);
+    CHECK(logs[i].log_time == logs[i].sequence * 100000000ULL);
+    const std::string text = nlohmann::json::parse(logs[i].data)["message"];
+    CHECK(text.rfind("visit 2 step " + std::to_string(logs[i].sequence - n) + " crosses", 0) == 0);
+  }
+  CHECK_THAT(nlohmann::json::parse(logs[logs.size() - 2].data)["message"].get<std::string>(),
+             Contains("(" + std::to_string(crossings) + " so far)"));
+  const auto result = nlohmann::json::parse(logs.back().data)["message"].get<std::string>();
+  CHECK(logs.back().sequence == 2 * n - 1);
+  CHECK_THAT(result, Contains("crossings " + std::to_string(crossings) + " (exact), BC " +
+                              std::to_string(trial["bc"].get<int>())));
+  // The bytes do not depend on --threads (trial 0 is the same trial).
+  const auto threads = run_antkit("buffon --arena circle:d=20 --steps 2000 --trials 2 --threads 2 "
+                                  "--mcap " +
+                                  (dir / "threads.mcap"));
+  REQUIRE(threads.status == 0);
+  CHECK(slurp(dir / "threads.mcap") == slurp(dir / "run.mcap"));
+  // Refused before the run, nothing written: the markers rule (one walk, no two visits), visits of
+  // more than 2^22 positions together, a bad arena.
+  const auto markers =
+      run_antkit("buffon --arena circle:d=20 --precision 0.1 --mcap " + (dir / "no1.mcap"));
+  CHECK(markers.status == 2);
+  CHECK_THAT(markers.err, Contains("--mcap") && Contains("markers"));
+  CHECK_FALSE(std::filesystem::exists(dir / "no1.mcap"));
+  const auto big =
+      run_antkit("buffon --arena circle:d=20 --steps 2100000 --mcap " + (dir / "no2.mcap"));
+  CHECK(big.status == 2);
+  CHECK_THAT(big.err, Contains("--mcap"));
+  CHECK_FALSE(std::filesystem::exists(dir / "no2.mcap"));
+  const auto arena = run_antkit("buffon --arena circle:d=-1 --mcap " + (dir / "no3.mcap"));
+  CHECK(arena.status == 2);
+  CHECK_FALSE(std::filesystem::exists(dir / "no3.mcap"));
+}

@@ -9,6 +9,7 @@
 #   cover --mcap           a coverage run: the map, every robot each tick, its check
 #   check stc --mcap       a tour with a repeat at position 3: exit 1, one ERROR log at step 3
 #   explore --mcap         paper 001's pair: the map, both robots each tick, the explored map
+#   buffon --mcap          paper 000's two visits: the arena, each visit's poses and trail
 # Fails when the node packages are not installed (run `scripts/bootstrap.sh --node-packages` or
 # `npm ci`); skipped only when node itself is absent.
 # Inputs: -DANTKIT=... -DNODE=... (empty when not found) -DSRC=<checkout> -DOUT=<scratch dir>
@@ -94,3 +95,8 @@ run(0 ${ANTKIT} explore --map ${SRC}/data/maps/movingai/room-32-32-4.map --algo 
     --mcap ${OUT}/explore.mcap)
 run(0 ${check} ${OUT}/explore.mcap /map=1 /explored=1 /robotA/pose=368 /robotB/pose=368
     /robotA/trail=93 /robotB/trail=93)
+# A Buffon run (antkit buffon --mcap): trial 0's two visits of 2000 steps, one after the other:
+# the arena at 0, 2001 poses each, the trail at positions 0, 21, ..., 1995 and the last.
+run(0 ${ANTKIT} buffon --arena circle:d=20 --steps 2000 --mcap ${OUT}/buffon.mcap)
+run(0 ${check} ${OUT}/buffon.mcap /arena=1 /visit1/pose=2001 /visit2/pose=2001 /visit1/trail=97
+    /visit2/trail=97)
