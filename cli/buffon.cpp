@@ -125,6 +125,10 @@ void run(const BuffonCommand& c) {
   params.keep_first_trails = !c.svg.empty() || !c.png.empty() || !c.mcap.empty();
   if (!c.mcap.empty()) antkit::commands::check_buffon_mcap(params);
   const buffon::AreaMeasurement m = buffon::measure_area(world, params);
+  // The MCAP file before anything else: its size check (the online rule's lengths) may refuse after
+  // the run, before any file is written or anything printed.
+  if (!c.mcap.empty())
+    (void)antkit::commands::write_buffon_mcap(world, m, params, c.arena, arena.area(), c.mcap);
 
   nlohmann::json result = antkit::commands::buffon_json(m, params, c.arena, arena.area());
   if (buffon::budgeted(params) && m.summary.out_of_steps > 0) {
@@ -139,8 +143,6 @@ void run(const BuffonCommand& c) {
   if (!c.svg.empty() || !c.png.empty())
     antkit::experiments::save_trial_trails_figure(c.arena, arena, m.trials[0].run, c.steps, c.svg,
                                                   c.png);
-  if (!c.mcap.empty())
-    (void)antkit::commands::write_buffon_mcap(world, m, params, c.arena, arena.area(), c.mcap);
   antkit::cli::emit(result, c.format, std::cout);
 }
 

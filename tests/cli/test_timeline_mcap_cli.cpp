@@ -106,6 +106,19 @@ TEST_CASE("antkit check stc --mcap: a pose a position, the first broken rule at 
   }
   CHECK(errors == 1);
 
+  // --cells: the map's two cells are 2 x 2 sub-cells each, half a cell's side (1 m) apiece.
+  std::ofstream(dir / "cells.txt") << "..\n";
+  const auto cells = run_antkit("check stc --cells --map " + (dir / "cells.txt") + " --path " +
+                                (dir / "good.json") + " --mcap " + (dir / "cells.mcap"));
+  REQUIRE(cells.status == 0);
+  const Read in_cells = read_mcap(dir / "cells.mcap");
+  const auto grid = nlohmann::json::parse(in_cells.by_topic.at("/map")[0].data);
+  CHECK(grid["column_count"] == 4);
+  CHECK(grid["cell_size"]["x"] == 0.5);
+  const auto p4 = nlohmann::json::parse(in_cells.by_topic.at("/pose")[4].data);
+  CHECK(p4["pose"]["position"]["x"] == 1.75);
+  CHECK(p4["pose"]["position"]["y"] == 0.25);
+
   // Bad input: exit 2, a located error, nothing written.
   std::ofstream(dir / "malformed.csv") << "0,0\n1,x\n";
   const auto malformed = run_antkit("check stc --map " + (dir / "free.txt") + " --path " +
