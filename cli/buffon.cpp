@@ -3,6 +3,7 @@
 //   antkit buffon --arena SPEC|FILE.wkt [--trials N] [--steps N] [--width W] [--seed S]
 //                 [--threads T] [--noise X] [--precision P [--rule online|markers|fixed]
 //                 [--max-steps N] [--max-steps2 N]] [--format table|json] [--svg FILE]
+//                 [--mcap FILE.mcap]
 //
 // JSON: {"arena": {"spec", "area"}, "trials": [{"trial", "bc", "nbc", "length1", "length2",
 //        "crossings_exact", "area_closed_form", "area_closed_form_ci", "blocked", "hash"}],
@@ -10,7 +11,10 @@
 // The top-level hash chains the trials' hashes in trial order. area_closed_form is null when a
 // trial saw no crossing; the median is over the trials that have one (null if none). --svg draws
 // trial 0's two trails over the arena (visit 1 blue, visit 2 red), like the paper's Figure 4.
-// Output bytes do not depend on --threads.
+// Output bytes do not depend on --threads. --mcap writes trial 0's two visits for Foxglove, one
+// after the other at 100 ms a step (commands/buffon_mcap.hpp: the arena, each visit's pose and
+// trail, visit 2's crossings of visit 1's trail and the result on /log); refused under --rule
+// markers (one walk, no two visits) and for visits of more than 2^22 positions together.
 //
 // --precision P stops the run as soon as the closed form's 95 % interval, from the two-way
 // batch-means variance of the exact crossing count (stopping.hpp), lies within a relative P of
@@ -47,6 +51,7 @@
 #include "output.hpp"
 
 #include <antkit/buffon/area_measurement.hpp>
+#include <antkit/commands/buffon_mcap.hpp>
 #include <antkit/commands/json.hpp>
 #include <antkit/experiments/buffon_figures.hpp>
 #include <antkit/geometry/fixed_convert.hpp>
@@ -71,7 +76,7 @@ struct BuffonCommand {
   double noise = 0.0;
   std::uint64_t seed = 1;
   std::int64_t threads = 1;
-  std::string svg, png;
+  std::string svg, png, mcap;
   std::string precision;        // as typed; read exactly by parse_precision
   bool precision_given = false; // without --precision visit 2 runs all --steps
   std::string rule = "markers"; // --rule markers|online|fixed (issue 17: markers need less trail)
@@ -117,8 +122,13 @@ void run(const BuffonCommand& c) {
     params.visit2_steps = c.max_steps2;
     params.total_steps = c.max_steps;
   }
-  params.keep_first_trails = !c.svg.empty() || !c.png.empty();
+  params.keep_first_trails = !c.svg.empty() || !c.png.empty() || !c.mcap.empty();
+  if (!c.mcap.empty()) antkit::commands::check_buffon_mcap(params);
   const buffon::AreaMeasurement m = buffon::measure_area(world, params);
+  // The MCAP file before anything else: its size check (the online rule's lengths) may refuse after
+  // the run, before any file is written or anything printed.
+  if (!c.mcap.empty())
+    (void)antkit::commands::write_buffon_mcap(world, m, params, c.arena, arena.area(), c.mcap);
 
   nlohmann::json result = antkit::commands::buffon_json(m, params, c.arena, arena.area());
   if (buffon::budgeted(params) && m.summary.out_of_steps > 0) {
@@ -166,6 +176,9 @@ void register_buffon(CLI::App& app) {
   sub->add_option("--svg", options->svg,
                   "Draw trial 0's trails to this SVG file (title, legend, caption)");
   sub->add_option("--png", options->png, "The same picture as PNG");
+  sub->add_option("--mcap", options->mcap,
+                  "Write trial 0's two visits as MCAP for Foxglove (the arena, each visit's pose "
+                  "and trail at 100 ms a step, the crossings and the result on /log)");
   antkit::cli::add_format_option(*sub, options->format);
   sub->callback([options, precision, rule] {
     options->precision_given = precision->count() > 0;

@@ -3,7 +3,8 @@
 // function and prints.
 //
 //   antkit check stc --map F --path P [--start X,Y] [--coverage] [--order xy|rc] [--cells]
-//                    [--format table|json]
+//                    [--mcap F.mcap] [--format table|json]
+//                    (--mcap: the tour and the verdict for Foxglove, commands/check_stc_mcap.hpp)
 //   antkit check stc --map F --bag BAG --topic T [--stamp bag|header] [--child-frame F]
 //                    [--start X,Y] [--coverage]: a ROS 2 bag's poses as the tour
 //                    (commands/bags.hpp, check_stc_bag: cells through the map's resolution and
@@ -22,6 +23,7 @@
 
 #include <antkit/algorithms/options.hpp>
 #include <antkit/commands/bags.hpp>
+#include <antkit/commands/check_stc_mcap.hpp>
 #include <antkit/commands/cover_mcap.hpp>
 #include <antkit/commands/json.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -40,7 +42,7 @@ namespace testing = antkit::testing;
 
 struct StcCheckCommand {
   std::string map, path, start, order = "xy";
-  std::string bag, topic, stamp = "bag", child_frame = "base_link";
+  std::string bag, topic, stamp = "bag", child_frame = "base_link", mcap;
   bool coverage = false, cells = false;
   Format format = Format::Table;
 };
@@ -59,6 +61,9 @@ void run_stc(const StcCheckCommand& c) {
     throw antkit::kernel::InputError("--bag", "one tour: --path FILE or --bag BAG, not both");
   if (!c.bag.empty()) {
     if (c.topic.empty()) throw antkit::kernel::InputError("--topic", "--bag needs --topic");
+    if (!c.mcap.empty())
+      throw antkit::kernel::InputError("--mcap", "with --path; a bag's tour goes out with antkit "
+                                                 "bag export --check stc");
     const auto b = antkit::commands::check_stc_bag(c.map, c.bag, c.topic,
                                                    antkit::commands::bag_stamp(c.stamp, "--stamp"),
                                                    c.child_frame, request);
@@ -69,7 +74,9 @@ void run_stc(const StcCheckCommand& c) {
           (b.violation_ns() ? " at bag time " + std::to_string(*b.violation_ns()) + " ns" : ""));
     return;
   }
-  const testing::StcCheckReport r = testing::check_stc_files(request);
+  const testing::StcCheckReport r = c.mcap.empty()
+                                        ? testing::check_stc_files(request)
+                                        : antkit::commands::check_stc_mcap(request, c.mcap).report;
   const testing::StcAudit& a = r.audit;
   const nlohmann::json j = antkit::commands::check_stc_json(r, c.map);
   antkit::cli::emit(j, c.format, std::cout);
@@ -167,6 +174,9 @@ void register_check(CLI::App& app) {
   stc->add_flag("--coverage", s->coverage,
                 "Every reachable free sub-cell at least once, repeats counted (Full-STC, "
                 "boustrophedon), instead of exactly once");
+  stc->add_option("--mcap", s->mcap,
+                  "With --path: also write the tour and the verdict as MCAP for Foxglove (the "
+                  "first broken rule an ERROR at its position)");
   antkit::cli::add_format_option(*stc, s->format);
   stc->callback([s] { run_stc(*s); });
 

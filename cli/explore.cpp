@@ -3,6 +3,7 @@
 //   antkit explore (--map FILE | --size WxH [--obstacles K | --blocks K] [--seed S] [--trial T])
 //                  [--start X,Y] --algo fast-wall-follow|frontier [--los on|off]
 //                  [--w1 N --w2 N --w3 N] [--format table|json] [--svg FILE] [--png FILE]
+//                  [--mcap FILE.mcap]
 //
 // x to the right, y downward from the first row. The robots start on the start cell (default: the
 // free cell nearest the lower-left corner, or the map's 'S') and its nearest free neighbour.
@@ -14,11 +15,14 @@
 // from the keyed stream (seed, experiment 5, trial, 0, purpose) so that `--trial` reproduces one
 // row of the tables driver (`antkit explore-tables`); fast wall-follow always sweeps the line of
 // sight, so `--algo fast-wall-follow --los off` is rejected as bad input.
+// --mcap writes the run for Foxglove (commands/explore_mcap.hpp: the map, both robots each tick at
+// 100 ms a tick, their trails, the line of sight lost and regained, the explored map at the end).
 #include "commands.hpp"
 #include "output.hpp"
 
 #include <algorithm>
 #include <antkit/algorithms/options.hpp>
+#include <antkit/commands/explore_mcap.hpp>
 #include <antkit/experiments/explore_tables.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -47,7 +51,7 @@ struct ExploreCommand {
   std::string algo;
   std::string los = "on";
   std::int64_t w1 = 1, w2 = 1, w3 = 0;
-  std::string svg, png;
+  std::string svg, png, mcap;
   Format format = Format::Table;
 };
 
@@ -140,7 +144,13 @@ nlohmann::json run(const ExploreCommand& c) {
     throw InputError("--start", "(" + std::to_string(env.start.x) + "," +
                                     std::to_string(env.start.y) + "): " + e.what());
   }
-  const los::ExploreResult r = los::explore(env.grid, pair[0], pair[1], options);
+  const std::string what = "explore --algo " + c.algo + " on " +
+                           (c.map.empty() ? c.size + " (seed " + std::to_string(c.seed) +
+                                                ", trial " + std::to_string(c.trial) + ")"
+                                          : c.map);
+  const los::ExploreResult r =
+      c.mcap.empty() ? los::explore(env.grid, pair[0], pair[1], options)
+                     : antkit::commands::explore_mcap(env.grid, pair, options, what, c.mcap);
   if (!r.completed)
     throw antkit::cli::CheckFailed("the exploration did not finish within its tick budget");
   if (!c.svg.empty() || !c.png.empty())
@@ -191,6 +201,9 @@ void register_explore(CLI::App& app) {
                   "Write the explored map (Table 1's colours) and both trails as SVG, with a "
                   "legend");
   sub->add_option("--png", opts->png, "The same picture as PNG");
+  sub->add_option("--mcap", opts->mcap,
+                  "Write the run as MCAP for Foxglove: the map, both robots each tick, the line "
+                  "of sight lost and regained, the explored map");
   antkit::cli::add_format_option(*sub, opts->format);
   sub->callback([opts] { antkit::cli::emit(run(*opts), opts->format, std::cout); });
 }

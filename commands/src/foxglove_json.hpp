@@ -1,5 +1,5 @@
 #pragma once
-// Foxglove messages as JSON for the commands' MCAP writers (bag_mcap.cpp, stc_mcap.cpp): the
+// Foxglove messages as JSON for the commands' MCAP writers (bag_mcap.cpp, stc_mcap.cpp, ...): the
 // fields devices::mcap_schema's texts name, built with nlohmann (keys sorted, numbers round-trip:
 // the bytes depend on the values alone).
 #include <algorithm>
@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace antkit::commands::foxglove {
 
@@ -24,6 +25,56 @@ inline nlohmann::json pose_json(double x, double y, double yaw) {
   return {{"position", {{"x", x}, {"y", y}, {"z", 0.0}}},
           {"orientation",
            {{"x", 0.0}, {"y", 0.0}, {"z", std::sin(yaw / 2)}, {"w", std::cos(yaw / 2)}}}};
+}
+
+// A sub-cell's (a map cell's) centre in the map's frame (metres: the map's resolution and origin;
+// x right, y up).
+struct Point {
+  double x, y;
+};
+inline Point cell_centre(const maps::GridMap& map, kernel::Cell c) {
+  const double h = map.cells.height();
+  const double lx = (c.x + 0.5) * map.resolution, ly = (h - 1 - c.y + 0.5) * map.resolution;
+  const double co = std::cos(map.origin_yaw), si = std::sin(map.origin_yaw);
+  return {map.origin_x + lx * co - ly * si, map.origin_y + lx * si + ly * co};
+}
+
+// The headings of a path of points ({x, y}): the way it last moved at each point (0 until it
+// first moves; a point where it did not move keeps the heading before it).
+template <class Points>
+std::vector<double> headings(const Points& at) {
+  std::vector<double> yaw(at.size(), 0.0);
+  for (std::size_t k = 1; k < at.size(); ++k)
+    yaw[k] = at[k].x == at[k - 1].x && at[k].y == at[k - 1].y
+                 ? yaw[k - 1]
+                 : std::atan2(at[k].y - at[k - 1].y, at[k].x - at[k - 1].x);
+  return yaw;
+}
+
+// A foxglove.SceneUpdate of one entity `id` in `frame` at time t: a line list (pairs of points,
+// each {x, y, z}) drawn `thickness` pixels wide in `color` ({r, g, b, a}).
+inline nlohmann::json line_list_scene(std::uint64_t t, const std::string& frame,
+                                      const std::string& id, nlohmann::json points,
+                                      nlohmann::json color) {
+  const nlohmann::json line{{"type", 2},
+                            {"pose", pose_json(0, 0, 0)},
+                            {"thickness", 2},
+                            {"scale_invariant", true},
+                            {"points", std::move(points)},
+                            {"color", std::move(color)},
+                            {"colors", nlohmann::json::array()},
+                            {"indices", nlohmann::json::array()}};
+  nlohmann::json entity{{"timestamp", stamp_of(t)},
+                        {"frame_id", frame},
+                        {"id", id},
+                        {"lifetime", stamp_of(0)},
+                        {"frame_locked", true},
+                        {"metadata", nlohmann::json::array()},
+                        {"lines", nlohmann::json::array({line})}};
+  for (const char* empty :
+       {"arrows", "cubes", "spheres", "cylinders", "triangles", "texts", "models"})
+    entity[empty] = nlohmann::json::array();
+  return {{"deletions", nlohmann::json::array()}, {"entities", nlohmann::json::array({entity})}};
 }
 
 // A foxglove.Grid of one UINT8 field over the map, its row 0 the map's bottom row (Grid rows

@@ -17,15 +17,9 @@ namespace {
 
 using foxglove::grid_json, foxglove::log_json, foxglove::pose_json, foxglove::stamp_of;
 
-// A sub-cell's centre in the map's frame (metres: the map's resolution and origin; x right, y up).
-struct Point {
-  double x, y;
-};
+using Point = foxglove::Point;
 Point centre(const maps::GridMap& map, stc::SubCell c) {
-  const double h = map.cells.height();
-  const double lx = (c.x + 0.5) * map.resolution, ly = (h - 1 - c.y + 0.5) * map.resolution;
-  const double co = std::cos(map.origin_yaw), si = std::sin(map.origin_yaw);
-  return {map.origin_x + lx * co - ly * si, map.origin_y + lx * si + ly * co};
+  return foxglove::cell_centre(map, {c.x, c.y});
 }
 
 } // namespace
@@ -81,26 +75,9 @@ McapWritten write_stc_mcap(const maps::GridMap& map, const stc::RunResult& r,
       points.push_back({{"x", (p0.x + p1.x) / 2}, {"y", (p0.y + p1.y) / 2}, {"z", 0.0}});
     }
   }
-  const nlohmann::json line{{"type", 2},
-                            {"pose", pose_json(0, 0, 0)},
-                            {"thickness", 2},
-                            {"scale_invariant", true},
-                            {"points", points},
-                            {"color", {{"r", 0.6}, {"g", 0.6}, {"b", 0.6}, {"a", 1}}},
-                            {"colors", nlohmann::json::array()},
-                            {"indices", nlohmann::json::array()}};
-  nlohmann::json entity{{"timestamp", stamp_of(0)},
-                        {"frame_id", "map"},
-                        {"id", "spanning-tree"},
-                        {"lifetime", stamp_of(0)},
-                        {"frame_locked", true},
-                        {"metadata", nlohmann::json::array()},
-                        {"lines", nlohmann::json::array({line})}};
-  for (const char* empty :
-       {"arrows", "cubes", "spheres", "cylinders", "triangles", "texts", "models"})
-    entity[empty] = nlohmann::json::array();
   put(tree_ch, 0, 0,
-      {{"deletions", nlohmann::json::array()}, {"entities", nlohmann::json::array({entity})}});
+      foxglove::line_list_scene(0, "map", "spanning-tree", std::move(points),
+                                {{"r", 0.6}, {"g", 0.6}, {"b", 0.6}, {"a", 1}}));
   put(log_ch, 0, 0,
       log_json(0, 2,
                "stc " + std::string(stc::variant_name(r.variant)) + " on " + map_name + " from (" +

@@ -5,7 +5,8 @@
 //   node check_mcap.mjs FILE.mcap [TOPIC=COUNT ...] [error@STEP]
 // TOPIC=COUNT: that many messages on TOPIC; error@STEP: exactly one foxglove.Log of level ERROR
 // (4) on /log, with sequence STEP, at the log time of that step's /recorded/step message (or, past
-// the recorded steps, the last one's).
+// the recorded steps, the last one's); in a file without /recorded/step (a tour, a run), at the
+// log time of the /pose message with sequence STEP.
 // Also checks: the Statistics equal the messages read; every message of the stream is reached
 // through the index; schema encoding jsonschema, message encoding json; each message's JSON parses
 // and its timestamp {sec, nsec} is its log time; sequence is its step where it has one. Exits 1 with
@@ -63,6 +64,7 @@ const indexed = new Map(); // topic -> count
 const seen = [];
 const errors = []; // [sequence, log time] of /log's ERROR messages
 const stepTimes = new Map(); // step -> log time on /recorded/step
+const poseTimes = new Map(); // sequence -> log time on /pose
 for await (const m of reader.readMessages()) {
   const channel = reader.channelsById.get(m.channelId);
   if (channel.messageEncoding !== "json") fail(`${channel.topic}: encoding ${channel.messageEncoding}`);
@@ -84,6 +86,7 @@ for await (const m of reader.readMessages()) {
   if (m.publishTime !== m.logTime) fail(`${channel.topic}: publish time is not the log time`);
   if (channel.topic === "/log" && json.level === 4) errors.push([m.sequence, m.logTime]);
   if (channel.topic === "/recorded/step") stepTimes.set(json.step, m.logTime);
+  if (channel.topic === "/pose") poseTimes.set(m.sequence, m.logTime);
   indexed.set(channel.topic, (indexed.get(channel.topic) ?? 0) + 1);
   seen.push(`${m.channelId}:${m.logTime}:${m.sequence}`);
 }
@@ -127,7 +130,8 @@ for (const e of expectations) {
     if (errors.length !== 1 || errors[0][0] !== step)
       fail(`expected one ERROR log at step ${step}, found ${JSON.stringify(errors.map((x) => x[0]))}`);
     const last = [...stepTimes.keys()].reduce((a, b) => Math.max(a, b), -1);
-    const t = stepTimes.get(step) ?? stepTimes.get(last);
+    const t =
+      stepTimes.size > 0 ? stepTimes.get(step) ?? stepTimes.get(last) : poseTimes.get(step);
     if (errors[0][1] !== t) fail(`the ERROR log's time ${errors[0][1]} is not step ${step}'s ${t}`);
     continue;
   }

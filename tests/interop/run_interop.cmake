@@ -7,6 +7,9 @@
 #   bag export             a ROS 2 bag's poses, the map and a check's result (both checks)
 #   stc --mcap             an STC tour: the map, the spanning tree, a pose a step
 #   cover --mcap           a coverage run: the map, every robot each tick, its check
+#   check stc --mcap       a tour with a repeat at position 3: exit 1, one ERROR log at step 3
+#   explore --mcap         paper 001's pair: the map, both robots each tick, the explored map
+#   buffon --mcap          paper 000's two visits: the arena, each visit's poses and trail
 # Fails when the node packages are not installed (run `scripts/bootstrap.sh --node-packages` or
 # `npm ci`); skipped only when node itself is absent.
 # Inputs: -DANTKIT=... -DNODE=... (empty when not found) -DSRC=<checkout> -DOUT=<scratch dir>
@@ -79,3 +82,21 @@ run(0 ${check} ${OUT}/stc.mcap /map=1 /tree=1 /pose=1024 /trail=94 /log=2)
 run(0 ${ANTKIT} cover --map ${SRC}/data/maps/movingai/empty-32-32.map --algo pm --robots 3
     --limit 40 --mcap ${OUT}/cover.mcap)
 run(0 ${check} ${OUT}/cover.mcap /map=1 /log=2)
+# A checked tour (antkit check stc --mcap): a 4 x 2 free map, a tour back on (1, 0) at position 3:
+# exit 1 (the rule is broken; the file is whole), a pose a position, the ERROR at position 3.
+file(WRITE ${OUT}/free.txt "....\n....\n")
+file(WRITE ${OUT}/repeat.json "[[0,0],[1,0],[2,0],[1,0],[2,0],[3,0],[3,1],[2,1],[1,1],[0,1]]")
+run(1 ${ANTKIT} check stc --map ${OUT}/free.txt --path ${OUT}/repeat.json
+    --mcap ${OUT}/check_stc.mcap)
+run(0 ${check} ${OUT}/check_stc.mcap /map=1 /pose=10 /trail=10 /log=2 error@3)
+# A two-robot LOS exploration (antkit explore --mcap): 367 steps in the 32 x 32 rooms, so 368
+# ticks; the map at 0, the explored map at the end, both robots each tick.
+run(0 ${ANTKIT} explore --map ${SRC}/data/maps/movingai/room-32-32-4.map --algo fast-wall-follow
+    --mcap ${OUT}/explore.mcap)
+run(0 ${check} ${OUT}/explore.mcap /map=1 /explored=1 /robotA/pose=368 /robotB/pose=368
+    /robotA/trail=93 /robotB/trail=93)
+# A Buffon run (antkit buffon --mcap): trial 0's two visits of 2000 steps, one after the other:
+# the arena at 0, 2001 poses each, the trail at positions 0, 21, ..., 1995 and the last.
+run(0 ${ANTKIT} buffon --arena circle:d=20 --steps 2000 --mcap ${OUT}/buffon.mcap)
+run(0 ${check} ${OUT}/buffon.mcap /arena=1 /visit1/pose=2001 /visit2/pose=2001 /visit1/trail=97
+    /visit2/trail=97)
