@@ -250,17 +250,19 @@ public:
     append_json_bytes(frame_, frame);
   }
   // The step's messages; `poses` holds the poses so far (the step's last, when it has one).
-  void write(const LogRecord& r, const LogPrefetch::Prepared& prepared, bool has_pose,
+  // The step's messages; `poses` holds the poses so far (the step's last, when it has one).
+  void write(const LogRecord& r, const LogPrefetch::Prepared& prepared,
              const std::vector<Pose>& poses, bool trail_now) {
     const auto t = log_time(r.time_ns);
     const auto seq = static_cast<std::uint32_t>(r.step);
-    if (has_pose) {
+    const std::string_view text = prepared.text;
+    if (prepared.numbered) {
       std::string& m = w_.begin_message(pose_, seq, t, t);
       m += '{';
       put_timestamp(m, t);
       m += frame_;
       m += ",\"pose\":";
-      put_pose(m, poses.back());
+      m += text.substr(prepared.cuts[2]);
       m += '}';
       w_.end_message();
     }
@@ -280,18 +282,18 @@ public:
       m += "]}";
       w_.end_message();
     }
-    const std::string_view text = prepared.text;
-    std::string& step = w_.begin_message(step_, seq, t, t);
-    step += text.substr(0, prepared.cuts[1]);
+    w_.begin_message(step_, seq, t, t) += text.substr(0, prepared.cuts[1]);
     w_.end_message();
-    w_.begin_message(io_, seq, t, t) += text.substr(prepared.cuts[1]);
+    w_.begin_message(io_, seq, t, t) +=
+        text.substr(prepared.cuts[1], prepared.cuts[2] - prepared.cuts[1]);
     w_.end_message();
   }
 
-  // What a step's messages hold that depends on its record alone, written on the log's reading
+  // What a step's messages hold that depends on the records alone, written on the log's reading
   // thread (LogPrefetch): /antkit/step's text, cut after its step number (cuts[0], where a
-  // replay's /replayed/step adds its "identical"), then /antkit/io's (from cuts[1]).
-  static void prepare(const LogRecord& r, LogPrefetch::Prepared& p) {
+  // replay's /replayed/step adds its "identical"), then /antkit/io's (from cuts[1]), then the
+  // pose after the step (from cuts[2]; its numbers too, for the trail), when the log has one.
+  static void prepare(Poser& poser, const LogRecord& r, LogPrefetch::Prepared& p) {
     std::string& m = p.text;
     m.clear();
     m += '{';
@@ -328,6 +330,13 @@ public:
       m += '}';
     }
     m += "]}";
+    p.cuts[2] = m.size();
+    const auto pose = poser.after(r);
+    p.numbered = pose.has_value();
+    if (pose) {
+      p.numbers = {pose->x, pose->y, pose->qz, pose->qw};
+      put_pose(m, *pose);
+    }
   }
   static constexpr std::size_t kTrailPoses = 1000;
 
@@ -483,7 +492,10 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
   };
   // The records parsed a batch ahead on a second thread (log_prefetch.hpp); each batch says
   // whether it is the last, so that the last step's trail is written with it.
-  LogPrefetch prefetch(reader, &RunChannels::prepare);
+  // From here on the poser is the reading thread's (frame() and diameter_m() were read above).
+  LogPrefetch prefetch(reader, [&poser](const LogRecord& r, LogPrefetch::Prepared& p) {
+    RunChannels::prepare(poser, r, p);
+  });
   std::size_t n = 0;
   std::uint64_t last_t = 0;
   for (auto batch = prefetch.next(); !batch.records.empty(); batch = prefetch.next())
@@ -491,10 +503,12 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
       const LogRecord& r = batch.records[j];
       const bool final = batch.last && j + 1 == batch.records.size();
       last_t = log_time(r.time_ns);
-      const auto pose = poser.after(r);
-      if (pose) poses.push_back(*pose);
       const LogPrefetch::Prepared& prepared = batch.prepared[j];
-      run.write(r, prepared, pose.has_value(), poses, (n + 1) % every == 0 || final);
+      if (prepared.numbered) {
+        const auto& v = prepared.numbers;
+        poses.push_back({v[0], v[1], v[2], v[3]});
+      }
+      run.write(r, prepared, poses, (n + 1) % every == 0 || final);
       ++n;
       const auto t = log_time(r.time_ns);
       const auto seq = static_cast<std::uint32_t>(r.step);

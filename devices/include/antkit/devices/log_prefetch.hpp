@@ -6,6 +6,7 @@
 // export also has the reading thread write each record's text that needs nothing but the record
 // (`prepare`), so that the two threads share the work about evenly.
 #include <antkit/devices/log.hpp>
+#include <array>
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
@@ -22,10 +23,14 @@ class LogPrefetch {
 public:
   // Starts reading `reader`'s records at once; `reader` must outlive this and is not to be used
   // until next() has returned an empty batch (or thrown).
-  // What the reading thread makes of each record, beside it: any text, cut in up to four parts.
+  // What the reading thread makes of each record, beside it: any text, cut in up to four parts, and
+  // up to four numbers. It is called once per record, in the log's order, on the reading thread
+  // (so it may keep state from record to record, used by that thread alone).
   struct Prepared {
     std::string text; // its capacity is kept from batch to batch
     std::size_t cuts[4] = {};
+    std::array<double, 4> numbers{}; // and a few numbers, when `numbered`
+    bool numbered = false;
   };
   using Prepare = std::function<void(const LogRecord&, Prepared&)>;
   explicit LogPrefetch(LogReader& reader, Prepare prepare = {}, std::size_t batch = 4096);
