@@ -31,6 +31,7 @@
 #include <antkit/commands/options.hpp>
 #include <antkit/devices/device.hpp>
 #include <antkit/devices/mcap_export.hpp>
+#include <antkit/devices/stc_floor/record.hpp>
 #include <antkit/experiments/recorded_run.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -127,20 +128,19 @@ void run(const RecordCommand& c) {
   j["log"] = c.out;
   j["steps"] = s.steps;
   j["completed"] = s.completed;
-  if (s.tour) {
-    const auto& t = *s.tour;
-    j["start"] = {t.start.x, t.start.y};
+  if (const auto* t = devices::stc_floor::tour_of(s)) {
+    j["start"] = {t->start.x, t->start.y};
     nlohmann::json path = nlohmann::json::array();
-    for (const auto& p : t.path) path.push_back({p.x, p.y});
+    for (const auto& p : t->path) path.push_back({p.x, p.y});
     j["path"] = std::move(path);
-    if (t.reachable_subcells) j["reachable_subcells"] = *t.reachable_subcells;
-    j["covered"] = t.covered;
-    j["repeats"] = t.repeats;
-    j["returned_to_start"] = t.returned_to_start;
-    j["hash"] = t.tour_hash ? nlohmann::json(antkit::kernel::hash_hex(*t.tour_hash))
-                            : nlohmann::json(nullptr);
+    if (t->reachable_subcells) j["reachable_subcells"] = *t->reachable_subcells;
+    j["covered"] = t->covered;
+    j["repeats"] = t->repeats;
+    j["returned_to_start"] = t->returned_to_start;
+    j["hash"] = t->tour_hash ? nlohmann::json(antkit::kernel::hash_hex(*t->tour_hash))
+                             : nlohmann::json(nullptr);
     j["run_hash"] = antkit::kernel::hash_hex(s.hash);
-    j["turn_ms"] = t.turn_ms;
+    j["turn_ms"] = t->turn_ms;
     j["tour_ok"] = r.tour_ok;
     j["first_violation"] =
         r.audit ? antkit::commands::first_violation_json(*r.audit) : nlohmann::json(nullptr);

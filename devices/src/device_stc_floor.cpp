@@ -7,6 +7,7 @@
 #include <antkit/devices/stc_floor/record.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
 #include <cstdlib>
 
@@ -241,8 +242,9 @@ public:
     return pilot_ && pilot_->refused() ? "the robot bumped and did not move" : "";
   }
 
-  void report(RecordSummary& summary) const override {
-    RecordSummary::Tour t;
+  [[nodiscard]] std::shared_ptr<const DeviceReport> report() const override {
+    auto tour = std::make_shared<Tour>();
+    Tour& t = *tour;
     t.start = options_.start;
     t.path = pilot_ ? pilot_->path() : std::vector<stc::SubCell>{options_.start};
     t.closed = pilot_ && pilot_->closed();
@@ -257,7 +259,7 @@ public:
       t.tour_hash = stc::tour_hash(map_->cells.width(), map_->cells.height(), t.path);
       t.map = map_;
     }
-    summary.tour = std::move(t);
+    return tour;
   }
 
 private:
@@ -401,6 +403,15 @@ public:
 const FloorDevice kFloor;
 
 } // namespace
+
+MapPlace read_map_place(const std::string& file) {
+  maps::GridMap map = maps::load_map(file);
+  return {std::move(map.cells), map.start, file};
+}
+
+const Tour* tour_of(const RecordSummary& summary) noexcept {
+  return dynamic_cast<const Tour*>(summary.device_report.get());
+}
 
 ReplayResult replay_log(LogReader& reader, const std::string& path,
                         std::optional<std::int64_t> until) {

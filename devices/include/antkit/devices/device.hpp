@@ -60,8 +60,9 @@ public:
   // it did not; the marker-floor robot: it bumped and did not move). The run's stop is then an
   // error with these words.
   [[nodiscard]] virtual std::string failure() const { return {}; }
-  // The device's own results into the summary (the marker-floor robot's tour).
-  virtual void report(RecordSummary& summary) const { (void)summary; }
+  // The device's own results of the run, beyond what every run has (RecordSummary::device_report:
+  // the marker-floor robot's tour); null when it has none. Not called when the port never opened.
+  [[nodiscard]] virtual std::shared_ptr<const DeviceReport> report() const { return nullptr; }
 };
 
 // A run prepared from the options, before anything is opened: its log header and how to connect.
