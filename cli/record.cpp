@@ -214,17 +214,17 @@ void register_record(CLI::App& app) {
   sub->add_option("--tries", c->tries,
                   "Sends of a command before giving up (default 12, see devices/link.hpp)");
   sub->add_option("--period", c->period_ms,
-                  "Shortest time between sensor reads in milliseconds (default: 0, as fast as the "
-                  "link, for robots with wheel counters; the motion model's period, 112 ms, for "
-                  "the Hemisson, whose odometry counts periods)");
+                  "Shortest time between sensor reads in ms (default 0, as fast as the link; the "
+                  "Hemisson: the motion model's period, 112 ms)");
   sub->add_option("--out", c->out, "The log to write (JSON Lines); an existing file is refused")
       ->required();
   sub->add_flag("--force", c->force, "Replace --out if it exists");
   sub->add_option("--mcap", c->mcap, "Also write the log as MCAP (for Foxglove) when the run ends");
   sub->add_option("--arena", c->arena,
-                  "The arena the robot runs in (an emulator's spec), written into the log's header "
-                  "for buffon-from-logs");
+                  "The arena the robot runs in (an emulator's spec), for the log's header");
   antkit::cli::add_format_option(*sub, c->format);
+  sub->footer(devices::options_by_device(devices::OptionUse::Record,
+                                         antkit::cli::registry().at("record").flags));
   sub->callback([c] { run(*c); });
 }
 

@@ -53,10 +53,11 @@ public:
   virtual ~DeviceReport() = default;
 };
 
-// What a run is asked to do, for every device (device.hpp); a device refuses the options it does
-// not take (kernel::InputError naming the option in these words: "floor map", "start sub-cell",
-// "camera calibration", "arena spec", "control period", "controller", "controller parameter",
-// "steps", "device").
+// What a run is asked to do, for every device (device.hpp). The options of one device or another
+// (map, start, calibration, arena, period: DeviceOption) are refused unless the device declared
+// them (Device::options()); the device refuses values it cannot take (kernel::InputError naming
+// the option in these words: "floor map", "start sub-cell", "camera calibration", "arena spec",
+// "control period", "controller", "controller parameter", "steps", "device").
 struct RecordOptions {
   std::string device = "khepera";   // a registry name (device.hpp)
   std::string port;                 // a tty or pty path, or tcp:HOST:PORT (serial.hpp)
