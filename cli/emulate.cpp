@@ -141,6 +141,8 @@ void register_emulate(CLI::App& app) {
   o->drift_opt = sub->add_option(
       "--drift", o->drift, "stc-floor: the turn rate falls by this many ppm a minute (battery)");
   antkit::cli::add_format_option(*sub, o->format);
+  sub->footer(devices::options_by_device(devices::OptionUse::Emulate,
+                                         antkit::cli::registry().at("emulate").flags));
   sub->callback([o] { run(*o); });
 }
 

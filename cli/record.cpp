@@ -31,6 +31,7 @@
 #include <antkit/commands/options.hpp>
 #include <antkit/devices/device.hpp>
 #include <antkit/devices/mcap_export.hpp>
+#include <antkit/devices/stc_floor/record.hpp>
 #include <antkit/experiments/recorded_run.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -127,20 +128,19 @@ void run(const RecordCommand& c) {
   j["log"] = c.out;
   j["steps"] = s.steps;
   j["completed"] = s.completed;
-  if (s.tour) {
-    const auto& t = *s.tour;
-    j["start"] = {t.start.x, t.start.y};
+  if (const auto* t = devices::stc_floor::tour_of(s)) {
+    j["start"] = {t->start.x, t->start.y};
     nlohmann::json path = nlohmann::json::array();
-    for (const auto& p : t.path) path.push_back({p.x, p.y});
+    for (const auto& p : t->path) path.push_back({p.x, p.y});
     j["path"] = std::move(path);
-    if (t.reachable_subcells) j["reachable_subcells"] = *t.reachable_subcells;
-    j["covered"] = t.covered;
-    j["repeats"] = t.repeats;
-    j["returned_to_start"] = t.returned_to_start;
-    j["hash"] = t.tour_hash ? nlohmann::json(antkit::kernel::hash_hex(*t.tour_hash))
-                            : nlohmann::json(nullptr);
+    if (t->reachable_subcells) j["reachable_subcells"] = *t->reachable_subcells;
+    j["covered"] = t->covered;
+    j["repeats"] = t->repeats;
+    j["returned_to_start"] = t->returned_to_start;
+    j["hash"] = t->tour_hash ? nlohmann::json(antkit::kernel::hash_hex(*t->tour_hash))
+                             : nlohmann::json(nullptr);
     j["run_hash"] = antkit::kernel::hash_hex(s.hash);
-    j["turn_ms"] = t.turn_ms;
+    j["turn_ms"] = t->turn_ms;
     j["tour_ok"] = r.tour_ok;
     j["first_violation"] =
         r.audit ? antkit::commands::first_violation_json(*r.audit) : nlohmann::json(nullptr);
@@ -214,17 +214,17 @@ void register_record(CLI::App& app) {
   sub->add_option("--tries", c->tries,
                   "Sends of a command before giving up (default 12, see devices/link.hpp)");
   sub->add_option("--period", c->period_ms,
-                  "Shortest time between sensor reads in milliseconds (default: 0, as fast as the "
-                  "link, for robots with wheel counters; the motion model's period, 112 ms, for "
-                  "the Hemisson, whose odometry counts periods)");
+                  "Shortest time between sensor reads in ms (default 0, as fast as the link; the "
+                  "Hemisson: the motion model's period, 112 ms)");
   sub->add_option("--out", c->out, "The log to write (JSON Lines); an existing file is refused")
       ->required();
   sub->add_flag("--force", c->force, "Replace --out if it exists");
   sub->add_option("--mcap", c->mcap, "Also write the log as MCAP (for Foxglove) when the run ends");
   sub->add_option("--arena", c->arena,
-                  "The arena the robot runs in (an emulator's spec), written into the log's header "
-                  "for buffon-from-logs");
+                  "The arena the robot runs in (an emulator's spec), for the log's header");
   antkit::cli::add_format_option(*sub, c->format);
+  sub->footer(devices::options_by_device(devices::OptionUse::Record,
+                                         antkit::cli::registry().at("record").flags));
   sub->callback([c] { run(*c); });
 }
 

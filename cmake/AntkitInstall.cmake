@@ -1,7 +1,7 @@
 include(CMakePackageConfigHelpers)
 
 install(TARGETS antkit_kernel antkit_io antkit_maps antkit_geometry antkit_algorithms antkit_c
-                antkit_devices antkit_testing antkit_experiments
+                antkit_stc_floor antkit_devices antkit_testing antkit_experiments
         EXPORT antkitTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

@@ -229,11 +229,19 @@ public:
   // PROTOCOLS.md: 115200 8N1 (UART3 to the radio module; over USB the setting does nothing).
   [[nodiscard]] LineSettings line() const noexcept override { return {115200, 8, 1, Parity::None}; }
 
-  [[nodiscard]] PreparedRun prepare(const RecordOptions& o) const override {
-    const std::string others = " is an option of the stc-floor robot";
-    if (!o.map.empty()) throw kernel::InputError("floor map", others);
-    if (o.start) throw kernel::InputError("start sub-cell", others);
-    if (!o.calibration.empty()) throw kernel::InputError("camera calibration", others);
+  [[nodiscard]] std::span<const DeclaredOption> options() const noexcept override {
+    static constexpr DeclaredOption kOptions[] = {
+        {DeviceOption::ArenaSpec, detail::kArenaWhat},
+        {DeviceOption::ControlPeriod, detail::kPeriodWhat},
+        {DeviceOption::Fault, "faults the emulator injects (emulator.hpp: those of the serial "
+                              "robots, and unterminated, a sequence's lost 0)"},
+        {DeviceOption::Pacing, "", "is not supported by the epuck2 emulator yet"},
+        {DeviceOption::ListenAddress, detail::kListenWhat},
+    };
+    return kOptions;
+  }
+
+  [[nodiscard]] PreparedRun prepare_run(const RecordOptions& o) const override {
     ControllerSpec spec =
         make_spec(o.controller.name, o.controller.seed, o.controller.params, "controller");
     if (spec.name == "wander")
@@ -262,10 +270,8 @@ public:
   }
 
   [[nodiscard]] EmulateReport
-  emulate(const EmulateOptions& o,
-          const std::function<void(const std::string&)>& ready) const override {
-    detail::refuse_floor_options(o);
-    if (o.pace) throw kernel::InputError("pacing", "is not supported by the epuck2 emulator yet");
+  serve(const EmulateOptions& o,
+        const std::function<void(const std::string&)>& ready) const override {
     const EmulatorOptions options = detail::emulator_options(o);
     std::optional<TcpListener> listener = detail::listen_for(o);
     epuck2::Emulator emulator(o.walls, options);

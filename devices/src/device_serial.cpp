@@ -66,11 +66,20 @@ public:
     return describe(robot_).reply_timeout;
   }
 
-  [[nodiscard]] PreparedRun prepare(const RecordOptions& o) const override {
-    const std::string others = " is an option of the stc-floor robot";
-    if (!o.map.empty()) throw kernel::InputError("floor map", others);
-    if (o.start) throw kernel::InputError("start sub-cell", others);
-    if (!o.calibration.empty()) throw kernel::InputError("camera calibration", others);
+  [[nodiscard]] std::span<const DeclaredOption> options() const noexcept override {
+    static constexpr DeclaredOption kOptions[] = {
+        {DeviceOption::ArenaSpec, detail::kArenaWhat},
+        {DeviceOption::ControlPeriod, detail::kPeriodWhat},
+        {DeviceOption::Fault, "faults the emulator injects (emulator.hpp: delay, garbage, drop, "
+                              "cut, disconnect, silent)"},
+        {DeviceOption::Pacing, "the emulator's replies paced at the baud rate and the robot's "
+                               "command latency"},
+        {DeviceOption::ListenAddress, detail::kListenWhat},
+    };
+    return kOptions;
+  }
+
+  [[nodiscard]] PreparedRun prepare_run(const RecordOptions& o) const override {
     ControllerSpec spec =
         make_spec(o.controller.name, o.controller.seed, o.controller.params, "controller");
     (void)make_controller(spec); // refuses a spec it cannot build, before anything is opened
@@ -100,9 +109,8 @@ public:
   }
 
   [[nodiscard]] EmulateReport
-  emulate(const EmulateOptions& o,
-          const std::function<void(const std::string&)>& ready) const override {
-    detail::refuse_floor_options(o);
+  serve(const EmulateOptions& o,
+        const std::function<void(const std::string&)>& ready) const override {
     EmulatorOptions options = detail::emulator_options(o);
     if (options.faults.unterminated_ppm > 0)
       throw kernel::InputError("fault", "unterminated=P is a fault of the epuck2's binary "

@@ -7,6 +7,7 @@
 #include <antkit/devices/stc_floor/record.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
 #include <cstdlib>
 
@@ -157,9 +158,6 @@ std::optional<Divergence> check_floor_stop(const LogStop& stop, bool last_refuse
 
 constexpr std::int64_t kFloorStepsWithoutMap = 20000; // record's default bound without --map
 
-constexpr std::string_view kOnlySerial =
-    " is an option of the serial robots (khepera, khepera-webots, hemisson, epuck)";
-
 // The pilot's options from the controller's name and params (record.hpp).
 PilotOptions pilot_options(const ControllerSpec& spec) {
   PilotOptions p;
@@ -241,8 +239,9 @@ public:
     return pilot_ && pilot_->refused() ? "the robot bumped and did not move" : "";
   }
 
-  void report(RecordSummary& summary) const override {
-    RecordSummary::Tour t;
+  [[nodiscard]] std::shared_ptr<const DeviceReport> report() const override {
+    auto tour = std::make_shared<Tour>();
+    Tour& t = *tour;
     t.start = options_.start;
     t.path = pilot_ ? pilot_->path() : std::vector<stc::SubCell>{options_.start};
     t.closed = pilot_ && pilot_->closed();
@@ -257,7 +256,7 @@ public:
       t.tour_hash = stc::tour_hash(map_->cells.width(), map_->cells.height(), t.path);
       t.map = map_;
     }
-    summary.tour = std::move(t);
+    return tour;
   }
 
 private:
@@ -284,9 +283,28 @@ public:
   // A choice: the XBee's link at its usual fast rate.
   [[nodiscard]] LineSettings line() const noexcept override { return {115200, 8, 1, Parity::None}; }
 
-  [[nodiscard]] PreparedRun prepare(const RecordOptions& o) const override {
-    if (!o.arena.empty()) throw kernel::InputError("arena spec", std::string(kOnlySerial));
-    if (o.period) throw kernel::InputError("control period", std::string(kOnlySerial));
+  [[nodiscard]] std::span<const DeclaredOption> options() const noexcept override {
+    static constexpr DeclaredOption kOptions[] = {
+        {DeviceOption::FloorMap, "the floor's map (MovingAI, ROS, ASCII): the start, "
+                                 "reachable_subcells and the tour hash"},
+        {DeviceOption::StartSubCell, "the start sub-cell X,Y (default: the map's, else as antkit "
+                                     "stc; record without a map needs it)"},
+        {DeviceOption::CameraCalibration, "the camera's calibration file (antkit "
+                                          "stc-floor-calibrate; default: the ideal one)"},
+        {DeviceOption::StartHeading, "the heading at the start, 0 E 1 N 2 W 3 S (default 1)"},
+        {DeviceOption::CameraNoise, "camera noise, uniform +-A per channel (0-255)"},
+        {DeviceOption::DarkOffset, "dark-current pattern, 0..A per pixel (default 12)"},
+        {DeviceOption::FadeHalfLife, "half-life of the marks' glow in seconds (0: no fading)"},
+        {DeviceOption::RotationError, "turn rate against nominal, ppm"},
+        {DeviceOption::Drift, "the turn rate falls by this many ppm a minute (battery)"},
+        {DeviceOption::ListenAddress, "",
+         "the stc-floor emulator serves a pty (its frames are too large for one reply over the "
+         "Webots relay)"},
+    };
+    return kOptions;
+  }
+
+  [[nodiscard]] PreparedRun prepare_run(const RecordOptions& o) const override {
     PilotOptions pilot = pilot_options(o.controller);
     std::shared_ptr<const MapPlace> map;
     if (!o.map.empty()) map = std::make_shared<const MapPlace>(read_map_place(o.map));
@@ -338,15 +356,8 @@ public:
   }
 
   [[nodiscard]] EmulateReport
-  emulate(const EmulateOptions& o,
-          const std::function<void(const std::string&)>& ready) const override {
-    if (o.arena) throw kernel::InputError("arena spec", std::string(kOnlySerial));
-    if (!o.faults.empty()) throw kernel::InputError("fault", std::string(kOnlySerial));
-    if (o.pace) throw kernel::InputError("pacing", std::string(kOnlySerial));
-    if (o.listen)
-      throw kernel::InputError("listen address",
-                               "the stc-floor emulator serves a pty (its frames are "
-                               "too large for one reply over the Webots relay)");
+  serve(const EmulateOptions& o,
+        const std::function<void(const std::string&)>& ready) const override {
     if (!o.map) throw kernel::InputError("floor map", "stc-floor needs a map (--map FILE)");
     const MapPlace map = read_map_place(*o.map);
     stc::SubCell start{};
@@ -401,6 +412,15 @@ public:
 const FloorDevice kFloor;
 
 } // namespace
+
+MapPlace read_map_place(const std::string& file) {
+  maps::GridMap map = maps::load_map(file);
+  return {std::move(map.cells), map.start, file};
+}
+
+const Tour* tour_of(const RecordSummary& summary) noexcept {
+  return dynamic_cast<const Tour*>(summary.device_report.get());
+}
 
 ReplayResult replay_log(LogReader& reader, const std::string& path,
                         std::optional<std::int64_t> until) {

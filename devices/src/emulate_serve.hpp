@@ -1,8 +1,7 @@
 #pragma once
-// What every firmware emulator's Device::emulate() does around its emulator (device_serial.cpp,
-// device_epuck2.cpp; internal): refuse the marker-floor robot's options, take the seed and the
-// faults, open the TCP listener when --listen asks for one, serve until SIGINT / SIGTERM, and
-// report what was served.
+// What every firmware emulator's Device::serve() does around its emulator (device_serial.cpp,
+// device_epuck2.cpp; internal): take the seed and the faults, open the TCP listener when --listen
+// asks for one, serve until SIGINT / SIGTERM, and report what was served.
 #include <antkit/devices/device.hpp>
 #include <antkit/devices/emulator.hpp>
 #include <antkit/devices/serial.hpp>
@@ -12,8 +11,16 @@
 
 namespace antkit::devices::detail {
 
-// kernel::InputError naming the first marker-floor option given (EmulateOptions' words).
-void refuse_floor_options(const EmulateOptions& o);
+// What the robots of an arena (the serial robots, the epuck2) declare of their shared options
+// (Device::options()).
+inline constexpr std::string_view kArenaWhat =
+    "the arena it runs in, a named spec (emulate: or FILE.wkt); record writes it into the log's "
+    "header for buffon-from-logs";
+inline constexpr std::string_view kPeriodWhat =
+    "the shortest time between two sensor reads, in milliseconds (the Hemisson's default: the "
+    "motion model's period)";
+inline constexpr std::string_view kListenWhat =
+    "serve the emulator over TCP on HOST:PORT instead of a pty";
 // The seed and the parsed --fault specs (parse_faults' InputError on a bad one).
 EmulatorOptions emulator_options(const EmulateOptions& o);
 // The listener --listen asks for, bound now (its InputError before any emulator is made).

@@ -8,7 +8,6 @@
 #include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/stop_signals.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/maps/map_io.hpp>
 #include <antkit/uniform/controllers.hpp>
 #include <csignal>
 #include <optional>
@@ -158,11 +157,6 @@ void act(Body& body, bool wander, std::span<const std::int64_t> cmd, std::vector
 
 } // namespace detail
 
-MapPlace read_map_place(const std::string& file) {
-  maps::GridMap map = maps::load_map(file);
-  return {std::move(map.cells), map.start, file};
-}
-
 std::chrono::nanoseconds model_period(const RobotDescription& robot) {
   // A simulator step moves kDefaultSpeed body diameters at unit speed; the robot covers that at
   // speed_full x speed_unit_um_s micrometres per second.
@@ -307,7 +301,7 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
   }
   summary.link = session->stats();
   summary.hash = hash.value();
-  session->report(summary);
+  summary.device_report = session->report();
   return summary;
 }
 

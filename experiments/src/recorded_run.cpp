@@ -1,4 +1,5 @@
 // A run on a robot, audited (recorded_run.hpp).
+#include <antkit/devices/stc_floor/record.hpp>
 #include <antkit/experiments/recorded_run.hpp>
 
 namespace antkit::experiments {
@@ -7,8 +8,9 @@ RecordedRun record_run(const devices::RecordOptions& options,
                        const devices::RecordProgress& progress) {
   RecordedRun out;
   out.summary = devices::record(options, progress);
-  if (!out.summary.tour) return out;
-  const auto& tour = *out.summary.tour;
+  const auto* floor_tour = devices::stc_floor::tour_of(out.summary);
+  if (!floor_tour) return out;
+  const auto& tour = *floor_tour;
   if (tour.map) {
     out.audit = testing::audit_stc_tour(tour.map->cells, tour.start, tour.path,
                                         testing::TourRule::ExactlyOnce);

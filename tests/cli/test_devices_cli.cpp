@@ -381,3 +381,21 @@ TEST_CASE("antkit record --device stc-floor: a tour that never closes ends, and 
     CHECK(said);
   }
 }
+
+TEST_CASE("antkit record --help and emulate --help list each device's options, as declared",
+          "[cli][devices]") {
+  const auto r = run_antkit("record --help");
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("The options of one device or another (the others refuse them):\n"
+                   "  khepera, khepera-webots, hemisson, epuck, epuck2:\n    --arena ") !=
+        std::string::npos);
+  CHECK(r.out.find("  stc-floor:\n    --map ") != std::string::npos);
+  CHECK(r.out.find("    --calibration ") != std::string::npos);
+  const auto e = run_antkit("emulate --help");
+  REQUIRE(e.status == 0);
+  // The e-puck2's emulator does not pace its replies: its paragraph is its own.
+  CHECK(e.out.find("  khepera, khepera-webots, hemisson, epuck:\n    --arena ") !=
+        std::string::npos);
+  CHECK(e.out.find("  epuck2:\n    --arena ") != std::string::npos);
+  CHECK(e.out.find("    --drift ") != std::string::npos);
+}

@@ -1,9 +1,12 @@
 // The registry of devices (device.hpp): one robot model, every robot found by its name, and each
 // device refusing the options it does not take before anything is opened.
+#include <algorithm>
 #include <antkit/devices/device.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
+#include <map>
 #include <string>
+#include <vector>
 
 namespace devices = antkit::devices;
 using antkit::kernel::InputError;
@@ -88,4 +91,89 @@ TEST_CASE("the registry: a device refuses the options of another before anything
       CHECK(e.where() == c.where);
     }
   }
+}
+
+TEST_CASE("the registry: each device declares its options, and one refusal names who takes them",
+          "[devices]") {
+  // Every option of one device or another is taken by some device, under a word of its own.
+  std::vector<std::string_view> words;
+  for (const auto option : devices::kDeviceOptions) {
+    const auto word = devices::option_word(option);
+    INFO(word);
+    CHECK_FALSE(devices::option_takers(option).empty());
+    CHECK(std::find(words.begin(), words.end(), word) == words.end());
+    words.push_back(word);
+    CHECK((devices::option_of(option, devices::OptionUse::Record) ||
+           devices::option_of(option, devices::OptionUse::Emulate)));
+  }
+  CHECK(devices::option_takers(devices::DeviceOption::FloorMap) == "stc-floor");
+  CHECK(devices::option_takers(devices::DeviceOption::ArenaSpec) ==
+        "khepera, khepera-webots, hemisson, epuck, epuck2");
+  CHECK(devices::option_takers(devices::DeviceOption::Pacing) ==
+        "khepera, khepera-webots, hemisson, epuck");
+  // A device refuses every record option it did not declare, before anything is opened, in the
+  // option's word; the message names the devices that take it (or the device's own reason).
+  for (const devices::Device* d : devices::all_devices()) {
+    for (const auto option : devices::kDeviceOptions) {
+      const bool declared = std::any_of(d->options().begin(), d->options().end(),
+                                        [&](const auto& o) { return o.option == option; });
+      if (declared || !devices::option_of(option, devices::OptionUse::Record)) continue;
+      INFO(d->name() << " " << devices::option_word(option));
+      devices::RecordOptions o;
+      o.device = std::string(d->name());
+      o.controller.name = d->name() == "stc-floor" ? "ant" : "buffon";
+      o.port = "/nonexistent/port";
+      o.out = "/nonexistent/dir/log.jsonl";
+      o.map = "x.map";
+      o.start = {{0, 0}};
+      o.arena = "standard";
+      o.period = std::chrono::milliseconds(5);
+      o.calibration = "c.json";
+      // Only this one option among those the device does not declare.
+      for (const auto other : devices::kDeviceOptions) {
+        const bool other_declared = std::any_of(d->options().begin(), d->options().end(),
+                                                [&](const auto& x) { return x.option == other; });
+        if (other == option || other_declared) continue;
+        if (other == devices::DeviceOption::FloorMap) o.map.clear();
+        if (other == devices::DeviceOption::StartSubCell) o.start.reset();
+        if (other == devices::DeviceOption::ArenaSpec) o.arena.clear();
+        if (other == devices::DeviceOption::ControlPeriod) o.period.reset();
+        if (other == devices::DeviceOption::CameraCalibration) o.calibration.clear();
+      }
+      try {
+        (void)d->prepare(o);
+        FAIL("accepted");
+      } catch (const InputError& e) {
+        CHECK(e.where() == devices::option_word(option));
+        CHECK(e.message().find(devices::option_takers(option)) != std::string::npos);
+      }
+    }
+  }
+  // The emulators' refusals: another device's option, and a declared one refused with a reason.
+  const auto refused = [](std::string_view device, auto edit) -> std::string {
+    devices::EmulateOptions o;
+    edit(o);
+    try {
+      (void)devices::device(device, "robot").emulate(o, [](const std::string&) {});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return "accepted";
+  };
+  CHECK(refused("khepera", [](devices::EmulateOptions& o) { o.drift = 3; }) ==
+        "drift:  is an option of the stc-floor robot");
+  CHECK(refused("stc-floor", [](devices::EmulateOptions& o) { o.pace = true; }) ==
+        "pacing:  is an option of the serial robots (khepera, khepera-webots, hemisson, epuck)");
+  CHECK(refused("epuck2", [](devices::EmulateOptions& o) { o.pace = true; }) ==
+        "pacing: is not supported by the epuck2 emulator yet");
+  CHECK(refused("stc-floor", [](devices::EmulateOptions& o) {
+          o.listen = "127.0.0.1:0";
+        }).find("listen address: the stc-floor emulator serves a pty") == 0);
+  // --help's listing, from the declarations: devices that declare alike share a paragraph.
+  const std::map<std::string, std::string, std::less<>> flags{{"floor map", "--map"}};
+  const std::string help = devices::options_by_device(devices::OptionUse::Record, flags);
+  CHECK(help.find("  khepera, khepera-webots, hemisson, epuck, epuck2:\n    arena spec ") !=
+        std::string::npos);
+  CHECK(help.find("  stc-floor:\n    --map ") != std::string::npos);
+  CHECK(help.find("fade half-life") == std::string::npos); // emulate's
 }

@@ -114,18 +114,18 @@ TEST_CASE("stc floor link: a recorded run over a pty is the simulated tour and r
     CHECK(s.stop == "done");
     CHECK(s.kind == devices::StopKind::Done);
     CHECK(s.succeeded());
-    REQUIRE(s.tour);
-    CHECK(s.tour->closed);
-    CHECK(s.tour->returned_to_start);
+    REQUIRE(sf::tour_of(s));
+    CHECK(sf::tour_of(s)->closed);
+    CHECK(sf::tour_of(s)->returned_to_start);
     CHECK(s.safe_stop.complete);
     CHECK(s.safe_stop.failure.empty());
     const auto sim = stc::run_stc(map, {0, 0}, variant);
-    CHECK(s.tour->path == sim.path);
-    CHECK(stc::tour_hash(map.width(), map.height(), s.tour->path) == sim.hash);
+    CHECK(sf::tour_of(s)->path == sim.path);
+    CHECK(stc::tour_hash(map.width(), map.height(), sf::tour_of(s)->path) == sim.hash);
     CHECK(robot.emulator().world().path() == sim.path);
     CHECK(robot.emulator().world().repeats() == 0);
-    CHECK(s.tour->covered == sim.reachable_subcells);
-    CHECK(s.tour->repeats == 0);
+    CHECK(sf::tour_of(s)->covered == sim.reachable_subcells);
+    CHECK(sf::tour_of(s)->repeats == 0);
     const auto r = devices::replay(o.out);
     CHECK(r.identical);
     CHECK(r.steps == s.steps);
@@ -140,7 +140,7 @@ TEST_CASE("stc floor link: an edited log is caught at the edited step and field"
   const auto map = board();
   FloorOnPty robot(map, stc::SubCell{0, 0}, 1, sf::FloorOptions{});
   const auto o = floor_options("ant-edge", robot.port(), dir.file("floor.jsonl"));
-  REQUIRE(devices::record(o).tour->closed);
+  REQUIRE(sf::tour_of(devices::record(o))->closed);
   robot.stop();
   const auto lines = antkit::test::lines_of(o.out);
   struct Edit {
@@ -216,8 +216,8 @@ TEST_CASE("stc floor link: a robot that does not answer ends the run with its re
   o.link.tries = 2;
   o.out = dir.file("silent.jsonl");
   const auto s = devices::record(o);
-  REQUIRE(s.tour);
-  CHECK_FALSE(s.tour->closed);
+  REQUIRE(sf::tour_of(s));
+  CHECK_FALSE(sf::tour_of(s)->closed);
   CHECK(s.kind == devices::StopKind::Link);
   CHECK(s.steps == 0);
   CHECK(s.stop.find("'C,1' failed after 2 sends: no reply") != std::string::npos);

@@ -33,6 +33,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -60,8 +61,9 @@ public:
   // it did not; the marker-floor robot: it bumped and did not move). The run's stop is then an
   // error with these words.
   [[nodiscard]] virtual std::string failure() const { return {}; }
-  // The device's own results into the summary (the marker-floor robot's tour).
-  virtual void report(RecordSummary& summary) const { (void)summary; }
+  // The device's own results of the run, beyond what every run has (RecordSummary::device_report:
+  // the marker-floor robot's tour); null when it has none. Not called when the port never opened.
+  [[nodiscard]] virtual std::shared_ptr<const DeviceReport> report() const { return nullptr; }
 };
 
 // A run prepared from the options, before anything is opened: its log header and how to connect.
@@ -73,10 +75,8 @@ struct PreparedRun {
   std::function<std::unique_ptr<Session>(SerialPort port, const LinkOptions& link)> connect;
 };
 
-// The emulator's options as the command line gives them; a device refuses those it does not take
-// (InputError naming the option in these words: "arena spec", "fault", "pacing", "listen address",
-// "floor map", "start sub-cell", "start heading", "camera noise", "dark offset", "fade half-life",
-// "rotation error", "drift").
+// The emulator's options as the command line gives them; those of one device or another
+// (DeviceOption) are refused unless the device declared them (Device::options()).
 struct EmulateOptions {
   std::uint64_t seed = 1;
   std::optional<std::string> arena;     // the serial robots: the arena's spec, for the report
@@ -105,6 +105,61 @@ struct EmulateReport {
   double max_offset_subcells = 0, max_heading_error_degrees = 0, clock_s = 0;
 };
 
+// The options of record() (RecordOptions) and emulate() (EmulateOptions) that one device takes and
+// another does not. Every other option (the port, the line, the link, the controller, the steps,
+// the seed, the log) every device takes.
+enum class DeviceOption : std::uint8_t {
+  // record and emulate
+  FloorMap,     // RecordOptions::map, EmulateOptions::map
+  StartSubCell, // RecordOptions::start, EmulateOptions::start
+  ArenaSpec,    // RecordOptions::arena, EmulateOptions::arena
+  // record
+  ControlPeriod,     // RecordOptions::period
+  CameraCalibration, // RecordOptions::calibration
+  // emulate
+  StartHeading,  // EmulateOptions::heading
+  CameraNoise,   // EmulateOptions::noise
+  DarkOffset,    // EmulateOptions::dark_offset
+  FadeHalfLife,  // EmulateOptions::fade_s
+  RotationError, // EmulateOptions::rotation_error
+  Drift,         // EmulateOptions::drift
+  Fault,         // EmulateOptions::faults
+  Pacing,        // EmulateOptions::pace
+  ListenAddress, // EmulateOptions::listen
+};
+// Every DeviceOption, in the order a refusal looks for them (the first given is named).
+inline constexpr DeviceOption kDeviceOptions[] = {DeviceOption::FloorMap,
+                                                  DeviceOption::StartSubCell,
+                                                  DeviceOption::ArenaSpec,
+                                                  DeviceOption::ControlPeriod,
+                                                  DeviceOption::CameraCalibration,
+                                                  DeviceOption::StartHeading,
+                                                  DeviceOption::CameraNoise,
+                                                  DeviceOption::DarkOffset,
+                                                  DeviceOption::FadeHalfLife,
+                                                  DeviceOption::RotationError,
+                                                  DeviceOption::Drift,
+                                                  DeviceOption::Fault,
+                                                  DeviceOption::Pacing,
+                                                  DeviceOption::ListenAddress};
+
+// The command an option belongs to.
+enum class OptionUse : std::uint8_t { Record, Emulate };
+// The option's name in the library's words, as kernel::InputError names it ("floor map"; the
+// commands show it as their flag, cli/commands.hpp).
+[[nodiscard]] std::string_view option_word(DeviceOption option) noexcept;
+// Whether `option` is one of record()'s, or of emulate()'s.
+[[nodiscard]] bool option_of(DeviceOption option, OptionUse use) noexcept;
+
+// A device's declaration of an option of DeviceOption it knows: what the option is for this robot
+// (for --help), or, when `refused` is not empty, why this device does not take it after all (the
+// refusal's words: the marker-floor emulator's --listen).
+struct DeclaredOption {
+  DeviceOption option;
+  std::string_view what;
+  std::string_view refused = {};
+};
+
 class Device {
 public:
   virtual ~Device() = default;
@@ -115,18 +170,44 @@ public:
   [[nodiscard]] virtual std::chrono::milliseconds reply_timeout() const noexcept {
     return std::chrono::milliseconds(250);
   }
-  // Validates the options for this device (kernel::InputError naming the option otherwise, in
-  // RecordOptions' words).
-  [[nodiscard]] virtual PreparedRun prepare(const RecordOptions& options) const = 0;
+  // The options of DeviceOption this device takes (and those it refuses with a reason of its own);
+  // any other one given is refused for it, in one place (refuse_undeclared()).
+  [[nodiscard]] virtual std::span<const DeclaredOption> options() const noexcept = 0;
+  // Refuses an option the device did not declare (refuse_undeclared()), then validates the
+  // options for this device (prepare_run()); kernel::InputError naming the option otherwise, in
+  // RecordOptions' words.
+  [[nodiscard]] PreparedRun prepare(const RecordOptions& options) const;
   // The replay of a log whose header names this device (replay.hpp).
   [[nodiscard]] virtual ReplayResult replay(LogReader& reader, const std::string& path,
                                             std::optional<std::int64_t> until) const = 0;
-  // Serves the firmware emulator: `ready` gets the pty's path (or tcp:HOST:PORT) once clients may
-  // connect; returns after SIGINT / SIGTERM (or a disconnect fault).
-  [[nodiscard]] virtual EmulateReport
+  // Refuses an option the device did not declare (refuse_undeclared()), then serves the firmware
+  // emulator (serve()): `ready` gets the pty's path (or tcp:HOST:PORT) once clients may connect;
+  // returns after SIGINT / SIGTERM (or a disconnect fault).
+  [[nodiscard]] EmulateReport
   emulate(const EmulateOptions& options,
-          const std::function<void(const std::string& port)>& ready) const = 0;
+          const std::function<void(const std::string& port)>& ready) const;
+
+protected:
+  // The device's own part of prepare() and emulate(), given only options it declared.
+  [[nodiscard]] virtual PreparedRun prepare_run(const RecordOptions& options) const = 0;
+  [[nodiscard]] virtual EmulateReport
+  serve(const EmulateOptions& options,
+        const std::function<void(const std::string& port)>& ready) const = 0;
 };
+
+// kernel::InputError naming the first option of DeviceOption given that `device` did not declare
+// (or declared refused): "WORD:  is an option of the stc-floor robot" (of "the serial robots
+// (khepera, ...)" when several take it: the devices that declared it), or the device's reason.
+void refuse_undeclared(const Device& device, const RecordOptions& options);
+void refuse_undeclared(const Device& device, const EmulateOptions& options);
+// The devices that take `option`, for messages and --help: "stc-floor",
+// "khepera, khepera-webots, hemisson, epuck, epuck2".
+[[nodiscard]] std::string option_takers(DeviceOption option);
+// Each device's options of `use`, from the declarations, for a command's --help: devices with the
+// same declarations share a paragraph, one line per option, named by `flags` (an option's word ->
+// the command's flag for it, cli/commands.hpp's FlagWords; a word it lacks is shown as it is).
+[[nodiscard]] std::string
+options_by_device(OptionUse use, const std::map<std::string, std::string, std::less<>>& flags);
 
 // Every device, in the order of device_names().
 [[nodiscard]] std::span<const Device* const> all_devices();

@@ -44,20 +44,20 @@
 
 namespace antkit::devices {
 
-// A grid map file as a run reads it (the marker-floor robot's): its cells and the start the file
-// names, if any ('S' in an ASCII map); `file` names it in messages.
-struct MapPlace {
-  kernel::OccupancyGrid cells;
-  std::optional<kernel::Cell> start;
-  std::string file;
+// What a device reports of a run beyond what every run has (RecordSummary::device_report): the
+// marker-floor robot's tour (stc_floor::Tour, read with stc_floor::tour_of(),
+// stc_floor/record.hpp). The shared loop only carries it; the device's own header says what it
+// holds.
+class DeviceReport {
+public:
+  virtual ~DeviceReport() = default;
 };
-// Reads a map file (geometry's map_io: MovingAI, ROS, ASCII); kernel::InputError naming it.
-MapPlace read_map_place(const std::string& file);
 
-// What a run is asked to do, for every device (device.hpp); a device refuses the options it does
-// not take (kernel::InputError naming the option in these words: "floor map", "start sub-cell",
-// "camera calibration", "arena spec", "control period", "controller", "controller parameter",
-// "steps", "device").
+// What a run is asked to do, for every device (device.hpp). The options of one device or another
+// (map, start, calibration, arena, period: DeviceOption) are refused unless the device declared
+// them (Device::options()); the device refuses values it cannot take (kernel::InputError naming
+// the option in these words: "floor map", "start sub-cell", "camera calibration", "arena spec",
+// "control period", "controller", "controller parameter", "steps", "device").
 struct RecordOptions {
   std::string device = "khepera";   // a registry name (device.hpp)
   std::string port;                 // a tty or pty path, or tcp:HOST:PORT (serial.hpp)
@@ -119,20 +119,8 @@ struct RecordSummary {
   bool completed = false; // all the requested steps ran
   SafeStopResult safe_stop;
   std::uint64_t hash = 0; // RunHash of the run (replay() recomputes it)
-  // The marker-floor robot's tour, believed, in map sub-cells.
-  struct Tour {
-    kernel::Cell start{};
-    std::vector<kernel::Cell> path; // the start first
-    bool closed = false;            // the controller stopped: the tour is over
-    bool returned_to_start = false; // closed, next to the start
-    std::int64_t covered = 0, repeats = 0;
-    std::int64_t turn_ms = 0; // the last T
-    // With a map: the sub-cells the tour must enter, and the tour's hash as antkit stc's.
-    std::optional<std::int64_t> reachable_subcells;
-    std::optional<std::uint64_t> tour_hash;
-    std::shared_ptr<const MapPlace> map; // the map read for the run, when one was given
-  };
-  std::optional<Tour> tour;
+  // The device's own results of the run (Session::report), or null: the marker-floor robot's tour.
+  std::shared_ptr<const DeviceReport> device_report;
   // The run did what it set out to do (every step) and the robot is known to be stopped. A run
   // stopped by a signal did not: `antkit record` exits 128 + the signal's number then (a script's
   // `record ... && record ...` must not drive the second visit after the user stopped the first).
