@@ -200,7 +200,7 @@ ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
           try {
             controller->step(robot, r.obs, cmd);
           } catch (const kernel::InputError& e) {
-            throw kernel::InputError(path, line_of(r), 1, e.what());
+            throw kernel::InputError(path, reader.line(), 1, e.what());
           }
           if (!compare_fields(r.cmd, cmd, r.step, "cmd", d)) return d;
           if (controller->state_hash() != r.state)

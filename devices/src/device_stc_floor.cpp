@@ -469,7 +469,7 @@ ReplayResult replay_log(LogReader& reader, const std::string& path,
         try {
           controller.step(r.obs, cmd);
         } catch (const kernel::InputError& e) {
-          throw kernel::InputError(path, line_of(r), 1, e.what());
+          throw kernel::InputError(path, reader.line(), 1, e.what());
         }
         if (compare_fields(r.cmd, cmd, r.step, "cmd", d) && controller.state_hash() != r.state &&
             !d)

@@ -5,7 +5,6 @@
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/device.hpp>
 #include <antkit/devices/link.hpp>
-#include <antkit/devices/log_prefetch.hpp>
 #include <antkit/devices/protocol.hpp>
 #include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/replay.hpp>
@@ -120,10 +119,10 @@ ReplayResult replay_records(
   ReplayResult out;
   out.header = reader.header();
   RunHash run;
+  LogRecord r;
   std::vector<std::int64_t> cmd;
   std::int64_t last_t = 0;
-  // One record checked; false at a divergence (the first is the finding).
-  const auto check_record = [&](const LogRecord& r) {
+  while ((!until || out.steps < *until) && reader.next(r)) {
     // Every device's times never decrease (the recording's steady clock): the records' and the
     // exchanges' (those that have one), each exchange no later than its step's end.
     auto d = r.time_ns < last_t ? std::optional<Divergence>(Divergence{
@@ -147,37 +146,21 @@ ReplayResult replay_records(
     if (d) {
       out.identical = false;
       out.first_divergence = std::move(d);
-      return false;
+      break;
     }
     run.add(r.step, r.obs, cmd, r.state);
     ++out.steps;
-    return true;
-  };
-  if (until) {
-    // Part of a log: read no further than asked (the reader's stop and cut are what it reached).
-    LogRecord r;
-    while (out.steps < *until && reader.next(r))
-      if (!check_record(r)) break;
-  } else {
-    // The whole log: parsed a batch ahead on a second thread (log_prefetch.hpp) while this one
-    // checks; the same records in the same order, so the result does not depend on the threads.
-    LogPrefetch prefetch(reader);
-    bool going = true;
-    while (going) {
-      const auto batch = prefetch.next();
-      if (batch.records.empty()) break;
-      for (const LogRecord& r : batch.records)
-        if (!(going = check_record(r))) break;
-    }
-    // After a divergence the rest is read unchecked, so that the result still says whether the
-    // log is whole (its stop record, a cut last line): the divergence stays the finding, and a
-    // line the reader refuses after it ends the reading there.
-    if (!going) try {
-        while (!prefetch.next().records.empty()) {
-        }
-      } catch (const kernel::InputError&) {
+  }
+  // After a divergence the rest is read unchecked, so that the result still says whether the log
+  // is whole (its stop record, a cut last line): the divergence stays the finding, and a line the
+  // reader refuses after it ends the reading there.
+  if (!out.identical && !until) {
+    try {
+      while (reader.next(r)) {
       }
-  } // the reading thread is done with the reader here
+    } catch (const kernel::InputError&) {
+    }
+  }
   out.truncated = reader.truncated();
   out.stop = reader.stop();
   out.complete = out.stop.has_value() && !out.truncated;
@@ -247,7 +230,7 @@ ReplayResult replay_serial(LogReader& reader, const std::string& path,
           for (const Exchange& e : r.io)
             if (!e.sent.empty() && e.t_ns < 0)
               throw kernel::InputError(
-                  path, line_of(r), 1,
+                  path, reader.line(), 1,
                   "an exchange without its time: the " + std::string(robot.name) +
                       " has no wheel encoders and its odometry is reckoned from the times its "
                       "commands were sent (a log written before they were logged: re-record "
@@ -262,7 +245,7 @@ ReplayResult replay_serial(LogReader& reader, const std::string& path,
           try {
             controller->step(robot, r.obs, cmd);
           } catch (const kernel::InputError& e) {
-            throw kernel::InputError(path, line_of(r), 1, e.what());
+            throw kernel::InputError(path, reader.line(), 1, e.what());
           }
           if (!compare_fields(r.cmd, cmd, r.step, "cmd", d)) return d;
           if (controller->state_hash() != r.state)

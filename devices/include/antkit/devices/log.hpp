@@ -81,13 +81,6 @@ struct LogStop {
   friend bool operator==(const LogStop&, const LogStop&) = default;
 };
 
-// The line a step record was read from: the header is line 1 and LogReader takes the records in
-// step order from 0, with no blank line between (for messages about a record after it was read,
-// when the reader may be further on: LogPrefetch).
-[[nodiscard]] inline std::size_t line_of(const LogRecord& r) noexcept {
-  return static_cast<std::size_t>(r.step) + 2;
-}
-
 std::string format_header(const LogHeader& h);
 // Appends `bytes` as the log writes a byte string: a JSON string, one character per byte, `"`, `\`,
 // CR, LF and TAB escaped, other bytes outside printable ASCII as \u00XX (the MCAP export writes its

@@ -59,8 +59,7 @@ struct ReplayResult {
 // computes) and returns the first difference, which ends the replay; the identical records are
 // folded into the run hash.
 // check_stop() then holds the stop record against the run, when every record replayed identically
-// and the whole log was asked for. For the whole log a second thread parses the records a batch
-// ahead (log_prefetch.hpp): check() must not use the reader (a record's line is line_of(r)).
+// and the whole log was asked for.
 ReplayResult replay_records(
     LogReader& reader, std::optional<std::int64_t> until,
     const std::function<std::optional<Divergence>(const LogRecord& r,
