@@ -52,40 +52,42 @@ TEST_CASE("LogPrefetch gives LogReader's records, batch by batch, the last marke
       const std::string text = log_text(records, stop);
       const auto expected = read_all(text);
       REQUIRE(expected.size() == static_cast<std::size_t>(records));
-      for (const std::size_t batch : {1U, 2U, 3U, 8U, 4096U}) {
-        CAPTURE(records, stop, batch);
-        devices::LogReader reader("t.jsonl", text);
-        CHECK(reader.records_ahead() == expected.size());
-        std::vector<devices::LogRecord> got;
-        std::vector<std::string> texts;
-        int lasts = 0;
-        {
-          devices::LogPrefetch prefetch(
-              reader,
-              [](const devices::LogRecord& r, devices::LogPrefetch::Prepared& p) {
-                p.text = "step " + std::to_string(r.step);
-                p.cuts[0] = p.text.size();
-              },
-              batch);
-          for (auto b = prefetch.next(); !b.records.empty(); b = prefetch.next()) {
-            REQUIRE(b.prepared.size() == b.records.size());
-            CHECK(b.records.size() <= batch);
-            CHECK(lasts == 0); // nothing after the last batch
-            lasts += b.last ? 1 : 0;
-            for (std::size_t i = 0; i < b.records.size(); ++i) {
-              got.push_back(b.records[i]);
-              texts.push_back(b.prepared[i].text);
+      for (const std::size_t batch : {1U, 2U, 3U, 8U, 4096U})
+        for (const auto threads :
+             {devices::LogPrefetch::Threads::Auto, devices::LogPrefetch::Threads::Inline}) {
+          CAPTURE(records, stop, batch, threads == devices::LogPrefetch::Threads::Inline);
+          devices::LogReader reader("t.jsonl", text);
+          CHECK(reader.records_ahead() == expected.size());
+          std::vector<devices::LogRecord> got;
+          std::vector<std::string> texts;
+          int lasts = 0;
+          {
+            devices::LogPrefetch prefetch(
+                reader,
+                [](const devices::LogRecord& r, devices::LogPrefetch::Prepared& p) {
+                  p.text = "step " + std::to_string(r.step);
+                  p.cuts[0] = p.text.size();
+                },
+                batch, threads);
+            for (auto b = prefetch.next(); !b.records.empty(); b = prefetch.next()) {
+              REQUIRE(b.prepared.size() == b.records.size());
+              CHECK(b.records.size() <= batch);
+              CHECK(lasts == 0); // nothing after the last batch
+              lasts += b.last ? 1 : 0;
+              for (std::size_t i = 0; i < b.records.size(); ++i) {
+                got.push_back(b.records[i]);
+                texts.push_back(b.prepared[i].text);
+              }
             }
+            CHECK(prefetch.next().records.empty()); // and again
           }
-          CHECK(prefetch.next().records.empty()); // and again
+          CHECK(got == expected);
+          CHECK(lasts == (records > 0 ? 1 : 0));
+          for (std::size_t i = 0; i < texts.size(); ++i)
+            CHECK(texts[i] == "step " + std::to_string(i));
+          // The reader's end is seen after the last batch: its stop record.
+          CHECK(reader.stop().has_value() == stop);
         }
-        CHECK(got == expected);
-        CHECK(lasts == (records > 0 ? 1 : 0));
-        for (std::size_t i = 0; i < texts.size(); ++i)
-          CHECK(texts[i] == "step " + std::to_string(i));
-        // The reader's end is seen after the last batch: its stop record.
-        CHECK(reader.stop().has_value() == stop);
-      }
     }
   }
 }
@@ -96,27 +98,29 @@ TEST_CASE("LogPrefetch throws a reader's error after the records before it", "[d
   const auto at = text.find(R"({"step":5,)");
   REQUIRE(at != std::string::npos);
   text.replace(at, 10, R"({"step":6,)");
-  for (const std::size_t batch : {1U, 2U, 4U, 5U, 6U, 4096U}) {
-    CAPTURE(batch);
-    devices::LogReader reader("t.jsonl", text);
-    devices::LogPrefetch prefetch(reader, {}, batch);
-    std::int64_t seen = 0;
-    bool last_seen = false;
-    std::string error;
-    try {
-      for (auto b = prefetch.next(); !b.records.empty(); b = prefetch.next()) {
-        CHECK(b.prepared.empty());
-        last_seen = last_seen || b.last;
-        for (const auto& r : b.records) CHECK(r.step == seen++);
+  for (const std::size_t batch : {1U, 2U, 4U, 5U, 6U, 4096U})
+    for (const auto threads :
+         {devices::LogPrefetch::Threads::Auto, devices::LogPrefetch::Threads::Inline}) {
+      CAPTURE(batch, threads == devices::LogPrefetch::Threads::Inline);
+      devices::LogReader reader("t.jsonl", text);
+      devices::LogPrefetch prefetch(reader, {}, batch, threads);
+      std::int64_t seen = 0;
+      bool last_seen = false;
+      std::string error;
+      try {
+        for (auto b = prefetch.next(); !b.records.empty(); b = prefetch.next()) {
+          CHECK(b.prepared.empty());
+          last_seen = last_seen || b.last;
+          for (const auto& r : b.records) CHECK(r.step == seen++);
+        }
+      } catch (const antkit::kernel::InputError& e) {
+        error = e.what();
       }
-    } catch (const antkit::kernel::InputError& e) {
-      error = e.what();
+      CHECK(seen == 5);
+      CHECK_FALSE(last_seen); // a batch cut by an error is not "the last"
+      CHECK(error.find("t.jsonl:7:") == 0);
+      CHECK(error.find("step 6 where step 5 was expected") != std::string::npos);
     }
-    CHECK(seen == 5);
-    CHECK_FALSE(last_seen); // a batch cut by an error is not "the last"
-    CHECK(error.find("t.jsonl:7:") == 0);
-    CHECK(error.find("step 6 where step 5 was expected") != std::string::npos);
-  }
 }
 
 TEST_CASE("LogPrefetch stopped early joins its thread", "[devices]") {

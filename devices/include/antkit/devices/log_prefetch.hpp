@@ -9,6 +9,7 @@
 #include <array>
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <functional>
 #include <mutex>
@@ -21,7 +22,8 @@ namespace antkit::devices {
 
 class LogPrefetch {
 public:
-  // Starts reading `reader`'s records at once; `reader` must outlive this and is not to be used
+  // Starts reading `reader`'s records at once (on a machine with one CPU, no thread is started and
+  // next() reads each batch itself); `reader` must outlive this and is not to be used
   // until next() has returned an empty batch (or thrown).
   // What the reading thread makes of each record, beside it: any text, cut in up to four parts, and
   // up to four numbers. It is called once per record, in the log's order, on the reading thread
@@ -33,7 +35,11 @@ public:
     bool numbered = false;
   };
   using Prepare = std::function<void(const LogRecord&, Prepared&)>;
-  explicit LogPrefetch(LogReader& reader, Prepare prepare = {}, std::size_t batch = 4096);
+  // Threads: a second thread unless the machine has one CPU (Auto), or none (Inline: next()
+  // reads each batch itself; the same batches).
+  enum class Threads : std::uint8_t { Auto, Inline };
+  explicit LogPrefetch(LogReader& reader, Prepare prepare = {}, std::size_t batch = 4096,
+                       Threads threads = Threads::Auto);
   ~LogPrefetch(); // stops the reader thread (a batch part read is dropped) and joins it
   LogPrefetch(const LogPrefetch&) = delete;
   LogPrefetch& operator=(const LogPrefetch&) = delete;
@@ -57,6 +63,11 @@ private:
     std::exception_ptr error; // thrown after this slot's records
   };
   void run();
+  bool fill(int slot); // reads into `slot`; true when it was the last batch
+  // One record is read past each batch, so that a batch knows whether it is the last; it opens
+  // the next batch (swapped into that slot's first place).
+  LogRecord carry_;
+  bool have_carry_ = false;
 
   LogReader& reader_;
   Prepare prepare_;
