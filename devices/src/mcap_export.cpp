@@ -249,8 +249,8 @@ public:
     frame_ = ",\"frame_id\":";
     append_json_bytes(frame_, frame);
   }
-  // The step's messages; `poses` holds the poses so far (the step's last, when it has one).
-  // The step's messages; `poses` holds the poses so far (the step's last, when it has one).
+  // The step's messages from its prepared text (prepare(), below); `poses` holds the poses so far
+  // (the step's last, when it has one).
   void write(const LogRecord& r, const LogPrefetch::Prepared& prepared,
              const std::vector<Pose>& poses, bool trail_now) {
     const auto t = log_time(r.time_ns);
@@ -426,7 +426,7 @@ std::string base64(std::string_view bytes) {
 
 namespace {
 
-// The file, streamed to `bytes` as the log is read, one record ahead (a malformed log throws part
+// The file, streamed to `bytes` as the log is read, a batch ahead (a malformed log throws part
 // way; export_mcap writes beside the target and renames, so nothing half-written is left).
 void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_name,
                 const McapOptions& options, const ReplayResult* replay, McapSummary* summary) {
