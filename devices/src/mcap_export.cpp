@@ -1,6 +1,5 @@
 // A hardware log as MCAP (mcap_export.hpp).
 #include <algorithm>
-#include <antkit/devices/log_prefetch.hpp>
 #include <antkit/devices/mcap_export.hpp>
 #include <antkit/devices/odometry.hpp>
 #include <antkit/devices/robot.hpp>
@@ -249,20 +248,18 @@ public:
     frame_ = ",\"frame_id\":";
     append_json_bytes(frame_, frame);
   }
-  // The step's messages from its prepared text (prepare(), below); `poses` holds the poses so far
-  // (the step's last, when it has one).
-  void write(const LogRecord& r, const LogPrefetch::Prepared& prepared,
-             const std::vector<Pose>& poses, bool trail_now) {
+  // The step's messages, formatted straight into the chunk; `poses` holds the poses so far (the
+  // step's last, when `has_pose`).
+  void write(const LogRecord& r, bool has_pose, const std::vector<Pose>& poses, bool trail_now) {
     const auto t = log_time(r.time_ns);
     const auto seq = static_cast<std::uint32_t>(r.step);
-    const std::string_view text = prepared.text;
-    if (prepared.numbered) {
+    if (has_pose) {
       std::string& m = w_.begin_message(pose_, seq, t, t);
       m += '{';
       put_timestamp(m, t);
       m += frame_;
       m += ",\"pose\":";
-      m += text.substr(prepared.cuts[2]);
+      put_pose(m, poses.back());
       m += '}';
       w_.end_message();
     }
@@ -282,39 +279,12 @@ public:
       m += "]}";
       w_.end_message();
     }
-    w_.begin_message(step_, seq, t, t) += text.substr(0, prepared.cuts[1]);
+    std::string& step = w_.begin_message(step_, seq, t, t);
+    put_step_head(step, r);
+    put_step_fields(step, r);
     w_.end_message();
-    w_.begin_message(io_, seq, t, t) +=
-        text.substr(prepared.cuts[1], prepared.cuts[2] - prepared.cuts[1]);
-    w_.end_message();
-  }
-
-  // What a step's messages hold that depends on the records alone, written on the log's reading
-  // thread (LogPrefetch): /antkit/step's text, cut after its step number (cuts[0], where a
-  // replay's /replayed/step adds its "identical"), then /antkit/io's (from cuts[1]), then the
-  // pose after the step (from cuts[2]; its numbers too, for the trail), when the log has one.
-  static void prepare(Poser& poser, const LogRecord& r, LogPrefetch::Prepared& p) {
-    std::string& m = p.text;
-    m.clear();
-    m += '{';
-    put_timestamp(m, log_time(r.time_ns));
-    m += ",\"step\":";
-    put_int(m, r.step);
-    p.cuts[0] = m.size();
-    m += ",\"obs\":";
-    put_ints(m, r.obs);
-    m += ",\"cmd\":";
-    put_ints(m, r.cmd);
-    m += ",\"odo\":";
-    put_ints(m, r.odo);
-    m += ",\"state\":";
-    put_hash(m, r.state);
-    m += '}';
-    p.cuts[1] = m.size();
-    m += '{';
-    put_timestamp(m, log_time(r.time_ns));
-    m += ",\"step\":";
-    put_int(m, r.step);
+    std::string& m = w_.begin_message(io_, seq, t, t);
+    put_step_head(m, r);
     m += ",\"io\":[";
     for (std::size_t k = 0; k < r.io.size(); ++k) {
       if (k > 0) m += ',';
@@ -330,13 +300,26 @@ public:
       m += '}';
     }
     m += "]}";
-    p.cuts[2] = m.size();
-    const auto pose = poser.after(r);
-    p.numbered = pose.has_value();
-    if (pose) {
-      p.numbers = {pose->x, pose->y, pose->qz, pose->qw};
-      put_pose(m, *pose);
-    }
+    w_.end_message();
+  }
+  // {"timestamp":...,"step":N
+  static void put_step_head(std::string& m, const LogRecord& r) {
+    m += '{';
+    put_timestamp(m, log_time(r.time_ns));
+    m += ",\"step\":";
+    put_int(m, r.step);
+  }
+  // ,"obs":[...],"cmd":[...],"odo":[...],"state":"..."}
+  static void put_step_fields(std::string& m, const LogRecord& r) {
+    m += ",\"obs\":";
+    put_ints(m, r.obs);
+    m += ",\"cmd\":";
+    put_ints(m, r.cmd);
+    m += ",\"odo\":";
+    put_ints(m, r.odo);
+    m += ",\"state\":";
+    put_hash(m, r.state);
+    m += '}';
   }
   static constexpr std::size_t kTrailPoses = 1000;
 
@@ -426,7 +409,7 @@ std::string base64(std::string_view bytes) {
 
 namespace {
 
-// The file, streamed to `bytes` as the log is read, a batch ahead (a malformed log throws part
+// The file, streamed to `bytes` as the log is read, a record ahead (a malformed log throws part
 // way; export_mcap writes beside the target and renames, so nothing half-written is left).
 void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_name,
                 const McapOptions& options, const ReplayResult* replay, McapSummary* summary) {
@@ -490,41 +473,37 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
                              d.expected + ", the replay derived " + d.actual)});
     divergence_written = true;
   };
-  // The records parsed a batch ahead on a second thread (log_prefetch.hpp); each batch says
-  // whether it is the last, so that the last step's trail is written with it.
-  // From here on the poser is the reading thread's (frame() and diameter_m() were read above).
-  LogPrefetch prefetch(reader, [&poser](const LogRecord& r, LogPrefetch::Prepared& p) {
-    RunChannels::prepare(poser, r, p);
-  });
+  // Two records reused in turn (no allocation per step once they have grown): the one written
+  // and the one after it, read first so that the last step's trail is written with it.
+  LogRecord record;
+  LogRecord ahead;
+  bool have = reader.next(record);
   std::size_t n = 0;
   std::uint64_t last_t = 0;
-  for (auto batch = prefetch.next(); !batch.records.empty(); batch = prefetch.next())
-    for (std::size_t j = 0; j < batch.records.size(); ++j) {
-      const LogRecord& r = batch.records[j];
-      const bool final = batch.last && j + 1 == batch.records.size();
-      last_t = log_time(r.time_ns);
-      const LogPrefetch::Prepared& prepared = batch.prepared[j];
-      if (prepared.numbered) {
-        const auto& v = prepared.numbers;
-        poses.push_back({v[0], v[1], v[2], v[3]});
-      }
-      run.write(r, prepared, poses, (n + 1) % every == 0 || final);
-      ++n;
-      const auto t = log_time(r.time_ns);
-      const auto seq = static_cast<std::uint32_t>(r.step);
-      if (replay != nullptr && r.step < replay->steps) {
-        // /antkit/step's text with "identical" after the step number.
-        const std::string_view text = prepared.text;
-        std::string& m = w.begin_message(replayed, seq, t, t);
-        m += text.substr(0, prepared.cuts[0]);
-        m += ",\"identical\":true";
-        m += text.substr(prepared.cuts[0], prepared.cuts[1] - prepared.cuts[0]);
-        w.end_message();
-      } else if (replay != nullptr && divergence && divergence->step == r.step &&
-                 !divergence_written) {
-        write_divergence(t, seq);
-      }
+  while (have) {
+    const bool more = reader.next(ahead);
+    const LogRecord& r = record;
+    const auto t = log_time(r.time_ns);
+    const auto seq = static_cast<std::uint32_t>(r.step);
+    last_t = t;
+    const auto pose = poser.after(r);
+    if (pose) poses.push_back(*pose);
+    run.write(r, pose.has_value(), poses, (n + 1) % every == 0 || !more);
+    ++n;
+    if (replay != nullptr && r.step < replay->steps) {
+      // /antkit/step's text with "identical" after the step number.
+      std::string& m = w.begin_message(replayed, seq, t, t);
+      RunChannels::put_step_head(m, r);
+      m += ",\"identical\":true";
+      RunChannels::put_step_fields(m, r);
+      w.end_message();
+    } else if (replay != nullptr && divergence && divergence->step == r.step &&
+               !divergence_written) {
+      write_divergence(t, seq);
     }
+    std::swap(record, ahead);
+    have = more;
+  }
   const auto& stop = reader.stop();
   const auto last_seq =
       static_cast<std::uint32_t>(stop ? stop->step : static_cast<std::int64_t>(n));

@@ -271,3 +271,24 @@ TEST_CASE("the writer flushes each record as it is written", "[devices]") {
   ::unlink(path.c_str());
   CHECK_THROWS_AS(devices::LogWriter("/nonexistent/dir/x.jsonl", header()), InputError);
 }
+
+TEST_CASE("records_ahead counts the records next() will read", "[devices]") {
+  const std::string r0 = devices::format_record(record(0));
+  const std::string r1 = devices::format_record(record(1));
+  const std::string stop = R"({"stop":"done","step":2,"io":[]})";
+  const auto ahead = [](const std::string& text) {
+    devices::LogReader reader("a.jsonl", text);
+    const std::size_t counted = reader.records_ahead();
+    std::size_t read = 0;
+    for (devices::LogRecord r; reader.next(r);) ++read;
+    CHECK(read == counted);
+    return counted;
+  };
+  CHECK(ahead(kHeader + "\n") == 0);
+  CHECK(ahead(kHeader + "\n" + r0 + "\n" + r1 + "\n") == 2);
+  CHECK(ahead(kHeader + "\n" + r0 + "\n" + r1 + "\n" + stop + "\n") == 2);
+  CHECK(ahead(kHeader + "\n" + r0 + "\n" + r1 + "\n" + stop + "\n\n") == 2); // blank after stop
+  CHECK(ahead(kHeader + "\n" + r0 + "\n" + r1) == 2);   // no newline after a whole last record
+  for (std::size_t cut = 1; cut + 1 < r1.size(); ++cut) // the last record cut short
+    CHECK(ahead(kHeader + "\n" + r0 + "\n" + r1.substr(0, cut)) == 1);
+}
