@@ -61,26 +61,18 @@ McapWritten write_buffon_mcap(const buffon::World& world, const buffon::AreaMeas
   const std::size_t n1 = at[0].size(), n2 = at[1].size();
   const auto t_of = [](std::size_t k) { return static_cast<std::uint64_t>(k) * kBuffonStepNs; };
 
-  std::ostringstream bytes;
-  io::mcap::Writer w(bytes);
-  const auto schema = [&](const char* name) {
-    return w.add_schema(name, "jsonschema", devices::mcap_schema(name));
-  };
-  const std::uint16_t scene = schema("foxglove.SceneUpdate"),
-                      pose_s = schema("foxglove.PoseInFrame"),
-                      poses_s = schema("foxglove.PosesInFrame"), log_s = schema("foxglove.Log");
-  const std::uint16_t arena_ch = w.add_channel(scene, "/arena", "json");
-  const std::uint16_t log_ch = w.add_channel(log_s, "/log", "json");
+  foxglove::JsonMcap mcap(
+      {"foxglove.SceneUpdate", "foxglove.PoseInFrame", "foxglove.PosesInFrame", "foxglove.Log"});
+  const std::uint16_t arena_ch = mcap.channel("foxglove.SceneUpdate", "/arena");
+  const std::uint16_t log_ch = mcap.channel("foxglove.Log", "/log");
   std::array<std::uint16_t, 2> pose_ch{}, trail_ch{};
   for (std::size_t v = 0; v < 2; ++v) {
     const std::string visit = "/visit" + std::to_string(v + 1);
-    pose_ch[v] = w.add_channel(pose_s, visit + "/pose", "json");
-    trail_ch[v] = w.add_channel(poses_s, visit + "/trail", "json");
+    pose_ch[v] = mcap.channel("foxglove.PoseInFrame", visit + "/pose");
+    trail_ch[v] = mcap.channel("foxglove.PosesInFrame", visit + "/trail");
   }
   const auto put = [&](std::uint16_t ch, std::size_t seq, std::uint64_t t,
-                       const nlohmann::json& j) {
-    w.write({ch, static_cast<std::uint32_t>(seq), t, t, j.dump()});
-  };
+                       const nlohmann::json& j) { mcap.put(ch, seq, t, j); };
 
   nlohmann::json walls = nlohmann::json::array();
   for (const auto& s : world.walls())
@@ -140,10 +132,7 @@ McapWritten write_buffon_mcap(const buffon::World& world, const buffon::AreaMeas
                           number(cf.lower) + ", " + (cf.upper ? number(*cf.upper) : "inf") + "]"
                     : "no crossing: no closed-form area";
   put(log_ch, last, end, log_json(end, 2, result));
-  w.finish();
-  McapWritten written{w.bytes(), w.messages(), w.channel_counts()};
-  io::write_file_atomic(out, bytes.str());
-  return written;
+  return mcap.write(out);
 }
 
 } // namespace antkit::commands

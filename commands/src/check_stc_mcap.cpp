@@ -37,21 +37,14 @@ CheckedStcMcap check_stc_mcap(const testing::StcCheckRequest& request,
   for (const auto& c : tour.path) at.push_back(foxglove::cell_centre(map, c));
   const std::vector<double> yaw = foxglove::headings(at);
 
-  std::ostringstream bytes;
-  io::mcap::Writer w(bytes);
-  const auto schema = [&](const char* name) {
-    return w.add_schema(name, "jsonschema", devices::mcap_schema(name));
-  };
-  const std::uint16_t grid = schema("foxglove.Grid"), pose_s = schema("foxglove.PoseInFrame"),
-                      poses_s = schema("foxglove.PosesInFrame"), log_s = schema("foxglove.Log");
-  const std::uint16_t map_ch = w.add_channel(grid, "/map", "json");
-  const std::uint16_t pose_ch = w.add_channel(pose_s, "/pose", "json");
-  const std::uint16_t trail_ch = w.add_channel(poses_s, "/trail", "json");
-  const std::uint16_t log_ch = w.add_channel(log_s, "/log", "json");
+  foxglove::JsonMcap mcap(
+      {"foxglove.Grid", "foxglove.PoseInFrame", "foxglove.PosesInFrame", "foxglove.Log"});
+  const std::uint16_t map_ch = mcap.channel("foxglove.Grid", "/map");
+  const std::uint16_t pose_ch = mcap.channel("foxglove.PoseInFrame", "/pose");
+  const std::uint16_t trail_ch = mcap.channel("foxglove.PosesInFrame", "/trail");
+  const std::uint16_t log_ch = mcap.channel("foxglove.Log", "/log");
   const auto put = [&](std::uint16_t ch, std::size_t seq, std::uint64_t t,
-                       const nlohmann::json& j) {
-    w.write({ch, static_cast<std::uint32_t>(seq), t, t, j.dump()});
-  };
+                       const nlohmann::json& j) { mcap.put(ch, seq, t, j); };
   put(map_ch, 0, 0, grid_json(map, 0, "occupied", [&](std::int32_t x, std::int32_t y) {
         return map.cells[{x, y}] == kernel::Occupancy::Free ? 0 : 100;
       }));
@@ -91,9 +84,7 @@ CheckedStcMcap check_stc_mcap(const testing::StcCheckRequest& request,
                          k, [&](std::size_t j) { return pose_json(at[j].x, at[j].y, yaw[j]); })}});
     if (k == verdict_at) verdict(); // in time order, after the position's pose
   }
-  w.finish();
-  result.written = {w.bytes(), w.messages(), w.channel_counts()};
-  io::write_file_atomic(out, bytes.str());
+  result.written = mcap.write(out);
   return result;
 }
 

@@ -34,25 +34,18 @@ McapWritten write_cover_mcap(const kernel::OccupancyGrid& cells, const testing::
     const double yaw = trace.bearings[k][r] * (M_PI / 4); // bearing 2 is up (y down in cells)
     return pose_json(c.x + 0.5, h - 1 - c.y + 0.5, yaw);
   };
-  std::ostringstream bytes;
-  io::mcap::Writer w(bytes);
-  const auto schema = [&](const char* name) {
-    return w.add_schema(name, "jsonschema", devices::mcap_schema(name));
-  };
-  const std::uint16_t grid = schema("foxglove.Grid"), pose_s = schema("foxglove.PoseInFrame"),
-                      poses_s = schema("foxglove.PosesInFrame"), log_s = schema("foxglove.Log");
-  const std::uint16_t map_ch = w.add_channel(grid, "/map", "json");
-  const std::uint16_t log_ch = w.add_channel(log_s, "/log", "json");
+  foxglove::JsonMcap mcap(
+      {"foxglove.Grid", "foxglove.PoseInFrame", "foxglove.PosesInFrame", "foxglove.Log"});
+  const std::uint16_t map_ch = mcap.channel("foxglove.Grid", "/map");
+  const std::uint16_t log_ch = mcap.channel("foxglove.Log", "/log");
   std::vector<std::uint16_t> pose_ch, trail_ch;
   for (std::size_t r = 0; r < robots; ++r) {
     const std::string robot = "/robot" + std::to_string(r);
-    pose_ch.push_back(w.add_channel(pose_s, robot + "/pose", "json"));
-    trail_ch.push_back(w.add_channel(poses_s, robot + "/trail", "json"));
+    pose_ch.push_back(mcap.channel("foxglove.PoseInFrame", robot + "/pose"));
+    trail_ch.push_back(mcap.channel("foxglove.PosesInFrame", robot + "/trail"));
   }
   const auto put = [&](std::uint16_t ch, std::size_t seq, std::uint64_t t,
-                       const nlohmann::json& j) {
-    w.write({ch, static_cast<std::uint32_t>(seq), t, t, j.dump()});
-  };
+                       const nlohmann::json& j) { mcap.put(ch, seq, t, j); };
   put(map_ch, 0, 0, grid_json(map, 0, "occupied", [&](std::int32_t x, std::int32_t y) {
         return cells[{x, y}] == kernel::Occupancy::Free ? 0 : 100;
       }));
@@ -78,10 +71,7 @@ McapWritten write_cover_mcap(const kernel::OccupancyGrid& cells, const testing::
                      ? "check cover: every rule kept; " + std::to_string(check->audit.viewed) +
                            " of " + std::to_string(check->audit.viewable) + " cells viewed"
                      : "check cover: " + check->audit.first));
-  w.finish();
-  McapWritten written{w.bytes(), w.messages(), w.channel_counts()};
-  io::write_file_atomic(out, bytes.str());
-  return written;
+  return mcap.write(out);
 }
 
 McapWritten cover_trace_mcap(const kernel::OccupancyGrid& map, const std::string& trace_file,

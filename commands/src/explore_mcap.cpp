@@ -45,26 +45,19 @@ los::ExploreResult explore_mcap(const kernel::OccupancyGrid& truth,
   const auto t_of = [](std::size_t k) { return static_cast<std::uint64_t>(k) * kExploreTickNs; };
   const std::array<std::vector<double>, 2> yaw{foxglove::headings(at[0]),
                                                foxglove::headings(at[1])};
-  std::ostringstream bytes;
-  io::mcap::Writer w(bytes);
-  const auto schema = [&](const char* name) {
-    return w.add_schema(name, "jsonschema", devices::mcap_schema(name));
-  };
-  const std::uint16_t grid = schema("foxglove.Grid"), pose_s = schema("foxglove.PoseInFrame"),
-                      poses_s = schema("foxglove.PosesInFrame"), log_s = schema("foxglove.Log");
-  const std::uint16_t map_ch = w.add_channel(grid, "/map", "json");
-  const std::uint16_t explored_ch = w.add_channel(grid, "/explored", "json");
-  const std::uint16_t log_ch = w.add_channel(log_s, "/log", "json");
+  foxglove::JsonMcap mcap(
+      {"foxglove.Grid", "foxglove.PoseInFrame", "foxglove.PosesInFrame", "foxglove.Log"});
+  const std::uint16_t map_ch = mcap.channel("foxglove.Grid", "/map");
+  const std::uint16_t explored_ch = mcap.channel("foxglove.Grid", "/explored");
+  const std::uint16_t log_ch = mcap.channel("foxglove.Log", "/log");
   std::array<std::uint16_t, 2> pose_ch{}, trail_ch{};
   for (std::size_t i = 0; i < 2; ++i) {
     const std::string robot = i == 0 ? "/robotA" : "/robotB";
-    pose_ch[i] = w.add_channel(pose_s, robot + "/pose", "json");
-    trail_ch[i] = w.add_channel(poses_s, robot + "/trail", "json");
+    pose_ch[i] = mcap.channel("foxglove.PoseInFrame", robot + "/pose");
+    trail_ch[i] = mcap.channel("foxglove.PosesInFrame", robot + "/trail");
   }
   const auto put = [&](std::uint16_t ch, std::size_t seq, std::uint64_t t,
-                       const nlohmann::json& j) {
-    w.write({ch, static_cast<std::uint32_t>(seq), t, t, j.dump()});
-  };
+                       const nlohmann::json& j) { mcap.put(ch, seq, t, j); };
   put(map_ch, 0, 0, grid_json(map, 0, "occupied", [&](std::int32_t x, std::int32_t y) {
         return truth[{x, y}] == kernel::Occupancy::Free ? 0 : 100;
       }));
@@ -112,9 +105,8 @@ los::ExploreResult explore_mcap(const kernel::OccupancyGrid& truth,
       log_json(end, r.completed ? 2 : 4,
                r.completed ? result
                            : "the exploration did not finish within its tick budget: " + result));
-  w.finish();
-  if (written != nullptr) *written = {w.bytes(), w.messages(), w.channel_counts()};
-  io::write_file_atomic(out, bytes.str());
+  const McapWritten counts = mcap.write(out);
+  if (written != nullptr) *written = counts;
   return r;
 }
 

@@ -3,16 +3,56 @@
 // fields devices::mcap_schema's texts name, built with nlohmann (keys sorted, numbers round-trip:
 // the bytes depend on the values alone).
 #include <algorithm>
+#include <antkit/commands/stc_mcap.hpp>
 #include <antkit/devices/mcap_export.hpp>
+#include <antkit/io/atomic_file.hpp>
+#include <antkit/io/mcap.hpp>
 #include <antkit/maps/map_io.hpp>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace antkit::commands::foxglove {
+
+// An MCAP file of JSON messages for Foxglove, built in memory and written whole: the schemas named
+// (devices::mcap_schema's texts) added first, in that order, then channels on them by schema name.
+class JsonMcap {
+public:
+  explicit JsonMcap(std::initializer_list<std::string_view> schemas) : w_(bytes_) {
+    for (const auto name : schemas)
+      ids_.emplace_back(std::string(name),
+                        w_.add_schema(name, "jsonschema", devices::mcap_schema(name)));
+  }
+  std::uint16_t channel(std::string_view schema, const std::string& topic) {
+    for (const auto& [name, id] : ids_)
+      if (name == schema) return w_.add_channel(id, topic, "json");
+    throw std::logic_error("JsonMcap: a channel of a schema not named up front");
+  }
+  void put(std::uint16_t channel, std::size_t seq, std::uint64_t t, const nlohmann::json& j) {
+    w_.write({channel, static_cast<std::uint32_t>(seq), t, t, j.dump()});
+  }
+  // Closes the file and writes it to `out` whole (io::write_file_atomic); what it holds.
+  McapWritten write(const std::filesystem::path& out) {
+    w_.finish();
+    McapWritten written{w_.bytes(), w_.messages(), w_.channel_counts()};
+    io::write_file_atomic(out, bytes_.str());
+    return written;
+  }
+
+private:
+  std::ostringstream bytes_;
+  io::mcap::Writer w_;
+  std::vector<std::pair<std::string, std::uint16_t>> ids_;
+};
 
 inline nlohmann::json stamp_of(std::uint64_t t) {
   return {{"sec", t / 1000000000U}, {"nsec", t % 1000000000U}};

@@ -38,23 +38,15 @@ McapWritten write_stc_mcap(const maps::GridMap& map, const stc::RunResult& r,
   check_stc_mcap_size(map.cells);
   if (r.path.empty()) throw std::logic_error("write_stc_mcap: the run kept no path");
   const auto t_of = [](std::size_t step) { return static_cast<std::uint64_t>(step) * kStcStepNs; };
-  std::ostringstream bytes;
-  io::mcap::Writer w(bytes);
-  const auto schema = [&](const char* name) {
-    return w.add_schema(name, "jsonschema", devices::mcap_schema(name));
-  };
-  const std::uint16_t grid = schema("foxglove.Grid"), scene = schema("foxglove.SceneUpdate"),
-                      pose_s = schema("foxglove.PoseInFrame"),
-                      poses_s = schema("foxglove.PosesInFrame"), log_s = schema("foxglove.Log");
-  const std::uint16_t map_ch = w.add_channel(grid, "/map", "json");
-  const std::uint16_t tree_ch = w.add_channel(scene, "/tree", "json");
-  const std::uint16_t pose_ch = w.add_channel(pose_s, "/pose", "json");
-  const std::uint16_t trail_ch = w.add_channel(poses_s, "/trail", "json");
-  const std::uint16_t log_ch = w.add_channel(log_s, "/log", "json");
-  const auto put = [&](std::uint16_t ch, std::uint32_t seq, std::uint64_t t,
-                       const nlohmann::json& j) {
-    w.write({ch, seq, t, t, j.dump()});
-  };
+  foxglove::JsonMcap mcap({"foxglove.Grid", "foxglove.SceneUpdate", "foxglove.PoseInFrame",
+                           "foxglove.PosesInFrame", "foxglove.Log"});
+  const std::uint16_t map_ch = mcap.channel("foxglove.Grid", "/map");
+  const std::uint16_t tree_ch = mcap.channel("foxglove.SceneUpdate", "/tree");
+  const std::uint16_t pose_ch = mcap.channel("foxglove.PoseInFrame", "/pose");
+  const std::uint16_t trail_ch = mcap.channel("foxglove.PosesInFrame", "/trail");
+  const std::uint16_t log_ch = mcap.channel("foxglove.Log", "/log");
+  const auto put = [&](std::uint16_t ch, std::size_t seq, std::uint64_t t,
+                       const nlohmann::json& j) { mcap.put(ch, seq, t, j); };
 
   // Time 0: the map, the tree (cell centre to cell centre wherever the tour changes cell: the
   // spanning tree the tour circumnavigates, as the pictures draw it) and what ran.
@@ -133,10 +125,7 @@ McapWritten write_stc_mcap(const maps::GridMap& map, const stc::RunResult& r,
                    ": covered " + std::to_string(r.covered) + " of " +
                    std::to_string(r.reachable_subcells) + ", repeats " + std::to_string(r.repeats) +
                    (r.returned_to_start ? ", back at the start" : "")));
-  w.finish();
-  McapWritten written{w.bytes(), w.messages(), w.channel_counts()};
-  io::write_file_atomic(out, bytes.str());
-  return written;
+  return mcap.write(out);
 }
 
 } // namespace antkit::commands
