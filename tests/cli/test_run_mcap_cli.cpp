@@ -2,6 +2,7 @@
 // timeline), read back with the tests' own MCAP reader (every CRC, index and offset checked): a
 // pose a step (a tick) at k * 100 ms, STC's spanning tree, and on /log the verdict: an exact
 // variant's first repeat, or a trace's first broken rule, as an ERROR at its step.
+#include "antkit_child.hpp"
 #include "mcap_reader.hpp"
 #include "run_antkit.hpp"
 #include "test_paths.hpp"
@@ -18,16 +19,8 @@
 #include <unistd.h>
 
 using antkit::test::run_antkit;
+using antkit::test::slurp;
 using Catch::Matchers::Contains;
-
-namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-} // namespace
 
 TEST_CASE("antkit stc --mcap: a pose a step, the tree, and the first repeat at its step",
           "[cli][mcap]") {

@@ -2,6 +2,7 @@
 // a timeline), read back with the tests' own MCAP reader (every CRC, index and offset checked):
 // a message a step at k * 100 ms, the counts the run's own output gives, the events on /log at
 // their steps, and bad input refused with exit 2 and no file.
+#include "antkit_child.hpp"
 #include "mcap_reader.hpp"
 #include "run_antkit.hpp"
 #include "test_paths.hpp"
@@ -17,14 +18,10 @@
 #include <vector>
 
 using antkit::test::run_antkit;
+using antkit::test::slurp;
 using Catch::Matchers::Contains;
 
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 struct Read {
   std::map<std::string, std::size_t> counts;                              // topic -> messages
