@@ -2,7 +2,7 @@
 // kernel::InputError may escape; every record it accepts re-formats (format_record) and re-reads
 // to the same record, and the header likewise; and every record line it accepts is JSON to
 // nlohmann-json with the same values (tests/support/log_json_oracle.hpp: the reader's own lexer
-// held to the library).
+// held to the library), as is every line its fast path (detail::read_canonical_step) accepts.
 #include <antkit/devices/log.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <cstddef>
@@ -22,6 +22,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     lines.emplace_back(text.data() + at, end - at);
     at = end + 1;
   }
+  // The reader's fast path for the writer's own form accepts no line nlohmann-json reads
+  // differently (or not at all).
+  for (const auto line : lines)
+    if (LogRecord fast; detail::read_canonical_step(line, fast)) {
+      const auto theirs = antkit::test::record_by_json_library(line);
+      if (!theirs || !(*theirs == fast)) __builtin_trap();
+    }
   try {
     LogReader reader("fuzz.jsonl", text);
     const std::string header = format_header(reader.header());

@@ -89,6 +89,13 @@ void append_json_bytes(std::string& out, std::string_view bytes);
 std::string format_record(const LogRecord& r);
 std::string format_stop(const LogStop& s);
 
+namespace detail {
+// LogReader's fast path, open to tests: reads `line` (no newline) into `out` when it is a step
+// record exactly as format_record writes it, and returns false, deciding nothing, at the first
+// byte of any other form (LogReader then reads the line with its general reader, which judges it).
+bool read_canonical_step(std::string_view line, LogRecord& out);
+} // namespace detail
+
 // Refuses (kernel::InputError(path, ...)) a log that exists unless `replace`: what LogWriter does,
 // checked before a recording opens its port, so that a refused --out leaves the robot untouched.
 void check_new_log(const std::string& path, bool replace);
