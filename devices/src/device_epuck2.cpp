@@ -227,7 +227,9 @@ class Epuck2Device final : public Device {
 public:
   [[nodiscard]] std::string_view name() const noexcept override { return "epuck2"; }
   // PROTOCOLS.md: 115200 8N1 (UART3 to the radio module; over USB the setting does nothing).
-  [[nodiscard]] LineSettings line() const noexcept override { return {115200, 8, 1, Parity::None}; }
+  [[nodiscard]] LineSettings line() const noexcept override {
+    return {epuck2::kBaud, 8, 1, Parity::None};
+  }
 
   [[nodiscard]] std::span<const DeclaredOption> options() const noexcept override {
     static constexpr DeclaredOption kOptions[] = {

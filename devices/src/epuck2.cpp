@@ -301,6 +301,12 @@ EmulatorResponse Emulator::feed(std::string_view bytes) {
     if (out.hang_up) break;
     byte(c, out);
   }
+  // `pace`: the answer leaves at the line's rate, 115 200 baud 8N1 (10 bit times a byte), after
+  // the ASCII emulator's command latency (emulator.hpp, kCommandLatency): as FirmwareEmulator
+  // paces its replies, so the two e-pucks compare on one footing.
+  if (options_.pace && !out.bytes.empty())
+    out.delay +=
+        kCommandLatency + std::chrono::microseconds(out.bytes.size() * 10 * 1000000 / kBaud);
   return out;
 }
 

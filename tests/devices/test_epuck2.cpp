@@ -154,6 +154,25 @@ TEST_CASE("epuck2 emulator: one byte stream, binary sequences and ASCII lines, a
   CHECK(emu.feed("R\r").bytes.empty());
 }
 
+TEST_CASE("epuck2 emulator: paced, an answer waits the command latency and its bytes' time on the "
+          "line, and a set-only sequence waits nothing",
+          "[devices]") {
+  devices::EmulatorOptions o;
+  o.pace = true;
+  auto emu = make_emulator(o);
+  // 115 200 baud 8N1: 10 bit times a byte.
+  const auto on_line = [](std::size_t n) {
+    return devices::kCommandLatency + std::chrono::microseconds(n * 10 * 1000000 / 115200);
+  };
+  auto r = emu.feed(bytes({0xBC, 0x64, 0x00, 0x64, 0x00, 0x00})); // the banner only
+  CHECK(r.delay == on_line(epuck2::kBanner.size()));
+  r = emu.feed(epuck2::step_sequence(0, 0));
+  REQUIRE(r.bytes.size() == 20);
+  CHECK(r.delay == on_line(20)); // 2 ms + 1736 us
+  CHECK(emu.feed(bytes({0xBC, 0x01, 0x00, 0x01, 0x00, 0x00})).delay.count() == 0);
+  CHECK(make_emulator().feed(epuck2::step_sequence(0, 0)).delay.count() == 0); // unpaced
+}
+
 TEST_CASE("epuck2 emulator: faults per sequence, from its keyed stream", "[devices]") {
   devices::EmulatorOptions o;
   o.faults = devices::parse_faults({"unterminated=1"});

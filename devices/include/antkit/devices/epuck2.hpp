@@ -49,6 +49,7 @@ inline constexpr char request(char letter) noexcept {
   return static_cast<char>(-static_cast<signed char>(letter));
 }
 inline constexpr std::int32_t kSpeedLimit = 1100;     // MOTOR_SPEED_LIMIT, motors.h
+inline constexpr std::uint32_t kBaud = 115200;        // 8N1, UART3 to the radio module
 inline constexpr std::int32_t kProximityLimit = 4096; // readings are below this
 inline constexpr std::size_t kResyncZeros = 36;       // -'w''s 35 argument bytes, and a 0
 inline constexpr std::size_t kStepReplySize = 20;     // -'N' 16, -'Q' 4
@@ -123,6 +124,8 @@ std::int64_t unwrap(std::int64_t total, std::int16_t low) noexcept;
 // first half only), garbage (the banner first, as after a restart), delay, unterminated (the
 // sequence's 0 lost on the line: the firmware keeps reading requests), silent=N and
 // disconnect=N (counted in sequences and ASCII lines).
+// `pace` (EmulatorOptions): each answer waits the ASCII emulator's command latency and its bytes'
+// time on a 115 200 baud 8N1 line, as FirmwareEmulator's replies do.
 class Emulator {
 public:
   Emulator(std::vector<kernel::FxSegment> walls, EmulatorOptions options = {});
