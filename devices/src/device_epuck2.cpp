@@ -76,8 +76,7 @@ class Epuck2Session final : public Session {
 public:
   Epuck2Session(SerialPort port, const LinkOptions& link,
                 std::unique_ptr<LoggedController> controller, std::chrono::nanoseconds period)
-      : link_(std::move(port), std::make_shared<const epuck2::SequenceFraming>(),
-              without_watchdog(link)),
+      : link_(std::move(port), std::make_shared<const epuck2::SequenceFraming>(), link),
         controller_(std::move(controller)), period_(period) {}
 
   void start(std::vector<Exchange>& io) override { body_.start(link_, io); }
@@ -104,12 +103,6 @@ public:
   [[nodiscard]] LinkStats stats() const override { return link_.stats(); }
 
 private:
-  // The e-puck2's link has no watchdog yet (--watchdog is not applied to it: its own link never
-  // had one, and the shared link keeps that until the e-puck2's tests cover one).
-  static LinkOptions without_watchdog(LinkOptions o) {
-    o.watchdog = std::chrono::milliseconds(0);
-    return o;
-  }
   RobotLink link_;
   Body body_;
   std::unique_ptr<LoggedController> controller_;

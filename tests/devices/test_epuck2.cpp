@@ -377,6 +377,29 @@ TEST_CASE("epuck2: a silent robot ends the run, not read back at 0, 0, and the l
   }
 }
 
+TEST_CASE("epuck2: --watchdog ends a run whose robot went silent before the tries run out",
+          "[devices]") {
+  TempDir dir;
+  devices::EmulatorOptions eo;
+  eo.faults = devices::parse_faults({"silent=20"});
+  Epuck2OnPty emu(eo);
+  const auto log = dir.file("watchdog.jsonl");
+  auto o = options(emu.port(), 100, log);
+  o.link.tries = 1000; // 1000 x 20 ms: only the watchdog ends it soon
+  o.link.timeout = std::chrono::milliseconds(20);
+  o.link.watchdog = std::chrono::milliseconds(200);
+  o.link.stop_within = std::chrono::milliseconds(300);
+  const auto started = std::chrono::steady_clock::now();
+  const auto s = devices::record(o);
+  const auto took = std::chrono::steady_clock::now() - started;
+  CHECK_FALSE(s.completed);
+  CHECK(s.kind == devices::StopKind::Link);
+  CHECK(s.stop.find("watchdog: no valid reply for") != std::string::npos);
+  CHECK_FALSE(s.safe_stop.stopped);
+  CHECK(took < std::chrono::seconds(10)); // far below the tries' 20 s
+  CHECK(devices::replay(log).identical);
+}
+
 TEST_CASE("epuck2: 100 000 steps against the emulator over a pty", "[devices][slow]") {
   TempDir dir;
   Epuck2OnPty emu;
