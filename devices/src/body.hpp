@@ -57,6 +57,21 @@ private:
   WheelTravel baseline_;
 };
 
+// One of the wanderer's moves (paper 004's step or 45-degree turn) as wheel commands: both wheels
+// at half speed (a turn: opposite), until the right wheel has travelled target_um micrometres by
+// the odometry (units of unit_nm nanometres: encoder pulses, or the reckoned micrometres), read
+// once per control period, for at most 2 x periods reads (periods: the nominal count, from the
+// motion model). Every robot that runs the wanderer moves by this plan.
+struct WanderMove {
+  std::int32_t left = 0, right = 0;
+  std::int64_t target_um = 0;
+  std::int64_t periods = 1;
+  std::int64_t unit_nm = 1000;
+  // Whether `travelled_units` of the right wheel complete the move.
+  [[nodiscard]] bool done(std::int64_t travelled_units) const noexcept;
+};
+WanderMove wander_move_plan(const RobotDescription& robot, uniform::Action action);
+
 // Carries a controller's command out (record_loop.hpp, step 3).
 void act(Body& body, bool wander, std::span<const std::int64_t> cmd, std::vector<Exchange>& io);
 

@@ -20,7 +20,8 @@
 // bytes as \u00XX escapes, log_schema.hpp). obs, cmd and state as the e-puck's (controllers.hpp,
 // with the e-puck's description: the e-puck2's body is taken as the e-puck1's); odo the step
 // counters' travel since the start, unwrapped from their 16 bits.
-// Controllers: buffon and rs. The wanderer (several reads per step) is not supported here yet.
+// Controllers: buffon, rs and the wanderer (its move: Body::act below).
+#include "body.hpp"
 #include "emulate_serve.hpp"
 #include "logged_link.hpp"
 #include "registry.hpp"
@@ -53,21 +54,45 @@ public:
   }
   // The step's sequence (the last command's speeds, the proximity and the counters).
   Proximity read(CommandLink& link, std::vector<Exchange>& io) {
-    const auto reply = link.transact(epuck2::step_sequence(left_, right_), io);
-    const epuck2::StepReply r = *epuck2::decode_step(reply).value;
-    total_[0] = epuck2::unwrap(total_[0], r.left);
-    total_[1] = epuck2::unwrap(total_[1], r.right);
-    return r.proximity;
+    return read_at(link, left_, right_, io);
   }
-  void command(std::span<const std::int64_t> cmd) {
-    left_ = static_cast<std::int32_t>(cmd[2]);
-    right_ = static_cast<std::int32_t>(cmd[3]);
+  // The command carried out. buffon and rs: the speeds the next step's sequence sends. The
+  // wanderer: its move (body.hpp, WanderMove, as every robot's), one step sequence per control
+  // period at the move's speeds (`pace` waits for the period; the counters come back in the same
+  // round trip, so the first read is taken as the wheels start), until the right wheel has
+  // travelled the move's target or 2 x its nominal periods have passed, then one at 0, 0.
+  void act(CommandLink& link, bool wander, std::span<const std::int64_t> cmd,
+           std::vector<Exchange>& io, const std::function<void()>& pace) {
+    if (!wander) {
+      left_ = static_cast<std::int32_t>(cmd[2]);
+      right_ = static_cast<std::int32_t>(cmd[3]);
+      return;
+    }
+    const auto action = static_cast<uniform::Action>(cmd[0]);
+    if (action == uniform::Action::Wait || action == uniform::Action::Stop) return;
+    const detail::WanderMove move = detail::wander_move_plan(describe(RobotKind::Epuck), action);
+    const std::int64_t start = total_[1];
+    for (std::int64_t k = 0; k < 2 * move.periods; ++k) {
+      pace();
+      (void)read_at(link, move.left, move.right, io);
+      if (move.done(std::abs(total_[1] - start))) break;
+    }
+    (void)read_at(link, 0, 0, io);
+    left_ = right_ = 0;
   }
   [[nodiscard]] std::array<std::int64_t, 2> odometry() const noexcept {
     return {total_[0] - base_[0], total_[1] - base_[1]};
   }
 
 private:
+  Proximity read_at(CommandLink& link, std::int32_t left, std::int32_t right,
+                    std::vector<Exchange>& io) {
+    const auto reply = link.transact(epuck2::step_sequence(left, right), io);
+    const epuck2::StepReply r = *epuck2::decode_step(reply).value;
+    total_[0] = epuck2::unwrap(total_[0], r.left);
+    total_[1] = epuck2::unwrap(total_[1], r.right);
+    return r.proximity;
+  }
   std::int32_t left_ = 0, right_ = 0;
   std::int64_t total_[2] = {0, 0}, base_[2] = {0, 0};
 };
@@ -75,22 +100,26 @@ private:
 class Epuck2Session final : public Session {
 public:
   Epuck2Session(SerialPort port, const LinkOptions& link,
-                std::unique_ptr<LoggedController> controller, std::chrono::nanoseconds period)
+                std::unique_ptr<LoggedController> controller, bool wander,
+                std::chrono::nanoseconds period)
       : link_(std::move(port), std::make_shared<const epuck2::SequenceFraming>(), link),
-        controller_(std::move(controller)), period_(period) {}
+        controller_(std::move(controller)), wander_(wander), period_(period) {}
 
   void start(std::vector<Exchange>& io) override { body_.start(link_, io); }
 
   bool step(LogRecord& rec, std::vector<Exchange>& io) override {
-    if (period_.count() > 0) {
-      std::this_thread::sleep_until(next_);
-      next_ = Clock::now() + period_;
-    }
+    const auto pace = [this] {
+      if (period_.count() > 0) {
+        std::this_thread::sleep_until(next_);
+        next_ = Clock::now() + period_;
+      }
+    };
+    pace();
     const RobotDescription& robot = describe(RobotKind::Epuck);
     const Proximity readings = body_.read(link_, io);
     controller_->observe(robot, readings, rec.obs);
     controller_->step(robot, rec.obs, rec.cmd);
-    body_.command(rec.cmd);
+    body_.act(link_, wander_, rec.cmd, io, pace);
     const auto odo = body_.odometry();
     rec.odo.assign(odo.begin(), odo.end());
     rec.state = controller_->state_hash();
@@ -106,6 +135,7 @@ private:
   RobotLink link_;
   Body body_;
   std::unique_ptr<LoggedController> controller_;
+  bool wander_;
   std::chrono::nanoseconds period_;
   Clock::time_point next_{};
 };
@@ -166,8 +196,7 @@ std::optional<Divergence> check_stop(const LogStop& stop) {
 ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
                            std::optional<std::int64_t> until) {
   const LogHeader& header = reader.header();
-  if (header.controller == "wander")
-    throw kernel::InputError(path, 1, 1, "the epuck2 does not run the wanderer (yet)");
+  const bool wander = header.controller == "wander";
   std::unique_ptr<LoggedController> controller;
   try {
     controller = make_controller({header.controller, header.params, header.seed});
@@ -199,7 +228,7 @@ ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
           if (controller->state_hash() != r.state)
             return Divergence{r.step, "state", kernel::hash_hex(r.state),
                               kernel::hash_hex(controller->state_hash())};
-          body.command(cmd);
+          body.act(link, wander, cmd, seen, [] {});
           const auto odo = body.odometry();
           if (!compare_fields(r.odo, odo, r.step, "odo", d)) return d;
         } catch (const Diverged& x) {
@@ -239,9 +268,6 @@ public:
   [[nodiscard]] PreparedRun prepare_run(const RecordOptions& o) const override {
     ControllerSpec spec =
         make_spec(o.controller.name, o.controller.seed, o.controller.params, "controller");
-    if (spec.name == "wander")
-      throw kernel::InputError("controller",
-                               "the epuck2 runs buffon and rs; the wanderer is not supported yet");
     (void)make_controller(spec);
     PreparedRun run;
     run.header.robot = "epuck2";
@@ -253,8 +279,10 @@ public:
     run.steps = o.steps ? *o.steps : 1000;
     const std::chrono::nanoseconds period =
         o.period ? std::chrono::nanoseconds(*o.period) : std::chrono::nanoseconds(0);
-    run.connect = [period, spec](SerialPort port, const LinkOptions& link) {
-      return std::make_unique<Epuck2Session>(std::move(port), link, make_controller(spec), period);
+    const bool wander = spec.name == "wander";
+    run.connect = [period, spec, wander](SerialPort port, const LinkOptions& link) {
+      return std::make_unique<Epuck2Session>(std::move(port), link, make_controller(spec), wander,
+                                             period);
     };
     return run;
   }

@@ -25,36 +25,15 @@ __extension__ using i128 = __int128;
 // pi / 4 as Q15.16, for the wanderer's 45-degree turn.
 constexpr Fx kQuarterPi = Fx::from_raw(51472);
 
-// The wanderer's moves: wheels at half speed (turns: opposite) until the wheels have travelled
-// the target (micrometres per wheel), one sensor read per control period.
+// The wanderer's moves by the plan (body.hpp), one sensor read per control period.
 void wander_move(detail::Body& body, uniform::Action action, std::vector<Exchange>& io) {
-  const auto& robot = body.robot();
-  const std::int32_t s = std::max<std::int32_t>(1, robot.speed_full / 2);
-  std::int32_t left = s, right = s;
-  // Targets: one cell = half a body diameter; 45 degrees = pi/4 * wheel_base / 2 per wheel.
-  std::int64_t target_um = robot.diameter_um / 2;
-  if (action == uniform::Action::TurnLeft || action == uniform::Action::TurnRight) {
-    target_um =
-        (Fx::from_raw(static_cast<std::int32_t>(robot.wheel_base_um / 2)) * kQuarterPi).raw();
-    left = action == uniform::Action::TurnLeft ? -s : s;
-    right = -left;
-  }
-  // Nominal periods (for a robot without encoders, and a bound for those with them): the travel
-  // of one period at speed s by the motion model.
-  const Travel2 one = step_travel2(robot, buffon::kDefaultSpeed, from_wheel_command(robot, left),
-                                   from_wheel_command(robot, right), true);
-  const i128 per_period = (one.right < 0 ? -one.right : one.right) / (2 * 65536);
-  const std::int64_t periods =
-      per_period > 0 ? static_cast<std::int64_t>((target_um + per_period - 1) / per_period) : 1;
-  // The odometry in nanometres per unit: encoder pulses, or the Hemisson's reckoned micrometres.
-  const std::int64_t unit_nm = robot.has_odometry ? robot.odometry_pulse_nm : 1000;
+  const detail::WanderMove move = detail::wander_move_plan(body.robot(), action);
   const WheelTravel start = body.odometry(io);
-  body.set_wheels(left, right, io);
-  for (std::int64_t k = 0; k < 2 * periods; ++k) {
+  body.set_wheels(move.left, move.right, io);
+  for (std::int64_t k = 0; k < 2 * move.periods; ++k) {
     body.read_sensors(io);
     const WheelTravel now = body.odometry(io);
-    const std::int64_t travelled_units = std::abs(now.right - start.right);
-    if (i128{travelled_units} * unit_nm >= i128{target_um} * 1000) break;
+    if (move.done(std::abs(now.right - start.right))) break;
   }
   body.set_wheels(0, 0, io);
 }
@@ -143,6 +122,34 @@ void Body::reckon_until(std::int64_t t_ns) {
     weighted_.right += one.right * (t_ns - reckoned_ns_);
   }
   reckoned_ns_ = std::max(reckoned_ns_, t_ns);
+}
+
+WanderMove wander_move_plan(const RobotDescription& robot, uniform::Action action) {
+  WanderMove m;
+  const std::int32_t s = std::max<std::int32_t>(1, robot.speed_full / 2);
+  m.left = m.right = s;
+  // Targets: one cell = half a body diameter; 45 degrees = pi/4 * wheel_base / 2 per wheel.
+  m.target_um = robot.diameter_um / 2;
+  if (action == uniform::Action::TurnLeft || action == uniform::Action::TurnRight) {
+    m.target_um =
+        (Fx::from_raw(static_cast<std::int32_t>(robot.wheel_base_um / 2)) * kQuarterPi).raw();
+    m.left = action == uniform::Action::TurnLeft ? -s : s;
+    m.right = -m.left;
+  }
+  // Nominal periods (for a robot without encoders, and a bound for those with them): the travel
+  // of one period at speed s by the motion model.
+  const Travel2 one = step_travel2(robot, buffon::kDefaultSpeed, from_wheel_command(robot, m.left),
+                                   from_wheel_command(robot, m.right), true);
+  const i128 per_period = (one.right < 0 ? -one.right : one.right) / (2 * 65536);
+  m.periods =
+      per_period > 0 ? static_cast<std::int64_t>((m.target_um + per_period - 1) / per_period) : 1;
+  // The odometry in nanometres per unit: encoder pulses, or the Hemisson's reckoned micrometres.
+  m.unit_nm = robot.has_odometry ? robot.odometry_pulse_nm : 1000;
+  return m;
+}
+
+bool WanderMove::done(std::int64_t travelled_units) const noexcept {
+  return i128{travelled_units} * unit_nm >= i128{target_um} * 1000;
 }
 
 void act(Body& body, bool wander, std::span<const std::int64_t> cmd, std::vector<Exchange>& io) {

@@ -377,6 +377,37 @@ TEST_CASE("epuck2: a silent robot ends the run, not read back at 0, 0, and the l
   }
 }
 
+TEST_CASE("epuck2 runs the wanderer: its steps and turns in step sequences, and replays",
+          "[devices]") {
+  TempDir dir;
+  Epuck2OnPty emu;
+  const auto log = dir.file("wander.jsonl");
+  auto o =
+      antkit::test::record_options(devices::RobotKind::Epuck, emu.port(), "wander", {}, 60, log);
+  o.device = "epuck2";
+  const auto s = devices::record(o);
+  REQUIRE(s.completed);
+  emu.stop();
+  const auto& trail = emu.emulator().body().trail();
+  CHECK(!(trail.back() == trail.front())); // it moved
+  // A move is several sequences in one step; a wait or a stop none.
+  devices::LogReader reader(log);
+  std::size_t longest = 0;
+  for (devices::LogRecord r; reader.next(r);) longest = std::max(longest, r.io.size());
+  CHECK(longest > 3);
+  const auto r = devices::replay(log);
+  CHECK(r.identical);
+  CHECK(r.steps == 60);
+  // An edited odometry is caught.
+  auto lines = lines_of(log);
+  const auto at = lines[30].find("\"odo\":[");
+  REQUIRE(at != std::string::npos);
+  lines[30].insert(at + 7, "1");
+  const auto edited = dir.file("edited.jsonl");
+  write_lines(edited, lines);
+  CHECK_FALSE(devices::replay(edited).identical);
+}
+
 TEST_CASE("epuck2: --watchdog ends a run whose robot went silent before the tries run out",
           "[devices]") {
   TempDir dir;
