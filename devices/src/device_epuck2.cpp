@@ -259,7 +259,8 @@ public:
         {DeviceOption::ControlPeriod, detail::kPeriodWhat},
         {DeviceOption::Fault, "faults the emulator injects (emulator.hpp: those of the serial "
                               "robots, and unterminated, a sequence's lost 0)"},
-        {DeviceOption::Pacing, "", "is not supported by the epuck2 emulator yet"},
+        {DeviceOption::Pacing, "the emulator's answers paced: the command latency, then the "
+                               "bytes at 115 200 baud 8N1"},
         {DeviceOption::ListenAddress, detail::kListenWhat},
     };
     return kOptions;
@@ -295,7 +296,8 @@ public:
   [[nodiscard]] EmulateReport
   serve(const EmulateOptions& o,
         const std::function<void(const std::string&)>& ready) const override {
-    const EmulatorOptions options = detail::emulator_options(o);
+    EmulatorOptions options = detail::emulator_options(o);
+    options.pace = o.pace;
     std::optional<TcpListener> listener = detail::listen_for(o);
     epuck2::Emulator emulator(o.walls, options);
     return detail::serve_emulator(emulator, listener, ready, emulator.body());
