@@ -231,12 +231,23 @@ public:
 
   [[nodiscard]] std::span<const DeclaredOption> options() const noexcept override {
     static constexpr DeclaredOption kOptions[] = {
-        {DeviceOption::ArenaSpec, detail::kArenaWhat},
-        {DeviceOption::ControlPeriod, detail::kPeriodWhat},
-        {DeviceOption::Fault, "faults the emulator injects (emulator.hpp: those of the serial "
-                              "robots, and unterminated, a sequence's lost 0)"},
-        {DeviceOption::Pacing, "", "is not supported by the epuck2 emulator yet"},
-        {DeviceOption::ListenAddress, detail::kListenWhat},
+        detail::kRecordArena,
+        detail::record_period("0, as fast as the link allows"),
+        detail::kEmulateArena,
+        {.name = "fault",
+         .word = "fault",
+         .use = OptionUse::Emulate,
+         .type = OptionType::Texts,
+         .label = "F",
+         .what = "a fault the emulator injects: those of the serial robots (delay=P:MS, "
+                 "garbage=P, drop=P, cut=P, disconnect=N, silent=N) and unterminated=P, a "
+                 "sequence's lost 0"},
+        {.name = "pace",
+         .word = "pacing",
+         .use = OptionUse::Emulate,
+         .type = OptionType::Switch,
+         .refused = "is not supported by the epuck2 emulator yet"},
+        detail::kEmulateListen,
     };
     return kOptions;
   }
@@ -253,11 +264,11 @@ public:
     run.header.controller = spec.name;
     run.header.params = spec.params;
     run.header.seed = spec.seed;
-    run.header.arena = o.arena;
+    run.header.arena = o.device_options.text("arena").value_or("");
     run.line = o.line ? *o.line : line();
     run.steps = o.steps ? *o.steps : 1000;
     const std::chrono::nanoseconds period =
-        o.period ? std::chrono::nanoseconds(*o.period) : std::chrono::nanoseconds(0);
+        std::chrono::milliseconds(o.device_options.integer("period").value_or(0));
     run.connect = [period, spec](SerialPort port, const LinkOptions& link) {
       return std::make_unique<Epuck2Session>(std::move(port), link, make_controller(spec), period);
     };
