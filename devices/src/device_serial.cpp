@@ -93,7 +93,7 @@ public:
         detail::kEmulateListen};
     static constexpr DeclaredOption kModelled[] = {
         detail::kRecordArena,
-        detail::record_period("the motion model's period (the Hemisson: 112 ms)"),
+        detail::record_period("the motion model's period, 112 ms"),
         detail::kEmulateArena,
         kFault,
         kPace,
