@@ -18,9 +18,9 @@
 // position.
 #include "buffon_options.hpp"
 #include "commands.hpp"
+#include "device_flags.hpp"
 #include "output.hpp"
 
-#include <antkit/algorithms/options.hpp>
 #include <antkit/commands/options.hpp>
 #include <antkit/devices/device.hpp>
 #include <antkit/geometry/arena_spec.hpp>
@@ -38,43 +38,26 @@ using antkit::kernel::InputError;
 
 struct EmulateCommand {
   std::string robot;
-  std::string arena = "standard";
   std::uint64_t seed = 1;
-  std::vector<std::string> faults;
-  bool pace = false;
-  std::string listen;
   Format format = Format::Table;
-  std::string map, start;
-  std::int64_t heading = 1, noise = 0, dark_offset = 12, rotation_error = 0, drift = 0, fade_s = 0;
-  CLI::Option *arena_opt = nullptr, *listen_opt = nullptr, *heading_opt = nullptr,
-              *noise_opt = nullptr, *dark_opt = nullptr, *fade_opt = nullptr,
-              *rotation_opt = nullptr, *drift_opt = nullptr;
+  antkit::cli::DeviceFlags device_flags; // the chosen device's own options (its declarations)
 };
-
-template <class T>
-std::optional<T> given(const CLI::Option* opt, const T& value) {
-  return opt->count() > 0 ? std::optional<T>(value) : std::nullopt;
-}
 
 void run(const EmulateCommand& c) {
   devices::EmulateOptions o;
   o.seed = c.seed;
-  o.arena = given(c.arena_opt, c.arena);
-  const auto arena = antkit::commands::is_wkt_path(c.arena)
-                         ? antkit::geometry::read_wkt_file(c.arena)
-                         : antkit::geometry::build_arena_spec(c.arena, "--arena").arena;
-  o.walls = arena.walls_fx();
-  o.faults = c.faults;
-  o.pace = c.pace;
-  o.listen = given(c.listen_opt, c.listen);
-  if (!c.map.empty()) o.map = c.map;
-  if (!c.start.empty()) o.start = antkit::algorithms::parse_cell("--start", c.start);
-  o.heading = given(c.heading_opt, c.heading);
-  o.noise = given(c.noise_opt, c.noise);
-  o.dark_offset = given(c.dark_opt, c.dark_offset);
-  o.fade_s = given(c.fade_opt, c.fade_s);
-  o.rotation_error = given(c.rotation_opt, c.rotation_error);
-  o.drift = given(c.drift_opt, c.drift);
+  // The device's own options, read and checked against its declarations (device_options.hpp).
+  o.device_options =
+      devices::parse_device_options(devices::device(c.robot, "robot"), devices::OptionUse::Emulate,
+                                    antkit::cli::given_device_options(c.device_flags));
+  // The robots of an arena: its walls (the devices do not read arena specs or WKT files).
+  const auto arena_text = o.device_options.text("arena");
+  if (arena_text) {
+    const auto arena = antkit::commands::is_wkt_path(*arena_text)
+                           ? antkit::geometry::read_wkt_file(*arena_text)
+                           : antkit::geometry::build_arena_spec(*arena_text, "--arena").arena;
+    o.walls = arena.walls_fx();
+  }
   const auto r = devices::emulate(c.robot, o, [](const std::string& port) {
     std::cout << port << std::endl; // the first line, flushed: clients wait for it
   });
@@ -85,13 +68,13 @@ void run(const EmulateCommand& c) {
   j["commands"] = r.commands;
   if (!r.listen.empty()) j["listen"] = r.listen;
   if (r.position) { // a body in an arena
-    j["arena"] = c.arena;
+    j["arena"] = arena_text.value_or("");
     j["faults"] = r.faults;
     j["periods"] = *r.periods;
     j["position"] = {r.position->first, r.position->second};
   }
   if (r.start) { // a robot on a floor map
-    j["map"] = c.map;
+    j["map"] = o.device_options.text("map").value_or("");
     j["start"] = {r.start->x, r.start->y};
     j["frames"] = r.frames;
     j["positions"] = r.positions;
@@ -114,52 +97,21 @@ void register_emulate(CLI::App& app) {
                  "marker-floor robot, its camera frames rendered); prints the pty path (or "
                  "tcp:HOST:PORT) on the first line");
   sub->add_option("robot", o->robot, "The robot: " + antkit::devices::device_names())->required();
-  o->arena_opt = sub->add_option(
-      "--arena", o->arena, "A named arena spec or FILE.wkt, in body diameters (default standard)");
   sub->add_option("--seed", o->seed,
                   "Seed of the emulator's keyed streams (start, faults; stc-floor: noise)");
-  sub->add_option("--fault", o->faults,
-                  "A fault: delay=P:MS, garbage=P, drop=P, cut=P (P per command) or "
-                  "disconnect=N (after N commands) or silent=N (no answer after N commands); may "
-                  "be repeated");
-  sub->add_flag("--pace", o->pace, "Pace replies at the robot's baud rate and command latency");
-  o->listen_opt = sub->add_option("--listen", o->listen,
-                                  "Serve over TCP on HOST:PORT instead of a pty (PORT 0: any free "
-                                  "port; one client at a time); prints tcp:HOST:PORT first");
-  sub->add_option("--map", o->map, "stc-floor: the map (MovingAI, ROS, ASCII)");
-  sub->add_option("--start", o->start, "stc-floor: the start sub-cell X,Y (default as antkit stc)");
-  o->heading_opt =
-      sub->add_option("--heading", o->heading, "stc-floor: heading at the start, 0 E 1 N 2 W 3 S");
-  o->noise_opt = sub->add_option("--noise", o->noise,
-                                 "stc-floor: camera noise, uniform +-A per channel (0-255)");
-  o->dark_opt = sub->add_option("--dark-offset", o->dark_offset,
-                                "stc-floor: dark-current pattern, 0..A per pixel (default 12)");
-  o->fade_opt = sub->add_option(
-      "--fade", o->fade_s, "stc-floor: half-life of the marks' glow in seconds (0: no fading)");
-  o->rotation_opt = sub->add_option("--rotation-error", o->rotation_error,
-                                    "stc-floor: turn rate against nominal, ppm");
-  o->drift_opt = sub->add_option(
-      "--drift", o->drift, "stc-floor: the turn rate falls by this many ppm a minute (battery)");
   antkit::cli::add_format_option(*sub, o->format);
-  sub->footer(devices::options_by_device(devices::OptionUse::Emulate,
-                                         antkit::cli::registry().at("emulate").flags));
+  // The device's own options: flags from every device's declarations, --help from the chosen
+  // device's (`antkit emulate epuck2 --help`).
+  antkit::cli::add_device_flags(*sub, o->device_flags, devices::OptionUse::Emulate,
+                                antkit::cli::registry().at("emulate").flags);
+  sub->footer([o] {
+    return antkit::cli::device_options_footer(o->robot, devices::OptionUse::Emulate, "emulate");
+  });
   sub->callback([o] { run(*o); });
 }
 
 // devices::emulate()'s words for its inputs (device.hpp, emulator.hpp), as this command's options.
-const antkit::cli::Registration emulate_registration{"emulate",
-                                                     &register_emulate,
-                                                     {{"arena spec", "--arena"},
-                                                      {"fault", "--fault"},
-                                                      {"pacing", "--pace"},
-                                                      {"listen address", "--listen"},
-                                                      {"floor map", "--map"},
-                                                      {"start sub-cell", "--start"},
-                                                      {"start heading", "--heading"},
-                                                      {"camera noise", "--noise"},
-                                                      {"dark offset", "--dark-offset"},
-                                                      {"fade half-life", "--fade"},
-                                                      {"rotation error", "--rotation-error"},
-                                                      {"drift", "--drift"}}};
+// devices::emulate()'s words for its inputs are each device option's (add_device_flags).
+const antkit::cli::Registration emulate_registration{"emulate", &register_emulate};
 
 } // namespace

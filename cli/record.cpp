@@ -24,6 +24,7 @@
 // another process ("port busy"), or an --out that exists without --force (no log is written).
 // --mcap: the log, once written, also as MCAP (antkit export mcap; devices/mcap_export.hpp).
 #include "commands.hpp"
+#include "device_flags.hpp"
 #include "output.hpp"
 
 #include <antkit/algorithms/options.hpp>
@@ -46,17 +47,15 @@ using antkit::cli::Format;
 using antkit::kernel::InputError;
 
 struct RecordCommand {
-  std::string device, port, controller, out, baud, framing, arena, mcap;
+  std::string device, port, controller, out, baud, framing, mcap;
   bool force = false;
   std::uint64_t seed = 1;
   std::int64_t trial = -1, visit = -1;
   std::vector<std::string> params;
-  std::int64_t steps = 1000, timeout_ms = -1, tries = 12, period_ms = -1, stop_within_ms = 10000;
+  std::int64_t steps = 1000, timeout_ms = -1, tries = 12, stop_within_ms = 10000;
   Format format = Format::Table;
-  // stc-floor
-  std::string map, start, calibration;
-  std::int32_t heading = 1, turn_ms = 1500, led_ms = 2000;
-  CLI::Option *steps_opt = nullptr, *heading_opt = nullptr, *turn_opt = nullptr, *led_opt = nullptr;
+  CLI::Option* steps_opt = nullptr;
+  antkit::cli::DeviceFlags device_flags; // the chosen device's own options (its declarations)
 };
 
 // The line (the device's, with --baud and --framing over it) and the link from --timeout and
@@ -85,12 +84,13 @@ void run(const RecordCommand& c) {
   devices::RecordOptions o;
   o.device = c.device;
   o.port = c.port;
+  // The device's own options, read and checked against its declarations (device_options.hpp).
+  o.device_options =
+      devices::parse_device_options(devices::device(c.device, "device"), devices::OptionUse::Record,
+                                    antkit::cli::given_device_options(c.device_flags));
   devices::Params given;
   if (c.trial >= 0) given.emplace_back("trial", c.trial);
   if (c.visit >= 0) given.emplace_back("visit", c.visit);
-  if (c.heading_opt->count() > 0) given.emplace_back("heading", c.heading);
-  if (c.turn_opt->count() > 0) given.emplace_back("quarter_turn_ms", c.turn_ms);
-  if (c.led_opt->count() > 0) given.emplace_back("led_ms", c.led_ms);
   for (const auto& p : c.params) {
     const auto eq = p.find('=');
     if (eq == std::string::npos || eq == 0)
@@ -102,17 +102,11 @@ void run(const RecordCommand& c) {
   if (c.steps_opt->count() > 0) o.steps = c.steps;
   o.out = c.out;
   o.force = c.force;
-  o.arena = c.arena;
-  if (c.period_ms < -1 || c.period_ms > 60000)
-    throw InputError("--period", "expected milliseconds in [0, 60000]");
-  if (c.period_ms >= 0) o.period = std::chrono::milliseconds(c.period_ms);
-  o.map = c.map;
-  if (!c.start.empty()) o.start = antkit::algorithms::parse_cell("--start", c.start);
-  o.calibration = c.calibration;
   line_and_link(c, o);
   // The arena goes into the log's header for buffon-from-logs: a spec that names no arena would
   // make both visits unusable later, so it is refused now (as emulate refuses it).
-  if (!c.arena.empty()) (void)antkit::commands::arena_spec_area(c.arena, "--arena");
+  if (const auto arena = o.device_options.text("arena"))
+    (void)antkit::commands::arena_spec_area(*arena, "--arena");
 
   const bool live = ::isatty(STDERR_FILENO) == 1;
   const auto r = antkit::experiments::record_run(o, [live](std::int64_t step, std::int64_t steps) {
@@ -185,19 +179,6 @@ void register_record(CLI::App& app) {
       ->required();
   sub->add_option("--controller", c->controller, "buffon, rs or wander; stc-floor: ant or ant-edge")
       ->required();
-  sub->add_option("--map", c->map,
-                  "stc-floor: the map, for the start, reachable_subcells and the tour hash");
-  sub->add_option("--start", c->start, "stc-floor: the start sub-cell X,Y (default as antkit stc)");
-  c->heading_opt =
-      sub->add_option("--heading", c->heading,
-                      "stc-floor: heading at the start, 0 E 1 N 2 W 3 S (--param heading)");
-  sub->add_option("--calibration", c->calibration,
-                  "stc-floor: the camera's calibration file (antkit stc-floor-calibrate)");
-  c->turn_opt = sub->add_option("--turn-ms", c->turn_ms,
-                                "stc-floor: the first time T of a quarter turn (--param "
-                                "quarter_turn_ms)");
-  c->led_opt = sub->add_option("--led-ms", c->led_ms,
-                               "stc-floor: LED time before each forward move (--param led_ms)");
   sub->add_option("--seed", c->seed, "Seed of the controller's keyed streams (default 1)");
   sub->add_option("--trial", c->trial, "The controller's trial number (default 0)");
   sub->add_option("--visit", c->visit, "buffon: visit 1 (lay the trail) or 2 (count crossings)");
@@ -213,18 +194,18 @@ void register_record(CLI::App& app) {
                   "again gives up at once)");
   sub->add_option("--tries", c->tries,
                   "Sends of a command before giving up (default 12, see devices/link.hpp)");
-  sub->add_option("--period", c->period_ms,
-                  "Shortest time between sensor reads in ms (default 0, as fast as the link; the "
-                  "Hemisson: the motion model's period, 112 ms)");
   sub->add_option("--out", c->out, "The log to write (JSON Lines); an existing file is refused")
       ->required();
   sub->add_flag("--force", c->force, "Replace --out if it exists");
   sub->add_option("--mcap", c->mcap, "Also write the log as MCAP (for Foxglove) when the run ends");
-  sub->add_option("--arena", c->arena,
-                  "The arena the robot runs in (an emulator's spec), for the log's header");
   antkit::cli::add_format_option(*sub, c->format);
-  sub->footer(devices::options_by_device(devices::OptionUse::Record,
-                                         antkit::cli::registry().at("record").flags));
+  // The device's own options: flags from every device's declarations, --help from the chosen
+  // device's (`antkit record --device epuck2 --help`).
+  antkit::cli::add_device_flags(*sub, c->device_flags, devices::OptionUse::Record,
+                                antkit::cli::registry().at("record").flags);
+  sub->footer([c] {
+    return antkit::cli::device_options_footer(c->device, devices::OptionUse::Record, "record");
+  });
   sub->callback([c] { run(*c); });
 }
 
@@ -240,11 +221,6 @@ const antkit::cli::Registration record_registration{
      {"controller parameter heading", "--param heading"},
      {"controller parameter quarter_turn_ms", "--param quarter_turn_ms"},
      {"controller parameter led_ms", "--param led_ms"},
-     {"steps", "--steps"},
-     {"control period", "--period"},
-     {"arena spec", "--arena"},
-     {"floor map", "--map"},
-     {"start sub-cell", "--start"},
-     {"camera calibration", "--calibration"}}};
+     {"steps", "--steps"}}}; // and each device option's word (add_device_flags)
 
 } // namespace

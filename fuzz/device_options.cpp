@@ -55,7 +55,8 @@ void device_line(const std::string& line) {
   o.device = words[0];
   o.controller.name = words[1];
   if (!params_of(words, 2, o.controller.params)) return;
-  o.start = antkit::kernel::Cell{0, 0}; // the marker-floor robot needs one without a map
+  o.device_options.set(
+      "start", antkit::kernel::Cell{0, 0}); // the marker-floor robot needs one without a map
   o.port = "/nonexistent/port";
   o.out = "/nonexistent/log.jsonl";
   try {

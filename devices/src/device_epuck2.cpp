@@ -255,13 +255,24 @@ public:
 
   [[nodiscard]] std::span<const DeclaredOption> options() const noexcept override {
     static constexpr DeclaredOption kOptions[] = {
-        {DeviceOption::ArenaSpec, detail::kArenaWhat},
-        {DeviceOption::ControlPeriod, detail::kPeriodWhat},
-        {DeviceOption::Fault, "faults the emulator injects (emulator.hpp: those of the serial "
-                              "robots, and unterminated, a sequence's lost 0)"},
-        {DeviceOption::Pacing, "the emulator's answers paced: the command latency, then the "
-                               "bytes at 115 200 baud 8N1"},
-        {DeviceOption::ListenAddress, detail::kListenWhat},
+        detail::kRecordArena,
+        detail::record_period("0, as fast as the link allows"),
+        detail::kEmulateArena,
+        {.name = "fault",
+         .word = "fault",
+         .use = OptionUse::Emulate,
+         .type = OptionType::Texts,
+         .label = "F",
+         .what = "a fault the emulator injects: those of the serial robots (delay=P:MS, "
+                 "garbage=P, drop=P, cut=P, disconnect=N, silent=N) and unterminated=P, a "
+                 "sequence's lost 0"},
+        {.name = "pace",
+         .word = "pacing",
+         .use = OptionUse::Emulate,
+         .type = OptionType::Switch,
+         .what = "pace the emulator's answers: the command latency, then the bytes at 115 200 "
+                 "baud 8N1"},
+        detail::kEmulateListen,
     };
     return kOptions;
   }
@@ -275,11 +286,11 @@ public:
     run.header.controller = spec.name;
     run.header.params = spec.params;
     run.header.seed = spec.seed;
-    run.header.arena = o.arena;
+    run.header.arena = o.device_options.text("arena").value_or("");
     run.line = o.line ? *o.line : line();
     run.steps = o.steps ? *o.steps : 1000;
     const std::chrono::nanoseconds period =
-        o.period ? std::chrono::nanoseconds(*o.period) : std::chrono::nanoseconds(0);
+        std::chrono::milliseconds(o.device_options.integer("period").value_or(0));
     const bool wander = spec.name == "wander";
     run.connect = [period, spec, wander](SerialPort port, const LinkOptions& link) {
       return std::make_unique<Epuck2Session>(std::move(port), link, make_controller(spec), wander,
@@ -297,7 +308,7 @@ public:
   serve(const EmulateOptions& o,
         const std::function<void(const std::string&)>& ready) const override {
     EmulatorOptions options = detail::emulator_options(o);
-    options.pace = o.pace;
+    options.pace = o.device_options.on("pace");
     std::optional<TcpListener> listener = detail::listen_for(o);
     epuck2::Emulator emulator(o.walls, options);
     return detail::serve_emulator(emulator, listener, ready, emulator.body());

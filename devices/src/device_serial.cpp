@@ -67,16 +67,39 @@ public:
   }
 
   [[nodiscard]] std::span<const DeclaredOption> options() const noexcept override {
-    static constexpr DeclaredOption kOptions[] = {
-        {DeviceOption::ArenaSpec, detail::kArenaWhat},
-        {DeviceOption::ControlPeriod, detail::kPeriodWhat},
-        {DeviceOption::Fault, "faults the emulator injects (emulator.hpp: delay, garbage, drop, "
-                              "cut, disconnect, silent)"},
-        {DeviceOption::Pacing, "the emulator's replies paced at the baud rate and the robot's "
-                               "command latency"},
-        {DeviceOption::ListenAddress, detail::kListenWhat},
-    };
-    return kOptions;
+    // One list for the robots that read their wheel counters, one for those that do not (their
+    // period's default is the motion model's).
+    static constexpr DeclaredOption kFault{
+        .name = "fault",
+        .word = "fault",
+        .use = OptionUse::Emulate,
+        .type = OptionType::Texts,
+        .label = "F",
+        .what = "a fault the emulator injects: delay=P:MS, garbage=P, drop=P, cut=P (P per "
+                "command), disconnect=N (after N commands) or silent=N (no answer after N "
+                "commands)"};
+    static constexpr DeclaredOption kPace{
+        .name = "pace",
+        .word = "pacing",
+        .use = OptionUse::Emulate,
+        .type = OptionType::Switch,
+        .what = "pace the emulator's replies at the robot's baud rate and command latency"};
+    static constexpr DeclaredOption kCounted[] = {
+        detail::kRecordArena,
+        detail::record_period("0, as fast as the link allows"),
+        detail::kEmulateArena,
+        kFault,
+        kPace,
+        detail::kEmulateListen};
+    static constexpr DeclaredOption kModelled[] = {
+        detail::kRecordArena,
+        detail::record_period("the motion model's period, 112 ms"),
+        detail::kEmulateArena,
+        kFault,
+        kPace,
+        detail::kEmulateListen};
+    if (describe(robot_).has_odometry) return kCounted;
+    return kModelled;
   }
 
   [[nodiscard]] PreparedRun prepare_run(const RecordOptions& o) const override {
@@ -89,11 +112,13 @@ public:
     run.header.controller = spec.name;
     run.header.params = spec.params;
     run.header.seed = spec.seed;
-    run.header.arena = o.arena;
+    run.header.arena = o.device_options.text("arena").value_or("");
     run.line = o.line ? *o.line : line();
     run.steps = o.steps ? *o.steps : 1000;
+    const auto period_ms = o.device_options.integer("period");
     const std::chrono::nanoseconds period =
-        o.period ? std::chrono::nanoseconds(*o.period) : default_period(robot);
+        period_ms ? std::chrono::nanoseconds(std::chrono::milliseconds(*period_ms))
+                  : default_period(robot);
     const bool wander = spec.name == "wander";
     const RobotKind kind = robot_;
     run.connect = [kind, period, wander, spec](SerialPort port, const LinkOptions& link) {
@@ -115,7 +140,7 @@ public:
     if (options.faults.unterminated_ppm > 0)
       throw kernel::InputError("fault", "unterminated=P is a fault of the epuck2's binary "
                                         "sequences (the text robots' lines have no 0 to lose)");
-    options.pace = o.pace;
+    options.pace = o.device_options.on("pace");
     std::optional<TcpListener> listener = detail::listen_for(o);
     FirmwareEmulator emulator(robot_, o.walls, options);
     return detail::serve_emulator(emulator, listener, ready, emulator);

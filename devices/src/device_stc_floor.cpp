@@ -285,31 +285,143 @@ public:
 
   [[nodiscard]] std::span<const DeclaredOption> options() const noexcept override {
     static constexpr DeclaredOption kOptions[] = {
-        {DeviceOption::FloorMap, "the floor's map (MovingAI, ROS, ASCII): the start, "
-                                 "reachable_subcells and the tour hash"},
-        {DeviceOption::StartSubCell, "the start sub-cell X,Y (default: the map's, else as antkit "
-                                     "stc; record without a map needs it)"},
-        {DeviceOption::CameraCalibration, "the camera's calibration file (antkit "
-                                          "stc-floor-calibrate; default: the ideal one)"},
-        {DeviceOption::StartHeading, "the heading at the start, 0 E 1 N 2 W 3 S (default 1)"},
-        {DeviceOption::CameraNoise, "camera noise, uniform +-A per channel (0-255)"},
-        {DeviceOption::DarkOffset, "dark-current pattern, 0..A per pixel (default 12)"},
-        {DeviceOption::FadeHalfLife, "half-life of the marks' glow in seconds (0: no fading)"},
-        {DeviceOption::RotationError, "turn rate against nominal, ppm"},
-        {DeviceOption::Drift, "the turn rate falls by this many ppm a minute (battery)"},
-        {DeviceOption::ListenAddress, "",
-         "the stc-floor emulator serves a pty (its frames are too large for one reply over the "
-         "Webots relay)"},
+        // record
+        {.name = "map",
+         .word = "floor map",
+         .use = OptionUse::Record,
+         .label = "FILE",
+         .what = "the floor's map (MovingAI, ROS, ASCII): the start, reachable_subcells and the "
+                 "tour hash"},
+        {.name = "start",
+         .word = "start sub-cell",
+         .use = OptionUse::Record,
+         .type = OptionType::SubCell,
+         .what = "the start sub-cell X,Y (default: the map's, else as antkit stc; without --map "
+                 "it must be given)"},
+        {.name = "calibration",
+         .word = "camera calibration",
+         .use = OptionUse::Record,
+         .default_note = "the ideal calibration",
+         .label = "F.json",
+         .what = "the camera's calibration file (antkit stc-floor-calibrate)"},
+        // The controller's parameters by flags of their own (--param KEY=VALUE gives them too:
+        // their defaults are the controller's).
+        {.name = "heading",
+         .word = "start heading",
+         .use = OptionUse::Record,
+         .type = OptionType::Integer,
+         .min = 0,
+         .max = 3,
+         .default_note = "1",
+         .label = "D",
+         .what = "the heading at the start, 0 E 1 N 2 W 3 S (--param heading)"},
+        {.name = "turn-ms",
+         .word = "quarter-turn time",
+         .use = OptionUse::Record,
+         .type = OptionType::Integer,
+         .min = 1,
+         .max = kMaxTurnMs,
+         .default_note = "1500",
+         .label = "T",
+         .what = "the first time T of a quarter turn, in ms (--param quarter_turn_ms)"},
+        {.name = "led-ms",
+         .word = "LED time",
+         .use = OptionUse::Record,
+         .type = OptionType::Integer,
+         .min = 0,
+         .max = kMaxLedMs,
+         .default_note = "2000",
+         .label = "L",
+         .what = "LED time before each forward move, in ms (--param led_ms)"},
+        // emulate
+        {.name = "map",
+         .word = "floor map",
+         .use = OptionUse::Emulate,
+         .label = "FILE",
+         .what = "the floor's map (MovingAI, ROS, ASCII); the emulator needs one"},
+        {.name = "start",
+         .word = "start sub-cell",
+         .use = OptionUse::Emulate,
+         .type = OptionType::SubCell,
+         .what = "the start sub-cell X,Y (default: the map's, else as antkit stc)"},
+        {.name = "heading",
+         .word = "start heading",
+         .use = OptionUse::Emulate,
+         .type = OptionType::Integer,
+         .min = 0,
+         .max = 3,
+         .fallback = "1",
+         .label = "D",
+         .what = "the heading at the start, 0 E 1 N 2 W 3 S"},
+        {.name = "noise",
+         .word = "camera noise",
+         .use = OptionUse::Emulate,
+         .type = OptionType::Integer,
+         .min = 0,
+         .max = 255,
+         .fallback = "0",
+         .label = "A",
+         .what = "camera noise, uniform +-A per channel"},
+        {.name = "dark-offset",
+         .word = "dark offset",
+         .use = OptionUse::Emulate,
+         .type = OptionType::Integer,
+         .min = 0,
+         .max = 255,
+         .fallback = "12",
+         .label = "A",
+         .what = "dark-current pattern, 0..A per pixel"},
+        {.name = "fade",
+         .word = "fade half-life",
+         .use = OptionUse::Emulate,
+         .type = OptionType::Integer,
+         .min = 0,
+         .max = 86400,
+         .fallback = "0",
+         .label = "S",
+         .what = "half-life of the marks' glow in seconds (0: no fading)"},
+        {.name = "rotation-error",
+         .word = "rotation error",
+         .use = OptionUse::Emulate,
+         .type = OptionType::Integer,
+         .min = -500000,
+         .max = 500000,
+         .fallback = "0",
+         .label = "PPM",
+         .what = "turn rate against nominal, ppm"},
+        {.name = "drift",
+         .word = "drift",
+         .use = OptionUse::Emulate,
+         .type = OptionType::Integer,
+         .min = 0,
+         .max = 1000000,
+         .fallback = "0",
+         .label = "PPM",
+         .what = "the turn rate falls by this many ppm a minute (battery)"},
+        {.name = "listen",
+         .word = "listen address",
+         .use = OptionUse::Emulate,
+         .refused = "the stc-floor emulator serves a pty (its frames are too large for one reply "
+                    "over the Webots relay)"},
     };
     return kOptions;
   }
 
   [[nodiscard]] PreparedRun prepare_run(const RecordOptions& o) const override {
-    PilotOptions pilot = pilot_options(o.controller);
+    // The controller's parameters given by flags of their own join those of --param (one given
+    // both ways is refused as given twice).
+    ControllerSpec spec = o.controller;
+    const DeviceValues& v = o.device_options;
+    for (const auto& [flag, param] :
+         {std::pair{"heading", "heading"}, std::pair{"turn-ms", "quarter_turn_ms"},
+          std::pair{"led-ms", "led_ms"}})
+      if (const auto value = v.integer(flag)) spec.params.emplace_back(param, *value);
+    PilotOptions pilot = pilot_options(spec);
     std::shared_ptr<const MapPlace> map;
-    if (!o.map.empty()) map = std::make_shared<const MapPlace>(read_map_place(o.map));
-    if (o.start)
-      pilot.start = *o.start;
+    if (const auto file = v.text("map"))
+      map = std::make_shared<const MapPlace>(read_map_place(*file));
+    if (const auto given = v.cell("start"))
+      pilot.start = *given;
     else if (map && map->start)
       pilot.start = *map->start;
     else if (map) {
@@ -324,8 +436,9 @@ public:
     }
     if (pilot.start.x < 0 || pilot.start.y < 0)
       throw kernel::InputError("start sub-cell", "expected a sub-cell X,Y >= 0");
+    const auto calibration_file = v.text("calibration");
     const Calibration calibration =
-        o.calibration.empty() ? ideal_calibration() : read_calibration(o.calibration);
+        calibration_file ? read_calibration(*calibration_file) : ideal_calibration();
     PreparedRun run;
     run.header.robot = "stc-floor";
     run.header.controller = std::string(stc::variant_name(pilot.controller));
@@ -358,11 +471,13 @@ public:
   [[nodiscard]] EmulateReport
   serve(const EmulateOptions& o,
         const std::function<void(const std::string&)>& ready) const override {
-    if (!o.map) throw kernel::InputError("floor map", "stc-floor needs a map (--map FILE)");
-    const MapPlace map = read_map_place(*o.map);
+    const DeviceValues& v = o.device_options;
+    const auto map_file = v.text("map");
+    if (!map_file) throw kernel::InputError("floor map", "stc-floor needs a map (--map FILE)");
+    const MapPlace map = read_map_place(*map_file);
     stc::SubCell start{};
-    if (o.start)
-      start = *o.start;
+    if (const auto given = v.cell("start"))
+      start = *given;
     else if (map.start)
       start = *map.start;
     else if (const auto s = stc::default_start(map.cells, stc::Variant::AntEdge))
@@ -370,24 +485,19 @@ public:
     else
       throw kernel::InputError(map.file,
                                "the map has no free cell (2 x 2 free sub-cells) to start in");
-    // The floor's own ranges (FloorWorld) decide; here only what fits its fields.
-    const auto in = [](const std::optional<std::int64_t>& v, std::int64_t fallback,
-                       const char* input) {
-      const std::int64_t x = v.value_or(fallback);
-      if (x < INT32_MIN || x > INT32_MAX) throw kernel::InputError(input, "out of range");
-      return static_cast<std::int32_t>(x);
+    // The declared ranges (options()) hold: each fits its field, and the floor's own ranges
+    // (FloorWorld) are the same.
+    const auto in = [&v](std::string_view name) {
+      return static_cast<std::int32_t>(v.integer(name).value());
     };
     FloorOptions f;
     f.seed = o.seed;
-    f.noise = in(o.noise, 0, "camera noise");
-    f.dark_offset = in(o.dark_offset, 12, "dark offset");
-    const std::int64_t fade_s = o.fade_s.value_or(0);
-    if (fade_s < 0 || fade_s > 86400)
-      throw kernel::InputError("fade half-life", "expected 0 to 86400 seconds");
-    f.fade_half_life_ms = fade_s * 1000;
-    f.rotation_error_ppm = in(o.rotation_error, 0, "rotation error");
-    f.drift_ppm_per_minute = in(o.drift, 0, "drift");
-    const int heading = in(o.heading, 1, "start heading");
+    f.noise = in("noise");
+    f.dark_offset = in("dark-offset");
+    f.fade_half_life_ms = std::int64_t{in("fade")} * 1000;
+    f.rotation_error_ppm = in("rotation-error");
+    f.drift_ppm_per_minute = in("drift");
+    const int heading = in("heading");
     FloorEmulator emulator(map.cells, start, heading, f);
     Pty pty = Pty::open();
     ready(pty.slave_path());

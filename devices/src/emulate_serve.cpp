@@ -6,15 +6,15 @@ namespace antkit::devices::detail {
 EmulatorOptions emulator_options(const EmulateOptions& o) {
   EmulatorOptions options;
   options.seed = o.seed;
-  options.faults = parse_faults(o.faults);
+  options.faults = parse_faults(o.device_options.texts("fault"));
   return options;
 }
 
 std::optional<TcpListener> listen_for(const EmulateOptions& o) {
   std::optional<TcpListener> listener;
-  if (o.listen)
-    listener.emplace(TcpListener::listen(parse_tcp_endpoint(*o.listen, "listen address", true),
-                                         "listen address"));
+  if (const auto listen = o.device_options.text("listen"))
+    listener.emplace(
+        TcpListener::listen(parse_tcp_endpoint(*listen, "listen address", true), "listen address"));
   return listener;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // What every firmware emulator's Device::serve() does around its emulator (device_serial.cpp,
-// device_epuck2.cpp; internal): take the seed and the faults, open the TCP listener when --listen
-// asks for one, serve until SIGINT / SIGTERM, and report what was served.
+// device_epuck2.cpp; internal): the options they declare alike, take the seed and the faults, open
+// the TCP listener when --listen asks for one, serve until SIGINT / SIGTERM, and report what was
+// served.
 #include <antkit/devices/device.hpp>
 #include <antkit/devices/emulator.hpp>
 #include <antkit/devices/serial.hpp>
@@ -11,16 +12,45 @@
 
 namespace antkit::devices::detail {
 
-// What the robots of an arena (the serial robots, the epuck2) declare of their shared options
-// (Device::options()).
-inline constexpr std::string_view kArenaWhat =
-    "the arena it runs in, a named spec (emulate: or FILE.wkt); record writes it into the log's "
-    "header for buffon-from-logs";
-inline constexpr std::string_view kPeriodWhat =
-    "the shortest time between two sensor reads, in milliseconds (the Hemisson's default: the "
-    "motion model's period)";
-inline constexpr std::string_view kListenWhat =
-    "serve the emulator over TCP on HOST:PORT instead of a pty";
+// The options of the robots of an arena (the serial robots, the epuck2) that they declare alike
+// (Device::options()): record's arena and period, emulate's arena and listen address.
+// `period_default` says what the robot does without --period.
+inline constexpr DeclaredOption kRecordArena{
+    .name = "arena",
+    .word = "arena spec",
+    .use = OptionUse::Record,
+    .type = OptionType::Text,
+    .label = "SPEC",
+    .what = "the arena it runs in (an emulator's spec), written into the log's header for "
+            "buffon-from-logs"};
+constexpr DeclaredOption record_period(std::string_view period_default) {
+  return {.name = "period",
+          .word = "control period",
+          .use = OptionUse::Record,
+          .type = OptionType::Integer,
+          .min = 0,
+          .max = 60000,
+          .default_note = period_default,
+          .label = "MS",
+          .what = "the shortest time between two sensor reads, in milliseconds (0: as fast as "
+                  "the link allows)"};
+}
+inline constexpr DeclaredOption kEmulateArena{
+    .name = "arena",
+    .word = "arena spec",
+    .use = OptionUse::Emulate,
+    .type = OptionType::Text,
+    .fallback = "standard",
+    .label = "SPEC|F.wkt",
+    .what = "the arena the body is simulated in: a named spec or a WKT file, in body diameters"};
+inline constexpr DeclaredOption kEmulateListen{
+    .name = "listen",
+    .word = "listen address",
+    .use = OptionUse::Emulate,
+    .type = OptionType::Text,
+    .label = "HOST:PORT",
+    .what = "serve over TCP on HOST:PORT instead of a pty (PORT 0: any free port; one client "
+            "at a time); prints tcp:HOST:PORT first"};
 // The seed and the parsed --fault specs (parse_faults' InputError on a bad one).
 EmulatorOptions emulator_options(const EmulateOptions& o);
 // The listener --listen asks for, bound now (its InputError before any emulator is made).

@@ -390,6 +390,20 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"record --device khepera --port /dev/null --controller buffon --framing 9Z3 --out "
        "{D}/log.jsonl",
        "--framing:", "'9Z3'"},
+      // the devices' own options: out of the declared range, not a number, another device's
+      {"record --device khepera --port /dev/null --controller buffon --period 60001 --out "
+       "{D}/log.jsonl",
+       "--period:", "[0, 60000]"},
+      {"record --device stc-floor --port /dev/null --controller ant --start 0,0 --led-ms -1 --out "
+       "{D}/log.jsonl",
+       "--led-ms:", "[0, 60000]"},
+      {"record --device epuck2 --port /dev/null --controller buffon --map {M} --out {D}/log.jsonl",
+       "--map:", "of the stc-floor robot"},
+      {"emulate stc-floor --map {M} --noise 256", "--noise:", "[0, 255]"},
+      {"emulate stc-floor --map {M} --fade 1.5", "--fade:", "'1.5' is not a whole number"},
+      {"emulate stc-floor --map {M} --start 1", "--start:", "X,Y"},
+      {"emulate epuck2 --pace", "--pace:", "not supported"},
+      {"emulate hemisson --heading 2", "--heading:", "of the stc-floor robot"},
       {"emulate roomba", "robot:", "roomba"},
       {"emulate khepera --fault delay=2:5", "--fault:", "probability"},
       {"emulate khepera --fault '" + bin + "'", "--fault:", "expected delay=P:MS"},

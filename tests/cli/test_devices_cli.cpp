@@ -384,18 +384,104 @@ TEST_CASE("antkit record --device stc-floor: a tour that never closes ends, and 
 
 TEST_CASE("antkit record --help and emulate --help list each device's options, as declared",
           "[cli][devices]") {
+  // Without a device: the common options, and each device with the flags of its own.
   const auto r = run_antkit("record --help");
   REQUIRE(r.status == 0);
-  CHECK(r.out.find("The options of one device or another (the others refuse them):\n"
-                   "  khepera, khepera-webots, hemisson, epuck, epuck2:\n    --arena ") !=
+  CHECK(r.out.find("--controller") != std::string::npos);
+  CHECK(r.out.find("`antkit record --device NAME --help`") != std::string::npos);
+  CHECK(r.out.find("  khepera:        --arena --period\n") != std::string::npos);
+  CHECK(
+      r.out.find("  stc-floor:      --map --start --calibration --heading --turn-ms --led-ms\n") !=
+      std::string::npos);
+  CHECK(r.out.find("in [0, 60000]") == std::string::npos); // one device's details: not here
+  // One device: its own options only, with their values, ranges and defaults.
+  const auto e2 = run_antkit("record --device epuck2 --help");
+  REQUIRE(e2.status == 0);
+  CHECK(e2.out.find("epuck2's own options:\n  --arena SPEC\n") != std::string::npos);
+  CHECK(e2.out.find("  --period MS  (a whole number in [0, 60000]; default 0, as fast as the "
+                    "link allows)\n") != std::string::npos);
+  CHECK(e2.out.find("--map") == std::string::npos);
+  CHECK(e2.out.find("--calibration") == std::string::npos);
+  CHECK(e2.out.find("--heading") == std::string::npos);
+  CHECK(e2.out.find("--port") != std::string::npos); // the common options stay
+  const auto floor = run_antkit("record --device stc-floor --help");
+  REQUIRE(floor.status == 0);
+  CHECK(floor.out.find("  --heading D  (a whole number in [0, 3]; default 1)\n") !=
         std::string::npos);
-  CHECK(r.out.find("  stc-floor:\n    --map ") != std::string::npos);
-  CHECK(r.out.find("    --calibration ") != std::string::npos);
-  const auto e = run_antkit("emulate --help");
-  REQUIRE(e.status == 0);
-  // The e-puck2's emulator does not pace its replies: its paragraph is its own.
-  CHECK(e.out.find("  khepera, khepera-webots, hemisson, epuck:\n    --arena ") !=
+  CHECK(floor.out.find("  --calibration F.json  (default the ideal calibration)\n") !=
         std::string::npos);
-  CHECK(e.out.find("  epuck2:\n    --arena ") != std::string::npos);
-  CHECK(e.out.find("    --drift ") != std::string::npos);
+  CHECK(floor.out.find("--period") == std::string::npos);
+  CHECK(floor.out.find("--arena") == std::string::npos);
+  // The emulators: stc-floor's camera and its refusal of --listen with its reason; the epuck2's
+  // own options.
+  const auto ef = run_antkit("emulate stc-floor --help");
+  REQUIRE(ef.status == 0);
+  CHECK(ef.out.find("  --drift PPM  (a whole number in [0, 1000000]; default 0)\n") !=
+        std::string::npos);
+  CHECK(ef.out.find("Refused by stc-floor:\n  --listen: the stc-floor emulator serves a pty") !=
+        std::string::npos);
+  CHECK(ef.out.find("--fault") == std::string::npos);
+  const auto ee = run_antkit("emulate epuck2 --help");
+  REQUIRE(ee.status == 0);
+  CHECK(ee.out.find("  --fault F  (may be repeated)\n") != std::string::npos);
+  CHECK(ee.out.find("  --pace\n      pace the emulator's answers") != std::string::npos);
+  CHECK(ee.out.find("Refused by epuck2") == std::string::npos);
+  CHECK(ee.out.find("--noise") == std::string::npos);
+  const auto all = run_antkit("emulate --help");
+  REQUIRE(all.status == 0);
+  CHECK(all.out.find("`antkit emulate NAME --help`") != std::string::npos);
+  CHECK(all.out.find("  epuck2:         --arena --fault --pace --listen\n") != std::string::npos);
+}
+
+TEST_CASE("antkit emulate: a device option's declared default applies when it is not given",
+          "[cli][devices]") {
+  // The serial robots' arena defaults to the standard one (its declaration's default); without
+  // an arena, the emulator's walls are the standard arena's (the body reports where it stood).
+  Emulator plain({"hemisson", "--format", "json"});
+  REQUIRE(plain.port().rfind("/dev/pts/", 0) == 0);
+  const auto [status, summary] = plain.finish();
+  CHECK(status == 0);
+  const auto j = nlohmann::json::parse(summary);
+  CHECK(j["arena"] == "standard");
+  Emulator given({"hemisson", "--arena", "standard", "--format", "json"});
+  const auto [status2, summary2] = given.finish();
+  CHECK(status2 == 0);
+  CHECK(nlohmann::json::parse(summary2)["position"] == j["position"]);
+}
+
+TEST_CASE("antkit record and emulate: a device's options are checked against its declarations",
+          "[cli][devices]") {
+  const auto dir = scratch_dir("declared");
+  const std::string log = (dir / "l.jsonl").string();
+  struct Case {
+    std::string args, err;
+  };
+  const Case cases[] = {
+      // out of the declared range: the flag and the range named
+      {"record --device hemisson --port /dev/null --controller buffon --period 60001 --out " + log,
+       "--period: '60001' is out of range: expected a whole number in [0, 60000]"},
+      {"emulate stc-floor --rotation-error -500001",
+       "--rotation-error: '-500001' is out of range: expected a whole number in [-500000, "
+       "500000]"},
+      // another device's option: refused by the device given, naming who takes it
+      {"record --device khepera --port /dev/null --controller buffon --calibration c.json --out " +
+           log,
+       "--calibration:  is an option of the stc-floor robot"},
+      {"emulate stc-floor --fault drop=0.1",
+       "--fault:  is an option of the serial robots (khepera, khepera-webots, hemisson, epuck, "
+       "epuck2)"},
+      {"record --device stc-floor --port /dev/null --controller ant --start 0,0 --arena standard "
+       "--out " +
+           log,
+       "--arena:  is an option of the serial robots (khepera, khepera-webots, hemisson, epuck, "
+       "epuck2)"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args);
+    const auto r = run_antkit(c.args);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err == "antkit: error: " + c.err + "\n");
+  }
+  CHECK_FALSE(std::filesystem::exists(log));
 }

@@ -35,7 +35,8 @@ TEST_CASE("antkit: the library's words for its inputs are shown as each command'
        "--figure: the figure must be 5, 6, 7, 8, 9 or 14"},
       {"buffon-experiment --figure 5 --steps 0 --out " + d + "/out",
        "--steps: the steps per visit must be in [1, 10000000]"},
-      // devices: "fault", "dark offset", "port", "controller parameter heading", "start sub-cell"
+      // devices: "fault", "dark offset", "port", "controller parameter heading", "start sub-cell",
+      // "start heading", "camera noise"
       {"emulate khepera --fault foo=1",
        "--fault: unknown fault 'foo': expected delay, garbage, drop, cut, disconnect, silent or "
        "unterminated"},
@@ -43,10 +44,17 @@ TEST_CASE("antkit: the library's words for its inputs are shown as each command'
       {"record --device khepera --port " + d + "/absent --controller buffon --out " + d +
            "/log.jsonl",
        "--port: cannot open '" + d + "/absent': No such file or directory"},
+      {"record --device stc-floor --port /dev/null --controller ant --start 0,0 --param "
+       "heading=4 --out " +
+           d + "/log.jsonl",
+       "--param heading: expected 0 (E), 1 (N), 2 (W) or 3 (S)"},
+      // a device option's declared word ("start heading") and range (device_options.hpp)
       {"record --device stc-floor --port /dev/null --controller ant --start 0,0 --heading 4 "
        "--out " +
            d + "/log.jsonl",
-       "--param heading: expected 0 (E), 1 (N), 2 (W) or 3 (S)"},
+       "--heading: '4' is out of range: expected a whole number in [0, 3]"},
+      {"emulate stc-floor --noise 300", "--noise: '300' is out of range: expected a whole number "
+                                        "in [0, 255]"},
       {"record --device stc-floor --port /dev/null --controller ant --out " + d + "/log.jsonl",
        "--start: without --map the robot's start sub-cell must be given (X,Y)"},
   };

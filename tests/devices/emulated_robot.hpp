@@ -67,7 +67,7 @@ inline devices::RecordOptions record_options(devices::RobotKind robot, const std
   o.link.timeout = std::chrono::milliseconds(60);
   o.link.backoff = std::chrono::milliseconds(1);
   o.link.backoff_max = std::chrono::milliseconds(4);
-  o.period = std::chrono::milliseconds(0);
+  o.device_options.set("period", std::int64_t{0});
   return o;
 }
 

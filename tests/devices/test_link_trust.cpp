@@ -371,7 +371,7 @@ TEST_CASE("a robot without encoders is read once per model period and reckons it
   EmulatedRobot emu(RobotKind::Hemisson, "circle:d=8");
   const auto log = dir.file("paced.jsonl");
   auto o = record_options(RobotKind::Hemisson, emu.port(), "buffon", {}, 6, log);
-  o.period.reset(); // the robot's default
+  o.device_options.erase("period"); // the robot's default
   REQUIRE(devices::record(o).succeeded());
   emu.stop();
   devices::LogReader reader(log);

@@ -1,11 +1,13 @@
 // The registry of devices (device.hpp): one robot model, every robot found by its name, and each
-// device refusing the options it does not take before anything is opened.
+// device declaring its own options and refusing the others' before anything is opened.
 #include <algorithm>
 #include <antkit/devices/device.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
+#include <cstdint>
 #include <map>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace devices = antkit::devices;
@@ -47,34 +49,50 @@ TEST_CASE("the registry: a device refuses the options of another before anything
     void (*edit)(devices::RecordOptions&);
   };
   const Case cases[] = {
-      {"khepera", "buffon", "floor map", [](devices::RecordOptions& o) { o.map = "x.map"; }},
+      {"khepera", "buffon", "floor map",
+       [](devices::RecordOptions& o) { o.device_options.set("map", std::string("x.map")); }},
       {"epuck", "buffon", "start sub-cell",
        [](devices::RecordOptions& o) {
-         o.start = {{0, 0}};
+         o.device_options.set("start", antkit::kernel::Cell{0, 0});
        }},
       {"hemisson", "rs", "camera calibration",
-       [](devices::RecordOptions& o) { o.calibration = "c.json"; }},
+       [](devices::RecordOptions& o) {
+         o.device_options.set("calibration", std::string("c.json"));
+       }},
+      {"epuck2", "buffon", "quarter-turn time",
+       [](devices::RecordOptions& o) { o.device_options.set("turn-ms", std::int64_t{900}); }},
       {"khepera", "ant", "controller", [](devices::RecordOptions&) {}},
       {"stc-floor", "buffon", "controller",
        [](devices::RecordOptions& o) {
-         o.start = {{0, 0}};
+         o.device_options.set("start", antkit::kernel::Cell{0, 0});
        }},
       {"stc-floor", "ant", "arena spec",
        [](devices::RecordOptions& o) {
-         o.start = {{0, 0}};
-         o.arena = "standard";
+         o.device_options.set("start", antkit::kernel::Cell{0, 0});
+         o.device_options.set("arena", std::string("standard"));
        }},
       {"stc-floor", "ant", "control period",
        [](devices::RecordOptions& o) {
-         o.start = {{0, 0}};
-         o.period = std::chrono::milliseconds(5);
+         o.device_options.set("start", antkit::kernel::Cell{0, 0});
+         o.device_options.set("period", std::int64_t{5});
        }},
       {"stc-floor", "ant-edge", "controller parameter heading",
        [](devices::RecordOptions& o) {
-         o.start = {{0, 0}};
+         o.device_options.set("start", antkit::kernel::Cell{0, 0});
          o.controller.params = {{"heading", 4}};
        }},
       {"stc-floor", "ant-edge", "start sub-cell", [](devices::RecordOptions&) {}},
+      // Out of the declared range, in the declaration's word.
+      {"stc-floor", "ant-edge", "start heading",
+       [](devices::RecordOptions& o) {
+         o.device_options.set("start", antkit::kernel::Cell{0, 0});
+         o.device_options.set("heading", std::int64_t{4});
+       }},
+      {"hemisson", "buffon", "control period",
+       [](devices::RecordOptions& o) { o.device_options.set("period", std::int64_t{60001}); }},
+      // One of its own, but of another type than declared.
+      {"khepera", "buffon", "control period",
+       [](devices::RecordOptions& o) { o.device_options.set("period", std::string("5")); }},
   };
   for (const auto& c : cases) {
     INFO(c.device << " " << c.where);
@@ -93,66 +111,97 @@ TEST_CASE("the registry: a device refuses the options of another before anything
   }
 }
 
-TEST_CASE("the registry: each device declares its options, and one refusal names who takes them",
-          "[devices]") {
-  // Every option of one device or another is taken by some device, under a word of its own.
-  std::vector<std::string_view> words;
-  for (const auto option : devices::kDeviceOptions) {
-    const auto word = devices::option_word(option);
-    INFO(word);
-    CHECK_FALSE(devices::option_takers(option).empty());
-    CHECK(std::find(words.begin(), words.end(), word) == words.end());
-    words.push_back(word);
-    CHECK((devices::option_of(option, devices::OptionUse::Record) ||
-           devices::option_of(option, devices::OptionUse::Emulate)));
+namespace {
+
+// A value of the type `o` declares, in its range.
+devices::OptionValue some_value(const devices::DeclaredOption& o) {
+  switch (o.type) {
+  case devices::OptionType::Switch:
+    return true;
+  case devices::OptionType::Integer:
+    return o.min;
+  case devices::OptionType::SubCell:
+    return antkit::kernel::Cell{0, 0};
+  case devices::OptionType::Texts:
+    return std::vector<std::string>{"x"};
+  case devices::OptionType::Text:
+    break;
   }
-  CHECK(devices::option_takers(devices::DeviceOption::FloorMap) == "stc-floor");
-  CHECK(devices::option_takers(devices::DeviceOption::ArenaSpec) ==
+  return std::string("x");
+}
+
+} // namespace
+
+TEST_CASE("the registry: each device declares its options (name, type, range, default, help)",
+          "[devices]") {
+  for (const auto use : {devices::OptionUse::Record, devices::OptionUse::Emulate}) {
+    for (const devices::Device* d : devices::all_devices()) {
+      std::vector<std::string_view> names;
+      for (const auto& o : d->options()) {
+        if (o.use != use) continue;
+        INFO(d->name() << " --" << o.name);
+        // Once per device and command, a flag's name, a word for the library's errors, help.
+        CHECK(std::find(names.begin(), names.end(), o.name) == names.end());
+        names.push_back(o.name);
+        CHECK_FALSE(o.word.empty());
+        CHECK((o.name.find_first_of(" =") == std::string_view::npos && !o.name.empty()));
+        CHECK((o.refused.empty() ? !o.what.empty() : o.what.empty()));
+        if (o.type == devices::OptionType::Integer) CHECK(o.min <= o.max);
+        // A default applied is a value of the option's type, in its range.
+        if (!o.fallback.empty()) {
+          const auto v = devices::parse_option_value(o, {std::string(o.fallback)});
+          if (const auto* n = std::get_if<std::int64_t>(&v)) CHECK((o.min <= *n && *n <= o.max));
+        }
+        // Every device that declares this name declares it alike: one flag, one type, one word.
+        for (const auto& other : devices::declared_options(use))
+          if (other.name == o.name) {
+            CHECK(other.type == o.type);
+            CHECK(other.word == o.word);
+          }
+      }
+    }
+    // One word, one flag.
+    const auto all = devices::declared_options(use);
+    for (std::size_t i = 0; i < all.size(); ++i)
+      for (std::size_t j = i + 1; j < all.size(); ++j) CHECK(all[i].word != all[j].word);
+  }
+  CHECK(devices::option_takers(devices::OptionUse::Record, "map") == "stc-floor");
+  CHECK(devices::option_takers(devices::OptionUse::Record, "arena") ==
         "khepera, khepera-webots, hemisson, epuck, epuck2");
-  CHECK(devices::option_takers(devices::DeviceOption::Pacing) ==
+  CHECK(devices::option_takers(devices::OptionUse::Emulate, "pace") ==
         "khepera, khepera-webots, hemisson, epuck, epuck2");
+  CHECK(devices::option_takers(devices::OptionUse::Emulate, "listen") ==
+        "khepera, khepera-webots, hemisson, epuck, epuck2");
+}
+
+TEST_CASE("the registry: one refusal of another device's option names who takes it", "[devices]") {
   // A device refuses every record option it did not declare, before anything is opened, in the
-  // option's word; the message names the devices that take it (or the device's own reason).
+  // option's word; the message names the devices that take it.
   for (const devices::Device* d : devices::all_devices()) {
-    for (const auto option : devices::kDeviceOptions) {
-      const bool declared = std::any_of(d->options().begin(), d->options().end(),
-                                        [&](const auto& o) { return o.option == option; });
-      if (declared || !devices::option_of(option, devices::OptionUse::Record)) continue;
-      INFO(d->name() << " " << devices::option_word(option));
+    for (const auto& option : devices::declared_options(devices::OptionUse::Record)) {
+      if (devices::declared(*d, devices::OptionUse::Record, option.name) != nullptr) continue;
+      INFO(d->name() << " --" << option.name);
       devices::RecordOptions o;
       o.device = std::string(d->name());
       o.controller.name = d->name() == "stc-floor" ? "ant" : "buffon";
       o.port = "/nonexistent/port";
       o.out = "/nonexistent/dir/log.jsonl";
-      o.map = "x.map";
-      o.start = {{0, 0}};
-      o.arena = "standard";
-      o.period = std::chrono::milliseconds(5);
-      o.calibration = "c.json";
-      // Only this one option among those the device does not declare.
-      for (const auto other : devices::kDeviceOptions) {
-        const bool other_declared = std::any_of(d->options().begin(), d->options().end(),
-                                                [&](const auto& x) { return x.option == other; });
-        if (other == option || other_declared) continue;
-        if (other == devices::DeviceOption::FloorMap) o.map.clear();
-        if (other == devices::DeviceOption::StartSubCell) o.start.reset();
-        if (other == devices::DeviceOption::ArenaSpec) o.arena.clear();
-        if (other == devices::DeviceOption::ControlPeriod) o.period.reset();
-        if (other == devices::DeviceOption::CameraCalibration) o.calibration.clear();
-      }
+      if (d->name() == "stc-floor") o.device_options.set("start", antkit::kernel::Cell{0, 0});
+      o.device_options.set(std::string(option.name), some_value(option));
       try {
         (void)d->prepare(o);
         FAIL("accepted");
       } catch (const InputError& e) {
-        CHECK(e.where() == devices::option_word(option));
-        CHECK(e.message().find(devices::option_takers(option)) != std::string::npos);
+        CHECK(e.where() == option.word);
+        CHECK(e.message().find(devices::option_takers(devices::OptionUse::Record, option.name)) !=
+              std::string::npos);
       }
     }
   }
   // The emulators' refusals: another device's option, and a declared one refused with a reason.
   const auto refused = [](std::string_view device, auto edit) -> std::string {
     devices::EmulateOptions o;
-    edit(o);
+    edit(o.device_options);
     try {
       (void)devices::device(device, "robot").emulate(o, [](const std::string&) {});
     } catch (const InputError& e) {
@@ -160,19 +209,99 @@ TEST_CASE("the registry: each device declares its options, and one refusal names
     }
     return "accepted";
   };
-  CHECK(refused("khepera", [](devices::EmulateOptions& o) { o.drift = 3; }) ==
+  CHECK(refused("khepera", [](devices::DeviceValues& v) { v.set("drift", std::int64_t{3}); }) ==
         "drift:  is an option of the stc-floor robot");
-  CHECK(refused("stc-floor", [](devices::EmulateOptions& o) { o.pace = true; }) ==
+  CHECK(refused("stc-floor", [](devices::DeviceValues& v) { v.set("pace", true); }) ==
         "pacing:  is an option of the serial robots (khepera, khepera-webots, hemisson, epuck, "
         "epuck2)");
-  CHECK(refused("stc-floor", [](devices::EmulateOptions& o) {
-          o.listen = "127.0.0.1:0";
+  CHECK(refused("stc-floor", [](devices::DeviceValues& v) {
+          v.set("listen", std::string("127.0.0.1:0"));
         }).find("listen address: the stc-floor emulator serves a pty") == 0);
-  // --help's listing, from the declarations: devices that declare alike share a paragraph.
-  const std::map<std::string, std::string, std::less<>> flags{{"floor map", "--map"}};
-  const std::string help = devices::options_by_device(devices::OptionUse::Record, flags);
-  CHECK(help.find("  khepera, khepera-webots, hemisson, epuck, epuck2:\n    arena spec ") !=
+  CHECK(refused("khepera", [](devices::DeviceValues& v) { v.set("colour", std::string("red")); }) ==
+        "colour: is an option of no device");
+  // A number out of its declared range, before anything is served: the range named.
+  CHECK(refused("stc-floor", [](devices::DeviceValues& v) {
+          v.set("map", std::string("x.map"));
+          v.set("noise", std::int64_t{256});
+        }) == "camera noise: '256' is out of range: expected a whole number in [0, 255]");
+  CHECK(refused("stc-floor", [](devices::DeviceValues& v) {
+          v.set("map", std::string("x.map"));
+          v.set("rotation-error", std::int64_t{-500001});
+        }).find("[-500000, 500000]") != std::string::npos);
+}
+
+TEST_CASE("the registry: the command line's texts are read by the declarations, defaults applied",
+          "[devices]") {
+  const auto& floor = devices::device("stc-floor", "robot");
+  const auto& khepera = devices::device("khepera", "robot");
+  // Emulate: every declared default is applied when not given; a given value is kept.
+  const auto v = devices::parse_device_options(
+      floor, devices::OptionUse::Emulate,
+      {{"map", {"floor.map"}}, {"start", {"3,4"}}, {"noise", {"20"}}});
+  CHECK(v.text("map") == "floor.map");
+  CHECK(v.cell("start") == antkit::kernel::Cell{3, 4});
+  CHECK(v.integer("noise") == 20);
+  CHECK(v.integer("dark-offset") == 12);
+  CHECK(v.integer("heading") == 1);
+  CHECK(v.integer("fade") == 0);
+  CHECK(v.integer("rotation-error") == 0);
+  CHECK(v.integer("drift") == 0);
+  CHECK_FALSE(v.has("listen"));
+  const auto k = devices::parse_device_options(khepera, devices::OptionUse::Emulate,
+                                               {{"fault", {"drop=0.1", "cut=0.2"}}, {"pace", {}}});
+  CHECK(k.text("arena") == "standard");
+  CHECK(k.texts("fault") == std::vector<std::string>{"drop=0.1", "cut=0.2"});
+  CHECK(k.on("pace"));
+  // Record: a default the device works out itself (the period, the controller's heading) is only
+  // said in --help, not applied: the device tells given from not given.
+  const auto r = devices::resolve_options(khepera, devices::OptionUse::Record, {});
+  CHECK(r.all().empty());
+  CHECK(devices::resolve_options(floor, devices::OptionUse::Record, {}).all().empty());
+  // Texts that do not read as the type, in the declaration's word; another device's option first.
+  const auto error = [](const devices::Device& d, const devices::GivenTexts& given) {
+    try {
+      (void)devices::parse_device_options(d, devices::OptionUse::Emulate, given);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  CHECK(error(floor, {{"noise", {"lots"}}}) == "camera noise: 'lots' is not a whole number in "
+                                               "[0, 255]");
+  CHECK(error(floor, {{"start", {"3;4"}}}).find("start sub-cell: ") == 0);
+  CHECK(error(floor, {{"noise", {"lots"}}, {"fault", {"drop=1"}}}) ==
+        "fault:  is an option of the serial robots (khepera, khepera-webots, hemisson, epuck, "
+        "epuck2)");
+}
+
+TEST_CASE("the registry: --help of one device lists its own options from its declarations",
+          "[devices]") {
+  const auto& epuck2 = devices::device("epuck2", "robot");
+  const std::string record = devices::device_options_help(epuck2, devices::OptionUse::Record);
+  CHECK(record.find("epuck2's own options:\n  --arena SPEC\n") == 0);
+  CHECK(record.find("  --period MS  (a whole number in [0, 60000]; default 0, as fast as the link "
+                    "allows)\n      the shortest time") != std::string::npos);
+  CHECK(record.find("--map") == std::string::npos);
+  const std::string emulate = devices::device_options_help(epuck2, devices::OptionUse::Emulate);
+  CHECK(emulate.find("  --fault F  (may be repeated)\n") != std::string::npos);
+  CHECK(emulate.find("  --arena SPEC|F.wkt  (default standard)\n") != std::string::npos);
+  CHECK(emulate.find("  --pace\n") != std::string::npos);
+  const std::string hemisson = devices::device_options_help(devices::device("hemisson", "robot"),
+                                                            devices::OptionUse::Record);
+  CHECK(hemisson.find("default the motion model's period") != std::string::npos);
+  const std::string floor = devices::device_options_help(devices::device("stc-floor", "robot"),
+                                                         devices::OptionUse::Emulate);
+  CHECK(floor.find("  --noise A  (a whole number in [0, 255]; default 0)\n") != std::string::npos);
+  CHECK(floor.find("  --dark-offset A  (a whole number in [0, 255]; default 12)\n") !=
         std::string::npos);
-  CHECK(help.find("  stc-floor:\n    --map ") != std::string::npos);
-  CHECK(help.find("fade half-life") == std::string::npos); // emulate's
+  CHECK(floor.find("--arena") == std::string::npos);
+  // A declared refusal, with its reason.
+  CHECK(floor.find("Refused by stc-floor:\n  --listen: the stc-floor emulator serves a pty") !=
+        std::string::npos);
+  // Without a device: each device and the flags of its own options.
+  const std::string all = devices::devices_options_help(devices::OptionUse::Record, "record");
+  CHECK(all.find("`antkit record --device NAME --help`") != std::string::npos);
+  CHECK(all.find("  epuck2:         --arena --period\n") != std::string::npos);
+  CHECK(all.find("  stc-floor:      --map --start --calibration --heading --turn-ms --led-ms\n") !=
+        std::string::npos);
 }

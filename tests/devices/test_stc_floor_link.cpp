@@ -92,7 +92,7 @@ devices::RecordOptions floor_options(const std::string& controller, const std::s
   o.device = "stc-floor";
   o.controller.name = controller;
   o.port = port;
-  o.start = stc::SubCell{0, 0};
+  o.device_options.set("start", stc::SubCell{0, 0});
   o.out = out;
   o.link.timeout = std::chrono::milliseconds(3000);
   return o;
@@ -211,7 +211,7 @@ TEST_CASE("stc floor link: a robot that does not answer ends the run with its re
   o.device = "stc-floor";
   o.controller.name = "ant-edge";
   o.port = pty.slave_path();
-  o.start = stc::SubCell{0, 0};
+  o.device_options.set("start", stc::SubCell{0, 0});
   o.link.timeout = std::chrono::milliseconds(20);
   o.link.tries = 2;
   o.out = dir.file("silent.jsonl");

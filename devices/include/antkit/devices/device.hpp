@@ -24,6 +24,7 @@
 //                                              ant or ant-edge through the camera pipeline
 // Adding a robot is one set of files (its description or codec, its Session, its Device) and one
 // line in registry.cpp: CONTRIBUTING.md walks through it.
+#include <antkit/devices/device_options.hpp>
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/replay.hpp>
@@ -75,19 +76,15 @@ struct PreparedRun {
   std::function<std::unique_ptr<Session>(SerialPort port, const LinkOptions& link)> connect;
 };
 
-// The emulator's options as the command line gives them; those of one device or another
-// (DeviceOption) are refused unless the device declared them (Device::options()).
+// The emulator's options: what every emulator takes, and the device's own options by the names
+// it declared (Device::options()): the serial robots' arena, faults, pacing and listen address,
+// the marker-floor robot's map, start, heading and camera.
 struct EmulateOptions {
   std::uint64_t seed = 1;
-  std::optional<std::string> arena;     // the serial robots: the arena's spec, for the report
-  std::vector<kernel::FxSegment> walls; // ... and its walls (the default arena's when not given)
-  std::vector<std::string> faults;      // the serial robots: --fault (emulator.hpp)
-  bool pace = false;                    // the serial robots
-  std::optional<std::string> listen;    // HOST:PORT: serve over TCP (the serial robots)
-  std::optional<std::string> map;       // the marker-floor robot: the floor's map file
-  std::optional<kernel::Cell> start;    // ... the start sub-cell (default: as antkit stc)
-  std::optional<std::int64_t> heading;  // ... 0 E, 1 N, 2 W, 3 S (default 1)
-  std::optional<std::int64_t> noise, dark_offset, fade_s, rotation_error, drift; // ... its camera
+  // The robots of an arena: its walls, from the `arena` option by the caller (the devices do not
+  // link the geometry layer that reads arena specs and WKT files; antkit emulate builds them).
+  std::vector<kernel::FxSegment> walls;
+  DeviceValues device_options;
 };
 
 // What an emulator served (emulate()'s summary).
@@ -105,61 +102,6 @@ struct EmulateReport {
   double max_offset_subcells = 0, max_heading_error_degrees = 0, clock_s = 0;
 };
 
-// The options of record() (RecordOptions) and emulate() (EmulateOptions) that one device takes and
-// another does not. Every other option (the port, the line, the link, the controller, the steps,
-// the seed, the log) every device takes.
-enum class DeviceOption : std::uint8_t {
-  // record and emulate
-  FloorMap,     // RecordOptions::map, EmulateOptions::map
-  StartSubCell, // RecordOptions::start, EmulateOptions::start
-  ArenaSpec,    // RecordOptions::arena, EmulateOptions::arena
-  // record
-  ControlPeriod,     // RecordOptions::period
-  CameraCalibration, // RecordOptions::calibration
-  // emulate
-  StartHeading,  // EmulateOptions::heading
-  CameraNoise,   // EmulateOptions::noise
-  DarkOffset,    // EmulateOptions::dark_offset
-  FadeHalfLife,  // EmulateOptions::fade_s
-  RotationError, // EmulateOptions::rotation_error
-  Drift,         // EmulateOptions::drift
-  Fault,         // EmulateOptions::faults
-  Pacing,        // EmulateOptions::pace
-  ListenAddress, // EmulateOptions::listen
-};
-// Every DeviceOption, in the order a refusal looks for them (the first given is named).
-inline constexpr DeviceOption kDeviceOptions[] = {DeviceOption::FloorMap,
-                                                  DeviceOption::StartSubCell,
-                                                  DeviceOption::ArenaSpec,
-                                                  DeviceOption::ControlPeriod,
-                                                  DeviceOption::CameraCalibration,
-                                                  DeviceOption::StartHeading,
-                                                  DeviceOption::CameraNoise,
-                                                  DeviceOption::DarkOffset,
-                                                  DeviceOption::FadeHalfLife,
-                                                  DeviceOption::RotationError,
-                                                  DeviceOption::Drift,
-                                                  DeviceOption::Fault,
-                                                  DeviceOption::Pacing,
-                                                  DeviceOption::ListenAddress};
-
-// The command an option belongs to.
-enum class OptionUse : std::uint8_t { Record, Emulate };
-// The option's name in the library's words, as kernel::InputError names it ("floor map"; the
-// commands show it as their flag, cli/commands.hpp).
-[[nodiscard]] std::string_view option_word(DeviceOption option) noexcept;
-// Whether `option` is one of record()'s, or of emulate()'s.
-[[nodiscard]] bool option_of(DeviceOption option, OptionUse use) noexcept;
-
-// A device's declaration of an option of DeviceOption it knows: what the option is for this robot
-// (for --help), or, when `refused` is not empty, why this device does not take it after all (the
-// refusal's words: the marker-floor emulator's --listen).
-struct DeclaredOption {
-  DeviceOption option;
-  std::string_view what;
-  std::string_view refused = {};
-};
-
 class Device {
 public:
   virtual ~Device() = default;
@@ -170,17 +112,18 @@ public:
   [[nodiscard]] virtual std::chrono::milliseconds reply_timeout() const noexcept {
     return std::chrono::milliseconds(250);
   }
-  // The options of DeviceOption this device takes (and those it refuses with a reason of its own);
-  // any other one given is refused for it, in one place (refuse_undeclared()).
+  // The device's own options, record's and emulate's (device_options.hpp), and those it refuses
+  // with a reason of its own; any other one given is refused for it, in one place
+  // (resolve_options()).
   [[nodiscard]] virtual std::span<const DeclaredOption> options() const noexcept = 0;
-  // Refuses an option the device did not declare (refuse_undeclared()), then validates the
-  // options for this device (prepare_run()); kernel::InputError naming the option otherwise, in
-  // RecordOptions' words.
+  // Checks the device's options against its declarations (resolve_options(): refuses an undeclared
+  // one, a number out of range; applies the defaults), then validates the run for this device
+  // (prepare_run()); kernel::InputError naming the option otherwise, in its declared word.
   [[nodiscard]] PreparedRun prepare(const RecordOptions& options) const;
   // The replay of a log whose header names this device (replay.hpp).
   [[nodiscard]] virtual ReplayResult replay(LogReader& reader, const std::string& path,
                                             std::optional<std::int64_t> until) const = 0;
-  // Refuses an option the device did not declare (refuse_undeclared()), then serves the firmware
+  // Checks the device's options (resolve_options(), as prepare()), then serves the firmware
   // emulator (serve()): `ready` gets the pty's path (or tcp:HOST:PORT) once clients may connect;
   // returns after SIGINT / SIGTERM (or a disconnect fault).
   [[nodiscard]] EmulateReport
@@ -188,26 +131,41 @@ public:
           const std::function<void(const std::string& port)>& ready) const;
 
 protected:
-  // The device's own part of prepare() and emulate(), given only options it declared.
+  // The device's own part of prepare() and emulate(), given only options it declared, in range,
+  // with their defaults applied.
   [[nodiscard]] virtual PreparedRun prepare_run(const RecordOptions& options) const = 0;
   [[nodiscard]] virtual EmulateReport
   serve(const EmulateOptions& options,
         const std::function<void(const std::string& port)>& ready) const = 0;
 };
 
-// kernel::InputError naming the first option of DeviceOption given that `device` did not declare
-// (or declared refused): "WORD:  is an option of the stc-floor robot" (of "the serial robots
-// (khepera, ...)" when several take it: the devices that declared it), or the device's reason.
-void refuse_undeclared(const Device& device, const RecordOptions& options);
-void refuse_undeclared(const Device& device, const EmulateOptions& options);
-// The devices that take `option`, for messages and --help: "stc-floor",
+// The declaration of option `name` of `use` by `device`, or null (a refused one included).
+[[nodiscard]] const DeclaredOption* declared(const Device& device, OptionUse use,
+                                             std::string_view name) noexcept;
+// The values of `device`'s options of `use` as it reads them: kernel::InputError(word, ...) for the
+// first name `given` holds that the device did not declare (" is an option of the stc-floor robot",
+// of "the serial robots (khepera, ...)" when several take it, or the device's reason), a value of
+// another type, or a number outside its range (naming the range); then each declared default not
+// given is applied.
+[[nodiscard]] DeviceValues resolve_options(const Device& device, OptionUse use,
+                                           const DeviceValues& given);
+// The same from the command line's words: each option given by name with the texts it was given
+// (one for most, none for a Switch, one per time given for Texts), parsed by its declaration.
+using GivenTexts = std::vector<std::pair<std::string, std::vector<std::string>>>;
+[[nodiscard]] DeviceValues parse_device_options(const Device& device, OptionUse use,
+                                                const GivenTexts& given);
+// Every option of `use` that some device declares, once by name (the first declaration, in
+// registry order): the flags a command registers. Two devices declaring one name declare it with
+// one type (a test checks).
+[[nodiscard]] std::vector<DeclaredOption> declared_options(OptionUse use);
+// The devices that take option `name` of `use`, for messages and --help: "stc-floor",
 // "khepera, khepera-webots, hemisson, epuck, epuck2".
-[[nodiscard]] std::string option_takers(DeviceOption option);
-// Each device's options of `use`, from the declarations, for a command's --help: devices with the
-// same declarations share a paragraph, one line per option, named by `flags` (an option's word ->
-// the command's flag for it, cli/commands.hpp's FlagWords; a word it lacks is shown as it is).
-[[nodiscard]] std::string
-options_by_device(OptionUse use, const std::map<std::string, std::string, std::less<>>& flags);
+[[nodiscard]] std::string option_takers(OptionUse use, std::string_view name);
+// --help of a command for one device: its options of `use`, one paragraph each (flag, value,
+// range, default, then what it is), and those it refuses with the reason.
+[[nodiscard]] std::string device_options_help(const Device& device, OptionUse use);
+// --help of a command without a device: the devices, each with the flags of its own options.
+[[nodiscard]] std::string devices_options_help(OptionUse use, std::string_view command);
 
 // Every device, in the order of device_names().
 [[nodiscard]] std::span<const Device* const> all_devices();

@@ -31,6 +31,7 @@
 // steps, a stop signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT), a link failure (resends exhausted, the
 // watchdog, a disconnect), or any other error. No record is lost.
 #include <antkit/devices/controllers.hpp>
+#include <antkit/devices/device_options.hpp>
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/robot.hpp>
 #include <antkit/kernel/grid.hpp>
@@ -54,10 +55,9 @@ public:
 };
 
 // What a run is asked to do, for every device (device.hpp). The options of one device or another
-// (map, start, calibration, arena, period: DeviceOption) are refused unless the device declared
-// them (Device::options()); the device refuses values it cannot take (kernel::InputError naming
-// the option in these words: "floor map", "start sub-cell", "camera calibration", "arena spec",
-// "control period", "controller", "controller parameter", "steps", "device").
+// are in device_options, refused unless the device declared them (Device::options()); the device
+// refuses values it cannot take (kernel::InputError naming the option in its declared word, or in
+// these: "controller", "controller parameter", "steps", "device").
 struct RecordOptions {
   std::string device = "khepera";   // a registry name (device.hpp)
   std::string port;                 // a tty or pty path, or tcp:HOST:PORT (serial.hpp)
@@ -70,17 +70,11 @@ struct RecordOptions {
   std::string out;                   // the log
   bool force = false; // replace `out` if it exists (otherwise an existing log is bad input)
   LinkOptions link;
-  // The serial robots: the shortest time between two sensor reads (a control period; 0: as fast
-  // as the link allows). Unset: default_period(robot).
-  std::optional<std::chrono::milliseconds> period;
-  // The serial robots: the arena, when known (an emulator's spec), for the log's header.
-  std::string arena;
-  // The marker-floor robot: the map (for the start, the reachable sub-cells and the tour's hash),
-  // the start sub-cell (default: the map's, else as antkit stc; without a map it must be given),
-  // and the camera's calibration file (default: the ideal calibration).
-  std::string map; // a map file
-  std::optional<kernel::Cell> start;
-  std::string calibration;
+  // The device's own options (device_options.hpp), by the names it declared (Device::options()):
+  // the serial robots' and the epuck2's arena and period, the marker-floor robot's map, start,
+  // calibration, heading, turn-ms and led-ms. prepare() refuses a name the device did not declare
+  // and checks the others' ranges.
+  DeviceValues device_options;
   std::uint32_t sync_every = 0; // fdatasync the log every N records (0: only at the end)
 };
 
