@@ -402,7 +402,7 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"emulate stc-floor --map {M} --noise 256", "--noise:", "[0, 255]"},
       {"emulate stc-floor --map {M} --fade 1.5", "--fade:", "'1.5' is not a whole number"},
       {"emulate stc-floor --map {M} --start 1", "--start:", "X,Y"},
-      {"emulate epuck2 --pace", "--pace:", "not supported"},
+      {"emulate stc-floor --map {M} --listen 127.0.0.1:0", "--listen:", "serves a pty"},
       {"emulate hemisson --heading 2", "--heading:", "of the stc-floor robot"},
       {"emulate roomba", "robot:", "roomba"},
       {"emulate khepera --fault delay=2:5", "--fault:", "probability"},
