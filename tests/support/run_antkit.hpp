@@ -17,13 +17,17 @@ struct RunResult {
   std::string err; // standard error
 };
 
-// `args` is appended to the command line as it is (quote paths that need it).
+// `args` is appended to the command line as it is (quote paths that need it). A run is bounded
+// (coreutils' timeout: 15 minutes, then killed; status 124 or 137): a command that should have
+// refused its input and instead serves or waits forever fails its test instead of hanging it (the
+// bad-input table once did, on an emulator option that had become valid).
 inline RunResult run_antkit(const std::string& args) {
   static int counter = 0;
   const auto err_path =
       std::filesystem::temp_directory_path() /
       ("antkit-test-stderr-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-  const std::string cmd = std::string(antkit_exe()) + " " + args + " 2>" + err_path.string();
+  const std::string cmd =
+      "timeout -k 10 900 " + std::string(antkit_exe()) + " " + args + " 2>" + err_path.string();
   RunResult r;
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (!pipe) return r;
