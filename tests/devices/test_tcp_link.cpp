@@ -251,12 +251,92 @@ TEST_CASE("khepera-webots: the emulator answers as the relay does", "[devices]")
   // `exit` closes the connection.
   port.write_all("exit\r", 1000ms);
   CHECK_THROWS_AS(port.read_line(5000ms), LinkError);
-  // The next connection is the next session: the body back at its start, the counters at zero.
-  auto again = client(emu.port());
-  CHECK(ask(again, "H\r") == "h,0,0\r\n");
-  again.close();
+  // And the relay takes no other client until the world is reset (the next test).
   emu.stop();
-  CHECK(emu.emulator().sessions() == 2);
+  CHECK(emu.emulator().sessions() == 1);
+}
+
+TEST_CASE("khepera-webots: the emulator acts on the first command of a read only, as the relay",
+          "[devices]") {
+  OnTcp emu(RobotKind::KheperaWebots, "circle:d=8");
+  auto port = client(emu.port());
+  CHECK(ask(port, "D,10,10\r") == "d\r\n");
+  // Two commands in one write arrive in one read: the first is answered, the second is lost.
+  port.write_all("B\rN\r", 1000ms);
+  CHECK(port.read_line(5000ms).bytes == "b,0,0\r\n");
+  const auto nothing = port.read_line(300ms);
+  CHECK(nothing.bytes.empty()); // no reply to N: it was never acted on
+  // N was lost, so the body has not moved: the wheels' counters still read zero.
+  CHECK(ask(port, "H\r") == "h,0,0\r\n");
+  // One command and its reply, then the next: each is acted on.
+  CHECK(ask(port, "N\r").rfind("n,", 0) == 0);
+  CHECK(ask(port, "H\r") != "h,0,0\r\n");
+  // A read holding D and then N sets the speeds only.
+  port.write_all("D,0,0\rN\r", 1000ms);
+  CHECK(port.read_line(5000ms).bytes == "d\r\n");
+  CHECK(port.read_line(300ms).bytes.empty());
+  const auto h = ask(port, "H\r");
+  CHECK(ask(port, "N\r").rfind("n,", 0) == 0);
+  CHECK(ask(port, "H\r") == h); // stopped: N advanced a control period, the wheels did not turn
+  port.close();
+  emu.stop();
+  CHECK(emu.emulator().trail().size() == 3); // the start, and the two N acted on
+}
+
+TEST_CASE("khepera-webots: the emulator accepts one client, once, as the relay", "[devices]") {
+  OnTcp emu(RobotKind::KheperaWebots, "circle:d=8");
+  auto first = client(emu.port());
+  CHECK(ask(first, "B\r") == "b,0,0\r\n");
+  // A second client while the first is connected: its connect completes in the backlog, but
+  // nothing it sends is read or answered.
+  auto second = client(emu.port());
+  second.write_all("B\r", 1000ms);
+  CHECK(second.read_line(300ms).bytes.empty());
+  CHECK(ask(first, "B\r") == "b,0,0\r\n"); // the first is served as before
+  second.close();
+  // The first leaves; a client that comes after it is not served either (the relay accepts once,
+  // when the simulation starts).
+  first.close();
+  std::this_thread::sleep_for(100ms);
+  bool served = false;
+  try {
+    auto again = client(emu.port());
+    again.write_all("B\r", 1000ms);
+    served = again.read_line(300ms).complete;
+  } catch (const LinkError&) {
+    // refused outright: not served either
+  }
+  CHECK(!served);
+  emu.stop();
+  CHECK(emu.emulator().sessions() == 1);
+  CHECK(emu.emulator().commands() == 2);
+}
+
+TEST_CASE("khepera-webots: the record loop (one command, then its reply) runs against the strict "
+          "emulator, and a second run is not served",
+          "[devices]") {
+  TempDir dir;
+  OnTcp emu(RobotKind::KheperaWebots, "circle:d=8");
+  const auto log = dir.file("first.jsonl");
+  const auto s = devices::record(options_for(RobotKind::KheperaWebots, emu.port(), 100, log));
+  INFO(s.stop);
+  CHECK(s.completed);
+  CHECK(s.link.retries == 0);
+  CHECK(s.safe_stop.stopped);
+  // A second run: connected, never answered -- a link failure, the log says so.
+  auto o = options_for(RobotKind::KheperaWebots, emu.port(), 100, dir.file("second.jsonl"));
+  o.link.timeout = 50ms;
+  o.link.tries = 2;
+  o.link.stop_within = 300ms;
+  const auto t = devices::record(o);
+  CHECK(t.steps == 0);
+  CHECK(t.kind == devices::StopKind::Link);
+  CHECK(!t.safe_stop.stopped);
+  emu.stop();
+  CHECK(emu.emulator().sessions() == 1);
+  const auto r = devices::replay(log);
+  CHECK(r.identical);
+  CHECK(r.hash == s.hash);
 }
 
 TEST_CASE("the relay test server: one command per read, one client once", "[devices]") {
