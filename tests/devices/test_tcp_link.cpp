@@ -15,6 +15,7 @@
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <filesystem>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <thread>
@@ -337,6 +338,95 @@ TEST_CASE("khepera-webots: the record loop (one command, then its reply) runs ag
   const auto r = devices::replay(log);
   CHECK(r.identical);
   CHECK(r.hash == s.hash);
+}
+
+TEST_CASE("identification: a robot that is not the device asked for is refused at connect, with "
+          "nothing but the version request sent and no log",
+          "[devices]") {
+  TempDir dir;
+  SECTION("--device khepera against the Webots relay (its b,0,0)") {
+    WebotsRelay relay;
+    const auto log = dir.file("wrong.jsonl");
+    try {
+      (void)devices::record(options_for(RobotKind::Khepera, relay.port_spec(), 100, log));
+      FAIL("the relay was taken for a Khepera");
+    } catch (const antkit::kernel::InputError& e) {
+      CHECK(e.where() == "device");
+      const std::string what = e.what();
+      INFO(what);
+      CHECK(what.find("the robot answers 'b,0,0\\r\\n' to 'B\\r', not as --device khepera does") !=
+            std::string::npos);
+      CHECK(what.find("it answers as --device khepera-webots does") != std::string::npos);
+    }
+    CHECK(!std::filesystem::exists(log));
+    CHECK(relay.reads() == std::vector<std::string>{"B\r"}); // nothing else: never driven
+  }
+  SECTION("--device khepera-webots against a Khepera") {
+    OnTcp emu(RobotKind::Khepera, "circle:d=8");
+    const auto log = dir.file("wrong.jsonl");
+    try {
+      (void)devices::record(options_for(RobotKind::KheperaWebots, emu.port(), 100, log));
+      FAIL("a Khepera was taken for the relay");
+    } catch (const antkit::kernel::InputError& e) {
+      CHECK(std::string(e.what()).find("answers 'b,5.02,5.01\\r\\n' to 'B\\r', not as --device "
+                                       "khepera-webots does") != std::string::npos);
+      CHECK(std::string(e.what()).find("--device khepera does") != std::string::npos);
+    }
+    CHECK(!std::filesystem::exists(log));
+    emu.stop();
+    CHECK(emu.emulator().commands() == 1);
+    CHECK(emu.emulator().trail().size() == 1); // never moved
+  }
+  SECTION("--device epuck against the relay, which does not know V") {
+    WebotsRelay relay;
+    const auto log = dir.file("wrong.jsonl");
+    try {
+      (void)devices::record(options_for(RobotKind::Epuck, relay.port_spec(), 100, log));
+      FAIL("the relay was taken for an e-puck");
+    } catch (const antkit::kernel::InputError& e) {
+      CHECK(std::string(e.what()).find("answers '\\n' to 'V\\r', not as --device epuck does") !=
+            std::string::npos);
+    }
+    CHECK(!std::filesystem::exists(log));
+    for (const auto& read : relay.reads()) CHECK(read == "V\r"); // its tries, nothing else
+  }
+  SECTION("the right device: the identification is step 0's first exchange, and replay checks "
+          "it") {
+    WebotsRelay relay;
+    const auto log = dir.file("right.jsonl");
+    const auto s =
+        devices::record(options_for(RobotKind::KheperaWebots, relay.port_spec(), 20, log));
+    CHECK(s.completed);
+    CHECK(relay.reads().front() == "B\r");
+    auto lines = antkit::test::lines_of(log);
+    REQUIRE(lines.size() == 22);
+    CHECK(lines[0].rfind("{\"schema\":2,", 0) == 0);
+    CHECK(lines[1].find("\"io\":[[\"B\\r\",\"b,0,0\\r\\n\",") != std::string::npos);
+    CHECK(devices::replay(log).identical);
+    // A reply that identifies another robot diverges there.
+    const auto edited = dir.file("edited.jsonl");
+    auto copy = lines;
+    copy[1].replace(copy[1].find("b,0,0"), 5, "b,5.02,5.01");
+    antkit::test::write_lines(edited, copy);
+    const auto r = devices::replay(edited);
+    CHECK(!r.identical);
+    REQUIRE(r.first_divergence);
+    CHECK(r.first_divergence->step == 0);
+    CHECK(r.first_divergence->field == "io[0].received");
+    // A schema-2 log without its identification diverges at its first exchange.
+    copy = lines;
+    const auto at = copy[1].find("[\"B\\r\"");
+    copy[1].erase(at, copy[1].find(']', at) + 2 - at);
+    antkit::test::write_lines(edited, copy);
+    const auto missing = devices::replay(edited);
+    CHECK(!missing.identical);
+    REQUIRE(missing.first_divergence);
+    CHECK(missing.first_divergence->field == "io[0].sent");
+    // The same log declared schema 1 (before the identification) replays without it.
+    copy[0].replace(0, 11, "{\"schema\":1");
+    antkit::test::write_lines(edited, copy);
+    CHECK(devices::replay(edited).identical);
+  }
 }
 
 TEST_CASE("the relay test server: one command per read, one client once", "[devices]") {
