@@ -22,14 +22,16 @@
 // counters' travel since the start, unwrapped from their 16 bits.
 // Controllers: buffon and rs. The wanderer (several reads per step) is not supported here yet.
 //
-// Identification at connect (record_loop.hpp, "First, at connect"): not done for this device yet
-// (Session::identify does nothing). Binary mode has no version request (PROTOCOLS.md, binary
-// mode: "the version (V) and reset (R) exist only as ASCII commands"); ASCII `V\r` answers two
-// lines, `v,Version 2.0 January 2018 GCtronic` and `HW version: FFF7` (the e-puck1: `v,Version
-// 1.2.2 ...`), which the binary framing's fixed-size reads cannot take: it needs a line reader of
-// its own on this link, and its replay. Until then another robot shows only as a start sequence
-// whose reply has the wrong size or never comes: a link failure (exit 1, with its log), not the
-// text robots' exit-2 refusal.
+// Identification at connect (record_loop.hpp, "First, at connect"): binary mode has no version
+// request (PROTOCOLS.md, binary mode: "the version (V) and reset (R) exist only as ASCII
+// commands"), so after a resynchronisation (the firmware at the top of its loop, the banner read
+// off) the ASCII `V` goes, ended by a single CR as binary follows, and its reply is read as lines
+// (SequenceFraming::reading_for): the `v,` line is the reply, held to epuck2::identifies (major
+// version 2 or more: `v,Version 2.0 January 2018 GCtronic`; an e-puck1 answers 1.x), and the
+// lines before it (the banner) are read past; its second line (`HW version: ...`) is read by the
+// start's resynchronisation. A robot that answers another version, or only lines of another
+// shape, is refused as the text robots are (exit 2, no log). Logs of schema 2 hold the exchanges
+// in step 0 and replay checks them; schema-1 logs have none.
 #include "emulate_serve.hpp"
 #include "logged_link.hpp"
 #include "registry.hpp"
@@ -53,6 +55,11 @@ using detail::LoggedLink;
 // The robot's half of a step, over either link: the same code records and replays.
 class Body {
 public:
+  void identify(CommandLink& link, std::vector<Exchange>& io) {
+    link.resync(io); // the firmware's state at connect is unknown; its banner may be waiting
+    identify_by_version(link, std::string(epuck2::kVersionRequest), epuck2::identifies, "epuck2",
+                        epuck2::kIdentity, io);
+  }
   void start(CommandLink& link, std::vector<Exchange>& io) {
     link.resync(io); // the firmware's state at connect is unknown; its banner may be waiting
     const auto reply = link.transact(epuck2::start_sequence(), io);
@@ -89,6 +96,7 @@ public:
               without_watchdog(link)),
         controller_(std::move(controller)), period_(period) {}
 
+  void identify(std::vector<Exchange>& io) override { body_.identify(link_, io); }
   void start(std::vector<Exchange>& io) override { body_.start(link_, io); }
 
   bool step(LogRecord& rec, std::vector<Exchange>& io) override {
@@ -194,6 +202,7 @@ ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
   const epuck2::SequenceFraming framing;
   LoggedLink link(framing, {});
   Body body;
+  const bool identified = header.schema >= 2; // log_schema.hpp
   std::vector<std::int64_t> obs;
   std::vector<Exchange> seen;
   return replay_records(
@@ -202,7 +211,10 @@ ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
         std::optional<Divergence> d;
         link.load(r.io, r.step, "io");
         try {
-          if (r.step == 0) body.start(link, seen);
+          if (r.step == 0) {
+            if (identified) body.identify(link, seen);
+            body.start(link, seen);
+          }
           const Proximity readings = body.read(link, seen);
           controller->observe(robot, readings, obs);
           if (!compare_fields(r.obs, obs, r.step, "obs", d)) return d;
@@ -220,6 +232,9 @@ ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
           if (!compare_fields(r.odo, odo, r.step, "odo", d)) return d;
         } catch (const Diverged& x) {
           return x.d;
+        } catch (const WrongRobot& e) {
+          return Divergence{r.step, "io", std::string(e.what()),
+                            "a reply identifying an epuck2: " + std::string(epuck2::kIdentity)};
         } catch (const LinkError& e) {
           return Divergence{r.step, "io", "the step's exchanges", std::string(e.what())};
         }

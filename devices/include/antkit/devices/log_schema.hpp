@@ -13,12 +13,12 @@
 //
 // The versions (every writer writes the newest; readers replay all of them):
 //   1  the first.
-//   2  the same records; a text robot's step 0 begins with its identification at connect (the
-//      version request, B or the e-puck's V, and its reply, with any resends: record_loop.hpp,
-//      "First, at connect"), before the start's exchanges. Replay runs it again on a schema-2 log,
-//      so a reply that does not identify the robot, or a log without the request, diverges; a
-//      schema-1 log has none and replays as it was written. Devices that are not identified (the
-//      e-puck2 in binary mode, the marker-floor robot) write the same bytes under either version.
+//   2  the same records; step 0 begins with the robot's identification at connect (the version
+//      request, B or the e-puck's V; the e-puck2's resynchronisation and ASCII V; and the replies,
+//      with any resends: record_loop.hpp, "First, at connect"), before the start's exchanges.
+//      Replay runs it again on a schema-2 log, so a reply that does not identify the robot, or a
+//      log without the request, diverges; a schema-1 log has none and replays as it was written.
+//      The marker-floor robot, which is not identified, writes the same bytes under either.
 #include <cstdint>
 
 namespace antkit::devices {

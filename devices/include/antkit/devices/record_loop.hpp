@@ -5,8 +5,9 @@
 // it recorded).
 //
 // First, at connect, the robot is identified where its protocol allows (Session::identify): the
-// text robots are asked for their version (B; the e-puck: V) and the reply must be this robot's
-// (RobotDescription::identifies, each robot's rule and its source beside its description): the
+// text robots are asked for their version (B; the e-puck: V; the e-puck2 in binary mode its ASCII
+// V, device_epuck2.cpp) and the reply must be this robot's (RobotDescription::identifies, each
+// robot's rule and its source beside its description; epuck2::identifies): the
 // Webots relay's `b,0,0` is not a Khepera's `b,5.02,5.01`, so `--device khepera` against the relay
 // is refused instead of running in the wrong units. The exchange is step 0's first (its log is
 // schema 2, log_schema.hpp) and replay checks it. A robot that answers, but not as this one -- an
@@ -72,6 +73,16 @@ class WrongRobot : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
 };
+
+// The identification every device shares (Session::identify): `request` (a version request) sent
+// through `link` until its reply; WrongRobot when the reply does not satisfy `identifies`, or when
+// every try of the request got only whole lines that are not its reply (a robot of another
+// protocol); LinkError as transact() otherwise. The message names the reply, the device (`name`,
+// whose rule `identity` says in words) and the serial robots that answer so (identified_as()).
+void identify_by_version(CommandLink& link, const std::string& request,
+                         const std::function<bool(std::string_view reply)>& identifies,
+                         std::string_view name, std::string_view identity,
+                         std::vector<Exchange>& io);
 
 // What a run is asked to do, for every device (device.hpp). The options of one device or another
 // (map, start, calibration, arena, period: DeviceOption) are refused unless the device declared
