@@ -299,8 +299,9 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
   try {
     session->identify(pending);
   } catch (const WrongRobot& e) {
-    throw kernel::InputError("device", options.device + " at " + options.port + ": " + e.what() +
-                                           " (nothing else was sent: the robot was not driven)");
+    throw kernel::InputError("device",
+                             options.device + " at " + options.port + ": " + e.what() +
+                                 " (only the identification was sent: the robot was not driven)");
   } catch (const LinkError& e) {
     unidentified = e; // the link failed: a run that stopped at once, with its log
   }

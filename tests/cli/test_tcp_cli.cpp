@@ -155,11 +155,12 @@ TEST_CASE("antkit record refuses a robot that is not --device's: exit 2, no log,
                             " --format json");
   CHECK(r.status == 2);
   CHECK(r.out.empty());
-  CHECK(r.err == "antkit: error: --device: khepera at " + port +
-                     ": the robot answers 'b,0,0\\r\\n' to 'B\\r', not as --device khepera does "
-                     "(b,BIOS,PROTOCOL with dotted version numbers (b,5.02,5.01 on a Khepera II)); "
-                     "it answers as --device khepera-webots does (nothing else was sent: the robot "
-                     "was not driven)\n");
+  CHECK(r.err ==
+        "antkit: error: --device: khepera at " + port +
+            ": the robot answers 'b,0,0\\r\\n' to 'B\\r', not as --device khepera does "
+            "(b,BIOS,PROTOCOL with dotted version numbers (b,5.02,5.01 on a Khepera II)); "
+            "it answers as --device khepera-webots does (only the identification was sent: "
+            "the robot was not driven)\n");
   CHECK(!std::filesystem::exists(log));
   const auto [status, summary] = emu.finish(SIGTERM);
   CHECK(status == 0);

@@ -13,9 +13,10 @@
 // schema 2, log_schema.hpp) and replay checks it. A robot that answers, but not as this one -- an
 // identity that is another's, or to the version request only lines of another shape (its error
 // reply, the relay's bare LF) until the tries are spent -- is a wrong --device: record() throws
-// kernel::InputError("device", ...) (exit 2) before any log is written, and nothing but the version
-// request was sent: the robot was never set moving, and no command in a protocol it may not speak
-// is sent to it. A robot that does not answer at all is a link failure as any other.
+// kernel::InputError("device", ...) (exit 2) before any log is written, and nothing but the
+// identification was sent (the version request; the e-puck2's resynchronisation zeros before it):
+// the robot was never set moving, and no command in a protocol it may not speak is sent to it. A
+// robot that does not answer at all is a link failure as any other.
 //
 // One control step, for every robot:
 //   1. read the proximity sensors (`N`) and decode them; the controller's observation comes from
