@@ -2,8 +2,8 @@
 // steps/s, so that a day of robot logs replays in seconds). The log is made in process, without a
 // tty: the Khepera emulator's firmware answers each command directly (FirmwareEmulator::handle),
 // the Buffon controller decides, and the records are what record() would write (every exchange,
-// the observation, the command, the odometry and the state hash, the start's and the safe stop's
-// exchanges).
+// the observation, the command, the odometry and the state hash, the identification's, the start's
+// and the safe stop's exchanges).
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/emulator.hpp>
 #include <antkit/devices/log.hpp>
@@ -45,7 +45,10 @@ void make_log(const std::string& path, std::int64_t steps) {
   devices::LogRecord rec;
   for (std::int64_t s = 0; s < steps; ++s) {
     rec.io.clear();
-    if (s == 0) exchange(codec.set_odometry(0, 0), rec.io); // record()'s start: counters to zero
+    if (s == 0) {
+      exchange(codec.version(), rec.io);          // record()'s identification at connect (schema 2)
+      exchange(codec.set_odometry(0, 0), rec.io); // its start: the counters to zero
+    }
     const auto readings = *codec.decode_proximity(exchange(codec.read_proximity(), rec.io)).value;
     controller->observe(codec.robot(), readings, rec.obs);
     controller->step(codec.robot(), rec.obs, rec.cmd);

@@ -6,7 +6,9 @@
 // of its loop whatever state the stream left it in, and its reply to a step sequence is 20 bytes
 // that the step decoder accepts. The binary framing (SequenceFraming, which the link classifies
 // replies by) accepts a reply to a step or a stop sequence exactly when the decoder does, and
-// sizes any bytes taken as a sequence without crashing.
+// sizes any bytes taken as a sequence without crashing. The identification's rule
+// (epuck2::identifies) takes any line, and a line it accepts is one the framing takes as the
+// reply to the ASCII version request.
 #include <antkit/devices/epuck2.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <cstddef>
@@ -57,6 +59,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (accepts(epuck2::step_sequence(1, -1)) != bool(epuck2::decode_step(reply))) __builtin_trap();
   if (accepts(epuck2::stop_sequence()) != bool(epuck2::decode_pair(reply))) __builtin_trap();
   (void)framing.reply_size(reply);
+  if (epuck2::identifies(reply) &&
+      framing.classify(epuck2::kVersionRequest, reply).kind != ReplyKind::Reply)
+    __builtin_trap();
   // The firmware on the stream; then back to the top of its loop, and a step.
   static epuck2::Emulator emulator(
       antkit::geometry::build_arena_spec("circle:d=8").arena.walls_fx());

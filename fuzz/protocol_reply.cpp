@@ -2,6 +2,9 @@
 // first byte picks the command the reply answers; the rest is the received line. Decoders must
 // never crash or throw; a line a decoder accepts must be canonical enough to re-encode: the
 // values it returns, encoded by the firmware side (Codec::reply), decode again to the same values.
+// The identification rules (Codec::identifies, record's check at connect) take any line: one they
+// accept is a valid reply to the version request, and no line identifies two robots that share a
+// version request (the Khepera and the Webots relay both answer B).
 #include <antkit/devices/protocol.hpp>
 #include <cstddef>
 #include <cstdint>
@@ -35,6 +38,10 @@ void check(const Codec& codec, std::string_view sent, std::string_view line) {
       const auto n = normalise_reading(codec.robot(), v);
       if (n < antkit::kernel::Fx{} || n > antkit::kernel::Fx::one()) __builtin_trap();
     }
+  }
+  if (codec.identifies(line)) {
+    if (!codec.decode_reply(codec.version(), line)) __builtin_trap();
+    if (identified_as(codec.version(), line) != codec.robot().name) __builtin_trap();
   }
   (void)codec.decode_ack(line, sent.empty() ? 'D' : sent[0]);
   (void)codec.decode_speed(line);

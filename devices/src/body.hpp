@@ -32,6 +32,11 @@ public:
   // cannot set them (the Webots relay acknowledges G and does nothing, PROTOCOLS.md), their value
   // now, read as the baseline the odometry counts from.
   void start(std::vector<Exchange>& io);
+  // At connect (record_loop.hpp, "First, at connect"): the version request, its reply held to the
+  // robot's identification rule; WrongRobot when it is another robot's, or when every try got only
+  // lines that are not its reply (a robot that answers, but not this protocol's version request).
+  // LinkError as transact() when the robot does not answer. Nothing for a robot without a rule.
+  void identify(std::vector<Exchange>& io);
   Proximity read_sensors(std::vector<Exchange>& io);
   void set_wheels(std::int32_t left, std::int32_t right, std::vector<Exchange>& io);
   // Odometry after the step: the counters less the baseline, or, for a robot without encoders

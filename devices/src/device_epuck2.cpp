@@ -21,6 +21,17 @@
 // with the e-puck's description: the e-puck2's body is taken as the e-puck1's); odo the step
 // counters' travel since the start, unwrapped from their 16 bits.
 // Controllers: buffon, rs and the wanderer (its move: Body::act below).
+//
+// Identification at connect (record_loop.hpp, "First, at connect"): binary mode has no version
+// request (PROTOCOLS.md, binary mode: "the version (V) and reset (R) exist only as ASCII
+// commands"), so after a resynchronisation (the firmware at the top of its loop, the banner read
+// off) the ASCII `V` goes, ended by a single CR as binary follows, and its reply is read as lines
+// (SequenceFraming::reading_for): the `v,` line is the reply, held to epuck2::identifies (major
+// version 2 or more: `v,Version 2.0 January 2018 GCtronic`; an e-puck1 answers 1.x), and the
+// lines before it (the banner) are read past; its second line (`HW version: ...`) is read by the
+// start's resynchronisation. A robot that answers another version, or only lines of another
+// shape, is refused as the text robots are (exit 2, no log). Logs of schema 2 hold the exchanges
+// in step 0 and replay checks them; schema-1 logs have none.
 #include "body.hpp"
 #include "emulate_serve.hpp"
 #include "logged_link.hpp"
@@ -45,6 +56,11 @@ using detail::LoggedLink;
 // The robot's half of a step, over either link: the same code records and replays.
 class Body {
 public:
+  void identify(CommandLink& link, std::vector<Exchange>& io) {
+    link.resync(io); // the firmware's state at connect is unknown; its banner may be waiting
+    identify_by_version(link, std::string(epuck2::kVersionRequest), epuck2::identifies, "epuck2",
+                        epuck2::kIdentity, io);
+  }
   void start(CommandLink& link, std::vector<Exchange>& io) {
     link.resync(io); // the firmware's state at connect is unknown; its banner may be waiting
     const auto reply = link.transact(epuck2::start_sequence(), io);
@@ -105,6 +121,7 @@ public:
       : link_(std::move(port), std::make_shared<const epuck2::SequenceFraming>(), link),
         controller_(std::move(controller)), wander_(wander), period_(period) {}
 
+  void identify(std::vector<Exchange>& io) override { body_.identify(link_, io); }
   void start(std::vector<Exchange>& io) override { body_.start(link_, io); }
 
   bool step(LogRecord& rec, std::vector<Exchange>& io) override {
@@ -207,6 +224,7 @@ ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
   const epuck2::SequenceFraming framing;
   LoggedLink link(framing, {});
   Body body;
+  const bool identified = header.schema >= 2; // log_schema.hpp
   std::vector<std::int64_t> obs;
   std::vector<Exchange> seen;
   return replay_records(
@@ -215,7 +233,10 @@ ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
         std::optional<Divergence> d;
         link.load(r.io, r.step, "io");
         try {
-          if (r.step == 0) body.start(link, seen);
+          if (r.step == 0) {
+            if (identified) body.identify(link, seen);
+            body.start(link, seen);
+          }
           const Proximity readings = body.read(link, seen);
           controller->observe(robot, readings, obs);
           if (!compare_fields(r.obs, obs, r.step, "obs", d)) return d;
@@ -233,6 +254,9 @@ ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
           if (!compare_fields(r.odo, odo, r.step, "odo", d)) return d;
         } catch (const Diverged& x) {
           return x.d;
+        } catch (const WrongRobot& e) {
+          return Divergence{r.step, "io", std::string(e.what()),
+                            "a reply identifying an epuck2: " + std::string(epuck2::kIdentity)};
         } catch (const LinkError& e) {
           return Divergence{r.step, "io", "the step's exchanges", std::string(e.what())};
         }

@@ -29,6 +29,7 @@ public:
         link_(std::move(port), framing_, link), body_(link_, framing_->codec(), period),
         controller_(std::move(controller)), wander_(wander) {}
 
+  void identify(std::vector<Exchange>& io) override { body_.identify(io); }
   void start(std::vector<Exchange>& io) override { body_.start(io); }
 
   bool step(LogRecord& rec, std::vector<Exchange>& io) override {

@@ -274,6 +274,9 @@ FirmwareEmulator::Response FirmwareEmulator::handle(std::string_view line) {
   }
   std::string reply;
   if (codec_.robot().webots_relay) {
+    // What one read returned: the relay acts on its first command only (emulator.hpp); a second
+    // one in the same read is lost.
+    line = line.substr(0, line.find_first_of("\r\n"));
     if (line.substr(0, 4) == "exit") { // tcpip.c: strncmp(buffer, "exit", 4) closes the socket
       out.close_session = true;
       return out;
@@ -326,12 +329,17 @@ bool command_line(std::string& pending, const ReadResult& r) {
   return !pending.empty();
 }
 
-// One unit of input: a command line, or (raw: a byte-stream firmware) whatever bytes came.
-bool read_unit(SerialPort& port, std::string& pending, bool raw) {
+// One unit of input: a command line, or (raw: a byte-stream firmware) whatever bytes came, at most
+// max_read of them (0: no bound).
+bool read_unit(SerialPort& port, std::string& pending, bool raw, std::size_t max_read) {
   if (!raw)
     return command_line(pending, port.read_line(std::chrono::milliseconds(50), LineEnd::CrOrLf));
   pending = port.read_bytes(1, std::chrono::milliseconds(50));
   if (pending.empty()) return false;
+  if (max_read > 0) {
+    pending += port.read_bytes(max_read - 1, std::chrono::milliseconds(0));
+    return true;
+  }
   for (std::string more; !(more = port.read_bytes(65536, std::chrono::milliseconds(0))).empty();)
     pending += more;
   return true;
@@ -352,7 +360,7 @@ bool write_reply(SerialPort& port, const std::string& bytes) {
 
 void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>& handle,
                const std::function<void()>& new_session, const std::atomic<bool>* stop,
-               bool stop_on_signal, bool raw) {
+               bool stop_on_signal, bool raw, std::size_t max_read) {
   SerialPort& port = pty.master();
   // Without a slave fd of its own the master sees EIO whenever no client has the tty open: that is
   // how a session's end shows when nobody comes at once. Two clients back to back (two `antkit
@@ -397,7 +405,7 @@ void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>
   while (!(stop != nullptr && stop->load()) && !(stop_on_signal && StopSignals::requested())) {
     bool unit = false;
     try {
-      unit = read_unit(port, pending, raw);
+      unit = read_unit(port, pending, raw, max_read);
     } catch (const LinkError& e) {
       if (e.kind() == LinkError::Kind::Interrupted) {
         if (stop_on_signal) break;
@@ -433,13 +441,13 @@ namespace {
 // (a disconnect fault) ends the serving, or a stop is asked for.
 bool serve_client(SerialPort& port, const std::function<EmulatorResponse(std::string_view)>& handle,
                   const std::function<void()>& new_session, const std::function<bool()>& stopped,
-                  bool stop_on_signal, bool raw) {
+                  bool stop_on_signal, bool raw, std::size_t max_read) {
   std::string pending;
   bool in_session = false;
   while (!stopped()) {
     bool unit = false;
     try {
-      unit = read_unit(port, pending, raw);
+      unit = read_unit(port, pending, raw, max_read);
     } catch (const LinkError& e) {
       if (e.kind() == LinkError::Kind::Interrupted) {
         if (stop_on_signal) return true;
@@ -467,7 +475,7 @@ bool serve_client(SerialPort& port, const std::function<EmulatorResponse(std::st
 void serve_tcp(TcpListener& listener,
                const std::function<EmulatorResponse(std::string_view)>& handle,
                const std::function<void()>& new_session, const std::atomic<bool>* stop,
-               bool stop_on_signal, bool raw) {
+               bool stop_on_signal, bool raw, std::size_t max_read, bool accept_once) {
   const auto stopped = [&] {
     return (stop != nullptr && stop->load()) || (stop_on_signal && StopSignals::requested());
   };
@@ -483,9 +491,20 @@ void serve_tcp(TcpListener& listener,
       throw;
     }
     if (!client) continue;
+    if (accept_once) {
+      // The Webots relay (emulator.hpp): this client, and no other, ever. The listener stays open
+      // with its backlog of 1 and is never accepted from again, so a second client connects and is
+      // never served, now or after this one has gone.
+      const bool end =
+          serve_client(*client, handle, new_session, stopped, stop_on_signal, raw, max_read);
+      client->close();
+      while (!end && !stopped()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      break;
+    }
     // One client at a time: connects are refused while this one is served (serial.hpp).
     listener.pause();
-    const bool end = serve_client(*client, handle, new_session, stopped, stop_on_signal, raw);
+    const bool end =
+        serve_client(*client, handle, new_session, stopped, stop_on_signal, raw, max_read);
     // Listening again before the close: a client that sees its connection closed by the server
     // (`exit`) finds the port open for its next session.
     if (!end) listener.resume();
@@ -502,18 +521,21 @@ void FirmwareEmulator::new_session() {
 std::uint64_t FirmwareEmulator::serve(Pty& pty, const std::atomic<bool>* stop,
                                       bool stop_on_signal) {
   const std::uint64_t first = commands_;
+  // The Webots relay acts on what one read returned (emulator.hpp): bytes, not lines.
+  const bool relay = robot().webots_relay;
   serve_pty(
       pty, [this](std::string_view line) { return handle(line); }, [this] { new_session(); }, stop,
-      stop_on_signal);
+      stop_on_signal, relay, relay ? kRelayReadBytes : 0);
   return commands_ - first;
 }
 
 std::uint64_t FirmwareEmulator::serve(TcpListener& listener, const std::atomic<bool>* stop,
                                       bool stop_on_signal) {
   const std::uint64_t first = commands_;
+  const bool relay = robot().webots_relay;
   serve_tcp(
       listener, [this](std::string_view line) { return handle(line); }, [this] { new_session(); },
-      stop, stop_on_signal);
+      stop, stop_on_signal, relay, relay ? kRelayReadBytes : 0, relay);
   return commands_ - first;
 }
 

@@ -217,8 +217,30 @@ std::size_t reply_size(std::string_view sequence) noexcept {
   return n;
 }
 
+bool identifies(std::string_view line) noexcept {
+  constexpr std::string_view kPrefix = "v,Version ";
+  if (!line.starts_with(kPrefix) || !line.ends_with("\r\n")) return false;
+  const std::string_view text = line.substr(2, line.size() - 4);
+  for (const char c : text)
+    if (c < 0x20 || c > 0x7E) return false;
+  std::size_t i = kPrefix.size();
+  std::uint32_t major = 0;
+  const std::size_t from = i;
+  while (i < line.size() && line[i] >= '0' && line[i] <= '9' && i - from < 6)
+    major = major * 10 + static_cast<std::uint32_t>(line[i++] - '0');
+  return i > from && major >= 2;
+}
+
 Verdict SequenceFraming::classify(std::string_view request, std::string_view unit) const {
   Verdict v;
+  if (request == kVersionRequest) {
+    // A line: the reply when it is `v,` and printable text, CR LF; any other line read past.
+    bool reply = unit.starts_with("v,") && unit.ends_with("\r\n");
+    for (std::size_t i = 2; reply && i + 2 < unit.size(); ++i)
+      reply = unit[i] >= 0x20 && unit[i] <= 0x7E;
+    v.kind = reply ? ReplyKind::Reply : ReplyKind::Stale;
+    return v;
+  }
   const std::size_t n = reply_size(request);
   if (unit.size() != n) {
     v.why = "byte " + std::to_string(std::min(unit.size(), n) + 1) + ": expected " +
@@ -249,6 +271,7 @@ StopPlan SequenceFraming::stop_plan() const {
 }
 
 std::string SequenceFraming::describe(std::string_view request) const {
+  if (request == kVersionRequest) return "'" + printable(request) + "'";
   return "the sequence '" + printable(request) + "'";
 }
 

@@ -122,7 +122,7 @@ std::int64_t RobotLink::now_ns() const noexcept {
 
 std::string RobotLink::transact(const std::string& request, std::vector<Exchange>& io) {
   const Framing& framing = *framing_;
-  const bool lines = framing.reading() == Reading::Lines;
+  const bool lines = framing.reading_for(request) == Reading::Lines;
   const bool resyncs = !framing.resync().empty();
   std::string why;
   for (std::uint32_t attempt = 0; attempt < options_.tries; ++attempt) {

@@ -793,8 +793,8 @@ void LogReader::read_header() {
   if (!c.done()) c.fail("unexpected bytes after the header object");
   if (have_schema && !can_replay_schema(header_.schema)) {
     c.set(data_.data());
-    c.fail("schema version " + std::to_string(header_.schema) + "; this antkit reads schema " +
-           std::to_string(kLogSchemaVersion));
+    c.fail("schema version " + std::to_string(header_.schema) + "; this antkit reads schemas " +
+           std::to_string(kOldestLogSchema) + " to " + std::to_string(kLogSchemaVersion));
   }
   if (unknown_at != nullptr) {
     c.set(unknown_at);

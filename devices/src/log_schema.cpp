@@ -3,7 +3,7 @@
 namespace antkit::devices {
 
 bool can_replay_schema(std::uint32_t version) noexcept {
-  return version == kLogSchemaVersion;
+  return version >= kOldestLogSchema && version <= kLogSchemaVersion;
 }
 
 } // namespace antkit::devices

@@ -38,7 +38,7 @@ std::string LoggedLink::transact(const std::string& request, std::vector<Exchang
     const std::size_t at = k_ - 1;
     ++sends_;
     last_send_ns_ = e.t_ns;
-    if (framing_.reading() == Reading::Bytes) {
+    if (framing_.reading_for(request) == Reading::Bytes) {
       // The reply's size exactly (fewer: the live link timed out; more: bytes after the reply).
       if (e.received.size() == framing_.reply_size(request) &&
           framing_.classify(request, e.received).kind == ReplyKind::Reply)

@@ -145,6 +145,24 @@ std::string Codec::set_led(std::int32_t led, std::int32_t action) const {
 std::string Codec::version() const {
   return command(*robot_, robot_->version_letter, {});
 }
+bool Codec::identifies(std::string_view version_reply) const {
+  if (robot_->identifies == nullptr) return false;
+  if (!scan_text(version_reply, lower(robot_->version_letter))) return false;
+  std::string_view text = version_reply.substr(1, version_reply.size() - 3); // letter .. CR LF
+  if (!text.empty()) text.remove_prefix(1);                                  // the comma
+  return robot_->identifies(text);
+}
+
+std::string identified_as(std::string_view version_command, std::string_view reply) {
+  std::string out;
+  for (const auto kind : kSerialRobots) {
+    const Codec codec(kind);
+    if (codec.version() != version_command || !codec.identifies(reply)) continue;
+    out += (out.empty() ? "" : ", ") + std::string(codec.robot().name);
+  }
+  return out;
+}
+
 std::vector<std::string> Codec::safe_stop() const {
   std::vector<std::string> out;
   for (const auto c : robot_->safe_stop)

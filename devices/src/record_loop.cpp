@@ -60,6 +60,13 @@ namespace detail {
 Body::Body(CommandLink& link, const Codec& codec, std::chrono::nanoseconds period)
     : link_(link), codec_(codec), robot_(codec.robot()), period_(period) {}
 
+void Body::identify(std::vector<Exchange>& io) {
+  if (robot_.identifies == nullptr) return;
+  identify_by_version(
+      link_, codec_.version(), [&](std::string_view reply) { return codec_.identifies(reply); },
+      robot_.name, robot_.identity, io);
+}
+
 void Body::start(std::vector<Exchange>& io) {
   if (!robot_.has_odometry) return;
   if (robot_.odometry_set != 0) {
@@ -164,6 +171,45 @@ void act(Body& body, bool wander, std::span<const std::int64_t> cmd, std::vector
 
 } // namespace detail
 
+void identify_by_version(CommandLink& link, const std::string& request,
+                         const std::function<bool(std::string_view reply)>& identifies,
+                         std::string_view name, std::string_view identity,
+                         std::vector<Exchange>& io) {
+  const std::size_t first = io.size();
+  const auto refuse = [&](const std::string& reply) {
+    const std::string as = identified_as(request, reply);
+    throw WrongRobot("the robot answers '" + printable(reply) + "' to '" + printable(request) +
+                     "', not as --device " + std::string(name) + " does (" + std::string(identity) +
+                     ")" +
+                     (as.empty() ? std::string() : "; it answers as --device " + as + " does"));
+  };
+  std::string reply;
+  try {
+    reply = link.transact(request, io);
+  } catch (const LinkError& e) {
+    if (e.kind() != LinkError::Kind::Timeout) throw;
+    // Every try answered, with whole lines that are not a reply to the version request: a robot of
+    // another protocol (an error line; the Webots relay's bare LF). The last such line is named.
+    std::string last;
+    bool every = true, any = false;
+    for (std::size_t k = first; k < io.size(); ++k) {
+      const Exchange& x = io[k];
+      if (x.sent != request) continue; // drained bytes, a resynchronisation
+      any = true;
+      const std::string_view r = x.received;
+      if (r.empty() || r.back() != '\n') {
+        every = false; // silence or a partial line: a link fault, not an answer
+        break;
+      }
+      const auto from = r.size() >= 2 ? r.rfind('\n', r.size() - 2) : std::string_view::npos;
+      last = std::string(r.substr(from == std::string_view::npos ? 0 : from + 1));
+    }
+    if (!any || !every) throw;
+    refuse(last);
+  }
+  if (!identifies(reply)) refuse(reply);
+}
+
 std::chrono::nanoseconds model_period(const RobotDescription& robot) {
   // A simulator step moves kDefaultSpeed body diameters at unit speed; the robot covers that at
   // speed_full x speed_unit_um_s micrometres per second.
@@ -253,13 +299,26 @@ RecordSummary record(const RecordOptions& options, const RecordProgress& progres
   LinkOptions link_options = options.link;
   link_options.origin = t0;
   const std::unique_ptr<Session> session = run.connect(std::move(*port), link_options);
+  std::vector<Exchange> pending; // exchanges of the step under way
+  // The robot identified before the log is opened (record_loop.hpp, "First, at connect"): another
+  // robot is a wrong --device, bad input with no log; only the version request was sent to it.
+  std::optional<LinkError> unidentified;
+  try {
+    session->identify(pending);
+  } catch (const WrongRobot& e) {
+    throw kernel::InputError("device",
+                             options.device + " at " + options.port + ": " + e.what() +
+                                 " (only the identification was sent: the robot was not driven)");
+  } catch (const LinkError& e) {
+    unidentified = e; // the link failed: a run that stopped at once, with its log
+  }
   LogWriter log(options.out, header, options.sync_every, options.force);
 
   RunHash hash;
   LogRecord rec;
-  std::vector<Exchange> pending; // exchanges of the step under way
   std::string detail;
   try {
+    if (unidentified) throw *unidentified;
     session->start(pending);
     bool more = true;
     for (std::int64_t step = 0; more && step < run.steps; ++step) {

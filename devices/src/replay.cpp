@@ -217,6 +217,9 @@ ReplayResult replay_serial(LogReader& reader, const std::string& path,
   const LineFraming framing(kind);
   const RobotDescription& robot = framing.codec().robot();
   const bool wander = header.controller == "wander";
+  // Schema 2 logs begin with the identification at connect (record_loop.hpp); schema 1 logs were
+  // written before it and begin with the start's exchanges (log_schema.hpp).
+  const bool identified = header.schema >= 2;
   // The same body as record() (body.hpp), over the log's exchanges.
   LoggedLink link(framing, {});
   detail::Body body(link, framing.codec());
@@ -238,7 +241,10 @@ ReplayResult replay_serial(LogReader& reader, const std::string& path,
         link.load(r.io, r.step, "io");
         seen.clear();
         try {
-          if (r.step == 0) body.start(seen);
+          if (r.step == 0) {
+            if (identified) body.identify(seen);
+            body.start(seen);
+          }
           const Proximity readings = body.read_sensors(seen);
           controller->observe(robot, readings, obs);
           if (!compare_fields(r.obs, obs, r.step, "obs", d)) return d;
@@ -258,6 +264,11 @@ ReplayResult replay_serial(LogReader& reader, const std::string& path,
           if (!compare_fields(r.odo, derived, r.step, "odo", d)) return d;
         } catch (const Diverged& x) {
           return std::optional<Divergence>(x.d);
+        } catch (const WrongRobot& e) {
+          return std::optional<Divergence>(
+              Divergence{r.step, "io[0].received", std::string(e.what()),
+                         "a reply identifying a " + std::string(robot.name) + ": " +
+                             std::string(robot.identity)});
         } catch (const LinkError& e) {
           return std::optional<Divergence>(
               Divergence{r.step, "io", "the step's exchanges", std::string(e.what())});

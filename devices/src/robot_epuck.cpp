@@ -10,6 +10,18 @@ namespace antkit::devices::detail {
 
 namespace {
 
+// Identification (record's, at connect): PROTOCOLS.md, "e-puck (advanced sercom, ASCII mode)" and
+// the binary-mode section's ASCII differences: `V` -> `v,Version 1.2.2 August 2008 GCtronic` on
+// the e-puck1, `v,Version 2.0 January 2018 GCtronic` on the e-puck2 (asercom), then a second line
+// "HW version: ..." (our emulator sends only the first): the link drains it as a late line before
+// the next command, or, when it comes after that command was sent, takes it for a bad reply and
+// resends the command (the start's P,0,0: idempotent). The choice: the
+// text starts with "Version " (both firmwares speak this ASCII protocol); the Khepera, the Hemisson
+// and the Webots relay do not know V (an error line, or the relay's bare LF).
+constexpr bool asercom_version(std::string_view text) noexcept {
+  return text.starts_with("Version ");
+}
+
 constexpr RobotDescription kEpuck{
     .kind = RobotKind::Epuck,
     .name = "epuck",
@@ -35,6 +47,8 @@ constexpr RobotDescription kEpuck{
     .odometry_pulse_nm = 128805,
     .version_letter = 'V',
     .version_reply = "v,Version 1.2.2 antkit emulator\r\n",
+    .identifies = asercom_version,
+    .identity = "v,Version ... (advanced sercom's version text)",
     .safe_stop = {"D,0,0", "S"}, // S: "stop and LEDs off" in one command (asercom)
     .stop_letter = 'S',
     .proximity_extra = 2,

@@ -11,6 +11,14 @@ namespace antkit::devices::detail {
 
 namespace {
 
+// Identification (record's, at connect): PROTOCOLS.md, "Hemisson": `B` answers the HemiOS version
+// (RoadNarrows' HemiCmdBase reads it as text, e.g. "HemiOS_v1.50"). The choice: the text starts
+// with "HemiOS", whatever the version after it (versions differ in detail, PROTOCOLS.md); a
+// Khepera's or the Webots relay's B answers numbers.
+constexpr bool hemios_version(std::string_view text) noexcept {
+  return text.starts_with("HemiOS");
+}
+
 constexpr RobotDescription kHemisson{
     .kind = RobotKind::Hemisson,
     .name = "hemisson",
@@ -36,6 +44,8 @@ constexpr RobotDescription kHemisson{
     .odometry_pulse_nm = 0,
     .version_letter = 'B',
     .version_reply = "b,HemiOS_v1.50 antkit emulator\r\n",
+    .identifies = hemios_version,
+    .identity = "b,HemiOS... (HemiOS's version text)",
     .safe_stop = {"D,0,0"}, // HemiOS's LED commands differ between versions: none sent
     .reading_digits = 3,    // HemiOS pads sensor readings to three digits (protocol.hpp)
     .unknown_reply = "z,Protocol error\r\n",

@@ -10,6 +10,26 @@ namespace antkit::devices::detail {
 
 namespace {
 
+// A dotted version number: digits, '.', digits.
+constexpr bool dotted(std::string_view v) noexcept {
+  const auto dot = v.find('.');
+  if (dot == 0 || dot == std::string_view::npos || dot + 1 == v.size()) return false;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (i != dot && (v[i] < '0' || v[i] > '9')) return false;
+  return true;
+}
+
+// Identification (record's, at connect): PROTOCOLS.md, "Khepera": `B` -> `b,5.02,5.01`, the BIOS
+// and protocol versions (Khepera II User Manual v1.1, 6.2). The choice: any two dotted version
+// numbers, since other BIOS releases print other numbers; this is what tells the robot from the
+// Webots relay, which imitates its protocol but answers `b,0,0` ("Khepera in Webots", tcpip.c),
+// and from a Hemisson, whose B answers HemiOS's version text.
+constexpr bool khepera_version(std::string_view text) noexcept {
+  const auto comma = text.find(',');
+  return comma != std::string_view::npos && dotted(text.substr(0, comma)) &&
+         dotted(text.substr(comma + 1));
+}
+
 constexpr RobotDescription kKhepera{
     .kind = RobotKind::Khepera,
     .name = "khepera",
@@ -35,6 +55,8 @@ constexpr RobotDescription kKhepera{
     .odometry_pulse_nm = 80000,
     .version_letter = 'B',
     .version_reply = "b,5.02,5.01\r\n",
+    .identifies = khepera_version,
+    .identity = "b,BIOS,PROTOCOL with dotted version numbers (b,5.02,5.01 on a Khepera II)",
     .safe_stop = {"D,0,0", "L,0,0", "L,1,0"}, // wheels, then both LEDs off (L,n,0)
     .unknown_reply = "z,Protocol error\r\n",
 };

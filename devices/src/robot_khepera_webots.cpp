@@ -16,6 +16,13 @@ namespace antkit::devices::detail {
 
 namespace {
 
+// Identification (record's, at connect): PROTOCOLS.md, "Khepera in Webots": `B` -> `b,0,0`
+// exactly, the relay's "pretend version string" (tcpip.c); a real Khepera answers its BIOS and
+// protocol versions (b,5.02,5.01), so the two are told apart although they share the protocol.
+constexpr bool relay_version(std::string_view text) noexcept {
+  return text == "0,0";
+}
+
 constexpr RobotDescription kKheperaWebots{
     .kind = RobotKind::KheperaWebots,
     .name = "khepera-webots",
@@ -41,7 +48,9 @@ constexpr RobotDescription kKheperaWebots{
     .odometry_pulse_nm = 471239, // 2 pi x 7.5 mm / 100
     .reads_speed = false,        // the relay answers no E
     .version_letter = 'B',
-    .version_reply = "b,0,0\r\n",             // "a pretend version string" (tcpip.c)
+    .version_reply = "b,0,0\r\n", // "a pretend version string" (tcpip.c)
+    .identifies = relay_version,
+    .identity = "b,0,0 (the relay's pretend version)",
     .safe_stop = {"D,0,0", "L,0,0", "L,1,0"}, // the relay has L for LEDs 0 and 1 (tcpip.c)
     // The relay answers what it does not know with a bare LF (tcpip.c: send(fd, "\n", 1)).
     .unknown_reply = "\n",

@@ -64,9 +64,9 @@ TEST_CASE("antkit emulate + record + replay + buffon-from-logs, end to end", "[c
   CHECK(status == 0);
   const auto s = nlohmann::json::parse(summary);
   CHECK(s["sessions"] == 2);
-  // Per session: G, then N D H per step, then the safe stop's commands.
-  CHECK(s["commands"].get<int>() >= 2 * (1 + 3 * 400 + 1));
-  CHECK(s["commands"].get<int>() <= 2 * (1 + 3 * 400 + 4));
+  // Per session: B (the identification) and G, then N D H per step, then the safe stop's commands.
+  CHECK(s["commands"].get<int>() >= 2 * (2 + 3 * 400 + 1));
+  CHECK(s["commands"].get<int>() <= 2 * (2 + 3 * 400 + 4));
 
   const auto b = run_antkit("buffon-from-logs " + logs[0] + " " + logs[1] + " --format json");
   INFO(b.err);

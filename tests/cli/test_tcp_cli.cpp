@@ -141,3 +141,30 @@ TEST_CASE(
   CHECK(j["faults"]["timeouts"] == 0);
   emu.finish(SIGTERM);
 }
+
+TEST_CASE("antkit record refuses a robot that is not --device's: exit 2, no log, the robot not "
+          "driven",
+          "[cli][devices]") {
+  const auto dir = scratch_dir("wrong-robot");
+  Child emu({"emulate", "khepera-webots", "--arena", "circle:d=8", "--listen", "127.0.0.1:0",
+             "--format", "json"});
+  const std::string port = emu.first_line();
+  const auto log = dir / "wrong.jsonl";
+  const auto r = run_antkit("record --device khepera --port " + port +
+                            " --controller buffon --visit 1 --steps 100 --out " + log.string() +
+                            " --format json");
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err ==
+        "antkit: error: --device: khepera at " + port +
+            ": the robot answers 'b,0,0\\r\\n' to 'B\\r', not as --device khepera does "
+            "(b,BIOS,PROTOCOL with dotted version numbers (b,5.02,5.01 on a Khepera II)); "
+            "it answers as --device khepera-webots does (only the identification was sent: "
+            "the robot was not driven)\n");
+  CHECK(!std::filesystem::exists(log));
+  const auto [status, summary] = emu.finish(SIGTERM);
+  CHECK(status == 0);
+  const auto s = nlohmann::json::parse(summary);
+  CHECK(s["commands"] == 1); // B, and nothing else
+  CHECK(s["periods"] == 0);  // never moved
+}

@@ -11,8 +11,10 @@
 #include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/geometry/arena_spec.hpp>
+#include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <filesystem>
 #include <functional>
 #include <thread>
 
@@ -213,16 +215,22 @@ TEST_CASE("epuck2 records over a pty in one round trip a step, and the log repla
   CHECK(s.link.retries <= 1); // 0 but on a loaded host (the banner later than the resync's read)
   CHECK(s.safe_stop.stopped);
   CHECK(s.hash == ascii_hash); // the same observations, commands and states as the ASCII e-puck
-  // One sequence a step: the start's resync and counters, then one exchange per step.
+  // One sequence a step: the identification (a resync, then the ASCII V), the start's resync and
+  // counters, then one exchange per step.
   devices::LogReader reader(log);
   CHECK(reader.header().robot == "epuck2");
+  CHECK(reader.header().schema == 2);
   devices::LogRecord rec;
   REQUIRE(reader.next(rec));
   for (const auto& e : rec.io)
     UNSCOPED_INFO(devices::printable(e.sent) << " -> " << devices::printable(e.received));
-  REQUIRE(rec.io.size() >= 3);
+  REQUIRE(rec.io.size() >= 5);
   CHECK(rec.io[0].sent == epuck2::resync_bytes());
-  CHECK(rec.io[1].sent == epuck2::start_sequence());
+  CHECK(rec.io[1].sent == "V\r");
+  CHECK(rec.io[1].received == "v,Version 2.0 antkit epuck2 emulator\r\n");
+  CHECK(rec.io[2].sent == epuck2::resync_bytes());
+  CHECK(rec.io[2].received == "HW version: FFF7\r\n"); // V's second line, read off by the resync
+  CHECK(rec.io[3].sent == epuck2::start_sequence());
   CHECK(rec.io.back().sent == epuck2::step_sequence(0, 0));
   CHECK(rec.io.back().received.size() == 20);
   std::string step0;
@@ -300,6 +308,53 @@ TEST_CASE("epuck2 records over TCP", "[devices]") {
   CHECK(s.safe_stop.stopped);
   CHECK(s.link.retries <= 1);
   CHECK(devices::replay(log).identical);
+}
+
+TEST_CASE("epuck2: identified at connect by its ASCII V, another robot refused with no log",
+          "[devices]") {
+  TempDir dir;
+  SECTION("an ASCII e-puck (its V answers errors to the resync's zeros and V)") {
+    antkit::test::EmulatedRobot ascii(devices::RobotKind::Epuck, "circle:d=8");
+    const auto log = dir.file("wrong.jsonl");
+    auto o = options(ascii.port(), 100, log);
+    o.link.tries = 3;
+    try {
+      (void)devices::record(o);
+      FAIL("an ASCII e-puck was taken for an e-puck2");
+    } catch (const antkit::kernel::InputError& e) {
+      INFO(e.what());
+      CHECK(e.where() == "device");
+      CHECK(std::string(e.what()).find("to 'V\\r', not as --device epuck2 does") !=
+            std::string::npos);
+    }
+    CHECK(!std::filesystem::exists(log));
+    ascii.stop();
+    CHECK(ascii.emulator().trail().size() == 1); // never moved
+  }
+  SECTION("the e-puck2's rule") {
+    CHECK(epuck2::identifies("v,Version 2.0 January 2018 GCtronic\r\n"));
+    CHECK(epuck2::identifies("v,Version 12.1\r\n"));
+    CHECK_FALSE(epuck2::identifies("v,Version 1.2.2 August 2008 GCtronic\r\n")); // e-puck1
+    CHECK_FALSE(epuck2::identifies("v,Version x\r\n"));
+    CHECK_FALSE(epuck2::identifies("v,Version 2.0\n"));
+    CHECK_FALSE(epuck2::identifies("b,0,0\r\n"));
+    CHECK_FALSE(epuck2::identifies("HW version: FFF7\r\n"));
+  }
+  SECTION("a schema-2 log whose V reply is edited diverges") {
+    Epuck2OnPty emu;
+    const auto log = dir.file("right.jsonl");
+    const auto s = devices::record(options(emu.port(), 10, log));
+    REQUIRE(s.completed);
+    emu.stop();
+    CHECK(devices::replay(log).identical);
+    auto lines = lines_of(log);
+    lines[1].replace(lines[1].find("Version 2.0"), 11, "Version 1.2");
+    const auto elog = dir.file("edited.jsonl");
+    write_lines(elog, lines);
+    const auto r = devices::replay(elog);
+    REQUIRE_FALSE(r.identical);
+    CHECK(r.first_divergence->step == 0);
+  }
 }
 
 TEST_CASE("epuck2 survives short replies, leftover bytes, a banner and lost terminators",

@@ -41,7 +41,7 @@ devices::LogRecord record(std::int64_t step) {
 }
 
 const std::string kHeader =
-    R"({"schema":1,"antkit":"0.1.0","robot":"khepera","port":{"path":"/dev/pts/3","baud":9600,)"
+    R"({"schema":2,"antkit":"0.1.0","robot":"khepera","port":{"path":"/dev/pts/3","baud":9600,)"
     R"("framing":"8N2"},"controller":{"name":"buffon","params":{"trial":0,"visit":1}},"seed":1})";
 
 // The error a log with `line` as its first record gets: line and column.
@@ -239,14 +239,24 @@ TEST_CASE("malformed lines are refused with their line and column", "[devices]")
 
 TEST_CASE("a log of another schema version is refused", "[devices]") {
   std::string h = kHeader;
-  h.replace(h.find("\"schema\":1"), 10, "\"schema\":2");
+  h.replace(h.find("\"schema\":2"), 10, "\"schema\":3");
   try {
     devices::LogReader r("s.jsonl", h + "\n");
-    FAIL("schema 2 accepted");
+    FAIL("schema 3 accepted");
   } catch (const InputError& e) {
     CHECK(e.line() == 1);
-    CHECK(std::string(e.what()) == "s.jsonl:1:1: schema version 2; this antkit reads schema 1");
+    CHECK(std::string(e.what()) ==
+          "s.jsonl:1:1: schema version 3; this antkit reads schemas 1 to 2");
   }
+  h.replace(h.find("\"schema\":3"), 10, "\"schema\":0");
+  CHECK_THROWS_AS(devices::LogReader("s.jsonl", h + "\n"), InputError);
+}
+
+TEST_CASE("a log of schema 1 (before the identification at connect) is still read", "[devices]") {
+  std::string h = kHeader;
+  h.replace(h.find("\"schema\":2"), 10, "\"schema\":1");
+  devices::LogReader r("s.jsonl", h + "\n");
+  CHECK(r.header().schema == 1);
 }
 
 TEST_CASE("a last line cut at any byte is reported and every record before it is read",

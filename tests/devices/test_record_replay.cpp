@@ -206,12 +206,13 @@ TEST_CASE("a disconnect stops the run, and every step before it is in the log an
       devices::record(options_for(RobotKind::Khepera, emu.port(), "buffon", {}, 500, log));
   CHECK(!s.completed);
   CHECK(s.stop.find("disconnected") != std::string::npos);
-  // 100 commands answered: G, then three per step (N, D, H) -> 33 whole steps.
-  CHECK(s.steps == 33);
-  CHECK(count_records(log) == 33);
+  // 100 commands answered: B (the identification), G, then three per step (N, D, H) -> 32 whole
+  // steps.
+  CHECK(s.steps == 32);
+  CHECK(count_records(log) == 32);
   const auto r = devices::replay(log);
   CHECK(r.identical);
-  CHECK(r.steps == 33);
+  CHECK(r.steps == 32);
   REQUIRE(r.stop.has_value());
   CHECK(r.stop->reason.find("disconnected") != std::string::npos);
   CHECK(!r.stop->io.empty()); // the unanswered command and the attempted safe stop
@@ -335,17 +336,17 @@ TEST_CASE("a truncated log replays up to its cut, and another schema version is 
   CHECK(r.steps == 20);
   CHECK(!r.stop.has_value());
 
-  // Schema 2: refused with the version in the message, at line 1.
+  // Schema 3: refused with the version in the message, at line 1.
   auto header = lines[0];
-  const auto at = header.find("\"schema\":1");
+  const auto at = header.find("\"schema\":2");
   REQUIRE(at != std::string::npos);
-  header.replace(at, 10, "\"schema\":2");
+  header.replace(at, 10, "\"schema\":3");
   lines[0] = header;
-  const auto other = dir.file("schema2.jsonl");
+  const auto other = dir.file("schema3.jsonl");
   write_lines(other, lines);
   try {
     devices::replay(other);
-    FAIL("a schema 2 log was accepted");
+    FAIL("a schema 3 log was accepted");
   } catch (const antkit::kernel::InputError& e) {
     CHECK(e.line() == 1);
     CHECK(std::string(e.what()).find("schema") != std::string::npos);

@@ -15,6 +15,7 @@
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <filesystem>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <thread>
@@ -251,12 +252,181 @@ TEST_CASE("khepera-webots: the emulator answers as the relay does", "[devices]")
   // `exit` closes the connection.
   port.write_all("exit\r", 1000ms);
   CHECK_THROWS_AS(port.read_line(5000ms), LinkError);
-  // The next connection is the next session: the body back at its start, the counters at zero.
-  auto again = client(emu.port());
-  CHECK(ask(again, "H\r") == "h,0,0\r\n");
-  again.close();
+  // And the relay takes no other client until the world is reset (the next test).
   emu.stop();
-  CHECK(emu.emulator().sessions() == 2);
+  CHECK(emu.emulator().sessions() == 1);
+}
+
+TEST_CASE("khepera-webots: the emulator acts on the first command of a read only, as the relay",
+          "[devices]") {
+  OnTcp emu(RobotKind::KheperaWebots, "circle:d=8");
+  auto port = client(emu.port());
+  CHECK(ask(port, "D,10,10\r") == "d\r\n");
+  // Two commands in one write arrive in one read: the first is answered, the second is lost.
+  port.write_all("B\rN\r", 1000ms);
+  CHECK(port.read_line(5000ms).bytes == "b,0,0\r\n");
+  const auto nothing = port.read_line(300ms);
+  CHECK(nothing.bytes.empty()); // no reply to N: it was never acted on
+  // N was lost, so the body has not moved: the wheels' counters still read zero.
+  CHECK(ask(port, "H\r") == "h,0,0\r\n");
+  // One command and its reply, then the next: each is acted on.
+  CHECK(ask(port, "N\r").rfind("n,", 0) == 0);
+  CHECK(ask(port, "H\r") != "h,0,0\r\n");
+  // A read holding D and then N sets the speeds only.
+  port.write_all("D,0,0\rN\r", 1000ms);
+  CHECK(port.read_line(5000ms).bytes == "d\r\n");
+  CHECK(port.read_line(300ms).bytes.empty());
+  const auto h = ask(port, "H\r");
+  CHECK(ask(port, "N\r").rfind("n,", 0) == 0);
+  CHECK(ask(port, "H\r") == h); // stopped: N advanced a control period, the wheels did not turn
+  port.close();
+  emu.stop();
+  CHECK(emu.emulator().trail().size() == 3); // the start, and the two N acted on
+}
+
+TEST_CASE("khepera-webots: the emulator accepts one client, once, as the relay", "[devices]") {
+  OnTcp emu(RobotKind::KheperaWebots, "circle:d=8");
+  auto first = client(emu.port());
+  CHECK(ask(first, "B\r") == "b,0,0\r\n");
+  // A second client while the first is connected: its connect completes in the backlog, but
+  // nothing it sends is read or answered.
+  auto second = client(emu.port());
+  second.write_all("B\r", 1000ms);
+  CHECK(second.read_line(300ms).bytes.empty());
+  CHECK(ask(first, "B\r") == "b,0,0\r\n"); // the first is served as before
+  second.close();
+  // The first leaves; a client that comes after it is not served either (the relay accepts once,
+  // when the simulation starts).
+  first.close();
+  std::this_thread::sleep_for(100ms);
+  bool served = false;
+  try {
+    auto again = client(emu.port());
+    again.write_all("B\r", 1000ms);
+    served = again.read_line(300ms).complete;
+  } catch (const LinkError&) {
+    // refused outright: not served either
+  }
+  CHECK(!served);
+  emu.stop();
+  CHECK(emu.emulator().sessions() == 1);
+  CHECK(emu.emulator().commands() == 2);
+}
+
+TEST_CASE("khepera-webots: the record loop (one command, then its reply) runs against the strict "
+          "emulator, and a second run is not served",
+          "[devices]") {
+  TempDir dir;
+  OnTcp emu(RobotKind::KheperaWebots, "circle:d=8");
+  const auto log = dir.file("first.jsonl");
+  const auto s = devices::record(options_for(RobotKind::KheperaWebots, emu.port(), 100, log));
+  INFO(s.stop);
+  CHECK(s.completed);
+  CHECK(s.link.retries == 0);
+  CHECK(s.safe_stop.stopped);
+  // A second run: connected, never answered -- a link failure, the log says so.
+  auto o = options_for(RobotKind::KheperaWebots, emu.port(), 100, dir.file("second.jsonl"));
+  o.link.timeout = 50ms;
+  o.link.tries = 2;
+  o.link.stop_within = 300ms;
+  const auto t = devices::record(o);
+  CHECK(t.steps == 0);
+  CHECK(t.kind == devices::StopKind::Link);
+  CHECK(!t.safe_stop.stopped);
+  emu.stop();
+  CHECK(emu.emulator().sessions() == 1);
+  const auto r = devices::replay(log);
+  CHECK(r.identical);
+  CHECK(r.hash == s.hash);
+}
+
+TEST_CASE("identification: a robot that is not the device asked for is refused at connect, with "
+          "nothing but the version request sent and no log",
+          "[devices]") {
+  TempDir dir;
+  SECTION("--device khepera against the Webots relay (its b,0,0)") {
+    WebotsRelay relay;
+    const auto log = dir.file("wrong.jsonl");
+    try {
+      (void)devices::record(options_for(RobotKind::Khepera, relay.port_spec(), 100, log));
+      FAIL("the relay was taken for a Khepera");
+    } catch (const antkit::kernel::InputError& e) {
+      CHECK(e.where() == "device");
+      const std::string what = e.what();
+      INFO(what);
+      CHECK(what.find("the robot answers 'b,0,0\\r\\n' to 'B\\r', not as --device khepera does") !=
+            std::string::npos);
+      CHECK(what.find("it answers as --device khepera-webots does") != std::string::npos);
+    }
+    CHECK(!std::filesystem::exists(log));
+    CHECK(relay.reads() == std::vector<std::string>{"B\r"}); // nothing else: never driven
+  }
+  SECTION("--device khepera-webots against a Khepera") {
+    OnTcp emu(RobotKind::Khepera, "circle:d=8");
+    const auto log = dir.file("wrong.jsonl");
+    try {
+      (void)devices::record(options_for(RobotKind::KheperaWebots, emu.port(), 100, log));
+      FAIL("a Khepera was taken for the relay");
+    } catch (const antkit::kernel::InputError& e) {
+      CHECK(std::string(e.what()).find("answers 'b,5.02,5.01\\r\\n' to 'B\\r', not as --device "
+                                       "khepera-webots does") != std::string::npos);
+      CHECK(std::string(e.what()).find("--device khepera does") != std::string::npos);
+    }
+    CHECK(!std::filesystem::exists(log));
+    emu.stop();
+    CHECK(emu.emulator().commands() == 1);
+    CHECK(emu.emulator().trail().size() == 1); // never moved
+  }
+  SECTION("--device epuck against the relay, which does not know V") {
+    WebotsRelay relay;
+    const auto log = dir.file("wrong.jsonl");
+    try {
+      (void)devices::record(options_for(RobotKind::Epuck, relay.port_spec(), 100, log));
+      FAIL("the relay was taken for an e-puck");
+    } catch (const antkit::kernel::InputError& e) {
+      CHECK(std::string(e.what()).find("answers '\\n' to 'V\\r', not as --device epuck does") !=
+            std::string::npos);
+    }
+    CHECK(!std::filesystem::exists(log));
+    for (const auto& read : relay.reads()) CHECK(read == "V\r"); // its tries, nothing else
+  }
+  SECTION("the right device: the identification is step 0's first exchange, and replay checks "
+          "it") {
+    WebotsRelay relay;
+    const auto log = dir.file("right.jsonl");
+    const auto s =
+        devices::record(options_for(RobotKind::KheperaWebots, relay.port_spec(), 20, log));
+    CHECK(s.completed);
+    CHECK(relay.reads().front() == "B\r");
+    auto lines = antkit::test::lines_of(log);
+    REQUIRE(lines.size() == 22);
+    CHECK(lines[0].rfind("{\"schema\":2,", 0) == 0);
+    CHECK(lines[1].find("\"io\":[[\"B\\r\",\"b,0,0\\r\\n\",") != std::string::npos);
+    CHECK(devices::replay(log).identical);
+    // A reply that identifies another robot diverges there.
+    const auto edited = dir.file("edited.jsonl");
+    auto copy = lines;
+    copy[1].replace(copy[1].find("b,0,0"), 5, "b,5.02,5.01");
+    antkit::test::write_lines(edited, copy);
+    const auto r = devices::replay(edited);
+    CHECK(!r.identical);
+    REQUIRE(r.first_divergence);
+    CHECK(r.first_divergence->step == 0);
+    CHECK(r.first_divergence->field == "io[0].received");
+    // A schema-2 log without its identification diverges at its first exchange.
+    copy = lines;
+    const auto at = copy[1].find("[\"B\\r\"");
+    copy[1].erase(at, copy[1].find(']', at) + 2 - at);
+    antkit::test::write_lines(edited, copy);
+    const auto missing = devices::replay(edited);
+    CHECK(!missing.identical);
+    REQUIRE(missing.first_divergence);
+    CHECK(missing.first_divergence->field == "io[0].sent");
+    // The same log declared schema 1 (before the identification) replays without it.
+    copy[0].replace(0, 11, "{\"schema\":1");
+    antkit::test::write_lines(edited, copy);
+    CHECK(devices::replay(edited).identical);
+  }
 }
 
 TEST_CASE("the relay test server: one command per read, one client once", "[devices]") {

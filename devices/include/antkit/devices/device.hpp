@@ -49,6 +49,10 @@ namespace antkit::devices {
 class Session {
 public:
   virtual ~Session() = default;
+  // At connect, before the log is opened: asks the robot who it is where its protocol allows and
+  // throws WrongRobot when it is another (record_loop.hpp); LinkError when the link fails. The
+  // exchanges go into `io` (step 0's record). Nothing for a robot that cannot be identified.
+  virtual void identify(std::vector<Exchange>& io) { (void)io; }
   // Before the first step (the wheel counters' reset, the marker-floor robot's dark frame).
   virtual void start(std::vector<Exchange>& io) = 0;
   // One control step: fills rec.obs, rec.cmd, rec.odo and rec.state (record() sets step, t_ns

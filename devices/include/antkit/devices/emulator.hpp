@@ -41,7 +41,7 @@
 // Over TCP (serve_tcp, `antkit emulate ... --listen HOST:PORT`): a session is one connection; one
 // client at a time, a second one is refused while the first is connected (TcpListener, serial.hpp);
 // the next connection is the next session. A disconnect fault closes the connection and ends the
-// serving, as it hangs up a pty.
+// serving, as it hangs up a pty. The Webots relay is stricter (below): one client, once.
 //
 // The Khepera in Webots (RobotKind::KheperaWebots) answers as the relay controller does
 // (PROTOCOLS.md, "Khepera in Webots"; Webots' khepera1/controllers/tcpip/tcpip.c): it acts on the
@@ -49,11 +49,20 @@
 // Webots clamps a velocity above it) and is acknowledged whatever follows the letter; G is
 // acknowledged and does nothing; H counts 100 a wheel turn (50 * angle / pi, truncated toward zero
 // as the relay's cast to int), cumulative; L is acknowledged; B answers "b,0,0"; anything else (E,
-// an unknown letter, a malformed line) gets a bare "\n"; `exit` closes the connection. Unlike the
-// relay, it is line-based (two commands in one TCP segment are two commands; the relay loses the
-// second: a client waits for each reply anyway) and serves one session after another; each session
-// starts the body and the counters afresh -- what a Webots world reset does to the relay, which
-// accepts one client per simulation run -- and the counters are cumulative within a session.
+// an unknown letter, a malformed line) gets a bare "\n"; `exit` closes the connection. It is as
+// strict as the relay (issue 43), so that a client that works against it works against Webots:
+//   * one command a read: the relay reads at most 256 bytes a control step and acts on the first
+//     letter of what it read, so the emulator reads its input as bytes, at most 256 a read, and
+//     acts on the read's first line only: a second command that arrived in the same read is lost,
+//     unanswered (a client sends one command and waits for its reply, as the record loop does);
+//   * over TCP, one client, once: the relay listens with a backlog of 1 and calls accept() once,
+//     when the simulation starts. The emulator accepts its first client and never accepts again:
+//     a second client's connect completes in the kernel's backlog (or, the backlog full, is not
+//     answered) and nothing it sends is ever read or answered, while the first is connected and
+//     after it has gone -- the relay takes no other client until the world is reset, which here is
+//     a new `antkit emulate`. (Over a pty, which the relay does not have, clients follow one
+//     another as for the other robots.)
+// The counters are cumulative within the session.
 //
 // Faults (FaultSpec), each decided per command from the emulator's keyed streams, so a faulty run
 // is itself reproducible: a delay before the reply, garbage bytes before it, the reply dropped, the
@@ -122,18 +131,25 @@ struct EmulatorResponse {
 // returns when `stop` is set, on a stop signal (when stop_on_signal), or after a hang-up response.
 // `raw`: a byte-stream firmware (the e-puck2's binary mode): handle() gets whatever bytes came, as
 // they came, not lines.
+// `max_read` (raw only): at most this many bytes a read, handed to handle() whole (the Webots
+// relay's 256; 0: every byte there is).
 void serve_pty(Pty& pty, const std::function<EmulatorResponse(std::string_view)>& handle,
                const std::function<void()>& new_session, const std::atomic<bool>* stop,
-               bool stop_on_signal, bool raw = false);
+               bool stop_on_signal, bool raw = false, std::size_t max_read = 0);
 
 // The same over TCP: serves one client at a time from `listener` (pausing it while a client is
 // connected, so a second client is refused), each connection a session (new_session() before its
 // first command), until `stop`, a stop signal (when stop_on_signal) or a hang-up response (which
-// closes the connection and returns).
+// closes the connection and returns). `accept_once` (the Webots relay): the first client only; the
+// listener stays open and is never accepted from again (see above).
 void serve_tcp(TcpListener& listener,
                const std::function<EmulatorResponse(std::string_view)>& handle,
                const std::function<void()>& new_session, const std::atomic<bool>* stop,
-               bool stop_on_signal, bool raw = false);
+               bool stop_on_signal, bool raw = false, std::size_t max_read = 0,
+               bool accept_once = false);
+
+// The Webots relay's read: at most this many bytes a control step (tcpip.c, PROTOCOLS.md).
+inline constexpr std::size_t kRelayReadBytes = 256;
 
 class FirmwareEmulator {
 public:
@@ -142,7 +158,8 @@ public:
   FirmwareEmulator(RobotKind robot, std::vector<kernel::FxSegment> walls,
                    EmulatorOptions options = {});
 
-  // What the firmware does with one received command line (terminator stripped).
+  // What the firmware does with one received command line (terminator stripped); the Webots
+  // relay: with what one read returned, of which it takes the first line only (above).
   using Response = EmulatorResponse;
   Response handle(std::string_view line);
   // Starts a new session (see above): what serve() does at a new client's first command.

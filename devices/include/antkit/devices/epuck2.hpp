@@ -68,6 +68,19 @@ std::string stop_sequence();
 // kResyncZeros zero bytes.
 std::string resync_bytes();
 
+// The identification at connect (record_loop.hpp, "First, at connect"; device_epuck2.cpp): binary
+// mode has no version request, so the ASCII one, `V` ended by a single CR (PROTOCOLS.md: a CR LF
+// would make the firmware take the next binary byte for an ASCII line). Its reply is two lines,
+// `v,Version 2.0 January 2018 GCtronic` and `HW version: FFF7`; the e-puck1's first line is
+// `v,Version 1.2.2 August 2008 GCtronic`.
+inline constexpr std::string_view kVersionRequest = "V\r";
+// The rule: a reply line `v,Version N...` with N, the firmware's major version, 2 or more (the
+// e-puck2's firmware; the e-puck1's is 1 and its binary mode differs: 16-bit counters, the
+// motors' clamp at 1000). Never throws.
+bool identifies(std::string_view reply_line) noexcept;
+inline constexpr std::string_view kIdentity =
+    "v,Version 2... (the e-puck2's advanced sercom; the e-puck1's is 1...)";
+
 struct StepReply {
   Proximity proximity;
   std::int16_t left = 0, right = 0; // the counters' low 16 bits
@@ -94,6 +107,12 @@ std::size_t reply_size(std::string_view sequence) noexcept;
 class SequenceFraming final : public Framing {
 public:
   [[nodiscard]] Reading reading() const noexcept override { return Reading::Bytes; }
+  // The ASCII version request's reply is lines (kVersionRequest): a `v,` line with printable text
+  // and CR LF is its reply, and any other whole line (the start-up banner, the second line of an
+  // earlier V) is read past as stale.
+  [[nodiscard]] Reading reading_for(std::string_view request) const override {
+    return request == kVersionRequest ? Reading::Lines : Reading::Bytes;
+  }
   [[nodiscard]] std::size_t reply_size(std::string_view request) const override {
     return epuck2::reply_size(request);
   }

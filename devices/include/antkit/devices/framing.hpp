@@ -68,6 +68,12 @@ class Framing {
 public:
   virtual ~Framing() = default;
   [[nodiscard]] virtual Reading reading() const noexcept = 0;
+  // How the reply to `request` is read: reading(), but for a request of another framing that the
+  // robot also understands (the e-puck2's ASCII version request, V, whose reply is lines).
+  [[nodiscard]] virtual Reading reading_for(std::string_view request) const {
+    (void)request;
+    return reading();
+  }
   // Reading::Bytes: the exact size of the reply to `request` (0: it gets none).
   [[nodiscard]] virtual std::size_t reply_size(std::string_view request) const = 0;
   // One unit read after sending `request`: a whole line (Reading::Lines), or reply_size() bytes.

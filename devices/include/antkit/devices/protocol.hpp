@@ -79,6 +79,9 @@ public:
   std::string set_odometry(std::int32_t left, std::int32_t right) const;
   std::string set_led(std::int32_t led, std::int32_t action) const;
   std::string version() const;
+  // Whether a reply to version() (a whole line, CR LF included) identifies this robot by its rule
+  // (RobotDescription::identifies); false for a robot without one.
+  bool identifies(std::string_view version_reply) const;
   std::vector<std::string> safe_stop() const;
 
   Decoded<bool> decode_ack(std::string_view line, char command_letter) const;
@@ -94,6 +97,10 @@ public:
 private:
   const RobotDescription* robot_;
 };
+
+// The serial robots whose identification rule a reply line to `version_command` ("B\r", "V\r")
+// satisfies, by name ("khepera-webots"; "" when none): for the message refusing another robot.
+std::string identified_as(std::string_view version_command, std::string_view reply);
 
 kernel::Fx normalise_reading(const RobotDescription& robot, std::int32_t raw);
 std::int32_t reading_to_raw(const RobotDescription& robot, kernel::Fx reading);

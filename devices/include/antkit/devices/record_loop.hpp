@@ -4,6 +4,20 @@
 // a log recorded on a robot replays through the same controller and must reproduce every command
 // it recorded).
 //
+// First, at connect, the robot is identified where its protocol allows (Session::identify): the
+// text robots are asked for their version (B; the e-puck: V; the e-puck2 in binary mode its ASCII
+// V, device_epuck2.cpp) and the reply must be this robot's (RobotDescription::identifies, each
+// robot's rule and its source beside its description; epuck2::identifies): the
+// Webots relay's `b,0,0` is not a Khepera's `b,5.02,5.01`, so `--device khepera` against the relay
+// is refused instead of running in the wrong units. The exchange is step 0's first (its log is
+// schema 2, log_schema.hpp) and replay checks it. A robot that answers, but not as this one -- an
+// identity that is another's, or to the version request only lines of another shape (its error
+// reply, the relay's bare LF) until the tries are spent -- is a wrong --device: record() throws
+// kernel::InputError("device", ...) (exit 2) before any log is written, and nothing but the
+// identification was sent (the version request; the e-puck2's resynchronisation zeros before it):
+// the robot was never set moving, and no command in a protocol it may not speak is sent to it. A
+// robot that does not answer at all is a link failure as any other.
+//
 // One control step, for every robot:
 //   1. read the proximity sensors (`N`) and decode them; the controller's observation comes from
 //      that reply (LoggedController::observe);
@@ -40,6 +54,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -53,6 +68,23 @@ class DeviceReport {
 public:
   virtual ~DeviceReport() = default;
 };
+
+// The robot at the port is not the device asked for (see "First, at connect" above): what it
+// answered, and to what.
+class WrongRobot : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+// The identification every device shares (Session::identify): `request` (a version request) sent
+// through `link` until its reply; WrongRobot when the reply does not satisfy `identifies`, or when
+// every try of the request got only whole lines that are not its reply (a robot of another
+// protocol); LinkError as transact() otherwise. The message names the reply, the device (`name`,
+// whose rule `identity` says in words) and the serial robots that answer so (identified_as()).
+void identify_by_version(CommandLink& link, const std::string& request,
+                         const std::function<bool(std::string_view reply)>& identifies,
+                         std::string_view name, std::string_view identity,
+                         std::vector<Exchange>& io);
 
 // What a run is asked to do, for every device (device.hpp). The options of one device or another
 // are in device_options, refused unless the device declared them (Device::options()); the device
@@ -128,7 +160,8 @@ using RecordProgress = std::function<void(std::int64_t step, std::int64_t steps)
 // One record loop for every device (device.hpp): validates the options with the device (bad input
 // is kernel::InputError, before anything is opened), refuses an existing `out` unless `force`,
 // opens the port (a bad --port is bad input and leaves no log; a refused TCP connection leaves a
-// log with only its stop record, kind Link), then writes the log as it runs. Installs the SIGINT /
+// log with only its stop record, kind Link), identifies the robot (a wrong one is bad input and
+// leaves no log, above), then writes the log as it runs. Installs the SIGINT /
 // SIGTERM handlers for its duration (StopSignals::Scope). Every failure of the run itself ends in
 // the summary.
 RecordSummary record(const RecordOptions& options, const RecordProgress& progress = {});

@@ -61,6 +61,13 @@ struct RobotDescription {
   // "b,<version>", e-puck "v,<version text>"), its text naming the emulator so that nobody takes
   // it for a robot.
   std::string_view version_reply;
+  // What identifies the robot in its reply to version_letter (record() asks for it at connect and
+  // refuses a robot it does not identify, record_loop.hpp): the reply's text after its letter and
+  // comma, CR LF stripped, e.g. "5.02,5.01" for the Khepera's "b,5.02,5.01\r\n". Each robot's
+  // rule, with its PROTOCOLS.md source, is beside its description (robot_<name>.cpp); `identity`
+  // says it in words for the refusal's message. A robot without a rule is not identified.
+  bool (*identifies)(std::string_view version_text) = nullptr;
+  std::string_view identity;
   std::array<std::string_view, 3> safe_stop{}; // the safe stop's commands (no terminator), the
                                                // wheels' stop first; empty entries are unused
   char stop_letter = 0; // a command that stops the wheels (and more) in one (the e-puck's S)
