@@ -20,8 +20,9 @@
 // passed the oracle of `antkit check stc` (every reachable sub-cell entered exactly once, back next
 // to the start) when --map is given, else it closed with no repeat. 1 when the run fell short
 // (the link failed, the tour broke a rule; the summary says which) or the robot may still be
-// moving ("robot_stopped": false). 2 for bad options, a port that cannot be opened or is held ("port
-// busy"), an --out that exists without --force, or a robot that is not --device's (no log written).
+// moving ("robot_stopped": false). 2 for bad options, a port that cannot be opened or is held
+// ("port busy"), an --out that exists without --force, or a robot that is not --device's (no log
+// written).
 // --mcap: the log, once written, also as MCAP (antkit export mcap; devices/mcap_export.hpp).
 #include "commands.hpp"
 #include "device_flags.hpp"
