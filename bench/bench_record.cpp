@@ -22,16 +22,15 @@ namespace {
 
 namespace devices = antkit::devices;
 
-// A Khepera emulator serving a pty from a thread.
-class EmulatorOnPty {
+// An emulator serving a pty from a thread.
+template <class Emulator>
+class OnPty {
 public:
-  EmulatorOnPty()
-      : pty_(devices::Pty::open()),
-        emu_(devices::RobotKind::Khepera,
-             antkit::geometry::build_arena_spec("circle:d=100").arena.walls_fx()) {
+  template <class... Args>
+  explicit OnPty(Args&&... args) : pty_(devices::Pty::open()), emu_(std::forward<Args>(args)...) {
     thread_ = std::thread([this] { emu_.serve(pty_, &stop_, false); });
   }
-  ~EmulatorOnPty() {
+  ~OnPty() {
     stop_ = true;
     thread_.join();
   }
@@ -39,9 +38,17 @@ public:
 
 private:
   devices::Pty pty_;
-  devices::FirmwareEmulator emu_;
+  Emulator emu_;
   std::atomic<bool> stop_{false};
   std::thread thread_;
+};
+
+// The Khepera's, in the standard arena.
+class EmulatorOnPty : public OnPty<devices::FirmwareEmulator> {
+public:
+  EmulatorOnPty()
+      : OnPty(devices::RobotKind::Khepera,
+              antkit::geometry::build_arena_spec("circle:d=100").arena.walls_fx()) {}
 };
 
 // items = recorded steps.
@@ -77,26 +84,6 @@ BENCHMARK(BM_RecordOverPty)->Arg(2000)->Unit(benchmark::kMillisecond)->UseRealTi
 // wire_bound_steps_per_s (115 200 / 10 bits a byte / those bytes: no loop beats it on the real
 // line), and of_wire_bound (the steps/s measured over that bound: how near the loop gets when
 // paced; the unpaced runs show the loop's own cost). items = recorded steps.
-template <class Emulator>
-class OnPty {
-public:
-  template <class... Args>
-  explicit OnPty(Args&&... args) : pty_(devices::Pty::open()), emu_(std::forward<Args>(args)...) {
-    thread_ = std::thread([this] { emu_.serve(pty_, &stop_, false); });
-  }
-  ~OnPty() {
-    stop_ = true;
-    thread_.join();
-  }
-  [[nodiscard]] const std::string& port() const { return pty_.slave_path(); }
-
-private:
-  devices::Pty pty_;
-  Emulator emu_;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
-};
-
 void BM_RecordEpuck(benchmark::State& state) {
   const bool binary = state.range(0) != 0;
   devices::EmulatorOptions eo;

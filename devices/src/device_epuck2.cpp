@@ -290,12 +290,7 @@ public:
          .what = "a fault the emulator injects: those of the serial robots (delay=P:MS, "
                  "garbage=P, drop=P, cut=P, disconnect=N, silent=N) and unterminated=P, a "
                  "sequence's lost 0"},
-        {.name = "pace",
-         .word = "pacing",
-         .use = OptionUse::Emulate,
-         .type = OptionType::Switch,
-         .what = "pace the emulator's answers: the command latency, then the bytes at 115 200 "
-                 "baud 8N1"},
+        detail::kEmulatePace,
         detail::kEmulateListen,
     };
     return kOptions;
@@ -331,8 +326,7 @@ public:
   [[nodiscard]] EmulateReport
   serve(const EmulateOptions& o,
         const std::function<void(const std::string&)>& ready) const override {
-    EmulatorOptions options = detail::emulator_options(o);
-    options.pace = o.device_options.on("pace");
+    const EmulatorOptions options = detail::emulator_options(o);
     std::optional<TcpListener> listener = detail::listen_for(o);
     epuck2::Emulator emulator(o.walls, options);
     return detail::serve_emulator(emulator, listener, ready, emulator.body());

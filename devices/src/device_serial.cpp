@@ -79,26 +79,16 @@ public:
         .what = "a fault the emulator injects: delay=P:MS, garbage=P, drop=P, cut=P (P per "
                 "command), disconnect=N (after N commands) or silent=N (no answer after N "
                 "commands)"};
-    static constexpr DeclaredOption kPace{
-        .name = "pace",
-        .word = "pacing",
-        .use = OptionUse::Emulate,
-        .type = OptionType::Switch,
-        .what = "pace the emulator's replies at the robot's baud rate and command latency"};
     static constexpr DeclaredOption kCounted[] = {
-        detail::kRecordArena,
-        detail::record_period("0, as fast as the link allows"),
-        detail::kEmulateArena,
-        kFault,
-        kPace,
-        detail::kEmulateListen};
+        detail::kRecordArena,  detail::record_period("0, as fast as the link allows"),
+        detail::kEmulateArena, kFault,
+        detail::kEmulatePace,  detail::kEmulateListen,
+    };
     static constexpr DeclaredOption kModelled[] = {
-        detail::kRecordArena,
-        detail::record_period("the motion model's period, 112 ms"),
-        detail::kEmulateArena,
-        kFault,
-        kPace,
-        detail::kEmulateListen};
+        detail::kRecordArena,  detail::record_period("the motion model's period, 112 ms"),
+        detail::kEmulateArena, kFault,
+        detail::kEmulatePace,  detail::kEmulateListen,
+    };
     if (describe(robot_).has_odometry) return kCounted;
     return kModelled;
   }
@@ -141,7 +131,6 @@ public:
     if (options.faults.unterminated_ppm > 0)
       throw kernel::InputError("fault", "unterminated=P is a fault of the epuck2's binary "
                                         "sequences (the text robots' lines have no 0 to lose)");
-    options.pace = o.device_options.on("pace");
     std::optional<TcpListener> listener = detail::listen_for(o);
     FirmwareEmulator emulator(robot_, o.walls, options);
     return detail::serve_emulator(emulator, listener, ready, emulator);

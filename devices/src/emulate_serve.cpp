@@ -7,6 +7,7 @@ EmulatorOptions emulator_options(const EmulateOptions& o) {
   EmulatorOptions options;
   options.seed = o.seed;
   options.faults = parse_faults(o.device_options.texts("fault"));
+  options.pace = o.device_options.on("pace");
   return options;
 }
 

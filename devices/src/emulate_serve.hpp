@@ -43,6 +43,14 @@ inline constexpr DeclaredOption kEmulateArena{
     .fallback = "standard",
     .label = "SPEC|F.wkt",
     .what = "the arena the body is simulated in: a named spec or a WKT file, in body diameters"};
+// Both emulators pace alike: the command latency, then the answer's bytes at the robot's baud rate.
+inline constexpr DeclaredOption kEmulatePace{
+    .name = "pace",
+    .word = "pacing",
+    .use = OptionUse::Emulate,
+    .type = OptionType::Switch,
+    .what = "pace the emulator's answers: the command latency, then the bytes at the robot's "
+            "baud rate"};
 inline constexpr DeclaredOption kEmulateListen{
     .name = "listen",
     .word = "listen address",
@@ -51,7 +59,7 @@ inline constexpr DeclaredOption kEmulateListen{
     .label = "HOST:PORT",
     .what = "serve over TCP on HOST:PORT instead of a pty (PORT 0: any free port; one client "
             "at a time); prints tcp:HOST:PORT first"};
-// The seed and the parsed --fault specs (parse_faults' InputError on a bad one).
+// The seed, the parsed --fault specs (parse_faults' InputError on a bad one) and --pace.
 EmulatorOptions emulator_options(const EmulateOptions& o);
 // The listener --listen asks for, bound now (its InputError before any emulator is made).
 std::optional<TcpListener> listen_for(const EmulateOptions& o);

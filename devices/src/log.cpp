@@ -91,6 +91,35 @@ enum Key : unsigned {
   kStop = 1u << 7,
 };
 
+// The byte a one-letter JSON escape stands for (\" \\ \/ \b \f \n \r \t), or -1; and a hex digit's
+// value (either case), or -1. Both readers below use them.
+int simple_escape(char c) noexcept {
+  switch (c) {
+  case '"':
+  case '\\':
+  case '/':
+    return c;
+  case 'b':
+    return '\b';
+  case 'f':
+    return '\f';
+  case 'n':
+    return '\n';
+  case 'r':
+    return '\r';
+  case 't':
+    return '\t';
+  default:
+    return -1;
+  }
+}
+int hex_digit(char h) noexcept {
+  return h >= '0' && h <= '9'   ? h - '0'
+         : h >= 'a' && h <= 'f' ? h - 'a' + 10
+         : h >= 'A' && h <= 'F' ? h - 'A' + 10
+                                : -1;
+}
+
 class Cursor {
 public:
   Cursor(const std::string& name, std::size_t line, const char* begin, const char* end)
@@ -143,48 +172,19 @@ public:
         continue;
       }
       if (++p_ >= e_) fail("unterminated escape");
-      switch (*p_) {
-      case '"':
-        out += '"';
-        break;
-      case '\\':
-        out += '\\';
-        break;
-      case '/':
-        out += '/';
-        break;
-      case 'b':
-        out += '\b';
-        break;
-      case 'f':
-        out += '\f';
-        break;
-      case 'n':
-        out += '\n';
-        break;
-      case 'r':
-        out += '\r';
-        break;
-      case 't':
-        out += '\t';
-        break;
-      case 'u': {
+      if (const int byte = simple_escape(*p_); byte >= 0) {
+        out += static_cast<char>(byte);
+      } else if (*p_ == 'u') {
         unsigned v = 0;
         for (int k = 0; k < 4; ++k) {
           if (++p_ >= e_) fail("a \\u escape needs four hex digits");
-          const char h = *p_;
-          const int d = h >= '0' && h <= '9'   ? h - '0'
-                        : h >= 'a' && h <= 'f' ? h - 'a' + 10
-                        : h >= 'A' && h <= 'F' ? h - 'A' + 10
-                                               : -1;
+          const int d = hex_digit(*p_);
           if (d < 0) fail("a \\u escape needs four hex digits");
           v = v * 16 + static_cast<unsigned>(d);
         }
         if (v > 0xFF) fail("\\u escape above \\u00ff: not a byte");
         out += static_cast<char>(v);
-        break;
-      }
-      default:
+      } else {
         fail("unknown escape");
       }
       ++p_;
@@ -398,11 +398,6 @@ private:
     const auto d = static_cast<unsigned>(static_cast<unsigned char>(c) - '0');
     return d < 10 ? static_cast<int>(d) : -1;
   }
-  static int hex(char c) noexcept {
-    if (const int d = digit(c); d >= 0) return d;
-    const auto l = static_cast<unsigned>(static_cast<unsigned char>(c) | 0x20U) - 'a';
-    return l < 6 ? static_cast<int>(l) + 10 : -1;
-  }
 
   bool integer(std::int64_t& v) noexcept {
     const char* q = p_;
@@ -449,41 +444,16 @@ private:
       if (p_ == e_) return false;
       if (*p_ == '"') return ++p_, true;
       if (*p_ != '\\' || e_ - p_ < 2) return false;
-      char c = 0;
-      switch (p_[1]) {
-      case '"':
-      case '\\':
-      case '/':
-        c = p_[1];
-        break;
-      case 'b':
-        c = '\b';
-        break;
-      case 'f':
-        c = '\f';
-        break;
-      case 'n':
-        c = '\n';
-        break;
-      case 'r':
-        c = '\r';
-        break;
-      case 't':
-        c = '\t';
-        break;
-      case 'u': {
-        if (e_ - p_ < 6 || p_[2] != '0' || p_[3] != '0') return false;
-        const int hi = hex(p_[4]), lo = hex(p_[5]);
-        if (hi < 0 || lo < 0) return false;
-        out += static_cast<char>(hi * 16 + lo);
-        p_ += 6;
+      if (const int c = simple_escape(p_[1]); c >= 0) {
+        out += static_cast<char>(c);
+        p_ += 2;
         continue;
       }
-      default:
-        return false;
-      }
-      out += c;
-      p_ += 2;
+      if (p_[1] != 'u' || e_ - p_ < 6 || p_[2] != '0' || p_[3] != '0') return false;
+      const int hi = hex_digit(p_[4]), lo = hex_digit(p_[5]);
+      if (hi < 0 || lo < 0) return false;
+      out += static_cast<char>(hi * 16 + lo);
+      p_ += 6;
     }
   }
 
