@@ -51,7 +51,6 @@ namespace antkit::devices {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using detail::Diverged;
 using detail::LoggedLink;
 
 // The robot's half of a step, over either link: the same code records and replays.

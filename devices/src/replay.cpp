@@ -17,7 +17,6 @@ namespace antkit::devices {
 
 namespace {
 
-using detail::Diverged;
 using detail::LoggedLink;
 
 // The stop record against the run: its reason in the words stop_reason() writes, and its safe
