@@ -5,9 +5,11 @@
 //                  [--dark-offset A] [--fade S] [--rotation-error PPM] [--drift PPM]
 //                  [--format table|json]
 // stc-floor: the marker-floor robot of paper 002 (devices/stc_floor/floor.hpp, link.hpp), placed
-// at the start sub-cell (default as `antkit stc`), rendering its camera frames; its summary is the
-// truth of the last session: the sub-cells the body entered, repeats, the largest distance from a
-// sub-cell's centre and heading error, the floor's clock.
+// at the start sub-cell (default as `antkit stc`), rendering its camera frames; its summary's
+// "floor" block (written by the device, devices/stc_floor/report.hpp) is the truth of the last
+// session: map, start, frames, positions, the sub-cells the body entered (covered), repeats,
+// reachable_subcells, the largest distance from a sub-cell's centre (max_offset_subcells) and
+// heading error (max_heading_error_degrees), the floor's clock (clock_s).
 // --listen HOST:PORT serves the firmware over TCP instead of a pty (PORT 0: any free port), one
 // client at a time (a second is refused while one is connected), each connection a session; the
 // first line is then `tcp:HOST:PORT` with the real port, what `antkit record --port` takes.
@@ -73,18 +75,11 @@ void run(const EmulateCommand& c) {
     j["periods"] = *r.periods;
     j["position"] = {r.position->first, r.position->second};
   }
-  if (r.start) { // a robot on a floor map
-    j["map"] = o.device_options.text("map").value_or("");
-    j["start"] = {r.start->x, r.start->y};
-    j["frames"] = r.frames;
-    j["positions"] = r.positions;
-    j["covered"] = r.covered;
-    j["repeats"] = r.repeats;
-    j["reachable_subcells"] = r.reachable_subcells;
-    j["max_offset_subcells"] = r.max_offset_subcells;
-    j["max_heading_error_degrees"] = r.max_heading_error_degrees;
-    j["clock_s"] = r.clock_s;
-  }
+  // The device's own results, one block under its key (devices/device_report.hpp: the
+  // marker-floor robot's "floor").
+  if (r.device_report)
+    j[std::string(r.device_report->key())] =
+        nlohmann::json::parse(devices::report_json(r.device_report->fields()));
   antkit::cli::emit(j, c.format, std::cout);
 }
 

@@ -10,17 +10,23 @@
 //                 [--baud B] [--framing F] [--timeout MS] [--tries N] --out LOG [--force]
 //                 [--format]
 //   (paper 002's marker-floor robot, devices/stc_floor/record.hpp: the pilot drives the ant-like
-//   controller through the camera pipeline until the tour closes or N steps ran; its summary has
-//   the keys of `antkit stc`: path in map sub-cells from the start, reachable_subcells and hash
-//   when --map is given (the hash then equals antkit stc's for the same tour), covered, repeats,
-//   returned_to_start; and run_hash, which antkit replay prints for the log.)
+//   controller through the camera pipeline until the tour closes or N steps ran.)
+// JSON: robot, controller, log, steps, completed, hash (the run's RunHash, which antkit replay
+// prints for the log; null when the port never opened) and run_hash (the same), stopped,
+// robot_stopped, safe_stop, log_error (when the log is not whole), exchanges, retries, faults; the
+// device's own results as one block under its key (devices/device_report.hpp), written by the
+// device: stc-floor's "tour" has the keys of `antkit stc` (start, path in map sub-cells from the
+// start, reachable_subcells and hash when --map is given, the hash then equal to antkit stc's for
+// the same tour, covered, repeats, returned_to_start), turn_ms, and its verdict's tour_ok and
+// first_violation (experiments/recorded_run.hpp).
 // Exit status: 0 only when the run did what it set out to do and the robot is known to be stopped:
 // every requested step ran (or SIGINT / SIGTERM stopped it between steps), the safe stop was
 // acknowledged and, where the robot can say, its wheels read back at zero; for stc-floor, the tour
 // passed the oracle of `antkit check stc` (every reachable sub-cell entered exactly once, back next
-// to the start) when --map is given, else it closed with no repeat. 1 when the run fell short
-// (the link failed, the tour broke a rule; the summary says which) or the robot may still be
-// moving ("robot_stopped": false). 2 for bad options, a port that cannot be opened or is held
+// to the start) when --map is given (without it, never: nothing says how much floor there was). 1
+// when the run fell short (the link failed, the tour broke a rule; the summary says which) or the
+// robot may still be moving ("robot_stopped": false). 2 for bad options, a port that cannot be
+// opened or is held
 // ("port busy"), an --out that exists without --force, or a robot that is not --device's (no log
 // written).
 // --mcap: the log, once written, also as MCAP (antkit export mcap; devices/mcap_export.hpp).
@@ -29,11 +35,9 @@
 #include "output.hpp"
 
 #include <antkit/algorithms/options.hpp>
-#include <antkit/commands/json.hpp>
 #include <antkit/commands/options.hpp>
 #include <antkit/devices/device.hpp>
 #include <antkit/devices/mcap_export.hpp>
-#include <antkit/devices/stc_floor/record.hpp>
 #include <antkit/experiments/recorded_run.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -123,31 +127,21 @@ void run(const RecordCommand& c) {
   j["log"] = c.out;
   j["steps"] = s.steps;
   j["completed"] = s.completed;
-  if (const auto* t = devices::stc_floor::tour_of(s)) {
-    j["start"] = {t->start.x, t->start.y};
-    nlohmann::json path = nlohmann::json::array();
-    for (const auto& p : t->path) path.push_back({p.x, p.y});
-    j["path"] = std::move(path);
-    if (t->reachable_subcells) j["reachable_subcells"] = *t->reachable_subcells;
-    j["covered"] = t->covered;
-    j["repeats"] = t->repeats;
-    j["returned_to_start"] = t->returned_to_start;
-    j["hash"] = t->tour_hash ? nlohmann::json(antkit::kernel::hash_hex(*t->tour_hash))
-                             : nlohmann::json(nullptr);
-    j["run_hash"] = antkit::kernel::hash_hex(s.hash);
-    j["turn_ms"] = t->turn_ms;
-    j["tour_ok"] = r.tour_ok;
-    j["first_violation"] =
-        r.audit ? antkit::commands::first_violation_json(*r.audit) : nlohmann::json(nullptr);
-  } else {
-    j["hash"] = antkit::kernel::hash_hex(s.hash);
+  j["hash"] = antkit::kernel::hash_hex(s.hash);
+  j["run_hash"] = j["hash"];
+  // The device's own results, one block under its key (devices/device_report.hpp: the marker-floor
+  // robot's "tour"), with what its verdict adds (experiments/recorded_run.hpp).
+  if (const auto& report = s.device_report) {
+    auto fields = report->fields();
+    fields.insert(fields.end(), r.verdict.fields.begin(), r.verdict.fields.end());
+    j[std::string(report->key())] = nlohmann::json::parse(devices::report_json(fields));
   }
   j["stopped"] = s.stop;
   j["robot_stopped"] = s.safe_stop.stopped;
   j["safe_stop"] = !s.connected                  ? "not needed: never connected"
                    : s.safe_stop.failure.empty() ? "acknowledged"
                                                  : s.safe_stop.failure;
-  if (!s.connected) j["hash"] = nullptr; // no run to hash
+  if (!s.connected) j["hash"] = j["run_hash"] = nullptr; // no run to hash
   if (!s.log_error.empty()) j["log_error"] = s.log_error;
   j["exchanges"] = s.link.exchanges;
   j["retries"] = s.link.retries;
@@ -165,7 +159,7 @@ void run(const RecordCommand& c) {
     throw antkit::cli::Interrupted(s.signal, s.stop + " (the robot is stopped)");
   if (s.kind != devices::StopKind::Done)
     throw antkit::cli::CheckFailed("the run stopped early: " + s.stop);
-  throw antkit::cli::CheckFailed("the tour is not a coverage tour: " + r.tour_broken);
+  throw antkit::cli::CheckFailed(r.verdict.failure);
 }
 
 void register_record(CLI::App& app) {

@@ -87,7 +87,7 @@ port=$(head -n 1 "$floor_out")
 echo "marker-floor emulator on $port"
 "$antkit" record --device stc-floor --port "$port" --controller ant-edge --map "$floor_map" \
   --out "$out/floor.jsonl" --force --format json |
-  jq -r '"recorded: \(.steps) steps, \(.covered) of \(.reachable_subcells) sub-cells, \(.repeats) repeats, back at the start: \(.returned_to_start), tour hash \(.hash)"'
+  jq -r '"recorded: \(.steps) steps, \(.tour.covered) of \(.tour.reachable_subcells) sub-cells, \(.tour.repeats) repeats, back at the start: \(.tour.returned_to_start), tour hash \(.tour.hash)"'
 "$antkit" stc --map "$floor_map" --variant ant-edge --format json |
   jq -r '"simulated ant-edge:       tour hash \(.hash)"'
 "$antkit" replay "$out/floor.jsonl" --format json |

@@ -36,6 +36,7 @@
 #include "emulate_serve.hpp"
 #include "logged_link.hpp"
 #include "registry.hpp"
+#include "replay_steps.hpp"
 
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/device.hpp>
@@ -50,7 +51,6 @@ namespace antkit::devices {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using detail::Diverged;
 using detail::LoggedLink;
 
 // The robot's half of a step, over either link: the same code records and replays.
@@ -157,115 +157,58 @@ private:
   Clock::time_point next_{};
 };
 
-// The stop record against the run (as replay.cpp's check_stop for the text robots): its reason's
-// kind, and its safe stop re-run on its exchanges from a resynchronisation on; a stop read back
-// at 0, 0 in the bytes may not claim the robot may be moving, and one never read back must.
+// The stop record against the run (as replay.cpp's check_stop for the text robots,
+// replay_steps.hpp): its reason's kind, and its safe stop re-run on its exchanges from a
+// resynchronisation on; a stop read back at 0, 0 in the bytes may not claim the robot may be
+// moving, and one never read back must.
 std::optional<Divergence> check_stop(const LogStop& stop) {
   const std::string& reason = stop.reason;
-  const auto field = [&](std::string what) { return "stop." + std::move(what); };
-  static constexpr std::string_view kinds[] = {"done", "interrupted by SIG", "link: ", "error: "};
-  bool known = false;
-  for (const auto k : kinds) known = known || reason.rfind(k, 0) == 0;
-  if (!known)
-    return Divergence{stop.step, field("reason"), "'" + reason + "'",
-                      "a reason that starts done, interrupted by SIG..., link: or error:"};
+  if (auto d = detail::check_stop_kind(stop)) return d;
   const bool claims_moving =
       reason.find("; " + std::string(kRobotMayBeMoving) + ": ") != std::string::npos;
   if (reason.rfind("link: disconnected", 0) == 0 && stop.io.empty() && stop.step == 0)
     return std::nullopt; // never connected: nothing was sent
-  std::optional<Divergence> last;
-  for (std::size_t from = 0; from < stop.io.size(); ++from) {
-    if (stop.io[from].sent != epuck2::resync_bytes()) continue;
-    const std::vector<Exchange> tail(stop.io.begin() + static_cast<std::ptrdiff_t>(from),
-                                     stop.io.end());
-    const epuck2::SequenceFraming framing;
-    LoggedLink link(framing, {});
-    link.load(tail, stop.step, "stop.io");
-    link.set_end_is_failure(true);
-    std::vector<Exchange> seen;
-    SafeStopResult r;
-    try {
-      r = detail::safe_stop_steps(link, seen);
-    } catch (const Diverged& d) {
-      last = d.d;
-      continue;
-    }
-    if (!link.at_end()) {
-      const std::size_t at = from + link.position();
-      last = Divergence{stop.step, field("io[" + std::to_string(at) + "]"),
-                        "'" + printable(stop.io[at].sent) + "'",
-                        "no further exchange: the safe stop ended before it"};
-      continue;
-    }
-    if (r.stopped == claims_moving) {
-      last = Divergence{stop.step, field("reason"), "'" + reason + "'",
-                        r.stopped ? "the wheels read back at 0, 0"
-                                  : "never read back at 0, 0: " + std::string(kRobotMayBeMoving)};
-      continue;
-    }
-    return std::nullopt;
-  }
-  if (last) return last;
-  return Divergence{stop.step, field("io"), "no safe stop",
-                    "a resynchronisation, then '" + printable(epuck2::stop_sequence()) + "'"};
+  const epuck2::SequenceFraming framing;
+  return detail::check_safe_stop_tails(
+      stop, framing, epuck2::resync_bytes(),
+      [&](const SafeStopResult& r) -> std::optional<Divergence> {
+        if (r.stopped != claims_moving) return std::nullopt;
+        return Divergence{stop.step, "stop.reason", "'" + reason + "'",
+                          r.stopped ? "the wheels read back at 0, 0"
+                                    : "never read back at 0, 0: " + std::string(kRobotMayBeMoving)};
+      },
+      "a resynchronisation, then '" + printable(epuck2::stop_sequence()) + "'");
 }
+
+// The e-puck2's body (Body above) over the log's exchanges: the same code as its session's.
+class ReplayedEpuck2Body final : public detail::ReplayedBody {
+public:
+  explicit ReplayedEpuck2Body(LoggedLink& link) : link_(link) {}
+  void identify(std::vector<Exchange>& io) override { body_.identify(link_, io); }
+  void start(std::vector<Exchange>& io) override { body_.start(link_, io); }
+  Proximity read_sensors(std::vector<Exchange>& io) override { return body_.read(link_, io); }
+  void act(bool wander, std::span<const std::int64_t> cmd, std::vector<Exchange>& io) override {
+    body_.act(link_, wander, cmd, io, [] {});
+  }
+  std::array<std::int64_t, 2> odometry(std::vector<Exchange>& io) override {
+    (void)io;
+    return body_.odometry();
+  }
+
+private:
+  LoggedLink& link_;
+  Body body_;
+};
 
 ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
                            std::optional<std::int64_t> until) {
-  const LogHeader& header = reader.header();
-  const bool wander = header.controller == "wander";
-  std::unique_ptr<LoggedController> controller;
-  try {
-    controller = make_controller({header.controller, header.params, header.seed});
-  } catch (const kernel::InputError& e) {
-    throw kernel::InputError(path, 1, 1, e.message());
-  }
-  const RobotDescription& robot = describe(RobotKind::Epuck);
   const epuck2::SequenceFraming framing;
   LoggedLink link(framing, {});
-  Body body;
-  const bool identified = header.schema >= 2; // log_schema.hpp
-  std::vector<std::int64_t> obs;
-  std::vector<Exchange> seen;
-  return replay_records(
-      reader, until,
-      [&](const LogRecord& r, std::vector<std::int64_t>& cmd) -> std::optional<Divergence> {
-        std::optional<Divergence> d;
-        link.load(r.io, r.step, "io");
-        try {
-          if (r.step == 0) {
-            if (identified) body.identify(link, seen);
-            body.start(link, seen);
-          }
-          const Proximity readings = body.read(link, seen);
-          controller->observe(robot, readings, obs);
-          if (!compare_fields(r.obs, obs, r.step, "obs", d)) return d;
-          try {
-            controller->step(robot, r.obs, cmd);
-          } catch (const kernel::InputError& e) {
-            throw kernel::InputError(path, reader.line(), 1, e.what());
-          }
-          if (!compare_fields(r.cmd, cmd, r.step, "cmd", d)) return d;
-          if (controller->state_hash() != r.state)
-            return Divergence{r.step, "state", kernel::hash_hex(r.state),
-                              kernel::hash_hex(controller->state_hash())};
-          body.act(link, wander, cmd, seen, [] {});
-          const auto odo = body.odometry();
-          if (!compare_fields(r.odo, odo, r.step, "odo", d)) return d;
-        } catch (const Diverged& x) {
-          return x.d;
-        } catch (const WrongRobot& e) {
-          return Divergence{r.step, "io", std::string(e.what()),
-                            "a reply identifying an epuck2: " + std::string(epuck2::kIdentity)};
-        } catch (const LinkError& e) {
-          return Divergence{r.step, "io", "the step's exchanges", std::string(e.what())};
-        }
-        if (!link.at_end())
-          return Divergence{r.step, "io[" + std::to_string(link.position()) + "]",
-                            "'" + printable(r.io[link.position()].sent) + "'",
-                            "no further exchange in this step"};
-        return d;
-      },
+  ReplayedEpuck2Body body(link);
+  return detail::replay_controller_run(
+      reader, path, until,
+      {describe(RobotKind::Epuck), link, body, "io",
+       "a reply identifying an epuck2: " + std::string(epuck2::kIdentity)},
       [&](const LogStop& stop) { return check_stop(stop); });
 }
 

@@ -7,7 +7,6 @@
 #include <antkit/devices/stc_floor/record.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <antkit/maps/map_io.hpp>
 #include <antkit/stc/world.hpp>
 #include <cstdlib>
 
@@ -506,15 +505,19 @@ public:
     EmulateReport r;
     r.sessions = emulator.sessions();
     r.commands = emulator.commands();
-    r.start = start;
-    r.frames = w.frames();
-    r.positions = w.path().size();
-    r.covered = w.covered();
-    r.repeats = w.repeats();
-    r.reachable_subcells = stc::reachable_subcells(map.cells, start, stc::Variant::AntEdge);
-    r.max_offset_subcells = static_cast<double>(w.max_offset()) / 65536.0;
-    r.max_heading_error_degrees = static_cast<double>(w.max_heading_error()) * 360.0 / 4294967296.0;
-    r.clock_s = static_cast<double>(w.clock_ms()) / 1000.0;
+    auto truth = std::make_shared<FloorTruth>();
+    truth->map = *map_file;
+    truth->start = start;
+    truth->frames = w.frames();
+    truth->positions = static_cast<std::int64_t>(w.path().size());
+    truth->covered = w.covered();
+    truth->repeats = w.repeats();
+    truth->reachable_subcells = stc::reachable_subcells(map.cells, start, stc::Variant::AntEdge);
+    truth->max_offset_subcells = static_cast<double>(w.max_offset()) / 65536.0;
+    truth->max_heading_error_degrees =
+        static_cast<double>(w.max_heading_error()) * 360.0 / 4294967296.0;
+    truth->clock_s = static_cast<double>(w.clock_ms()) / 1000.0;
+    r.device_report = std::move(truth);
     return r;
   }
 };
@@ -522,15 +525,6 @@ public:
 const FloorDevice kFloor;
 
 } // namespace
-
-MapPlace read_map_place(const std::string& file) {
-  maps::GridMap map = maps::load_map(file);
-  return {std::move(map.cells), map.start, file};
-}
-
-const Tour* tour_of(const RecordSummary& summary) noexcept {
-  return dynamic_cast<const Tour*>(summary.device_report.get());
-}
 
 ReplayResult replay_log(LogReader& reader, const std::string& path,
                         std::optional<std::int64_t> until) {

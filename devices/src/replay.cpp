@@ -1,6 +1,7 @@
 // Replay of a hardware log through its controller (replay.hpp).
 #include "body.hpp"
 #include "logged_link.hpp"
+#include "replay_steps.hpp"
 
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/device.hpp>
@@ -16,24 +17,16 @@ namespace antkit::devices {
 
 namespace {
 
-using detail::Diverged;
 using detail::LoggedLink;
 
 // The stop record against the run: its reason in the words stop_reason() writes, and its safe
 // stop re-run on its exchanges. The exchanges of an unfinished step come first; the safe stop is
 // the shortest tail, starting with the safe stop's first command, on which safe_stop() replays to
-// the verdict the reason states. Returns the difference, if any.
+// the verdict the reason states (replay_steps.hpp). Returns the difference, if any.
 std::optional<Divergence> check_stop(const LogStop& stop, const LineFraming& framing) {
   const Codec& codec = framing.codec();
   const std::string& reason = stop.reason;
-  const auto field = [&](std::string what) { return "stop." + std::move(what); };
-  // The kind and its words.
-  static constexpr std::string_view kinds[] = {"done", "interrupted by SIG", "link: ", "error: "};
-  bool known = false;
-  for (const auto k : kinds) known = known || reason.rfind(k, 0) == 0;
-  if (!known)
-    return Divergence{stop.step, field("reason"), "'" + reason + "'",
-                      "a reason that starts done, interrupted by SIG..., link: or error:"};
+  if (auto d = detail::check_stop_kind(stop)) return d;
   const std::string may_move = "; " + std::string(kRobotMayBeMoving) + ": ";
   const bool claims_moving = reason.find(may_move) != std::string::npos;
   const bool claims_partial = reason.find("; safe stop: ") != std::string::npos;
@@ -46,54 +39,60 @@ std::optional<Divergence> check_stop(const LogStop& stop, const LineFraming& fra
     const auto term = codec.robot().terminator;
     const bool ends = sent.size() > term.size() && sent.substr(sent.size() - term.size()) == term;
     if (!ends || !codec.parse_command(std::string_view(sent).substr(0, sent.size() - term.size())))
-      return Divergence{stop.step, field("io[" + std::to_string(i) + "].sent"),
+      return Divergence{stop.step, "stop.io[" + std::to_string(i) + "].sent",
                         "'" + printable(sent) + "'", "a command of this robot"};
   }
   const std::string first = codec.safe_stop().front();
-  std::optional<Divergence> last;
-  // The live link logs every command it tries, even on a line already gone (link.cpp), so the
-  // safe stop always starts with its first command.
-  for (std::size_t from = 0; from < stop.io.size(); ++from) {
-    if (stop.io[from].sent != first) continue;
-    const std::vector<Exchange> tail(stop.io.begin() + static_cast<std::ptrdiff_t>(from),
-                                     stop.io.end());
-    LoggedLink link(framing, {});
-    link.load(tail, stop.step, "stop.io");
-    link.set_end_is_failure(true);
-    std::vector<Exchange> seen;
-    SafeStopResult r;
-    try {
-      r = detail::safe_stop_steps(link, seen);
-    } catch (const Diverged& d) {
-      last = d.d;
-      continue;
-    }
-    if (!link.at_end()) { // more after the safe stop: a later start may be the real one
-      const std::size_t at = from + link.position();
-      last = Divergence{stop.step, field("io[" + std::to_string(at) + "]"),
-                        "'" + printable(stop.io[at].sent) + "'",
-                        "no further exchange: the safe stop ended before it"};
-      continue;
-    }
-    // The bytes decide the claim where they can: a safe stop acknowledged and read back at zero
-    // in the log was one live (the live link reads the same bytes the same way), and one with no
-    // acknowledgement of the wheels' command at all left the robot possibly moving. In between
-    // (acknowledged, not confirmed) a lost link may explain either words.
-    const bool lie = (r.stopped && r.complete && (claims_moving || claims_partial)) ||
-                     (!r.acknowledged && !claims_moving);
-    if (lie) {
-      last = Divergence{stop.step, field("reason"), "'" + reason + "'",
-                        r.stopped && r.complete ? "the safe stop acknowledged and read back at 0, 0"
-                                                : "no acknowledgement of '" + printable(first) +
-                                                      "': " + std::string(kRobotMayBeMoving)};
-      continue;
-    }
-    return std::nullopt;
-  }
-  if (last) return last;
-  return Divergence{stop.step, field("io"), "no safe stop",
-                    "the safe stop's '" + printable(first) + "' and its exchanges"};
+  return detail::check_safe_stop_tails(
+      stop, framing, first,
+      [&](const SafeStopResult& r) -> std::optional<Divergence> {
+        // The bytes decide the claim where they can: a safe stop acknowledged and read back at
+        // zero in the log was one live (the live link reads the same bytes the same way), and one
+        // with no acknowledgement of the wheels' command at all left the robot possibly moving.
+        // In between (acknowledged, not confirmed) a lost link may explain either words.
+        const bool lie = (r.stopped && r.complete && (claims_moving || claims_partial)) ||
+                         (!r.acknowledged && !claims_moving);
+        if (!lie) return std::nullopt;
+        return Divergence{stop.step, "stop.reason", "'" + reason + "'",
+                          r.stopped && r.complete
+                              ? "the safe stop acknowledged and read back at 0, 0"
+                              : "no acknowledgement of '" + printable(first) +
+                                    "': " + std::string(kRobotMayBeMoving)};
+      },
+      "the safe stop's '" + printable(first) + "' and its exchanges");
 }
+
+// The text robots' body (body.hpp) over the log's exchanges: the same code as record()'s.
+class ReplayedSerialBody final : public detail::ReplayedBody {
+public:
+  ReplayedSerialBody(LoggedLink& link, const Codec& codec) : body_(link, codec) {}
+  // A robot without encoders reckons its odometry from the times its commands were sent.
+  void check_record(const LogRecord& r, const std::string& path, std::size_t line) const override {
+    const RobotDescription& robot = body_.robot();
+    if (!robot.has_odometry)
+      for (const Exchange& e : r.io)
+        if (!e.sent.empty() && e.t_ns < 0)
+          throw kernel::InputError(
+              path, line, 1,
+              "an exchange without its time: the " + std::string(robot.name) +
+                  " has no wheel encoders and its odometry is reckoned from the times its "
+                  "commands were sent (a log written before they were logged: re-record "
+                  "the run)");
+  }
+  void identify(std::vector<Exchange>& io) override { body_.identify(io); }
+  void start(std::vector<Exchange>& io) override { body_.start(io); }
+  Proximity read_sensors(std::vector<Exchange>& io) override { return body_.read_sensors(io); }
+  void act(bool wander, std::span<const std::int64_t> cmd, std::vector<Exchange>& io) override {
+    detail::act(body_, wander, cmd, io);
+  }
+  std::array<std::int64_t, 2> odometry(std::vector<Exchange>& io) override {
+    const WheelTravel odo = body_.odometry(io);
+    return {odo.left, odo.right};
+  }
+
+private:
+  detail::Body body_;
+};
 
 } // namespace
 
@@ -207,79 +206,15 @@ namespace detail {
 
 ReplayResult replay_serial(LogReader& reader, const std::string& path,
                            std::optional<std::int64_t> until, RobotKind kind) {
-  const LogHeader& header = reader.header();
-  std::unique_ptr<LoggedController> controller;
-  try {
-    controller = make_controller({header.controller, header.params, header.seed});
-  } catch (const kernel::InputError& e) {
-    throw kernel::InputError(path, 1, 1, e.message());
-  }
   const LineFraming framing(kind);
   const RobotDescription& robot = framing.codec().robot();
-  const bool wander = header.controller == "wander";
-  // Schema 2 logs begin with the identification at connect (record_loop.hpp); schema 1 logs were
-  // written before it and begin with the start's exchanges (log_schema.hpp).
-  const bool identified = header.schema >= 2;
   // The same body as record() (body.hpp), over the log's exchanges.
   LoggedLink link(framing, {});
-  detail::Body body(link, framing.codec());
-  std::vector<std::int64_t> obs;
-  std::vector<Exchange> seen;
-  return replay_records(
-      reader, until,
-      [&](const LogRecord& r, std::vector<std::int64_t>& cmd) {
-        std::optional<Divergence> d;
-        if (!robot.has_odometry)
-          for (const Exchange& e : r.io)
-            if (!e.sent.empty() && e.t_ns < 0)
-              throw kernel::InputError(
-                  path, reader.line(), 1,
-                  "an exchange without its time: the " + std::string(robot.name) +
-                      " has no wheel encoders and its odometry is reckoned from the times its "
-                      "commands were sent (a log written before they were logged: re-record "
-                      "the run)");
-        link.load(r.io, r.step, "io");
-        seen.clear();
-        try {
-          if (r.step == 0) {
-            if (identified) body.identify(seen);
-            body.start(seen);
-          }
-          const Proximity readings = body.read_sensors(seen);
-          controller->observe(robot, readings, obs);
-          if (!compare_fields(r.obs, obs, r.step, "obs", d)) return d;
-          try {
-            controller->step(robot, r.obs, cmd);
-          } catch (const kernel::InputError& e) {
-            throw kernel::InputError(path, reader.line(), 1, e.what());
-          }
-          if (!compare_fields(r.cmd, cmd, r.step, "cmd", d)) return d;
-          if (controller->state_hash() != r.state)
-            return std::optional<Divergence>(
-                Divergence{r.step, "state", kernel::hash_hex(r.state),
-                           kernel::hash_hex(controller->state_hash())});
-          detail::act(body, wander, cmd, seen);
-          const WheelTravel odo = body.odometry(seen);
-          const std::int64_t derived[] = {odo.left, odo.right};
-          if (!compare_fields(r.odo, derived, r.step, "odo", d)) return d;
-        } catch (const Diverged& x) {
-          return std::optional<Divergence>(x.d);
-        } catch (const WrongRobot& e) {
-          return std::optional<Divergence>(
-              Divergence{r.step, "io[0].received", std::string(e.what()),
-                         "a reply identifying a " + std::string(robot.name) + ": " +
-                             std::string(robot.identity)});
-        } catch (const LinkError& e) {
-          return std::optional<Divergence>(
-              Divergence{r.step, "io", "the step's exchanges", std::string(e.what())});
-        }
-        if (!link.at_end())
-          return std::optional<Divergence>(
-              Divergence{r.step, "io[" + std::to_string(link.position()) + "]",
-                         "'" + printable(r.io[link.position()].sent) + "'",
-                         "no further exchange in this step"});
-        return d;
-      },
+  ReplayedSerialBody body(link, framing.codec());
+  return replay_controller_run(
+      reader, path, until,
+      {robot, link, body, "io[0].received",
+       "a reply identifying a " + std::string(robot.name) + ": " + std::string(robot.identity)},
       [&](const LogStop& stop) { return check_stop(stop, framing); });
 }
 

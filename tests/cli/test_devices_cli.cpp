@@ -180,11 +180,17 @@ TEST_CASE("antkit emulate stc-floor + record + replay: the tour of antkit stc, t
   const auto stc = run_antkit("stc --map " + map + " --variant ant-edge --format json");
   REQUIRE(stc.status == 0);
   const auto s = nlohmann::json::parse(stc.out);
+  // The device's results are its own block, under its key, with antkit stc's keys.
+  REQUIRE(j["tour"].is_object());
+  const auto& tour = j["tour"];
   for (const char* key :
-       {"path", "reachable_subcells", "covered", "repeats", "returned_to_start", "hash"}) {
+       {"start", "path", "reachable_subcells", "covered", "repeats", "returned_to_start", "hash"}) {
     INFO(key);
-    CHECK(j[key] == s[key]);
+    CHECK(tour[key] == s[key]);
+    if (std::string_view(key) != "hash") CHECK_FALSE(j.contains(key)); // the run's hash
   }
+  CHECK(tour["tour_ok"] == true);
+  CHECK(tour["first_violation"].is_null());
   CHECK(j["stopped"] == "done");
   const auto rp = run_antkit("replay " + log + " --format json");
   REQUIRE(rp.status == 0);
@@ -192,12 +198,27 @@ TEST_CASE("antkit emulate stc-floor + record + replay: the tour of antkit stc, t
   CHECK(k["identical"] == true);
   CHECK(k["robot"] == "stc-floor");
   CHECK(k["hash"] == j["run_hash"]);
+  CHECK(k["hash"] == j["hash"]); // the top-level hash is the run's, as every device's
   const auto [status, summary] = emu.finish();
   CHECK(status == 0);
   const auto e = nlohmann::json::parse(summary);
-  CHECK(e["covered"] == s["covered"]);
-  CHECK(e["repeats"] == 0);
-  CHECK(e["positions"] == s["path"].size());
+  REQUIRE(e["floor"].is_object());
+  const auto& floor = e["floor"];
+  CHECK(floor["map"] == map);
+  CHECK(floor["start"] == s["start"]);
+  CHECK(floor["covered"] == s["covered"]);
+  CHECK(floor["repeats"] == 0);
+  CHECK(floor["positions"] == s["path"].size());
+  CHECK(floor["reachable_subcells"] == s["reachable_subcells"]);
+  CHECK(floor["frames"].get<std::int64_t>() > 0);
+  CHECK(floor["clock_s"].get<double>() > 0);
+  for (const char* key :
+       {"map", "start", "frames", "positions", "covered", "repeats", "reachable_subcells",
+        "max_offset_subcells", "max_heading_error_degrees", "clock_s"}) {
+    INFO(key);
+    CHECK(floor.contains(key));
+    CHECK_FALSE(e.contains(key));
+  }
 }
 
 TEST_CASE("antkit stc-floor: bad input exits 2 with where and why, and writes nothing",
@@ -329,11 +350,14 @@ TEST_CASE("antkit record --device stc-floor: a tour the oracle refuses exits 1 a
       run_antkit("record --device stc-floor --port " + emu.port() +
                  " --controller ant-edge --map " + map + " --out " + log + " --format json");
   CHECK(r.status == 1);
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = nlohmann::json::parse(r.out)["tour"];
   CHECK(j["tour_ok"] == false);
   CHECK(j["covered"].get<int>() < j["reachable_subcells"].get<int>());
   REQUIRE(j["first_violation"].is_object());
   CHECK(j["first_violation"]["rule"].get<std::string>().find("coverage") != std::string::npos);
+  CHECK(j["first_violation"]["subcell"].is_array());
+  CHECK(j["first_violation"].contains("step"));
+  CHECK(j["first_violation"]["detail"].is_string());
   CHECK(r.err.find("not a coverage tour") != std::string::npos);
   // The log itself is sound: it replays.
   CHECK(run_antkit("replay " + log).status == 0);
@@ -362,9 +386,9 @@ TEST_CASE("antkit record --device stc-floor: a tour that never closes ends, and 
     const auto j = nlohmann::json::parse(r.out);
     // The default bound: 8 steps a reachable sub-cell, plus 64.
     const auto steps = j["steps"].get<std::int64_t>();
-    const auto bound = 8 * j["reachable_subcells"].get<std::int64_t>() + 64;
+    const auto bound = 8 * j["tour"]["reachable_subcells"].get<std::int64_t>() + 64;
     CHECK(steps == bound); // the bound ended it, not the tour
-    CHECK(j["tour_ok"] == false);
+    CHECK(j["tour"]["tour_ok"] == false);
   }
   {
     Emulator emu({"stc-floor", "--map", map, "--noise", "255", "--seed", "3"});
@@ -374,7 +398,10 @@ TEST_CASE("antkit record --device stc-floor: a tour that never closes ends, and 
     INFO(r.err);
     CHECK(r.status == 1);
     const auto j = nlohmann::json::parse(r.out);
-    CHECK(j["tour_ok"] == false);
+    CHECK(j["tour"]["tour_ok"] == false);
+    CHECK(j["tour"]["first_violation"].is_null());
+    CHECK(j["tour"]["hash"].is_null()); // no map: no tour hash
+    CHECK_FALSE(j["tour"].contains("reachable_subcells"));
     const bool said = r.err.find("without --map") != std::string::npos ||
                       r.err.find("did not close") != std::string::npos ||
                       r.err.find("more than once") != std::string::npos;

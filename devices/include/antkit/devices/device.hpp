@@ -25,6 +25,7 @@
 // Adding a robot is one set of files (its description or codec, its Session, its Device) and one
 // line in registry.cpp: CONTRIBUTING.md walks through it.
 #include <antkit/devices/device_options.hpp>
+#include <antkit/devices/device_report.hpp>
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/replay.hpp>
@@ -98,12 +99,9 @@ struct EmulateReport {
   // The serial robots: the last session's control periods and end position (body diameters).
   std::optional<std::uint64_t> periods;
   std::optional<std::pair<double, double>> position;
-  // The marker-floor robot: the truth of the last session.
-  std::optional<kernel::Cell> start;
-  std::int64_t frames = 0;
-  std::uint64_t positions = 0;
-  std::int64_t covered = 0, repeats = 0, reachable_subcells = 0;
-  double max_offset_subcells = 0, max_heading_error_degrees = 0, clock_s = 0;
+  // The device's own results, beyond these (device_report.hpp), or null: the marker-floor robot's
+  // truth of its last session (stc_floor/report.hpp, its "floor" block).
+  std::shared_ptr<const DeviceReport> device_report;
 };
 
 class Device {

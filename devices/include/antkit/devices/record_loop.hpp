@@ -46,6 +46,7 @@
 // watchdog, a disconnect), or any other error. No record is lost.
 #include <antkit/devices/controllers.hpp>
 #include <antkit/devices/device_options.hpp>
+#include <antkit/devices/device_report.hpp>
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/robot.hpp>
 #include <antkit/kernel/grid.hpp>
@@ -59,15 +60,6 @@
 #include <vector>
 
 namespace antkit::devices {
-
-// What a device reports of a run beyond what every run has (RecordSummary::device_report): the
-// marker-floor robot's tour (stc_floor::Tour, read with stc_floor::tour_of(),
-// stc_floor/record.hpp). The shared loop only carries it; the device's own header says what it
-// holds.
-class DeviceReport {
-public:
-  virtual ~DeviceReport() = default;
-};
 
 // The robot at the port is not the device asked for (see "First, at connect" above): what it
 // answered, and to what.
@@ -145,7 +137,8 @@ struct RecordSummary {
   bool completed = false; // all the requested steps ran
   SafeStopResult safe_stop;
   std::uint64_t hash = 0; // RunHash of the run (replay() recomputes it)
-  // The device's own results of the run (Session::report), or null: the marker-floor robot's tour.
+  // The device's own results of the run (Session::report, device_report.hpp), or null: the
+  // marker-floor robot's tour (stc_floor/report.hpp). Null when the port never opened.
   std::shared_ptr<const DeviceReport> device_report;
   // The run did what it set out to do (every step) and the robot is known to be stopped. A run
   // stopped by a signal did not: `antkit record` exits 128 + the signal's number then (a script's
