@@ -59,7 +59,7 @@ TEST_CASE("antkit record --mcap: the stc-floor tour as MCAP, the same as export 
   REQUIRE(poses.size() == steps);
   CHECK(poses.front()["frame_id"] == "map");
   // The last pose is the tour's last sub-cell, as record reports it.
-  const auto& path = j["path"];
+  const auto& path = j["tour"]["path"];
   const auto& last = poses.back()["pose"]["position"];
   CHECK(last["x"] == path.back()[0]);
   CHECK(last["y"] == path.back()[1]);
