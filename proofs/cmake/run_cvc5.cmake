@@ -11,8 +11,12 @@
 # listed claim was most of these tests' time (495 of 925 s); 2 s still notices one that became easy.
 # Without PROOF it re-solves the files a passing run of proof.z3.<name> left in DIR
 # (run_z3_dump.cmake, its fixture, so that the proof does not run twice).
+# With CACHE (the proof cache's directory, proofs/z3/proof_cache.hpp), a file whose text cvc5 of
+# this very version has answered `unsat` before is not solved again: the marker cvc5-<SHA-256 of
+# the version and the file's text> in CACHE says it was. Only `unsat` is remembered; anything else
+# is solved every time.
 #   cmake [-DPROOF=exe [-DARGS=...]] -DNAME=name -DDIR=dir -DCVC5=cvc5 [-DTLIMIT_MS=n]
-#         [-DLISTED_TLIMIT_MS=n] [-DUNSOLVED=file] -P run_cvc5.cmake
+#         [-DLISTED_TLIMIT_MS=n] [-DUNSOLVED=file] [-DCACHE=dir] -P run_cvc5.cmake
 cmake_policy(SET CMP0057 NEW) # if(... IN_LIST ...)
 if(NOT DEFINED TLIMIT_MS)
   set(TLIMIT_MS 60000)
@@ -48,7 +52,25 @@ if(n EQUAL 0)
 endif()
 set(failed 0)
 set(left 0)
+set(cached 0)
+if(CACHE)
+  execute_process(COMMAND ${CVC5} --version OUTPUT_VARIABLE cvc5_version RESULT_VARIABLE vrc)
+  if(NOT vrc EQUAL 0 OR cvc5_version STREQUAL "")
+    set(CACHE "") # no version to key on: solve everything
+  else()
+    file(MAKE_DIRECTORY ${CACHE})
+  endif()
+endif()
 foreach(f IN LISTS files)
+  if(CACHE)
+    file(READ ${f} text)
+    string(SHA256 key "cvc5 ${cvc5_version}\n${text}")
+    set(marker ${CACHE}/cvc5-${key})
+    if(EXISTS ${marker})
+      math(EXPR cached "${cached} + 1")
+      continue()
+    endif()
+  endif()
   # The claim's name, from the file's first line "; NAME" (file(STRINGS) keeps the ';' escaped).
   file(READ ${f} first LIMIT 4096)
   string(REGEX REPLACE "\n.*" "" first "${first}")
@@ -73,6 +95,10 @@ foreach(f IN LISTS files)
     if(claim IN_LIST unsolved)
       message(STATUS "now re-proved, drop it from the list: ${NAME}: ${claim}")
     endif()
+    if(CACHE)
+      file(WRITE ${marker}.${NAME}.tmp "unsat\n") # one writer per name: proofs may share a text
+      file(RENAME ${marker}.${NAME}.tmp ${marker})
+    endif()
   elseif(answer STREQUAL "unknown" AND claim IN_LIST unsolved)
     math(EXPR left "${left} + 1")
     message(STATUS "left to Z3 (listed; undecided in ${limit} ms): ${claim}")
@@ -86,3 +112,7 @@ if(failed GREATER 0)
 endif()
 math(EXPR done "${n} - ${left}")
 message(STATUS "cvc5 re-proved ${done} of ${n} checks (unsat); ${left} listed as left to Z3")
+if(cached GREATER 0)
+  message(STATUS "of them ${cached} from the proof cache (${CACHE}): the same text answered unsat "
+                 "by this cvc5 in an earlier run")
+endif()

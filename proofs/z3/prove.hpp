@@ -22,6 +22,7 @@
 // checked on no satisfiable context at all fails at result(). A proved claim kept for later checks
 // (keep) is kept as "context implies claim", scoped to the domain and path it was proved under, so
 // a later section with another domain does not inherit it.
+#include "proof_cache.hpp"
 #include "z3_int.hpp"
 
 #include <algorithm>
@@ -205,7 +206,17 @@ public:
     std::cout << (failures_ == 0 ? "all " : "") << proved_ << " proved, " << refuted_
               << " wrong claims refuted, " << impossible_paths_
               << " on impossible paths (not counted), " << failures_ << " failed\n";
+    print_cache_use();
     return failures_ == 0 ? 0 : 1;
+  }
+
+  // Says how many answers came from the proof cache (proof_cache.hpp), when it is on.
+  static void print_cache_use() {
+    const ProofCache& cache = ProofCache::global();
+    if (!cache.enabled()) return;
+    std::cout << "proof cache: " << cache.hits()
+              << " answers were those of identical queries solved by this Z3 in earlier runs ("
+              << cache.dir() << "; ANTKIT_PROOF_CACHE= solves every query)\n";
   }
 
 private:
@@ -247,7 +258,9 @@ private:
       if (with_path)
         for (const auto& p : s_.path()) solver.add(p);
       for (const auto& f : s_.facts()) solver.add(f);
-      return solver.check();
+      // A satisfiable context is what lets the claims count: that answer may come from the cache
+      // of earlier runs (proof_cache.hpp); a contradiction is always solved afresh.
+      return ProofCache::global().check(solver, logic_name(), ProofCache::Keep::Sat);
     };
     const z3::check_result all = decide(true);
     if (all == z3::sat)
@@ -292,13 +305,16 @@ private:
     counted_[name] = true;
     z3::solver solver = negation_solver(c);
     dump_smt2(name, solver);
-    const z3::check_result r = solver.check();
+    bool cached = false;
+    const z3::check_result r =
+        ProofCache::global().check(solver, logic_name(), ProofCache::Keep::Unsat, &cached);
     const auto ms =
         std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - t0)
             .count();
     if (r == z3::unsat) {
       ++proved_;
-      std::cout << "proved   " << name << " (" << ms << " ms)" << std::endl;
+      std::cout << "proved   " << name << " (" << ms << " ms" << (cached ? ", cached" : "") << ")"
+                << std::endl;
       return true;
     }
     ++failures_;
@@ -349,7 +365,9 @@ private:
                         : s_.uses_arrays() ? "QF_ABV"
                                            : "QF_BV";
     out << "(set-logic " << logic << ")\n";
-    out << portable_smt2(solver.to_smt2());
+    // Let names renamed in order of appearance (proof_cache.hpp): the same check, the same text,
+    // whatever the context made before it (cvc5's re-check keeps its answers by the text).
+    out << ProofCache::canonical_names(portable_smt2(solver.to_smt2()));
   }
 
   // Z3 writes its own names for "signed multiplication does not overflow upwards / downwards",
@@ -403,6 +421,12 @@ private:
     }
     out.append(text, from, std::string::npos);
     return out;
+  }
+
+  // The solver a check goes to, by the name it was made with ("": Z3's default, for the claims
+  // over integers): part of a query's key in the proof cache.
+  const char* logic_name() const {
+    return logic_ != nullptr ? logic_ : integers_ ? "" : s_.uses_arrays() ? "QF_ABV" : "QF_BV";
   }
 
   // QF_BV, or QF_ABV once a kernel has read a table as a Z3 array (z3_int.hpp, lookup): QF_BV's

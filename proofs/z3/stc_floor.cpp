@@ -304,7 +304,8 @@ public:
   bool feasible() {
     z3::solver solver(s_.ctx(), "QF_ABV");
     solver.add(abstract(context()));
-    return solver.check() != z3::unsat;
+    // Either answer may come from the proof cache (proof_cache.hpp): a path taken or pruned.
+    return ProofCache::global().check(solver, "QF_ABV", ProofCache::Keep::Either) != z3::unsat;
   }
 
   bool claim(const std::string& name, const Bool& c) {
@@ -313,14 +314,16 @@ public:
     const std::vector<Session::Obligation> obligations = s_.obligations();
     for (const auto& ob : obligations) all = all && ob.holds;
     s_.clear_obligations();
-    const z3::check_result r = check(all && c.expr());
+    bool cached = false;
+    const z3::check_result r = check(all && c.expr(), &cached);
     const auto ms =
         std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - t0)
             .count();
     if (r == z3::unsat) {
       ++proved_;
       std::cout << "proved   " << name << " (and " << obligations.size()
-                << " obligations of the code; " << ms << " ms)" << std::endl;
+                << " obligations of the code; " << ms << " ms" << (cached ? ", cached" : "") << ")"
+                << std::endl;
       return true;
     }
     ++failures_;
@@ -352,7 +355,9 @@ private:
     for (const auto& x : s_.facts()) f = f && x;
     return f;
   }
-  z3::check_result check(const z3::expr& goal) {
+  // A proved goal's answer may come from the proof cache (proof_cache.hpp); a failing one is
+  // solved here.
+  z3::check_result check(const z3::expr& goal, bool* cached = nullptr) {
     solver_.emplace(s_.ctx(), "QF_ABV");
     solver_->add(abstract(context() && !goal));
     // STC_FLOOR_DUMP=dir writes every query as SMT-LIB 2 (to study a slow claim elsewhere).
@@ -360,7 +365,7 @@ private:
       std::ofstream out(std::string(dir) + "/q" + std::to_string(dumped_++) + ".smt2");
       out << solver_->to_smt2();
     }
-    return solver_->check();
+    return ProofCache::global().check(*solver_, "QF_ABV", ProofCache::Keep::Unsat, cached);
   }
   int dumped_ = 0;
   void print_model() {
