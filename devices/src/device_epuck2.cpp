@@ -215,6 +215,10 @@ ReplayResult replay_epuck2(LogReader& reader, const std::string& path,
 class Epuck2Device final : public Device {
 public:
   [[nodiscard]] std::string_view name() const noexcept override { return "epuck2"; }
+  // The e-puck's body: its axle and wheel taken as the e-puck1's (PROTOCOLS.md).
+  [[nodiscard]] const RobotDescription* body() const noexcept override {
+    return &describe(RobotKind::Epuck);
+  }
   // PROTOCOLS.md: 115200 8N1 (UART3 to the radio module; over USB the setting does nothing).
   [[nodiscard]] LineSettings line() const noexcept override {
     return {epuck2::kBaud, 8, 1, Parity::None};

@@ -63,6 +63,7 @@ public:
   explicit SerialDevice(const RobotDescription& robot) : robot_(robot.kind) {}
   [[nodiscard]] std::string_view name() const noexcept override { return robot_name(robot_); }
   [[nodiscard]] LineSettings line() const noexcept override { return describe(robot_).line; }
+  [[nodiscard]] const RobotDescription* body() const noexcept override { return &describe(robot_); }
   [[nodiscard]] std::chrono::milliseconds reply_timeout() const noexcept override {
     return describe(robot_).reply_timeout;
   }

@@ -20,6 +20,7 @@
 //    every range at the simulator's 0.75 body diameters: 42.75 mm).
 #include "registry.hpp"
 
+#include <antkit/devices/device.hpp>
 #include <antkit/devices/robot.hpp>
 #include <string>
 
@@ -32,8 +33,9 @@ std::optional<RobotKind> parse_robot(std::string_view name) {
 }
 
 std::optional<RobotKind> body_of(std::string_view log_robot) {
-  if (log_robot == "epuck2") return RobotKind::Epuck;
-  return parse_robot(log_robot);
+  if (const Device* d = find_device(log_robot))
+    if (const RobotDescription* body = d->body()) return body->kind;
+  return std::nullopt;
 }
 
 std::string_view robot_name(RobotKind robot) {

@@ -42,6 +42,28 @@ TEST_CASE("the registry: every robot is one device, found by its name", "[device
   }
 }
 
+TEST_CASE("the registry: each device says the body its logs run with, and body_of asks it",
+          "[devices]") {
+  for (const devices::Device* d : devices::all_devices()) {
+    INFO(d->name());
+    const devices::RobotDescription* body = d->body();
+    const auto kind = devices::body_of(d->name());
+    CHECK(kind.has_value() == (body != nullptr));
+    if (body != nullptr) {
+      CHECK(*kind == body->kind);
+      CHECK(&devices::describe(*kind) == body);
+    }
+    // A serial robot runs with its own description.
+    if (const auto own = devices::parse_robot(d->name())) CHECK(kind == own);
+  }
+  // The e-puck2 borrows the e-puck's body; the marker-floor robot has none; nor has a name that
+  // no device has.
+  CHECK(devices::body_of("epuck2") == devices::RobotKind::Epuck);
+  CHECK_FALSE(devices::body_of("stc-floor"));
+  CHECK_FALSE(devices::body_of("roomba"));
+  CHECK_FALSE(devices::body_of(""));
+}
+
 TEST_CASE("the registry: a device refuses the options of another before anything is opened",
           "[devices]") {
   struct Case {

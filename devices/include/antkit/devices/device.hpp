@@ -110,6 +110,10 @@ public:
   [[nodiscard]] virtual std::string_view name() const noexcept = 0;
   // The line the robot talks on (record's --baud and --framing go over it).
   [[nodiscard]] virtual LineSettings line() const noexcept = 0;
+  // The body a log of this device runs with (dead reckoning, the MCAP export, buffon-from-logs:
+  // body_of() in robot.hpp asks the device its log names): a serial robot's own description; a
+  // robot may borrow another's (the e-puck2 the e-puck's); null when it has none (stc-floor).
+  [[nodiscard]] virtual const RobotDescription* body() const noexcept { return nullptr; }
   // How long a command waits for its reply unless record's --timeout says (RobotDescription).
   [[nodiscard]] virtual std::chrono::milliseconds reply_timeout() const noexcept {
     return std::chrono::milliseconds(250);

@@ -24,8 +24,9 @@ std::string_view robot_name(RobotKind robot);
 // The names parse_robot accepts, for messages: "khepera, khepera-webots, hemisson, epuck".
 std::string_view robot_names();
 // The description whose body and scales a log's robot runs with (dead reckoning, the MCAP
-// export, buffon-from-logs): a serial robot's own, and for "epuck2" (binary mode, epuck2.hpp) the
-// e-puck's (its axle and wheel taken as the e-puck1's, PROTOCOLS.md). nullopt for any other name.
+// export, buffon-from-logs): the one the device of that name says it runs with (Device::body(),
+// device.hpp: a serial robot's own, the e-puck2's the e-puck's). nullopt for a name no device has,
+// or a device without a body (stc-floor).
 std::optional<RobotKind> body_of(std::string_view log_robot);
 
 struct RobotDescription {
