@@ -29,14 +29,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <iterator>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <string_view>
-#include <sys/stat.h>
 #include <unistd.h>
 #include <unordered_map>
 #include <z3++.h>
@@ -51,7 +49,8 @@ public:
     return cache;
   }
   explicit ProofCache(const char* dir) : dir_(dir != nullptr ? dir : "") {
-    if (!dir_.empty()) make_dirs(dir_);
+    std::error_code ignored; // a cache that cannot be made only costs the run its solves
+    if (!dir_.empty()) std::filesystem::create_directories(dir_, ignored);
   }
   [[nodiscard]] bool enabled() const noexcept { return !dir_.empty(); }
   [[nodiscard]] const std::string& dir() const noexcept { return dir_; }
@@ -181,11 +180,6 @@ private:
       }
     }
     if (std::rename(tmp.c_str(), path.c_str()) != 0) std::remove(tmp.c_str());
-  }
-
-  static void make_dirs(const std::string& dir) {
-    for (std::size_t k = 1; k <= dir.size(); ++k)
-      if (k == dir.size() || dir[k] == '/') ::mkdir(dir.substr(0, k).c_str(), 0755);
   }
 
   std::string dir_;
