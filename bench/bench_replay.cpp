@@ -111,6 +111,20 @@ void BM_ReplayBuffonLog(benchmark::State& state) {
 }
 BENCHMARK(BM_ReplayBuffonLog)->Unit(benchmark::kMillisecond);
 
+// The floor under both: the log read and parsed, nothing else. items = records read.
+void BM_ReadBuffonLog(benchmark::State& state) {
+  const auto& path = buffon_log();
+  std::int64_t records = 0;
+  for (auto _ : state) {
+    devices::LogReader reader(path);
+    devices::LogRecord r;
+    while (reader.next(r)) ++records;
+    benchmark::DoNotOptimize(r.state);
+  }
+  state.SetItemsProcessed(records);
+}
+BENCHMARK(BM_ReadBuffonLog)->Unit(benchmark::kMillisecond);
+
 // The same log to an MCAP file (`antkit export mcap`); issue 42 asks that it be no slower than
 // replaying it. items = exported steps.
 void BM_ExportMcapBuffonLog(benchmark::State& state) {

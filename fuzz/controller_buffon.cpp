@@ -98,8 +98,8 @@ void check_behaviour(fuzzing::Bytes& in, std::uint64_t seed) {
 void check_logged(fuzzing::Bytes& in, std::uint64_t seed) {
   static const char* const kNames[] = {"buffon", "buffon", "rs", "wander"};
   const unsigned which = in.below(4);
-  const auto& robot =
-      devices::describe(devices::kSerialRobots[in.below(std::size(devices::kSerialRobots))]);
+  const auto& robot = devices::describe(
+      devices::serial_robots()[in.below(static_cast<unsigned>(devices::serial_robots().size()))]);
   devices::Params params;
   if (which == 1) params.push_back({"visit", 2});
   if (which == 3) params.push_back({"robot", in.below(4)});

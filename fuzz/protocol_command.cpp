@@ -25,7 +25,7 @@ std::vector<antkit::kernel::FxSegment> square_walls() {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  for (const auto robot : antkit::devices::kSerialRobots) {
+  for (const auto robot : antkit::devices::serial_robots()) {
     const Codec codec(robot);
     const auto f = codec.parse_command(text);
     if (f) {

@@ -56,6 +56,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                           "B\r", "V\r",     "G,0,0\r", "L,0,1\r", "O\r"};
   const char* sent = kSent[data[0] % 10];
   const std::string_view line(reinterpret_cast<const char*>(data + 1), size - 1);
-  for (const auto robot : antkit::devices::kSerialRobots) check(Codec(robot), sent, line);
+  for (const auto robot : antkit::devices::serial_robots()) check(Codec(robot), sent, line);
   return 0;
 }

@@ -284,7 +284,7 @@ public:
 
 namespace detail {
 
-const Device& epuck2_device() noexcept {
+ANTKIT_DEVICE(50, epuck2_device) {
   static const Epuck2Device device;
   return device;
 }

@@ -60,7 +60,7 @@ private:
 
 class SerialDevice final : public Device {
 public:
-  explicit SerialDevice(const RobotDescription& robot) : robot_(robot.kind) {}
+  explicit SerialDevice(const RobotDescription& robot) : robot_(RobotKind::of(robot)) {}
   [[nodiscard]] std::string_view name() const noexcept override { return robot_name(robot_); }
   [[nodiscard]] LineSettings line() const noexcept override { return describe(robot_).line; }
   [[nodiscard]] const RobotDescription* body() const noexcept override { return &describe(robot_); }
@@ -143,12 +143,8 @@ private:
 
 namespace detail {
 
-const Device& serial_device(const RobotDescription& robot) {
-  // One device per serial robot, made on first use (the registry's list, registry.cpp).
-  static std::array<std::optional<SerialDevice>, std::size(kSerialRobots)> devices;
-  auto& d = devices.at(static_cast<std::size_t>(robot.kind));
-  if (!d) d.emplace(robot);
-  return *d;
+std::unique_ptr<const Device> make_serial_device(const RobotDescription& robot) {
+  return std::make_unique<const SerialDevice>(robot);
 }
 
 } // namespace detail

@@ -597,7 +597,7 @@ ReplayResult replay_log(LogReader& reader, const std::string& path,
 } // namespace antkit::devices::stc_floor
 
 namespace antkit::devices::detail {
-const Device& stc_floor_device() noexcept {
+ANTKIT_DEVICE(60, stc_floor_device) {
   return stc_floor::kFloor;
 }
 } // namespace antkit::devices::detail

@@ -155,7 +155,7 @@ bool Codec::identifies(std::string_view version_reply) const {
 
 std::string identified_as(std::string_view version_command, std::string_view reply) {
   std::string out;
-  for (const auto kind : kSerialRobots) {
+  for (const auto kind : serial_robots()) {
     const Codec codec(kind);
     if (codec.version() != version_command || !codec.identifies(reply)) continue;
     out += (out.empty() ? "" : ", ") + std::string(codec.robot().name);

@@ -1,9 +1,10 @@
-// The registry of devices (device.hpp): a robot is one line here.
+// The registry of devices (device.hpp): the robots registered in their own files (registry.hpp),
+// in the list the build writes from them (registry_list.cpp).
 #include "registry.hpp"
 
 #include <antkit/devices/stop_signals.hpp>
 #include <antkit/kernel/input_error.hpp>
-#include <array>
+#include <memory>
 #include <vector>
 
 namespace antkit::devices {
@@ -11,25 +12,30 @@ namespace antkit::devices {
 namespace detail {
 
 std::span<const RobotDescription* const> serial_robots() {
-  // A serial robot is its description (robot_<name>.cpp) and one line here.
-  static const std::array<const RobotDescription*, 4> kRobots{
-      &khepera_description(),
-      &khepera_webots_description(),
-      &hemisson_description(),
-      &epuck_description(),
-  };
+  static const std::vector<const RobotDescription*> kRobots = [] {
+    std::vector<const RobotDescription*> out;
+    for (const RegistryEntry& e : registry_entries())
+      if (e.robot != nullptr) out.push_back(&e.robot());
+    return out;
+  }();
   return kRobots;
 }
 
 } // namespace detail
 
 std::span<const Device* const> all_devices() {
+  // The serial robots' devices, made once and kept for the process.
+  static const std::vector<std::unique_ptr<const Device>> kSerial = [] {
+    std::vector<std::unique_ptr<const Device>> out;
+    for (const RobotDescription* robot : detail::serial_robots())
+      out.push_back(detail::make_serial_device(*robot));
+    return out;
+  }();
   static const std::vector<const Device*> kDevices = [] {
     std::vector<const Device*> out;
-    for (const RobotDescription* robot : detail::serial_robots())
-      out.push_back(&detail::serial_device(*robot));
-    out.push_back(&detail::epuck2_device());    // the e-puck2 in binary mode (epuck2.hpp)
-    out.push_back(&detail::stc_floor_device()); // paper 002's marker-floor robot
+    std::size_t serial = 0;
+    for (const detail::RegistryEntry& e : detail::registry_entries())
+      out.push_back(e.robot != nullptr ? kSerial[serial++].get() : &e.device());
     return out;
   }();
   return kDevices;

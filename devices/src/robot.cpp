@@ -1,5 +1,6 @@
 // The robot descriptions (robot.hpp): each robot's is in its own file, robot_<name>.cpp, with its
-// sources (as gathered in ../shared/devices/PROTOCOLS.md); this file looks them up by kind.
+// sources (as gathered in ../shared/devices/PROTOCOLS.md), registered from there (registry.hpp);
+// this file looks them up by kind, which is the robot's name.
 // Choices where the sources are silent:
 //  * Terminator: CR for all four (RoadNarrows' Hemisson driver and asercom drivers send CR; the
 //    Khepera firmware ends a command at CR or LF).
@@ -22,19 +23,34 @@
 
 #include <antkit/devices/device.hpp>
 #include <antkit/devices/robot.hpp>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace antkit::devices {
 
+RobotKind RobotKind::of(const RobotDescription& robot) noexcept {
+  return RobotKind(robot.name);
+}
+
+std::span<const RobotKind> serial_robots() {
+  static const std::vector<RobotKind> kinds = [] {
+    std::vector<RobotKind> out;
+    for (const RobotDescription* d : detail::serial_robots()) out.push_back(RobotKind(d->name));
+    return out;
+  }();
+  return kinds;
+}
+
 std::optional<RobotKind> parse_robot(std::string_view name) {
-  for (const auto kind : kSerialRobots)
-    if (name == describe(kind).name) return kind;
+  for (const auto kind : serial_robots())
+    if (name == kind.name()) return kind;
   return std::nullopt;
 }
 
 std::optional<RobotKind> body_of(std::string_view log_robot) {
   if (const Device* d = find_device(log_robot))
-    if (const RobotDescription* body = d->body()) return body->kind;
+    if (const RobotDescription* body = d->body()) return RobotKind::of(*body);
   return std::nullopt;
 }
 
@@ -45,8 +61,8 @@ std::string_view robot_name(RobotKind robot) {
 std::string_view robot_names() {
   static const std::string names = [] {
     std::string out;
-    for (const auto kind : kSerialRobots)
-      out += (out.empty() ? "" : ", ") + std::string(robot_name(kind));
+    for (const auto kind : serial_robots())
+      out += (out.empty() ? "" : ", ") + std::string(kind.name());
     return out;
   }();
   return names;
@@ -54,8 +70,8 @@ std::string_view robot_names() {
 
 const RobotDescription& describe(RobotKind robot) {
   for (const RobotDescription* d : detail::serial_robots())
-    if (d->kind == robot) return *d;
-  return detail::khepera_description(); // every kind is registered (a test checks)
+    if (d->name == robot.name()) return *d;
+  throw std::logic_error("robot '" + std::string(robot.name()) + "' is not registered");
 }
 
 } // namespace antkit::devices

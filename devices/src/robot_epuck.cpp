@@ -4,7 +4,7 @@
 //    steps/s, +-1000 on the e-puck 1, Q/P step counters, 1000 steps a turn of a 41 mm wheel; IR0..7
 //    at -17, -49, -90, -150, +150, +90, +49, +17 degrees; 70 mm body, 53 mm wheel base).
 // The choices made where the sources are silent are listed in robot.cpp.
-#include "robots.hpp"
+#include "registry.hpp"
 
 namespace antkit::devices::detail {
 
@@ -23,7 +23,6 @@ constexpr bool asercom_version(std::string_view text) noexcept {
 }
 
 constexpr RobotDescription kEpuck{
-    .kind = RobotKind::Epuck,
     .name = "epuck",
     .line = {115200, 8, 1, Parity::None},
     .terminator = "\r",
@@ -58,7 +57,7 @@ constexpr RobotDescription kEpuck{
 
 } // namespace
 
-const RobotDescription& epuck_description() noexcept {
+ANTKIT_SERIAL_ROBOT(40, epuck_description) {
   return kEpuck;
 }
 

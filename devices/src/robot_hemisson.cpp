@@ -5,7 +5,7 @@
 //    front-left, right, left, rear, ground-right, ground-left; 120 mm body, 112 mm wheel base; no
 //    wheel encoders).
 // The choices made where the sources are silent are listed in robot.cpp.
-#include "robots.hpp"
+#include "registry.hpp"
 
 namespace antkit::devices::detail {
 
@@ -20,7 +20,6 @@ constexpr bool hemios_version(std::string_view text) noexcept {
 }
 
 constexpr RobotDescription kHemisson{
-    .kind = RobotKind::Hemisson,
     .name = "hemisson",
     .line = {115200, 8, 1, Parity::None},
     .terminator = "\r",
@@ -53,7 +52,7 @@ constexpr RobotDescription kHemisson{
 
 } // namespace
 
-const RobotDescription& hemisson_description() noexcept {
+ANTKIT_SERIAL_ROBOT(30, hemisson_description) {
   return kHemisson;
 }
 

@@ -4,7 +4,7 @@
 //    8N2, D in pulses per 10 ms = 8 mm/s, H/G counters of 0.08 mm, N: 8 readings 0-1023, six at
 //    the front left to right then two at the back; 55 mm body, 53 mm between the wheels).
 // The choices made where the sources are silent are listed in robot.cpp.
-#include "robots.hpp"
+#include "registry.hpp"
 
 namespace antkit::devices::detail {
 
@@ -31,7 +31,6 @@ constexpr bool khepera_version(std::string_view text) noexcept {
 }
 
 constexpr RobotDescription kKhepera{
-    .kind = RobotKind::Khepera,
     .name = "khepera",
     .line = {9600, 8, 2, Parity::None},
     .terminator = "\r",
@@ -63,7 +62,7 @@ constexpr RobotDescription kKhepera{
 
 } // namespace
 
-const RobotDescription& khepera_description() noexcept {
+ANTKIT_SERIAL_ROBOT(10, khepera_description) {
   return kKhepera;
 }
 

@@ -10,7 +10,7 @@
 //    = 0); wheels 52 mm apart, body radius 28.5 mm (57 mm across); N: eight distance sensors
 //    ds0..ds7 as on the real Khepera, 1023 at contact falling linearly to 0 at 5 cm; B -> "b,0,0".
 // The choices made where the sources are silent are listed in robot.cpp.
-#include "robots.hpp"
+#include "registry.hpp"
 
 namespace antkit::devices::detail {
 
@@ -24,7 +24,6 @@ constexpr bool relay_version(std::string_view text) noexcept {
 }
 
 constexpr RobotDescription kKheperaWebots{
-    .kind = RobotKind::KheperaWebots,
     .name = "khepera-webots",
     .line = {9600, 8, 1, Parity::None}, // irrelevant over TCP (see above)
     .terminator = "\r",
@@ -60,7 +59,7 @@ constexpr RobotDescription kKheperaWebots{
 
 } // namespace
 
-const RobotDescription& khepera_webots_description() noexcept {
+ANTKIT_SERIAL_ROBOT(20, khepera_webots_description) {
   return kKheperaWebots;
 }
 

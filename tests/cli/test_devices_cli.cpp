@@ -3,6 +3,7 @@
 #include "antkit_child.hpp"
 #include "run_antkit.hpp"
 
+#include <antkit/devices/device.hpp>
 #include <catch2/catch.hpp>
 #include <csignal>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include <unistd.h>
 #include <vector>
 
+namespace devices = antkit::devices;
 using antkit::test::Emulator;
 using antkit::test::run_antkit;
 using antkit::test::slurp;
@@ -495,13 +497,13 @@ TEST_CASE("antkit record and emulate: a device's options are checked against its
            log,
        "--calibration:  is an option of the stc-floor robot"},
       {"emulate stc-floor --fault drop=0.1",
-       "--fault:  is an option of the serial robots (khepera, khepera-webots, hemisson, epuck, "
-       "epuck2)"},
+       "--fault:  is an option of the serial robots (" +
+           devices::option_takers(devices::OptionUse::Emulate, "fault") + ")"},
       {"record --device stc-floor --port /dev/null --controller ant --start 0,0 --arena standard "
        "--out " +
            log,
-       "--arena:  is an option of the serial robots (khepera, khepera-webots, hemisson, epuck, "
-       "epuck2)"},
+       "--arena:  is an option of the serial robots (" +
+           devices::option_takers(devices::OptionUse::Record, "arena") + ")"},
   };
   for (const auto& c : cases) {
     INFO(c.args);

@@ -1,11 +1,16 @@
 // The registry of devices (device.hpp): one robot model, every robot found by its name, and each
 // device declaring its own options and refusing the others' before anything is opened.
+#include "test_paths.hpp"
+
 #include <algorithm>
 #include <antkit/devices/device.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <regex>
 #include <string>
 #include <variant>
 #include <vector>
@@ -13,26 +18,109 @@
 namespace devices = antkit::devices;
 using antkit::kernel::InputError;
 
-TEST_CASE("the registry: every robot is one device, found by its name", "[devices]") {
-  CHECK(devices::device_names() == "khepera, khepera-webots, hemisson, epuck, epuck2, stc-floor");
-  // The serial robots, the e-puck2 in binary mode and the marker-floor robot.
-  CHECK(devices::all_devices().size() == std::size(devices::kSerialRobots) + 2);
-  for (const auto kind : devices::kSerialRobots) {
+namespace {
+
+// A robot's registry line as its own file writes it (devices/src/registry.hpp), read here again
+// from the sources, independently of the build's reading (devices/registry_list.cmake).
+struct Registered {
+  int place = 0;
+  bool serial = false;
+  std::string file; // robot_<name>.cpp or device_<name>.cpp
+  // The device name the file is named for: its name with '_' for '-'.
+  [[nodiscard]] std::string device_name() const {
+    std::string n = file.substr(file.find('_') + 1);
+    n.resize(n.size() - 4); // .cpp
+    std::replace(n.begin(), n.end(), '_', '-');
+    return n;
+  }
+};
+
+// The devices whose own declarations (Device::options()) take option `name` for `use` (declared,
+// and not declared as refused with the device's own reason), in the registry's order, as messages
+// list them: a robot added later is among them by its declaration.
+std::string declarers(devices::OptionUse use, std::string_view name) {
+  std::string out;
+  for (const devices::Device* d : devices::all_devices())
+    for (const auto& o : d->options())
+      if (o.use == use && o.name == name && o.refused.empty()) {
+        out += (out.empty() ? "" : ", ") + std::string(d->name());
+        break;
+      }
+  return out;
+}
+
+// Whether the list "a, b, c" names `name`.
+bool named_in(const std::string& list, std::string_view name) {
+  return (", " + list + ", ").find(", " + std::string(name) + ", ") != std::string::npos;
+}
+
+std::vector<Registered> registered_in_sources() {
+  std::vector<Registered> out;
+  const std::regex line(R"(^ANTKIT_(SERIAL_ROBOT|DEVICE)\(([0-9]+), *\w+\))");
+  for (const auto& f :
+       std::filesystem::directory_iterator(antkit::test::source_path("devices/src"))) {
+    if (f.path().extension() != ".cpp") continue;
+    std::ifstream in(f.path());
+    std::string text;
+    while (std::getline(in, text)) {
+      std::smatch m;
+      if (!std::regex_search(text, m, line)) continue;
+      out.push_back(
+          {std::stoi(m[2].str()), m[1].str() == "SERIAL_ROBOT", f.path().filename().string()});
+    }
+  }
+  std::sort(out.begin(), out.end(),
+            [](const Registered& a, const Registered& b) { return a.place < b.place; });
+  return out;
+}
+
+} // namespace
+
+TEST_CASE("the registry: every robot is one device, registered in its own file and found by its "
+          "name",
+          "[devices]") {
+  // The registry is what the robots' files declare, in their places' order, each robot named as
+  // its file is (robot_khepera_webots.cpp: "khepera-webots"; device_stc_floor.cpp: "stc-floor").
+  const auto registered = registered_in_sources();
+  REQUIRE(registered.size() == devices::all_devices().size());
+  std::size_t serial = 0;
+  std::string names, serial_names;
+  for (std::size_t i = 0; i < registered.size(); ++i) {
+    const Registered& r = registered[i];
+    const devices::Device* d = devices::all_devices()[i];
+    INFO(r.file);
+    CHECK(r.file.starts_with(r.serial ? "robot_" : "device_"));
+    CHECK(d->name() == r.device_name());
+    CHECK(devices::find_device(r.device_name()) == d);
+    if (i > 0) CHECK(registered[i - 1].place < r.place); // one robot per place
+    names += (names.empty() ? "" : ", ") + r.device_name();
+    if (!r.serial) {
+      CHECK_FALSE(devices::parse_robot(d->name())); // a device of its own, no text-line robot
+      continue;
+    }
+    // A serial robot: its description, its kind and its device agree.
+    serial_names += (serial_names.empty() ? "" : ", ") + r.device_name();
+    REQUIRE(serial < devices::serial_robots().size());
+    const auto kind = devices::serial_robots()[serial++];
     const auto& robot = devices::describe(kind);
-    INFO(robot.name);
-    CHECK(robot.kind == kind);
+    CHECK(kind.name() == d->name());
+    CHECK(robot.name == d->name());
+    CHECK(devices::RobotKind::of(robot) == kind);
     CHECK(devices::parse_robot(robot.name) == kind);
-    const devices::Device* d = devices::find_device(robot.name);
-    REQUIRE(d != nullptr);
-    CHECK(d->name() == robot.name);
     CHECK(d->line() == robot.line);
+    CHECK(d->body() == &robot);
     // Every robot's safe stop starts with the wheels' stop, as the replay expects.
     CHECK(robot.safe_stop[0] == "D,0,0");
   }
-  REQUIRE(devices::find_device("stc-floor") != nullptr);
-  REQUIRE(devices::find_device("epuck2") != nullptr);
-  CHECK_FALSE(devices::parse_robot("epuck2")); // not a text-line robot: a device of its own
+  CHECK(serial == devices::serial_robots().size());
+  CHECK(devices::device_names() == names);
+  CHECK(devices::robot_names() == serial_names);
+  // The robots RobotKind names for tests and examples are registered.
+  for (const auto kind : {devices::RobotKind::Khepera, devices::RobotKind::Hemisson,
+                          devices::RobotKind::Epuck, devices::RobotKind::KheperaWebots})
+    CHECK(devices::describe(kind).name == kind.name());
   CHECK(devices::find_device("roomba") == nullptr);
+  CHECK_FALSE(devices::parse_robot("roomba"));
   try {
     (void)devices::device("roomba", "--device");
     FAIL("an unknown device was found");
@@ -50,7 +138,7 @@ TEST_CASE("the registry: each device says the body its logs run with, and body_o
     const auto kind = devices::body_of(d->name());
     CHECK(kind.has_value() == (body != nullptr));
     if (body != nullptr) {
-      CHECK(*kind == body->kind);
+      CHECK(*kind == devices::RobotKind::of(*body));
       CHECK(&devices::describe(*kind) == body);
     }
     // A serial robot runs with its own description.
@@ -187,13 +275,19 @@ TEST_CASE("the registry: each device declares its options (name, type, range, de
     for (std::size_t i = 0; i < all.size(); ++i)
       for (std::size_t j = i + 1; j < all.size(); ++j) CHECK(all[i].word != all[j].word);
   }
+  // Who takes an option: the devices that declare it, in the registry's order. The marker-floor
+  // robot alone takes a map; every serial robot and the e-puck2 an arena, --pace and --listen.
   CHECK(devices::option_takers(devices::OptionUse::Record, "map") == "stc-floor");
-  CHECK(devices::option_takers(devices::OptionUse::Record, "arena") ==
-        "khepera, khepera-webots, hemisson, epuck, epuck2");
-  CHECK(devices::option_takers(devices::OptionUse::Emulate, "pace") ==
-        "khepera, khepera-webots, hemisson, epuck, epuck2");
-  CHECK(devices::option_takers(devices::OptionUse::Emulate, "listen") ==
-        "khepera, khepera-webots, hemisson, epuck, epuck2");
+  for (const auto& [use, name] : {std::pair{devices::OptionUse::Record, "arena"},
+                                  std::pair{devices::OptionUse::Emulate, "pace"},
+                                  std::pair{devices::OptionUse::Emulate, "listen"}}) {
+    INFO(name);
+    const std::string takers = devices::option_takers(use, name);
+    CHECK(takers == declarers(use, name));
+    for (const auto kind : devices::serial_robots()) CHECK(named_in(takers, kind.name()));
+    CHECK(named_in(takers, "epuck2"));
+    CHECK_FALSE(named_in(takers, "stc-floor"));
+  }
 }
 
 TEST_CASE("the registry: one refusal of another device's option names who takes it", "[devices]") {
@@ -234,8 +328,8 @@ TEST_CASE("the registry: one refusal of another device's option names who takes 
   CHECK(refused("khepera", [](devices::DeviceValues& v) { v.set("drift", std::int64_t{3}); }) ==
         "drift:  is an option of the stc-floor robot");
   CHECK(refused("stc-floor", [](devices::DeviceValues& v) { v.set("pace", true); }) ==
-        "pacing:  is an option of the serial robots (khepera, khepera-webots, hemisson, epuck, "
-        "epuck2)");
+        "pacing:  is an option of the serial robots (" +
+            declarers(devices::OptionUse::Emulate, "pace") + ")");
   CHECK(refused("stc-floor", [](devices::DeviceValues& v) {
           v.set("listen", std::string("127.0.0.1:0"));
         }).find("listen address: the stc-floor emulator serves a pty") == 0);
@@ -292,8 +386,8 @@ TEST_CASE("the registry: the command line's texts are read by the declarations, 
                                                "[0, 255]");
   CHECK(error(floor, {{"start", {"3;4"}}}).find("start sub-cell: ") == 0);
   CHECK(error(floor, {{"noise", {"lots"}}, {"fault", {"drop=1"}}}) ==
-        "fault:  is an option of the serial robots (khepera, khepera-webots, hemisson, epuck, "
-        "epuck2)");
+        "fault:  is an option of the serial robots (" +
+            declarers(devices::OptionUse::Emulate, "fault") + ")");
 }
 
 TEST_CASE("the registry: --help of one device lists its own options from its declarations",

@@ -12,7 +12,7 @@
 // A log has one schema for every device (log.hpp): a header, step records (io, obs, cmd, odo,
 // state) and a stop record; what a device puts in obs, cmd and odo is written beside its session.
 //
-// The devices (registry.cpp):
+// The devices (registry.cpp; each registers itself in its own file, devices/src/registry.hpp):
 //   khepera, khepera-webots, hemisson, epuck   the serial robots of paper 000's family
 //                                              (robot.hpp), running the controllers of
 //                                              controllers.hpp (buffon, rs, wander)
@@ -22,8 +22,8 @@
 //                                              its emulator; the e-puck's body and controllers
 //   stc-floor                                  paper 002's marker-floor robot (stc_floor/), running
 //                                              ant or ant-edge through the camera pipeline
-// Adding a robot is one set of files (its description or codec, its Session, its Device) and one
-// line in registry.cpp: CONTRIBUTING.md walks through it.
+// Adding a robot is one set of files (its description or codec, its Session, its Device), none
+// shared: CONTRIBUTING.md walks through it.
 #include <antkit/devices/device_options.hpp>
 #include <antkit/devices/device_report.hpp>
 #include <antkit/devices/log.hpp>

@@ -9,19 +9,47 @@
 #include <chrono>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string_view>
 
 namespace antkit::devices {
 
-enum class RobotKind : std::uint8_t { Khepera, Hemisson, Epuck, KheperaWebots };
-// Every robot of the serial protocols, for loops over them (tests, fuzz targets, benchmarks); each
-// has its description in devices/src/robot_<name>.cpp and its line in the registry (registry.cpp).
-inline constexpr RobotKind kSerialRobots[] = {RobotKind::Khepera, RobotKind::Hemisson,
-                                              RobotKind::Epuck, RobotKind::KheperaWebots};
-// "khepera", "hemisson", "epuck", "khepera-webots".
+struct RobotDescription;
+
+// A robot of the serial protocols: a handle on its description in the registry (one file per
+// robot, devices/src/robot_<name>.cpp, registered from that file: nothing shared names it), held
+// by the robot's name and compared by it. Obtained from the registry (serial_robots(),
+// parse_robot(), body_of(), of()); the four robots antkit was built with are also named here, for
+// the tests, examples and benchmarks that pick one (a robot added later needs no name here: it is
+// parse_robot("its-name")).
+class RobotKind {
+public:
+  static const RobotKind Khepera, Hemisson, Epuck, KheperaWebots;
+  // The kind of a registered description (describe(of(d)) is d).
+  static RobotKind of(const RobotDescription& robot) noexcept;
+  [[nodiscard]] constexpr std::string_view name() const noexcept { return name_; }
+  friend constexpr bool operator==(RobotKind a, RobotKind b) noexcept { return a.name_ == b.name_; }
+
+private:
+  constexpr explicit RobotKind(std::string_view name) noexcept : name_(name) {}
+  friend std::span<const RobotKind> serial_robots();
+  friend std::optional<RobotKind> parse_robot(std::string_view name);
+  std::string_view name_;
+};
+inline constexpr RobotKind RobotKind::Khepera{"khepera"};
+inline constexpr RobotKind RobotKind::Hemisson{"hemisson"};
+inline constexpr RobotKind RobotKind::Epuck{"epuck"};
+inline constexpr RobotKind RobotKind::KheperaWebots{"khepera-webots"};
+
+// Every robot of the serial protocols, in the registry's order, for loops over them (tests, fuzz
+// targets, benchmarks).
+std::span<const RobotKind> serial_robots();
+// The serial robot of that name ("khepera", "khepera-webots", "hemisson", "epuck", ...), nullopt
+// for a name no serial robot has.
 std::optional<RobotKind> parse_robot(std::string_view name);
 std::string_view robot_name(RobotKind robot);
-// The names parse_robot accepts, for messages: "khepera, khepera-webots, hemisson, epuck".
+// The names parse_robot accepts, for messages, in the registry's order: "khepera,
+// khepera-webots, hemisson, epuck".
 std::string_view robot_names();
 // The description whose body and scales a log's robot runs with (dead reckoning, the MCAP
 // export, buffon-from-logs): the one the device of that name says it runs with (Device::body(),
@@ -30,8 +58,7 @@ std::string_view robot_names();
 std::optional<RobotKind> body_of(std::string_view log_robot);
 
 struct RobotDescription {
-  RobotKind kind;
-  std::string_view name;
+  std::string_view name; // the robot's name, its device's (--device) and its kind's
   LineSettings line;
   std::string_view terminator;       // sent after each command
   std::int32_t speed_min, speed_max; // D's accepted range
@@ -86,6 +113,8 @@ struct RobotDescription {
   // second command and be executed twice: 1000 ms (four steps) there.
   std::chrono::milliseconds reply_timeout{250};
 };
+// The robot's registered description; std::logic_error for a kind no registered robot has (a kind
+// comes from the registry, so only a robot named here and removed from it).
 const RobotDescription& describe(RobotKind robot);
 
 } // namespace antkit::devices
