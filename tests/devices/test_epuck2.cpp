@@ -4,6 +4,7 @@
 // the replay of every byte.
 #include "emulated_robot.hpp"
 
+#include <antkit/devices/controllers.hpp>
 #include <antkit/devices/epuck2.hpp>
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/log.hpp>
@@ -461,6 +462,58 @@ TEST_CASE("epuck2 runs the wanderer: its steps and turns in step sequences, and 
   const auto edited = dir.file("edited.jsonl");
   write_lines(edited, lines);
   CHECK_FALSE(devices::replay(edited).identical);
+}
+
+TEST_CASE("epuck2 runs every controller the e-puck runs, with the e-puck's observations and "
+          "commands, and each log replays",
+          "[devices]") {
+  // Every controller the serial robots run (controllers.hpp), on the e-puck2 in binary mode and
+  // on the ASCII e-puck: the same body, emulator world and seed, so the same observations,
+  // commands and controller states step by step; only the bytes differ.
+  TempDir dir;
+  std::string names(devices::controller_names());
+  std::size_t tried = 0;
+  for (std::size_t at = 0; at < names.size();) {
+    const std::size_t comma = std::min(names.find(", ", at), names.size());
+    const std::string controller = names.substr(at, comma - at);
+    at = comma + 2;
+    INFO(controller);
+    const devices::Params params =
+        controller == "buffon" ? devices::Params{{"visit", 1}} : devices::Params{};
+    std::vector<devices::LogRecord> steps[2];
+    for (const bool binary : {true, false}) {
+      const auto log = dir.file(controller + (binary ? "-epuck2.jsonl" : "-epuck.jsonl"));
+      auto o =
+          antkit::test::record_options(devices::RobotKind::Epuck, "", controller, params, 80, log);
+      devices::RecordSummary s;
+      if (binary) {
+        Epuck2OnPty emu;
+        o.port = emu.port();
+        o.device = "epuck2";
+        s = devices::record(o);
+      } else {
+        antkit::test::EmulatedRobot ascii(devices::RobotKind::Epuck, "circle:d=8");
+        o.port = ascii.port();
+        s = devices::record(o);
+      }
+      CHECK(s.completed);
+      CHECK(s.safe_stop.stopped);
+      const auto r = devices::replay(log);
+      CHECK(r.identical);
+      CHECK(r.steps == 80);
+      devices::LogReader reader(log);
+      for (devices::LogRecord rec; reader.next(rec);) steps[binary ? 0 : 1].push_back(rec);
+    }
+    REQUIRE(steps[0].size() == steps[1].size());
+    for (std::size_t i = 0; i < steps[0].size(); ++i) {
+      INFO("step " << i);
+      CHECK(steps[0][i].obs == steps[1][i].obs);
+      CHECK(steps[0][i].cmd == steps[1][i].cmd);
+      CHECK(steps[0][i].state == steps[1][i].state);
+    }
+    ++tried;
+  }
+  CHECK(tried == 3); // buffon, rs, wander
 }
 
 TEST_CASE("epuck2: --watchdog ends a run whose robot went silent before the tries run out",
