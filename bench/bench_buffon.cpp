@@ -1,7 +1,9 @@
 // Buffon's-needle measurement: simulated robot steps per second (sensing, behaviour, motion and
 // pheromone, one core), one whole trial, and the exact crossing count of two default trails.
+#include <antkit/buffon/checkpoints.hpp>
 #include <antkit/buffon/crossing_counter.hpp>
 #include <antkit/buffon/measurement.hpp>
+#include <antkit/buffon/randomized_search.hpp>
 #include <antkit/buffon/stopping.hpp>
 #include <antkit/buffon/two_markers.hpp>
 #include <antkit/geometry/arena_spec.hpp>
@@ -201,5 +203,39 @@ void BM_BuffonTrialOnline(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 2 * p.steps);
 }
 BENCHMARK(BM_BuffonTrialOnline)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// Paper 000's Figure 14 trial (run_checkpoints: visit 1 to the longest of 10 checkpoints 168
+// apart, visit 2 with a detector per checkpoint, and RS's walk of twice the length, stamping the
+// body's footprint on cells of 0.1), as buffon-experiment --figure 14 runs it, in the circle of
+// diameter 60. items = trials.
+void BM_BuffonCheckpointTrial(benchmark::State& state) {
+  static const buffon::World w(
+      antkit::geometry::build_arena_spec("circle:d=60", "figure").arena.walls_fx());
+  buffon::TrialParams p;
+  std::uint64_t trial = 0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        buffon::run_checkpoints(w, p, trial++, std::int64_t{168} * 65536, 10).rs_cells);
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_BuffonCheckpointTrial)->Unit(benchmark::kMillisecond);
+
+// RS's footprint alone: the body's disk (radius 0.5) stamped on cells of 0.1 along the standard
+// trail (rs_mark). items = stamps.
+void BM_BuffonRsMark(benchmark::State& state) {
+  const auto& trail = standard_trail();
+  const auto& w = standard_world();
+  buffon::ByteRasterCore g;
+  g.init(w.lower(), w.upper(), buffon::kRsCellRaw);
+  std::vector<std::uint8_t> storage(g.cells());
+  std::uint64_t cells = 0;
+  for (auto _ : state) {
+    g.bind(storage.data(), 0);
+    for (const auto& p : trail) cells += buffon::rs_mark(g, p);
+  }
+  benchmark::DoNotOptimize(cells);
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(trail.size()));
+}
+BENCHMARK(BM_BuffonRsMark)->Unit(benchmark::kMillisecond);
 
 } // namespace

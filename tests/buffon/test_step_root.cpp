@@ -34,6 +34,22 @@ TEST_CASE("step_root is the floor square root whatever the guess", "[property]")
   });
 }
 
+TEST_CASE("step_root from guesses a step's length away, as the walks pass them", "[property]") {
+  // The Newton path: the guess up to a few thousand raw units from the root (a previous step's
+  // length against this one's), and every guess for every n below 2^12.
+  rc::prop("guesses near the root, below 2^48", [] {
+    const std::uint64_t n = *rc::gen::inRange<std::uint64_t>(0, 1ull << 48);
+    const std::uint64_t root = antkit::buffon::isqrt_proved(n);
+    const auto d = *rc::gen::inRange<std::int64_t>(-5000, 5001);
+    const std::uint64_t guess =
+        d < 0 && root < static_cast<std::uint64_t>(-d) ? 0 : root + static_cast<std::uint64_t>(d);
+    RC_ASSERT(antkit::buffon::step_root(n, guess) == root);
+  });
+  for (std::uint64_t n = 0; n < 4096; ++n)
+    for (std::uint64_t guess = 0; guess < 128; ++guess)
+      REQUIRE(antkit::buffon::step_root(n, guess) == antkit::buffon::isqrt_proved(n));
+}
+
 TEST_CASE("step_root near every square up to 2^12 and at the ends of the range") {
   for (std::uint64_t r = 0; r < 4096; ++r)
     for (const std::uint64_t n : {r * r, r * r + r, r * r + 2 * r}) // the first, middle, last n

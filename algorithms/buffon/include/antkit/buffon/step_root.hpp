@@ -25,11 +25,25 @@ inline std::uint64_t isqrt_proved(std::uint64_t n) noexcept {
       kernel::isqrt_floor<kernel::int128, 94>(kernel::ops::widen<kernel::int128>(n), rest));
 }
 
-// floor(sqrt(n)): `guess` when guess^2 <= n < (guess + 1)^2, else isqrt_proved(n). The squares are
-// formed only for guess < 2^32 - 1, where neither wraps.
+// Whether r = floor(sqrt(n)), by the definition r^2 <= n < (r + 1)^2; false for r >= 2^32 - 1,
+// whose squares could wrap (no such r is a root of an n below 2^64 - 2^33 + 1 anyway).
+constexpr bool is_step_root(std::uint64_t n, std::uint64_t r) noexcept {
+  return r < (std::uint64_t{1} << 32) - 1 && r * r <= n && n < (r + 1) * (r + 1);
+}
+
+// floor(sqrt(n)): `guess` when it is the root; else, below 2^48 (every step's squared length),
+// two of Newton's steps from the guess, g <- (g + n / g) / 2, which from any g > 0 stay at or above
+// the root and come within one of it from a guess near it (a previous step's length, which the
+// checkpoints' and two markers' walks pass): that g or g - 1, when it is the root; else
+// isqrt_proved(n). Every answer is checked by the definition, so none differs from the loop's.
 inline std::uint64_t step_root(std::uint64_t n, std::uint64_t guess) noexcept {
-  if (guess < (std::uint64_t{1} << 32) - 1 && guess * guess <= n && n < (guess + 1) * (guess + 1))
-    return guess;
+  if (is_step_root(n, guess)) return guess;
+  if (n < (std::uint64_t{1} << 48) && guess > 0 && guess < (std::uint64_t{1} << 32)) {
+    std::uint64_t g = (guess + n / guess) / 2; // < 2^48: no wrap
+    if (g > 0) g = (g + n / g) / 2;
+    if (is_step_root(n, g)) return g;
+    if (g > 0 && is_step_root(n, g - 1)) return g - 1;
+  }
   return isqrt_proved(n);
 }
 
