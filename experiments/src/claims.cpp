@@ -180,7 +180,7 @@ Claim claim_of(const ClaimSpec& spec, const ClaimInputs& inputs, const std::vect
     const std::string off = join_labels(parts, Verdict::DoesNotHold, parts.size() > 4);
     const std::string open = join_labels(parts, Verdict::Inconclusive, false);
     if (!off.empty()) why += "does not hold at " + off + ". ";
-    if (!open.empty()) why += "Undecided (the interval contains the threshold) at " + open + ". ";
+    if (!open.empty()) why += "Undecided (the interval spans the threshold) at " + open + ". ";
     if (spec.why) why += spec.why(inputs, parts);
     while (!why.empty() && why.back() == ' ') why.pop_back();
     c.why = why;

@@ -557,7 +557,9 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
      << (o.decide ? "; under --decide 1 - alpha_k / m at look k, above" : "")
      << "). A part holds when "
         "its interval is on the rule's side of the threshold, does not hold when it is on the "
-        "other side, and is undecided when the interval contains the threshold. A claim holds "
+        "other side or on the threshold itself (the rules are strict: a blending size equal at "
+        "two widths is not larger), and is undecided when the interval has figures on both "
+        "sides. A claim holds "
         "when every part holds, does not hold when no part holds and every part is decided, is "
         "*partly* when at least one part holds and at least one does not (the one convention "
         "for every claim), and is *inconclusive at this trial count* otherwise: more trials "

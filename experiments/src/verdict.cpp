@@ -119,13 +119,18 @@ Interval bootstrap(const Samples& samples, std::size_t block, const Statistic& s
 Verdict decide(const Interval& ci, const Rule& rule) {
   const double t = rule.threshold;
   switch (rule.side) {
+  // The rules are strict (below t: figure < t), so a figure on the threshold is on the side where
+  // the rule does not hold: an interval that reaches the threshold only from that side decides.
+  // For a figure that varies continuously this changes nothing (an end exactly on t has
+  // probability 0); for a discrete one (a blending size in steps of 10, an exact count) it is
+  // what lets an interval [t, t] decide at all.
   case Side::Below:
-    return ci.hi < t ? Verdict::Holds : ci.lo > t ? Verdict::DoesNotHold : Verdict::Inconclusive;
+    return ci.hi < t ? Verdict::Holds : ci.lo >= t ? Verdict::DoesNotHold : Verdict::Inconclusive;
   case Side::Above:
-    return ci.lo > t ? Verdict::Holds : ci.hi < t ? Verdict::DoesNotHold : Verdict::Inconclusive;
+    return ci.lo > t ? Verdict::Holds : ci.hi <= t ? Verdict::DoesNotHold : Verdict::Inconclusive;
   case Side::Within:
     if (ci.lo > -t && ci.hi < t) return Verdict::Holds;
-    if (ci.lo > t || ci.hi < -t) return Verdict::DoesNotHold;
+    if (ci.lo >= t || ci.hi <= -t) return Verdict::DoesNotHold;
     return Verdict::Inconclusive;
   }
   return Verdict::Inconclusive;

@@ -1,6 +1,7 @@
 // The uncertainty behind reproduce's verdicts (verdict.hpp, claims.hpp): Clopper-Pearson against
 // known values, the bootstrap's determinism and coverage on a known distribution, the rule that
-// is inconclusive when the interval contains the threshold, and the one partly convention.
+// is inconclusive when the interval has figures on both sides of the threshold, and the one partly
+// convention.
 #include <antkit/experiments/claims.hpp>
 #include <antkit/experiments/verdict.hpp>
 #include <antkit/kernel/random.hpp>
@@ -83,28 +84,39 @@ TEST_CASE("the bootstrap interval of a mean covers the true mean about as often 
   CHECK(covered <= 195);
 }
 
-TEST_CASE("a rule is inconclusive exactly when the interval contains its threshold", "[property]") {
+TEST_CASE("a rule is inconclusive exactly when the interval has figures on both of its sides",
+          "[property]") {
+  // The rules are strict: below t holds for figures < t, so t itself is where it does not hold
+  // (and likewise above t, and within +-t for |figure| >= t). Small integers over 16, so that
+  // ends on the threshold are common.
   rc::prop("decide", [](int a, int b, int t) {
-    const double lo = std::min(a, b) / 16.0, hi = std::max(a, b) / 16.0, th = t / 16.0;
+    const double lo = std::min(a % 64, b % 64) / 16.0, hi = std::max(a % 64, b % 64) / 16.0,
+                 th = (t % 64) / 16.0;
     const ex::Interval ci{lo, hi};
     const auto below = ex::decide(ci, {ex::Side::Below, th});
     const auto above = ex::decide(ci, {ex::Side::Above, th});
-    if (lo <= th && th <= hi) {
-      RC_ASSERT(below == ex::Verdict::Inconclusive);
-      RC_ASSERT(above == ex::Verdict::Inconclusive);
-    } else {
-      RC_ASSERT(below == (hi < th ? ex::Verdict::Holds : ex::Verdict::DoesNotHold));
-      RC_ASSERT(above == (lo > th ? ex::Verdict::Holds : ex::Verdict::DoesNotHold));
-    }
+    RC_ASSERT(below == (hi < th    ? ex::Verdict::Holds
+                        : lo >= th ? ex::Verdict::DoesNotHold
+                                   : ex::Verdict::Inconclusive));
+    RC_ASSERT(above == (lo > th    ? ex::Verdict::Holds
+                        : hi <= th ? ex::Verdict::DoesNotHold
+                                   : ex::Verdict::Inconclusive));
     const double tol = std::abs(th);
     const auto within = ex::decide(ci, {ex::Side::Within, tol});
     if (-tol < lo && hi < tol)
       RC_ASSERT(within == ex::Verdict::Holds);
-    else if (lo > tol || hi < -tol)
+    else if (lo >= tol || hi <= -tol)
       RC_ASSERT(within == ex::Verdict::DoesNotHold);
     else
       RC_ASSERT(within == ex::Verdict::Inconclusive);
   });
+  // Worked: a discrete figure on the threshold, and an exact one.
+  CHECK(ex::decide({0, 0}, {ex::Side::Above, 0}) == ex::Verdict::DoesNotHold);
+  CHECK(ex::decide({0, 10}, {ex::Side::Above, 0}) == ex::Verdict::Inconclusive);
+  CHECK(ex::decide({10, 20}, {ex::Side::Above, 0}) == ex::Verdict::Holds);
+  CHECK(ex::decide({-10, 0}, {ex::Side::Above, 0}) == ex::Verdict::DoesNotHold);
+  CHECK(ex::decide({1, 1}, {ex::Side::Below, 1}) == ex::Verdict::DoesNotHold);
+  CHECK(ex::decide({0.1, 0.1}, {ex::Side::Within, 0.1}) == ex::Verdict::DoesNotHold);
 }
 
 TEST_CASE("the partly convention") {

@@ -17,10 +17,12 @@
 //     quantiles (type 7) of the replicates. Replicate r of part `part` of the claim keyed `claim`
 //     draws from kernel::Stream(seed, kBootstrapExperiment, claim, part, r).
 //
-// Deciding: a rule is "below t", "above t" or "within +-t". decide() says holds when the whole
-// interval is on the rule's side, does not hold when the whole interval is on the other side, and
-// inconclusive when the interval contains the threshold. An exact figure (no sampling noise) has
-// the interval [v, v].
+// Deciding: a rule is "below t", "above t" or "within +-t", each strict (t itself is where it
+// does not hold). decide() says holds when the whole interval is on the rule's side, does not hold
+// when the whole interval is on the other side or on the threshold, and inconclusive when it has
+// figures on both sides. An exact figure (no sampling noise) has the interval [v, v]; a figure on
+// the threshold decides only for a discrete figure, whose interval can be [t, t] (a blending size
+// equal at two widths: not larger).
 //
 // The partly convention (combine): a claim of several parts (one per arena, row, environment...)
 // holds when every part holds, does not hold when every part does not hold, is partly when at
