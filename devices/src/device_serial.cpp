@@ -60,12 +60,13 @@ private:
 
 class SerialDevice final : public Device {
 public:
-  explicit SerialDevice(const RobotDescription& robot) : robot_(RobotKind::of(robot)) {}
-  [[nodiscard]] std::string_view name() const noexcept override { return robot_name(robot_); }
-  [[nodiscard]] LineSettings line() const noexcept override { return describe(robot_).line; }
-  [[nodiscard]] const RobotDescription* body() const noexcept override { return &describe(robot_); }
+  explicit SerialDevice(const RobotDescription& robot)
+      : description_(robot), robot_(RobotKind::of(robot)) {}
+  [[nodiscard]] std::string_view name() const noexcept override { return description_.name; }
+  [[nodiscard]] LineSettings line() const noexcept override { return description_.line; }
+  [[nodiscard]] const RobotDescription* body() const noexcept override { return &description_; }
   [[nodiscard]] std::chrono::milliseconds reply_timeout() const noexcept override {
-    return describe(robot_).reply_timeout;
+    return description_.reply_timeout;
   }
 
   [[nodiscard]] std::span<const DeclaredOption> options() const noexcept override {
@@ -90,7 +91,7 @@ public:
         detail::kEmulateArena, kFault,
         detail::kEmulatePace,  detail::kEmulateListen,
     };
-    if (describe(robot_).has_odometry) return kCounted;
+    if (description_.has_odometry) return kCounted;
     return kModelled;
   }
 
@@ -98,7 +99,7 @@ public:
     ControllerSpec spec =
         make_spec(o.controller.name, o.controller.seed, o.controller.params, "controller");
     (void)make_controller(spec); // refuses a spec it cannot build, before anything is opened
-    const RobotDescription& robot = describe(robot_);
+    const RobotDescription& robot = description_;
     PreparedRun run;
     run.header.robot = std::string(robot.name);
     run.header.controller = spec.name;
@@ -138,7 +139,8 @@ public:
   }
 
 private:
-  RobotKind robot_;
+  const RobotDescription& description_; // registered: it lives as long as the process
+  RobotKind robot_;                     // its kind, for the session, replay and emulator
 };
 
 namespace detail {

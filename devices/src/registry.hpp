@@ -26,11 +26,11 @@ namespace antkit::devices::detail {
 
 // One line of the registry's list: a serial robot's description or a device of its own.
 struct RegistryEntry {
-  int place;
   const RobotDescription& (*robot)() noexcept; // a serial robot
   const Device& (*device)() noexcept;          // a robot of another kind
 };
-// The list the build writes (registry_list.cpp), in the order of the places.
+// The list the build writes (registry_list.cpp), in the order of the places (which it keeps only
+// as that order).
 std::span<const RegistryEntry> registry_entries();
 
 // The serial robots' descriptions, in the registry's order: describe() finds a robot's among them.

@@ -1,7 +1,6 @@
 // Buffon counts at trail-length checkpoints and the RS baseline (checkpoints.hpp).
 #include <algorithm>
 #include <antkit/buffon/checkpoints.hpp>
-#include <antkit/buffon/detector.hpp>
 #include <antkit/buffon/randomized_search.hpp>
 #include <antkit/buffon/step_root.hpp>
 #include <antkit/buffon/stopping.hpp>
@@ -102,29 +101,16 @@ CheckpointResult run_checkpoints(const World& world, const TrialParams& params, 
     const std::uint8_t k = k_of(len);
     first.disk(pose.position, half_width, [k](std::uint8_t& cell) { cell = std::min(cell, k); });
   });
-  // Visit 2: K detectors (detector.hpp's step, the one the proofs cover), checkpoint k fed while
-  // the length is within (k + 1) step_raw. The length never falls, so the detectors still fed are
-  // those from `active` on, and checkpoint k's visit-2 length is the last length it was fed at.
-  // Their levels, outputs and counts side by side, so that one step of all of them is one loop
-  // without a branch.
-  std::vector<std::int32_t> level(K, 0);
-  std::vector<std::uint8_t> high(K, 0);
-  std::size_t active = 0;
-  std::int64_t last_len = 0;
+  // Visit 2: K detectors.
+  std::vector<CrossingDetector> detectors(K);
   walk(world, params, trial, 2, limit, [&](const Pose& pose, std::int64_t len) {
-    while (active < K && len > step_raw * static_cast<std::int64_t>(active + 1))
-      out.length2_raw[active++] = last_len; // checkpoint `active` was last fed the step before
-    last_len = len;
     const std::uint8_t marked_at = first.at(pose.position);
-    for (std::size_t k = active; k < K; ++k) {
-      const DetectorStep<std::int32_t, bool> d =
-          detector_step<std::int32_t, bool>(level[k], high[k] != 0, marked_at <= k + 1);
-      level[k] = d.y;
-      high[k] = d.high ? 1 : 0;
-      out.bc[k] += d.count ? 1 : 0;
+    for (std::size_t k = 0; k < K; ++k) {
+      if (len > step_raw * static_cast<std::int64_t>(k + 1)) continue;
+      out.length2_raw[k] = len;
+      if (detectors[k].update(marked_at <= k + 1)) ++out.bc[k];
     }
   });
-  for (std::size_t k = active; k < K; ++k) out.length2_raw[k] = last_len;
   // RS: one walk of twice the length, marking the body's footprint.
   out.rs_cell_raw = kRsCellRaw;
   ByteRaster rs(world.lower(), world.upper(), out.rs_cell_raw, 0);
