@@ -360,10 +360,7 @@ private:
       if (ch == '\n') ch = ' ';
     out << "; " << one_line << "\n";
     // The claims over integers mix the integers with the session's bit-vector facts: ALL.
-    const char* logic = logic_ != nullptr  ? logic_
-                        : integers_        ? "ALL"
-                        : s_.uses_arrays() ? "QF_ABV"
-                                           : "QF_BV";
+    const char* logic = logic_ == nullptr && integers_ ? "ALL" : logic_name();
     out << "(set-logic " << logic << ")\n";
     // Let names renamed in order of appearance (proof_cache.hpp): the same check, the same text,
     // whatever the context made before it (cvc5's re-check keeps its answers by the text).
