@@ -9,10 +9,17 @@
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <array>
+#include <bit>
 #include <charconv>
+#include <condition_variable>
+#include <deque>
+#include <exception>
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 namespace antkit::devices {
 
@@ -233,12 +240,50 @@ private:
 
 void put_base64(std::string& out, std::string_view bytes);
 
-// The channels of one run (recorded or exported) and the messages of its steps.
+// put_pose, keeping the orientation's text while it repeats (a walk's heading holds between
+// turns): the same bytes, fewer numbers formatted.
+class PoseText {
+public:
+  void put(std::string& out, const Pose& p) {
+    out += R"({"position":{"x":)";
+    put_number(out, p.x);
+    out += ",\"y\":";
+    put_number(out, p.y);
+    if (!valid_ || std::bit_cast<std::uint64_t>(p.qz) != std::bit_cast<std::uint64_t>(qz_) ||
+        std::bit_cast<std::uint64_t>(p.qw) != std::bit_cast<std::uint64_t>(qw_)) {
+      rest_ = R"(,"z":0},"orientation":{"x":0,"y":0,"z":)";
+      put_number(rest_, p.qz);
+      rest_ += ",\"w\":";
+      put_number(rest_, p.qw);
+      rest_ += "}}";
+      qz_ = p.qz;
+      qw_ = p.qw;
+      valid_ = true;
+    }
+    out += rest_;
+  }
+
+private:
+  bool valid_ = false;
+  double qz_ = 0, qw_ = 0;
+  std::string rest_;
+};
+
+// One step of the log as the export reads it: the record, the pose after it, and what only the
+// reading thread can know (the trail so far, whether the replay's divergence is written here).
+struct StepIn {
+  LogRecord record;
+  std::optional<Pose> pose;
+  std::string trail;       // the /trail message, when one is due at this step; else empty
+  bool divergence = false; // the replay's first divergence is written after this step
+};
+
+// The channels of one run (recorded or exported) and the messages of a step, formatted straight
+// into a chunk. Shared read-only by the threads that format (write_mcap).
 class RunChannels {
 public:
   RunChannels(mcap::Writer& w, const std::function<std::uint16_t(std::string_view)>& schema,
-              const std::string& prefix, const std::string& frame)
-      : w_(w) {
+              const std::string& prefix, const std::string& frame) {
     // Exported: /pose, /trail, /antkit/step, /antkit/io; a replay's: /recorded/...
     const std::string own = prefix.empty() ? "/antkit" : prefix;
     pose_ = w.add_channel(schema("foxglove.PoseInFrame"), prefix + "/pose", "json");
@@ -248,42 +293,33 @@ public:
     frame_ = ",\"frame_id\":";
     append_json_bytes(frame_, frame);
   }
-  // The step's messages, formatted straight into the chunk; `poses` holds the poses so far (the
-  // step's last, when `has_pose`).
-  void write(const LogRecord& r, bool has_pose, const std::vector<Pose>& poses, bool trail_now) {
+  // {"timestamp":...,"frame_id":"...","poses":[   (a /trail message's head)
+  void put_trail_head(std::string& m, std::uint64_t t) const {
+    m += '{';
+    put_timestamp(m, t);
+    m += frame_;
+    m += ",\"poses\":[";
+  }
+  void write(mcap::Chunk& c, const StepIn& in, PoseText& pose_text) const {
+    const LogRecord& r = in.record;
     const auto t = log_time(r.time_ns);
     const auto seq = static_cast<std::uint32_t>(r.step);
-    if (has_pose) {
-      std::string& m = w_.begin_message(pose_, seq, t, t);
+    if (in.pose) {
+      std::string& m = c.begin_message(pose_, seq, t, t);
       m += '{';
       put_timestamp(m, t);
       m += frame_;
       m += ",\"pose\":";
-      put_pose(m, poses.back());
+      pose_text.put(m, *in.pose);
       m += '}';
-      w_.end_message();
+      c.end_message();
     }
-    if (trail_now && !poses.empty()) {
-      std::string& m = w_.begin_message(trail_, seq, t, t);
-      m += '{';
-      put_timestamp(m, t);
-      m += frame_;
-      m += ",\"poses\":[";
-      const std::size_t n = std::min<std::size_t>(poses.size(), kTrailPoses);
-      for (std::size_t j = 0; j < n; ++j) {
-        if (j > 0) m += ',';
-        // Thinned evenly, first and last kept.
-        const std::size_t k = n == 1 ? poses.size() - 1 : j * (poses.size() - 1) / (n - 1);
-        put_pose(m, poses[k]);
-      }
-      m += "]}";
-      w_.end_message();
-    }
-    std::string& step = w_.begin_message(step_, seq, t, t);
+    if (!in.trail.empty()) c.begin_message(trail_, seq, t, t).append(in.trail), c.end_message();
+    std::string& step = c.begin_message(step_, seq, t, t);
     put_step_head(step, r);
     put_step_fields(step, r);
-    w_.end_message();
-    std::string& m = w_.begin_message(io_, seq, t, t);
+    c.end_message();
+    std::string& m = c.begin_message(io_, seq, t, t);
     put_step_head(m, r);
     m += ",\"io\":[";
     for (std::size_t k = 0; k < r.io.size(); ++k) {
@@ -300,7 +336,7 @@ public:
       m += '}';
     }
     m += "]}";
-    w_.end_message();
+    c.end_message();
   }
   // {"timestamp":...,"step":N
   static void put_step_head(std::string& m, const LogRecord& r) {
@@ -324,7 +360,6 @@ public:
   static constexpr std::size_t kTrailPoses = 1000;
 
 private:
-  mcap::Writer& w_;
   std::uint16_t pose_ = 0, trail_ = 0, step_ = 0, io_ = 0;
   std::string frame_; // ,"frame_id":"..."
 };
@@ -409,8 +444,134 @@ std::string base64(std::string_view bytes) {
 
 namespace {
 
+// Steps a chunk: each chunk of the run holds the messages of this many steps, whatever the thread
+// count (about 0.8 MiB for a serial robot's steps; the writer's own chunks close at 1 MiB).
+constexpr std::size_t kChunkSteps = 1024;
+
+// A chunk's worth of steps, read on the calling thread and formatted on any (write_mcap).
+struct Batch {
+  // steps[0, n) are this batch's; the rest are buffers kept for reuse. Never resized: the reading
+  // thread holds a pointer to the step before.
+  std::vector<StepIn> steps = std::vector<StepIn>(kChunkSteps);
+  std::size_t n = 0;
+  mcap::Chunk chunk;
+  bool done = false;
+  std::exception_ptr error;
+};
+
+// Formats batches on `threads - 1` threads and the caller's, handing them back in the order they
+// were submitted: the file's bytes are the same for any thread count. The caller fills a batch
+// (take), submits it, and writes the ones formatted (drain). The destructor stops and joins the
+// threads (an exception on the caller's side leaves by it).
+class BatchPipeline {
+public:
+  BatchPipeline(unsigned threads, std::function<void(Batch&)> format)
+      : format_(std::move(format)), depth_(2 * std::size_t{threads} + 2) {
+    for (unsigned k = 1; k < threads; ++k) workers_.emplace_back([this] { work(); });
+  }
+  ~BatchPipeline() {
+    {
+      const std::lock_guard lock(m_);
+      stop_ = true;
+    }
+    cv_.notify_all();
+    for (auto& t : workers_) t.join();
+  }
+  BatchPipeline(const BatchPipeline&) = delete;
+  BatchPipeline& operator=(const BatchPipeline&) = delete;
+
+  // An empty batch: a new one while fewer than the depth exist, else the oldest submitted once
+  // `write` has taken it.
+  Batch& take(const std::function<void(Batch&)>& write) {
+    if (free_.empty() && all_.size() >= depth_)
+      drain(order_.empty() ? 0 : order_.size() - 1, write);
+    if (free_.empty()) {
+      all_.push_back(std::make_unique<Batch>());
+      return *all_.back();
+    }
+    Batch* b = free_.back();
+    free_.pop_back();
+    b->n = 0;
+    b->done = false;
+    b->error = nullptr;
+    return *b;
+  }
+  void submit(Batch& b) {
+    {
+      const std::lock_guard lock(m_);
+      queue_.push_back(&b);
+      order_.push_back(&b);
+    }
+    cv_.notify_one();
+  }
+  // Hands the formatted batches to `write` in submission order until at most `keep` are in
+  // flight, formatting queued ones itself while it waits.
+  void drain(std::size_t keep, const std::function<void(Batch&)>& write) {
+    for (;;) {
+      Batch* b = nullptr;
+      {
+        std::unique_lock lock(m_);
+        if (order_.size() <= keep) return;
+        b = order_.front();
+        while (!b->done) {
+          if (!queue_.empty()) {
+            Batch* mine = queue_.front();
+            queue_.pop_front();
+            lock.unlock();
+            run(*mine);
+            lock.lock();
+            mine->done = true;
+            cv_.notify_all();
+          } else {
+            cv_.wait(lock);
+          }
+        }
+        order_.pop_front();
+      }
+      free_.push_back(b);
+      if (b->error) std::rethrow_exception(b->error);
+      write(*b);
+    }
+  }
+
+private:
+  void run(Batch& b) noexcept {
+    try {
+      format_(b);
+    } catch (...) {
+      b.error = std::current_exception();
+    }
+  }
+  void work() {
+    std::unique_lock lock(m_);
+    for (;;) {
+      cv_.wait(lock, [&] { return stop_ || !queue_.empty(); });
+      if (stop_) return;
+      Batch* b = queue_.front();
+      queue_.pop_front();
+      lock.unlock();
+      run(*b);
+      lock.lock();
+      b->done = true;
+      cv_.notify_all();
+    }
+  }
+
+  std::function<void(Batch&)> format_;
+  std::size_t depth_;
+  std::vector<std::unique_ptr<Batch>> all_;
+  std::vector<Batch*> free_;         // the caller's only
+  std::deque<Batch*> queue_, order_; // to format; submitted and not yet written (both: m_)
+  std::mutex m_;
+  std::condition_variable cv_;
+  bool stop_ = false;
+  std::vector<std::thread> workers_;
+};
+
 // The file, streamed to `bytes` as the log is read, a record ahead (a malformed log throws part
-// way; export_mcap writes beside the target and renames, so nothing half-written is left).
+// way; export_mcap writes beside the target and renames, so nothing half-written is left). The
+// calling thread reads the log, follows the pose and keeps the trail; batches of kChunkSteps
+// steps are formatted into chunks on options.threads threads and written in order.
 void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_name,
                 const McapOptions& options, const ReplayResult* replay, McapSummary* summary) {
   const LogHeader& header = reader.header();
@@ -438,7 +599,7 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
       if (known == name) return id;
     return 0;
   };
-  RunChannels run(w, id_of, replay != nullptr ? "/recorded" : "", poser.frame());
+  const RunChannels run(w, id_of, replay != nullptr ? "/recorded" : "", poser.frame());
   const std::uint16_t log = w.add_channel(id_of("foxglove.Log"), "/log", "json");
   const std::uint16_t arena =
       walls.empty() ? 0 : w.add_channel(id_of("foxglove.SceneUpdate"), "/arena", "json");
@@ -448,15 +609,9 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
   w.write({log, 0, 0, 0, log_message(0, 2, header_text(header))});
   if (arena != 0) w.write({arena, 0, 0, 0, arena_message(walls, poser.diameter_m())});
 
-  // The trail every 1 % of the steps, and at the last.
-  const std::size_t ahead_count = reader.records_ahead();
-  const std::size_t every = std::max<std::size_t>(1, (ahead_count + 99) / 100);
-  std::vector<Pose> poses;
-  poses.reserve(ahead_count);
   const std::optional<Divergence> divergence =
       replay != nullptr ? replay->first_divergence : std::nullopt;
-  bool divergence_written = false;
-  const auto write_divergence = [&](std::uint64_t t, std::uint32_t seq) {
+  const auto add_divergence = [&](mcap::Chunk& c, std::uint64_t t, std::uint32_t seq) {
     const Divergence& d = *divergence;
     std::string m = "{" + timestamp(t) + ",\"step\":" + std::to_string(d.step) +
                     R"(,"identical":false,"divergence":{"field":)";
@@ -466,61 +621,124 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
     m += ",\"replayed\":";
     append_json_bytes(m, d.actual);
     m += "}}";
-    w.write({replayed, seq, t, t, std::move(m)});
-    w.write({log, seq, t, t,
-             log_message(t, 4,
-                         "step " + std::to_string(d.step) + ": " + d.field + ": the log holds " +
-                             d.expected + ", the replay derived " + d.actual)});
-    divergence_written = true;
+    c.add({replayed, seq, t, t, std::move(m)});
+    c.add({log, seq, t, t,
+           log_message(t, 4,
+                       "step " + std::to_string(d.step) + ": " + d.field + ": the log holds " +
+                           d.expected + ", the replay derived " + d.actual)});
   };
-  // Two records reused in turn (no allocation per step once they have grown): the one written
-  // and the one after it, read first so that the last step's trail is written with it.
-  LogRecord record;
-  LogRecord ahead;
-  bool have = reader.next(record);
-  std::size_t n = 0;
-  std::uint64_t last_t = 0;
-  while (have) {
-    const bool more = reader.next(ahead);
-    const LogRecord& r = record;
-    const auto t = log_time(r.time_ns);
-    const auto seq = static_cast<std::uint32_t>(r.step);
-    last_t = t;
-    const auto pose = poser.after(r);
-    if (pose) poses.push_back(*pose);
-    run.write(r, pose.has_value(), poses, (n + 1) % every == 0 || !more);
-    ++n;
-    if (replay != nullptr && r.step < replay->steps) {
-      // /antkit/step's text with "identical" after the step number.
-      std::string& m = w.begin_message(replayed, seq, t, t);
-      RunChannels::put_step_head(m, r);
-      m += ",\"identical\":true";
-      RunChannels::put_step_fields(m, r);
-      w.end_message();
-    } else if (replay != nullptr && divergence && divergence->step == r.step &&
-               !divergence_written) {
-      write_divergence(t, seq);
+
+  // A batch's messages, on whichever thread takes it.
+  const auto format = [&](Batch& b) {
+    PoseText pose_text;
+    for (std::size_t i = 0; i < b.n; ++i) {
+      const StepIn& in = b.steps[i];
+      run.write(b.chunk, in, pose_text);
+      const LogRecord& r = in.record;
+      const auto t = log_time(r.time_ns);
+      const auto seq = static_cast<std::uint32_t>(r.step);
+      if (replay != nullptr && r.step < replay->steps) {
+        // /antkit/step's text with "identical" after the step number.
+        std::string& m = b.chunk.begin_message(replayed, seq, t, t);
+        RunChannels::put_step_head(m, r);
+        m += ",\"identical\":true";
+        RunChannels::put_step_fields(m, r);
+        b.chunk.end_message();
+      } else if (in.divergence) {
+        add_divergence(b.chunk, t, seq);
+      }
     }
-    std::swap(record, ahead);
-    have = more;
+    b.chunk.seal();
+  };
+  const unsigned threads =
+      options.threads != 0 ? options.threads : std::max(1U, std::thread::hardware_concurrency());
+  BatchPipeline pipeline(threads, format);
+  const auto write = [&](Batch& b) { w.write_chunk(b.chunk); };
+
+  // The trail: every stride-th pose (at most kTrailPoses over the run, the first among them),
+  // each formatted once, as a growing list; a /trail message every 1 % of the steps and at the
+  // last gives the list so far and the step's pose.
+  const std::size_t ahead_count = reader.records_ahead();
+  const std::size_t every = std::max<std::size_t>(1, (ahead_count + 99) / 100);
+  const std::size_t stride = std::max<std::size_t>(1, (ahead_count + RunChannels::kTrailPoses - 1) /
+                                                          RunChannels::kTrailPoses);
+  std::string trail_poses; // the poses kept, comma-separated
+  PoseText trail_text;
+  std::size_t pose_count = 0;
+  std::string last_pose; // the step's pose, when not kept
+
+  bool divergence_written = false;
+  std::size_t n = 0;        // steps read
+  std::uint64_t last_t = 0; // the last step's time
+  Batch* cur = &pipeline.take(write);
+  Batch* full = nullptr; // a full batch, submitted once its last step knows whether it is the last
+  StepIn* prev = nullptr;
+  for (;;) {
+    if (cur->n == kChunkSteps) {
+      full = cur;
+      cur = &pipeline.take(write);
+    }
+    StepIn& s = cur->steps[cur->n];
+    const bool got = reader.next(s.record);
+    if (prev != nullptr) { // the step before: its trail, now that it is known whether it is last
+      prev->trail.clear();
+      if (prev->pose && (n % every == 0 || !got)) {
+        run.put_trail_head(prev->trail, log_time(prev->record.time_ns));
+        prev->trail += trail_poses;
+        if ((pose_count - 1) % stride != 0) {
+          if (!trail_poses.empty()) prev->trail += ',';
+          trail_text.put(prev->trail, *prev->pose);
+        }
+        prev->trail += "]}";
+      }
+    }
+    if (full != nullptr) {
+      pipeline.submit(*full);
+      full = nullptr;
+    }
+    if (!got) break;
+    const LogRecord& r = s.record;
+    s.pose = poser.after(r);
+    if (s.pose) {
+      if (pose_count % stride == 0) {
+        if (!trail_poses.empty()) trail_poses += ',';
+        trail_text.put(trail_poses, *s.pose);
+      }
+      ++pose_count;
+    }
+    s.divergence = false;
+    if (replay != nullptr && !(r.step < replay->steps) && divergence &&
+        divergence->step == r.step && !divergence_written) {
+      s.divergence = true;
+      divergence_written = true;
+    }
+    last_t = log_time(r.time_ns);
+    ++n;
+    prev = &s;
+    ++cur->n;
   }
+  if (cur->n > 0) pipeline.submit(*cur);
+  pipeline.drain(0, write);
+
   const auto& stop = reader.stop();
   const auto last_seq =
       static_cast<std::uint32_t>(stop ? stop->step : static_cast<std::int64_t>(n));
-  if (divergence && !divergence_written) write_divergence(last_t, last_seq);
+  mcap::Chunk tail;
+  if (divergence && !divergence_written) add_divergence(tail, last_t, last_seq);
   if (stop)
-    w.write({log, last_seq, last_t, last_t,
-             log_message(last_t, stop->reason == "done" ? 2 : 3, "stop: " + stop->reason)});
+    tail.add({log, last_seq, last_t, last_t,
+              log_message(last_t, stop->reason == "done" ? 2 : 3, "stop: " + stop->reason)});
   else
-    w.write({log, last_seq, last_t, last_t,
-             log_message(last_t, 3,
-                         reader.truncated() ? "the log's last line is cut short"
-                                            : "the log has no stop record")});
+    tail.add({log, last_seq, last_t, last_t,
+              log_message(last_t, 3,
+                          reader.truncated() ? "the log's last line is cut short"
+                                             : "the log has no stop record")});
   if (replay != nullptr && replay->identical)
-    w.write({log, last_seq, last_t, last_t,
-             log_message(last_t, 2,
-                         "replay identical: " + std::to_string(replay->steps) + " steps, hash " +
-                             kernel::hash_hex(replay->hash))});
+    tail.add({log, last_seq, last_t, last_t,
+              log_message(last_t, 2,
+                          "replay identical: " + std::to_string(replay->steps) + " steps, hash " +
+                              kernel::hash_hex(replay->hash))});
+  w.write_chunk(tail);
   w.finish();
   if (summary != nullptr) {
     summary->bytes = w.bytes();

@@ -102,7 +102,7 @@ void Writer::emit(std::string_view bytes, std::uint32_t crc) {
 std::uint16_t Writer::add_schema(std::string_view name, std::string_view encoding,
                                  std::string_view data) {
   if (finished_) throw std::logic_error("mcap: add_schema after finish");
-  if (open_message_) throw std::logic_error("mcap: add_schema before end_message");
+  if (chunk_.open_) throw std::logic_error("mcap: add_schema before end_message");
   if (schemas_.size() >= 65535) throw std::logic_error("mcap: more than 65535 schemas");
   const auto id = static_cast<std::uint16_t>(schemas_.size() + 1);
   schemas_.push_back({id, std::string(name), std::string(encoding), std::string(data)});
@@ -117,7 +117,7 @@ Writer::add_channel(std::uint16_t schema_id, std::string_view topic,
                     std::string_view message_encoding,
                     const std::vector<std::pair<std::string, std::string>>& metadata) {
   if (finished_) throw std::logic_error("mcap: add_channel after finish");
-  if (open_message_) throw std::logic_error("mcap: add_channel before end_message");
+  if (chunk_.open_) throw std::logic_error("mcap: add_channel before end_message");
   if (schema_id > schemas_.size()) throw std::logic_error("mcap: a channel of an unknown schema");
   if (channels_.size() >= 65535) throw std::logic_error("mcap: more than 65535 channels");
   const auto id = static_cast<std::uint16_t>(channels_.size() + 1);
@@ -129,6 +129,91 @@ Writer::add_channel(std::uint16_t schema_id, std::string_view topic,
   return id;
 }
 
+// ---- Chunk ----
+
+std::string& Chunk::begin_message(std::uint16_t channel_id, std::uint32_t sequence,
+                                  std::uint64_t log_time, std::uint64_t publish_time) {
+  if (open_) throw std::logic_error("mcap: begin_message before end_message");
+  if (sealed_) throw std::logic_error("mcap: a message added to a sealed chunk");
+  if (channel_id == 0) throw std::logic_error("mcap: a message on channel 0");
+  if (messages_ == 0) start_ = end_ = log_time;
+  start_ = std::min(start_, log_time);
+  end_ = std::max(end_, log_time);
+  if (channel_id >= index_.size()) index_.resize(std::size_t{channel_id} + 1);
+  index_[channel_id].emplace_back(log_time, records_.size());
+  // The Message record's head, its length set by end_message(): opcode, length, channel,
+  // sequence, log time, publish time.
+  message_start_ = records_.size();
+  std::array<char, 31> head{};
+  head[0] = static_cast<char>(Op::Message);
+  const auto le = [&](std::size_t at, std::uint64_t v, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) head[at + i] = static_cast<char>((v >> (8 * i)) & 0xFFU);
+  };
+  le(9, channel_id, 2);
+  le(11, sequence, 4);
+  le(15, log_time, 8);
+  le(23, publish_time, 8);
+  records_.append(head.data(), head.size());
+  ++messages_;
+  open_ = true;
+  return records_;
+}
+
+void Chunk::end_message() {
+  if (!open_) throw std::logic_error("mcap: end_message without begin_message");
+  open_ = false;
+  const std::uint64_t length = records_.size() - message_start_ - 9;
+  for (std::size_t i = 0; i < 8; ++i)
+    records_[message_start_ + 1 + i] = static_cast<char>((length >> (8 * i)) & 0xFFU);
+}
+
+void Chunk::add(const Message& m) {
+  begin_message(m.channel_id, m.sequence, m.log_time, m.publish_time).append(m.data);
+  end_message();
+}
+
+void Chunk::seal() {
+  if (open_) throw std::logic_error("mcap: seal before end_message");
+  if (sealed_) return;
+  index_records_.clear();
+  index_at_.clear();
+  // One MessageIndex per channel, in channel id order; entries in log time order (stable: equal
+  // times keep the order they were written in; a run's times seldom go back, so mostly no sort).
+  for (std::size_t channel = 1; channel < index_.size(); ++channel) {
+    auto& entries = index_[channel];
+    if (entries.empty()) continue;
+    const auto by_time = [](const auto& a, const auto& b) { return a.first < b.first; };
+    if (!std::is_sorted(entries.begin(), entries.end(), by_time))
+      std::stable_sort(entries.begin(), entries.end(), by_time);
+    index_at_.emplace_back(static_cast<std::uint16_t>(channel), index_records_.size());
+    const std::uint64_t length = 2 + 4 + entries.size() * 16;
+    put_u8(index_records_, static_cast<std::uint8_t>(Op::MessageIndex));
+    put_u64(index_records_, length);
+    put_u16(index_records_, static_cast<std::uint16_t>(channel));
+    put_u32(index_records_, static_cast<std::uint32_t>(entries.size() * 16));
+    const std::size_t at = index_records_.size();
+    index_records_.resize(at + entries.size() * 16);
+    char* o = index_records_.data() + at;
+    for (const auto& [t, offset] : entries)
+      for (const std::uint64_t v : {t, offset})
+        for (std::size_t i = 0; i < 8; ++i) *o++ = static_cast<char>((v >> (8 * i)) & 0xFFU);
+  }
+  crc_ = crc32(records_);
+  sealed_ = true;
+}
+
+void Chunk::clear() noexcept {
+  records_.clear();
+  open_ = sealed_ = false;
+  start_ = end_ = messages_ = 0;
+  for (auto& entries : index_) entries.clear();
+  crc_ = 0;
+  index_records_.clear();
+  index_at_.clear();
+}
+
+// ---- Writer ----
+
 void Writer::write(const Message& m) {
   begin_message(m.channel_id, m.sequence, m.log_time, m.publish_time).append(m.data);
   end_message();
@@ -137,103 +222,93 @@ void Writer::write(const Message& m) {
 std::string& Writer::begin_message(std::uint16_t channel_id, std::uint32_t sequence,
                                    std::uint64_t log_time, std::uint64_t publish_time) {
   if (finished_) throw std::logic_error("mcap: write after finish");
-  if (open_message_) throw std::logic_error("mcap: begin_message before end_message");
   if (channel_id == 0 || channel_id > channels_.size())
     throw std::logic_error("mcap: a message on an unknown channel");
-  if (chunk_index_.empty()) {
-    chunk_start_ = log_time;
-    chunk_end_ = log_time;
-  }
-  chunk_start_ = std::min(chunk_start_, log_time);
-  chunk_end_ = std::max(chunk_end_, log_time);
-  chunk_index_[channel_id].emplace_back(log_time, chunk_.size());
-  // The Message record, straight into the chunk; its length is set by end_message().
-  message_start_ = chunk_.size();
-  put_u8(chunk_, static_cast<std::uint8_t>(Op::Message));
-  put_u64(chunk_, 0);
-  put_u16(chunk_, channel_id);
-  put_u32(chunk_, sequence);
-  put_u64(chunk_, log_time);
-  put_u64(chunk_, publish_time);
-  start_time_ = message_count_ == 0 ? log_time : std::min(start_time_, log_time);
-  end_time_ = message_count_ == 0 ? log_time : std::max(end_time_, log_time);
-  ++message_count_;
-  ++channel_counts_[channel_id];
-  open_message_ = true;
-  return chunk_;
+  return chunk_.begin_message(channel_id, sequence, log_time, publish_time);
 }
 
 void Writer::end_message() {
-  if (!open_message_) throw std::logic_error("mcap: end_message without begin_message");
-  open_message_ = false;
-  const std::uint64_t length = chunk_.size() - message_start_ - 9;
-  for (std::size_t i = 0; i < 8; ++i)
-    chunk_[message_start_ + 1 + i] = static_cast<char>((length >> (8 * i)) & 0xFFU);
+  chunk_.end_message();
   if (chunk_.size() >= options_.chunk_size) close_chunk();
 }
 
+void Writer::check_channels(const Chunk& chunk) const {
+  if (chunk.open_) throw std::logic_error("mcap: a chunk written before its end_message");
+  for (std::size_t channel = channels_.size() + 1; channel < chunk.index_.size(); ++channel)
+    if (!chunk.index_[channel].empty())
+      throw std::logic_error("mcap: a message on an unknown channel");
+}
+
+void Writer::write_chunk(Chunk& chunk) {
+  if (finished_) throw std::logic_error("mcap: write after finish");
+  if (chunk_.open_) throw std::logic_error("mcap: write_chunk before end_message");
+  check_channels(chunk);
+  close_chunk();
+  emit_chunk(chunk);
+}
+
 void Writer::close_chunk() {
-  if (chunk_index_.empty()) return;
+  emit_chunk(chunk_);
+}
+
+void Writer::emit_chunk(Chunk& c) {
+  if (c.empty()) {
+    c.clear();
+    return;
+  }
+  c.seal();
   const std::uint64_t chunk_offset = position_;
+  const std::uint64_t size = c.records_.size();
   // The record's head, then its records as they are (no copy of the chunk).
   std::string head;
   put_u8(head, static_cast<std::uint8_t>(Op::Chunk));
-  put_u64(head, 8 + 8 + 8 + 4 + 4 + 8 + chunk_.size());
-  put_u64(head, chunk_start_);
-  put_u64(head, chunk_end_);
-  put_u64(head, chunk_.size());
-  const std::uint32_t records_crc = crc32(chunk_);
-  put_u32(head, records_crc);
+  put_u64(head, 8 + 8 + 8 + 4 + 4 + 8 + size);
+  put_u64(head, c.start_);
+  put_u64(head, c.end_);
+  put_u64(head, size);
+  put_u32(head, c.crc_);
   put_string(head, ""); // no compression
-  put_u64(head, chunk_.size());
+  put_u64(head, size);
   emit(head);
-  emit(chunk_, records_crc); // one pass over the records for both CRCs
-
-  const std::uint64_t chunk_length = head.size() + chunk_.size();
-  // One MessageIndex per channel, in channel id order; entries in log time order (stable: equal
-  // times keep the order they were written in).
+  emit(c.records_, c.crc_); // the records' CRC serves the data section's too
+  const std::uint64_t chunk_length = head.size() + size;
   const std::uint64_t index_start = position_;
+  emit(c.index_records_);
   std::map<std::uint16_t, std::uint64_t> index_offsets;
-  for (auto& [channel, entries] : chunk_index_) {
-    std::stable_sort(entries.begin(), entries.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::string ic;
-    put_u16(ic, channel);
-    put_u32(ic, static_cast<std::uint32_t>(entries.size() * 16));
-    for (const auto& [t, offset] : entries) {
-      put_u64(ic, t);
-      put_u64(ic, offset);
-    }
-    std::string ir;
-    put_record(ir, Op::MessageIndex, ic);
-    index_offsets[channel] = position_;
-    emit(ir);
+  for (const auto& [channel, at] : c.index_at_) {
+    index_offsets[channel] = index_start + at;
+    channel_counts_[channel] += c.index_[channel].size();
   }
   std::string ci;
-  put_u64(ci, chunk_start_);
-  put_u64(ci, chunk_end_);
+  put_u64(ci, c.start_);
+  put_u64(ci, c.end_);
   put_u64(ci, chunk_offset);
   put_u64(ci, chunk_length);
   put_map_u16_u64(ci, index_offsets);
-  put_u64(ci, position_ - index_start);
+  put_u64(ci, c.index_records_.size());
   put_string(ci, "");
-  put_u64(ci, chunk_.size()); // compressed size: the records as they are
-  put_u64(ci, chunk_.size());
+  put_u64(ci, size); // compressed size: the records as they are
+  put_u64(ci, size);
   put_record(chunk_indexes_, Op::ChunkIndex, ci);
+  start_time_ = message_count_ == 0 ? c.start_ : std::min(start_time_, c.start_);
+  end_time_ = message_count_ == 0 ? c.end_ : std::max(end_time_, c.end_);
+  message_count_ += c.messages_;
   ++chunk_count_;
-  chunk_.clear();
-  chunk_index_.clear();
+  c.clear();
 }
 
 std::vector<std::pair<std::string, std::uint64_t>> Writer::channel_counts() const {
   std::vector<std::pair<std::string, std::uint64_t>> out;
-  for (const auto& c : channels_) out.emplace_back(c.topic, channel_counts_.at(c.id));
+  for (const auto& c : channels_) {
+    const std::uint64_t open = c.id < chunk_.index_.size() ? chunk_.index_[c.id].size() : 0;
+    out.emplace_back(c.topic, channel_counts_.at(c.id) + open);
+  }
   return out;
 }
 
 void Writer::finish() {
   if (finished_) throw std::logic_error("mcap: finish twice");
-  if (open_message_) throw std::logic_error("mcap: finish before end_message");
+  if (chunk_.open_) throw std::logic_error("mcap: finish before end_message");
   close_chunk();
   std::string end;
   std::string dc;

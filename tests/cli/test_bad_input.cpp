@@ -341,6 +341,7 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
       {"export mcap {D}/header.jsonl --out {D}/x.mcap", "{D}/header.jsonl:1:", "antkit_log"},
       {"export mcap {D}/missing.jsonl --out {D}/x.mcap", "{D}/missing.jsonl:", "cannot read"},
       {"export mcap {D}/junk.jsonl", "--out is required", ""},
+      {"export mcap {D}/junk.jsonl --out {D}/x.mcap --threads 257", "--threads:", "[0, 256]"},
       {"replay {D}/junk.jsonl --mcap {D}/x.mcap", "{D}/junk.jsonl:1:1:", "'{'"},
       {"replay {D}/untimed.jsonl --mcap {D}/x.mcap",
        "{D}/untimed.jsonl:2:1:", "an exchange without its time"},

@@ -220,3 +220,70 @@ TEST_CASE("export mcap refuses a malformed log at its line, and writes nothing",
                     Catch::Contains("bad.jsonl:1:1: the header's arena"));
   CHECK(!std::filesystem::exists(out));
 }
+
+TEST_CASE("export mcap: the same bytes on any number of threads, the trail growing with the run",
+          "[devices][mcap]") {
+  // 5000 steps (five chunks of 1024 steps and a part), the committed recording's steps over and
+  // over, renumbered and retimed (the export does not replay: any well-formed log serves).
+  TempDir dir;
+  const auto lines = antkit::test::lines_of(committed("khepera_buffon_circle8.jsonl"));
+  const std::size_t steps = 5000;
+  const auto log = dir.file("long.jsonl");
+  {
+    std::ofstream out(log, std::ios::binary);
+    out << lines[0] << '\n';
+    for (std::size_t i = 0; i < steps; ++i) {
+      const std::string& l = lines[1 + i % 120];
+      const auto io = l.find(",\"io\":");
+      out << "{\"step\":" << i << ",\"t_ns\":" << i * 1000 << l.substr(io) << '\n';
+    }
+    out << "{\"stop\":\"done\",\"step\":" << steps << ",\"io\":[]}\n";
+  }
+  std::map<unsigned, std::string> bytes;
+  for (const unsigned threads : {1U, 2U, 3U, 8U}) {
+    auto o = with_arenas();
+    o.threads = threads;
+    const auto out = dir.file("long" + std::to_string(threads) + ".mcap");
+    const auto s = devices::export_mcap(log, out, o);
+    CHECK(s.messages == 3 * steps + 100 + 2 + 1); // pose, step and io a step; trails; logs; arena
+    bytes[threads] = slurp(out);
+  }
+  for (const auto& [threads, b] : bytes) {
+    INFO("threads " << threads);
+    CHECK(b == bytes.at(1));
+  }
+  const auto f = reader::read(bytes.at(1));
+  CHECK(f.chunks >= 5);
+  const auto poses = messages_on(f, "/pose");
+  REQUIRE(poses.size() == steps);
+  const auto trails = messages_on(f, "/trail");
+  REQUIRE(trails.size() == 100); // every 50 steps, the last among them
+  // Each trail: every 5th pose from the first (at most 1000 over the run), then the step's own.
+  for (const auto& t : trails) {
+    const std::size_t step = t["timestamp"]["nsec"].get<std::size_t>() / 1000;
+    INFO("trail at step " << step);
+    CHECK((step + 1) % 50 == 0);
+    const auto& got = t["poses"];
+    std::vector<std::size_t> want;
+    for (std::size_t k = 0; k <= step; k += 5) want.push_back(k);
+    if (step % 5 != 0) want.push_back(step);
+    REQUIRE(got.size() == want.size());
+    for (std::size_t j = 0; j < want.size(); ++j) CHECK(got[j] == poses[want[j]]["pose"]);
+  }
+  CHECK(trails.back()["poses"].back() == poses.back()["pose"]);
+  // A line past the first chunks malformed: located, nothing written, on any thread count (the
+  // threads formatting earlier chunks are stopped and joined).
+  auto long_lines = antkit::test::lines_of(log);
+  long_lines[3001] = "{\"step\":3000,\"t_ns\":oops}";
+  {
+    std::ofstream out(log, std::ios::binary);
+    for (const auto& l : long_lines) out << l << '\n';
+  }
+  for (const unsigned threads : {1U, 2U, 8U}) {
+    auto o = with_arenas();
+    o.threads = threads;
+    const auto out = dir.file("bad" + std::to_string(threads) + ".mcap");
+    CHECK_THROWS_WITH(devices::export_mcap(log, out, o), Catch::Contains("long.jsonl:3002:"));
+    CHECK(!std::filesystem::exists(out));
+  }
+}

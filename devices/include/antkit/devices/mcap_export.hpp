@@ -10,8 +10,9 @@
 //                                          frame "odom": the start at the origin, heading +x);
 //                                          stc-floor's believed sub-cell and heading (frame "map",
 //                                          one unit a sub-cell)
-//   /trail         foxglove.PosesInFrame   the poses so far, at most 100 messages over the run,
-//                                          each thinned to at most 1000 poses (its last the step's)
+//   /trail         foxglove.PosesInFrame   the trail so far, every 1 % of the steps and at the
+//                                          last: every k-th pose from the first (k chosen so that
+//                                          at most 1000 are kept over the run), then the step's
 //   /arena         foxglove.SceneUpdate    the arena's walls at time 0 as one line list (frame
 //                                          "arena", metres), when the header names an arena and
 //                                          the caller can build it (McapOptions::arena_walls); the
@@ -28,7 +29,10 @@
 // steps the replay reproduced, then at the first divergence {step, field, recorded, replayed}),
 // the arena, and on /log the first divergence as an ERROR at that step's time (or an INFO saying
 // the replay is identical).
-// The bytes depend on the log alone (no clock, fixed library string "antkit").
+// Each chunk holds the messages of 1024 steps (the first and last chunks: the run's opening and
+// closing messages); the chunks are formatted on McapOptions::threads threads and written in
+// order. The bytes depend on the log alone (no clock, fixed library string "antkit", not the
+// thread count).
 #include <antkit/devices/replay.hpp>
 #include <antkit/kernel/segment.hpp>
 #include <cstdint>
@@ -43,6 +47,8 @@ struct McapOptions {
   // The walls of the header's arena spec in body diameters (geometry's builder: this library does
   // not link the CGAL arenas, so the command passes it). Unset: no /arena channel.
   std::function<std::vector<kernel::FxSegment>(const std::string& spec)> arena_walls;
+  // Threads that format the messages (0: one per hardware thread). The bytes do not depend on it.
+  unsigned threads = 0;
 };
 
 struct McapSummary {

@@ -57,6 +57,40 @@ struct WriterOptions {
   std::uint64_t chunk_size = 1U << 20; // a chunk is closed once its records reach this many bytes
 };
 
+// A chunk's Message records and their index, built apart from the Writer (on another thread, say,
+// while the writer writes the chunk before it) and written whole by Writer::write_chunk. The same
+// calls give the same bytes wherever the chunk was built.
+class Chunk {
+public:
+  // As Writer::begin_message / end_message (below), into this chunk. Throws std::logic_error for
+  // channel 0 and for the calls out of turn; other channel ids are checked by write_chunk.
+  std::string& begin_message(std::uint16_t channel_id, std::uint32_t sequence,
+                             std::uint64_t log_time, std::uint64_t publish_time);
+  void end_message();
+  void add(const Message& message);
+  [[nodiscard]] bool empty() const noexcept { return messages_ == 0; }
+  [[nodiscard]] std::size_t size() const noexcept { return records_.size(); } // record bytes
+  [[nodiscard]] std::uint64_t messages() const noexcept { return messages_; }
+  // The costly half of writing it: the records' CRC-32 and the MessageIndex records (each
+  // channel's entries in log time order, stable). No message may be added after it; write_chunk
+  // seals a chunk that is not sealed.
+  void seal();
+  // Empty again, keeping its buffers.
+  void clear() noexcept;
+
+private:
+  friend class Writer;
+  std::string records_;
+  std::size_t message_start_ = 0; // the open message's record (begin_message)
+  bool open_ = false, sealed_ = false;
+  std::uint64_t start_ = 0, end_ = 0, messages_ = 0;
+  // Each channel's (log time, offset in records_), by channel id.
+  std::vector<std::vector<std::pair<std::uint64_t, std::uint64_t>>> index_;
+  std::uint32_t crc_ = 0;     // of records_, once sealed
+  std::string index_records_; // the MessageIndex records, once sealed
+  std::vector<std::pair<std::uint16_t, std::uint64_t>> index_at_; // channel, offset in them
+};
+
 class Writer {
 public:
   // Writes the magic and the Header to `out` at once; `out` must stay valid until finish().
@@ -80,10 +114,16 @@ public:
   std::string& begin_message(std::uint16_t channel_id, std::uint32_t sequence,
                              std::uint64_t log_time, std::uint64_t publish_time);
   void end_message();
+  // Closes the open chunk, then writes `chunk` as the next one (sealing it first if it is not)
+  // and clears it. Throws std::logic_error for a message on a channel not added, an open message
+  // in it, or a call between begin_message and end_message. An empty chunk writes nothing.
+  void write_chunk(Chunk& chunk);
   // Closes the last chunk and writes DataEnd, the summary, its offsets, the Footer and the magic.
   void finish();
 
-  [[nodiscard]] std::uint64_t messages() const noexcept { return message_count_; }
+  [[nodiscard]] std::uint64_t messages() const noexcept {
+    return message_count_ + chunk_.messages();
+  }
   [[nodiscard]] std::uint64_t bytes() const noexcept { return position_; } // written so far
   // Each channel's topic and messages written, in channel id order.
   [[nodiscard]] std::vector<std::pair<std::string, std::uint64_t>> channel_counts() const;
@@ -101,6 +141,8 @@ private:
   void emit(std::string_view bytes); // to the file, counted and (before DataEnd) into the data CRC
   void emit(std::string_view bytes, std::uint32_t crc); // the same, its CRC-32 known
   void close_chunk();
+  void emit_chunk(Chunk& chunk); // seals it, writes it and its index, clears it
+  void check_channels(const Chunk& chunk) const;
 
   std::ostream& out_;
   WriterOptions options_;
@@ -109,12 +151,7 @@ private:
   bool finished_ = false;
   std::vector<SchemaRecord> schemas_;
   std::vector<ChannelRecord> channels_;
-  // The open chunk: its records, their time range and each channel's (log time, offset) index.
-  std::string chunk_;
-  std::size_t message_start_ = 0; // the open message's record in chunk_ (begin_message)
-  bool open_message_ = false;
-  std::uint64_t chunk_start_ = 0, chunk_end_ = 0;
-  std::map<std::uint16_t, std::vector<std::pair<std::uint64_t, std::uint64_t>>> chunk_index_;
+  Chunk chunk_;               // the open chunk
   std::string chunk_indexes_; // the summary's ChunkIndex records so far
   std::uint32_t chunk_count_ = 0;
   std::uint64_t message_count_ = 0, start_time_ = 0, end_time_ = 0;
