@@ -8,10 +8,12 @@
 #include <antkit/kernel/angle.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <antkit/kernel/int_ops.hpp>
 #include <array>
 #include <bit>
 #include <charconv>
 #include <condition_variable>
+#include <cstring>
 #include <deque>
 #include <exception>
 #include <functional>
@@ -131,71 +133,212 @@ namespace {
 
 // JSON text, written by hand so that every byte is fixed by the values (strings as the log
 // writes its byte strings, log.hpp), appended in place: the per-step messages go straight into
-// the MCAP writer's chunk (Writer::begin_message), with no string built per field.
-void put_number(std::string& out, double v) {
-  std::array<char, 32> buf{};
-  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  out.append(buf.data(), r.ptr);
-}
-template <typename Int>
-void put_int(std::string& out, Int v) {
-  std::array<char, 24> buf{};
-  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  out.append(buf.data(), r.ptr);
-}
-void put_ints(std::string& out, const std::vector<std::int64_t>& v) {
-  out += '[';
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    if (i > 0) out += ',';
-    put_int(out, v[i]);
+// the MCAP writer's chunk (Chunk::begin_message), with no string built per field.
+//
+// Text appends through a pointer into room made at the string's end, so that a field costs a
+// bounds check and a copy, not a call into the library's string (std::string's members are
+// compiled in libstdc++, out of line); the destructor cuts the string to what was written. While
+// a Text is open nothing else may append to its string.
+class Text {
+public:
+  explicit Text(std::string& s) : s_(s) {
+    const std::size_t at = s_.size();
+    s_.resize(at + kRoom);
+    p_ = s_.data() + at;
+    e_ = s_.data() + s_.size();
   }
-  out += ']';
-}
-void put_hash(std::string& out, std::uint64_t h) { // kernel::hash_hex, quoted
-  constexpr char digits[] = "0123456789abcdef";
-  std::array<char, 18> b{};
-  b[0] = b[17] = '"';
-  for (int i = 16; i >= 1; --i, h >>= 4) b[static_cast<std::size_t>(i)] = digits[h & 0xFU];
-  out.append(b.data(), b.size());
+  ~Text() { s_.resize(static_cast<std::size_t>(p_ - s_.data())); }
+  Text(const Text&) = delete;
+  Text& operator=(const Text&) = delete;
+
+  Text& lit(std::string_view v) {
+    need(v.size());
+    std::memcpy(p_, v.data(), v.size());
+    p_ += v.size();
+    return *this;
+  }
+  Text& ch(char c) {
+    need(1);
+    *p_++ = c;
+    return *this;
+  }
+  // Decimal, as std::to_chars writes it.
+  Text& u64(std::uint64_t v) {
+    need(20);
+    if (v < 10) {
+      *p_++ = static_cast<char>('0' + v);
+      return *this;
+    }
+    std::array<char, 20> b{};
+    char* q = b.data() + b.size();
+    while (v >= 100) {
+      const auto r = static_cast<std::size_t>(v % 100);
+      v /= 100;
+      q -= 2;
+      std::memcpy(q, kPairs.data() + 2 * r, 2);
+    }
+    if (v >= 10) {
+      q -= 2;
+      std::memcpy(q, kPairs.data() + 2 * v, 2);
+    } else {
+      *--q = static_cast<char>('0' + v);
+    }
+    const auto n = static_cast<std::size_t>(b.data() + b.size() - q);
+    std::memcpy(p_, q, n);
+    p_ += n;
+    return *this;
+  }
+  Text& i64(std::int64_t v) {
+    if (v >= 0) return u64(static_cast<std::uint64_t>(v));
+    ch('-');
+    return u64(0 - static_cast<std::uint64_t>(v));
+  }
+  // The shortest text that reads back as v (std::to_chars).
+  Text& number(double v) {
+    need(32);
+    p_ = std::to_chars(p_, p_ + 32, v).ptr;
+    return *this;
+  }
+  Text& ints(const std::vector<std::int64_t>& v) {
+    ch('[');
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (i > 0) ch(',');
+      i64(v[i]);
+    }
+    return ch(']');
+  }
+  Text& hash(std::uint64_t h) { // kernel::hash_hex, quoted
+    constexpr char digits[] = "0123456789abcdef";
+    need(18);
+    p_[0] = p_[17] = '"';
+    for (int i = 16; i >= 1; --i, h >>= 4) p_[i] = digits[h & 0xFU];
+    p_ += 18;
+    return *this;
+  }
+  // "timestamp":{"sec":S,"nsec":N}
+  Text& timestamp(std::uint64_t t) {
+    lit(R"("timestamp":{"sec":)").u64(t / 1000000000U).lit(",\"nsec\":");
+    return u64(t % 1000000000U).ch('}');
+  }
+  // `bytes` in base64 (RFC 4648, padded), quoted: base64 needs no JSON escapes.
+  Text& base64(std::string_view bytes) {
+    static constexpr char kAlphabet[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    need((bytes.size() + 2) / 3 * 4 + 2);
+    char* o = p_;
+    *o++ = '"';
+    const auto byte = [&](std::size_t k) {
+      return static_cast<std::uint32_t>(static_cast<std::uint8_t>(bytes[k]));
+    };
+    std::size_t i = 0;
+    for (; i + 3 <= bytes.size(); i += 3) {
+      const std::uint32_t v = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
+      o[0] = kAlphabet[(v >> 18) & 63U];
+      o[1] = kAlphabet[(v >> 12) & 63U];
+      o[2] = kAlphabet[(v >> 6) & 63U];
+      o[3] = kAlphabet[v & 63U];
+      o += 4;
+    }
+    if (const std::size_t rest = bytes.size() - i; rest > 0) {
+      std::uint32_t v = byte(i) << 16;
+      if (rest == 2) v |= byte(i + 1) << 8;
+      *o++ = kAlphabet[(v >> 18) & 63U];
+      *o++ = kAlphabet[(v >> 12) & 63U];
+      *o++ = rest == 2 ? kAlphabet[(v >> 6) & 63U] : '=';
+      *o++ = '=';
+    }
+    *o++ = '"';
+    p_ = o;
+    return *this;
+  }
+
+private:
+  static constexpr std::size_t kRoom = 256;
+  static constexpr std::array<char, 200> kPairs = [] {
+    std::array<char, 200> d{};
+    for (std::size_t k = 0; k < 100; ++k) {
+      d[2 * k] = static_cast<char>('0' + k / 10);
+      d[2 * k + 1] = static_cast<char>('0' + k % 10);
+    }
+    return d;
+  }();
+  void need(std::size_t n) {
+    if (static_cast<std::size_t>(e_ - p_) < n) grow(n);
+  }
+  void grow(std::size_t n) {
+    const auto at = static_cast<std::size_t>(p_ - s_.data());
+    s_.resize(at + std::max(n, s_.size() - at) + kRoom);
+    p_ = s_.data() + at;
+    e_ = s_.data() + s_.size();
+  }
+  std::string& s_;
+  char* p_;
+  char* e_;
+};
+
+void put_number(std::string& out, double v) {
+  Text(out).number(v);
 }
 
 std::uint64_t log_time(std::int64_t t_ns) {
   return t_ns < 0 ? 0 : static_cast<std::uint64_t>(t_ns);
 }
-// "timestamp":{"sec":S,"nsec":N}
-void put_timestamp(std::string& out, std::uint64_t t) {
-  out += R"("timestamp":{"sec":)";
-  put_int(out, t / 1000000000U);
-  out += ",\"nsec\":";
-  put_int(out, t % 1000000000U);
-  out += '}';
-}
 std::string timestamp(std::uint64_t t) {
   std::string out;
-  put_timestamp(out, t);
+  Text(out).timestamp(t);
   return out;
 }
 
+// A pose: the position as integers of 10^-decimals units (nanometres for the serial robots'
+// dead reckoning, whole sub-cells for the marker-floor robot), the rotation about z as a
+// quaternion's z and w.
 struct Pose {
-  double x = 0, y = 0, qz = 0, qw = 1;
+  std::int64_t x = 0, y = 0;
+  int decimals = 0;
+  double qz = 0, qw = 1;
 };
-void put_pose(std::string& out, const Pose& p) {
-  out += R"({"position":{"x":)";
-  put_number(out, p.x);
-  out += ",\"y\":";
-  put_number(out, p.y);
-  out += R"(,"z":0},"orientation":{"x":0,"y":0,"z":)";
-  put_number(out, p.qz);
-  out += ",\"w\":";
-  put_number(out, p.qw);
-  out += "}}";
+// An integer of 10^-decimals units as a JSON number: its decimal digits, the point set in, the
+// fraction's trailing zeros dropped (-0.000340729, 0.5, 12): exact, and no double formatted.
+void put_fixed(Text& out, std::int64_t v, int decimals) {
+  if (v < 0) out.ch('-');
+  const std::uint64_t a = v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+  std::uint64_t scale = 1;
+  for (int k = 0; k < decimals; ++k) scale *= 10;
+  out.u64(a / scale);
+  std::uint64_t frac = a % scale;
+  if (frac == 0) return;
+  int digits = decimals;
+  while (frac % 10 == 0) frac /= 10, --digits;
+  std::array<char, 20> b{};
+  for (int k = digits - 1; k >= 0; --k, frac /= 10)
+    b[static_cast<std::size_t>(k)] = static_cast<char>('0' + frac % 10);
+  out.ch('.').lit({b.data(), static_cast<std::size_t>(digits)});
 }
-Pose pose_of(double x, double y, kernel::Angle heading) {
+void put_position(Text& out, const Pose& p) {
+  out.lit(R"({"position":{"x":)");
+  put_fixed(out, p.x, p.decimals);
+  out.lit(",\"y\":");
+  put_fixed(out, p.y, p.decimals);
+}
+void put_pose(Text& out, const Pose& p) {
+  put_position(out, p);
+  out.lit(R"(,"z":0},"orientation":{"x":0,"y":0,"z":)").number(p.qz).lit(",\"w\":");
+  out.number(p.qw).lit("}}");
+}
+Pose pose_of(std::int64_t x, std::int64_t y, int decimals, kernel::Angle heading) {
   // The rotation by `heading` about z: (0, 0, sin h/2, cos h/2), by the kernel's sine; h in
   // (-pi, pi], so that w >= 0 (q and -q are the same rotation; this one is the usual spelling).
   const auto half = kernel::Angle::from_raw(static_cast<std::uint32_t>(heading.signed_raw() / 2));
   constexpr double kOne = 65536.0;
-  return {x, y, kernel::sin(half).raw() / kOne, kernel::cos(half).raw() / kOne};
+  return {x, y, decimals, kernel::sin(half).raw() / kOne, kernel::cos(half).raw() / kOne};
+}
+// Q15.16 body diameters in nanometres, to the nearest (ties away from zero): the dead
+// reckoning's step is 1/65536 of a diameter (0.8 um for the Khepera's 55 mm), a thousand times
+// coarser, so the rounding loses nothing the odometry holds.
+std::int64_t nanometres(std::int64_t raw, std::int64_t diameter_um) {
+  const kernel::int128 num = kernel::int128(raw) * diameter_um * 1000;
+  const kernel::int128 half = 32768;
+  return static_cast<std::int64_t>(num >= 0 ? (num + half) / 65536 : -((-num + half) / 65536));
 }
 
 // The pose after each step, where the log says it: the serial robots' dead reckoning (metres),
@@ -214,7 +357,7 @@ public:
   [[nodiscard]] const std::string& frame() const noexcept { return frame_; }
   std::optional<Pose> after(const LogRecord& r) {
     if (floor_ && r.odo.size() >= 3)
-      return pose_of(static_cast<double>(r.odo[0]), static_cast<double>(r.odo[1]),
+      return pose_of(r.odo[0], r.odo[1], 0,
                      kernel::Angle::from_raw(static_cast<std::uint32_t>((r.odo[2] & 3) << 30)));
     if (robot_ == nullptr || r.odo.size() != 2 || robot_->wheel_base_um <= 0) return std::nullopt;
     const WheelTravel w{r.odo[0], r.odo[1]};
@@ -222,9 +365,8 @@ public:
       dr_.emplace(*robot_, w);
     else
       dr_->update(w);
-    const double metres = robot_->diameter_um / 1e6 / 65536.0; // raw Q15.16 body diameters
-    return pose_of(dr_->position().x.raw() * metres, dr_->position().y.raw() * metres,
-                   dr_->heading());
+    return pose_of(nanometres(dr_->position().x.raw(), robot_->diameter_um),
+                   nanometres(dr_->position().y.raw(), robot_->diameter_um), 9, dr_->heading());
   }
   // Metres per body diameter (the arena's unit), 0 when the robot has none.
   [[nodiscard]] double diameter_m() const noexcept {
@@ -238,29 +380,26 @@ private:
   std::optional<DeadReckoning> dr_;
 };
 
-void put_base64(std::string& out, std::string_view bytes);
-
 // put_pose, keeping the orientation's text while it repeats (a walk's heading holds between
 // turns): the same bytes, fewer numbers formatted.
 class PoseText {
 public:
-  void put(std::string& out, const Pose& p) {
-    out += R"({"position":{"x":)";
-    put_number(out, p.x);
-    out += ",\"y\":";
-    put_number(out, p.y);
+  void put(Text& out, const Pose& p) {
+    put_position(out, p);
     if (!valid_ || std::bit_cast<std::uint64_t>(p.qz) != std::bit_cast<std::uint64_t>(qz_) ||
         std::bit_cast<std::uint64_t>(p.qw) != std::bit_cast<std::uint64_t>(qw_)) {
-      rest_ = R"(,"z":0},"orientation":{"x":0,"y":0,"z":)";
-      put_number(rest_, p.qz);
-      rest_ += ",\"w\":";
-      put_number(rest_, p.qw);
-      rest_ += "}}";
+      rest_.clear();
+      Text(rest_)
+          .lit(R"(,"z":0},"orientation":{"x":0,"y":0,"z":)")
+          .number(p.qz)
+          .lit(",\"w\":")
+          .number(p.qw)
+          .lit("}}");
       qz_ = p.qz;
       qw_ = p.qw;
       valid_ = true;
     }
-    out += rest_;
+    out.lit(rest_);
   }
 
 private:
@@ -294,68 +433,55 @@ public:
     append_json_bytes(frame_, frame);
   }
   // {"timestamp":...,"frame_id":"...","poses":[   (a /trail message's head)
-  void put_trail_head(std::string& m, std::uint64_t t) const {
-    m += '{';
-    put_timestamp(m, t);
-    m += frame_;
-    m += ",\"poses\":[";
+  void put_trail_head(Text& m, std::uint64_t t) const {
+    m.ch('{').timestamp(t).lit(frame_).lit(",\"poses\":[");
   }
   void write(mcap::Chunk& c, const StepIn& in, PoseText& pose_text) const {
     const LogRecord& r = in.record;
     const auto t = log_time(r.time_ns);
     const auto seq = static_cast<std::uint32_t>(r.step);
     if (in.pose) {
-      std::string& m = c.begin_message(pose_, seq, t, t);
-      m += '{';
-      put_timestamp(m, t);
-      m += frame_;
-      m += ",\"pose\":";
-      pose_text.put(m, *in.pose);
-      m += '}';
+      {
+        Text m(c.begin_message(pose_, seq, t, t));
+        m.ch('{').timestamp(t).lit(frame_).lit(",\"pose\":");
+        pose_text.put(m, *in.pose);
+        m.ch('}');
+      }
       c.end_message();
     }
     if (!in.trail.empty()) c.begin_message(trail_, seq, t, t).append(in.trail), c.end_message();
-    std::string& step = c.begin_message(step_, seq, t, t);
-    put_step_head(step, r);
-    put_step_fields(step, r);
-    c.end_message();
-    std::string& m = c.begin_message(io_, seq, t, t);
-    put_step_head(m, r);
-    m += ",\"io\":[";
-    for (std::size_t k = 0; k < r.io.size(); ++k) {
-      if (k > 0) m += ',';
-      m += "{\"sent\":";
-      put_base64(m, r.io[k].sent);
-      m += ",\"received\":";
-      put_base64(m, r.io[k].received);
-      m += ",\"t_ns\":";
-      if (r.io[k].t_ns < 0)
-        m += "null";
-      else
-        put_int(m, r.io[k].t_ns);
-      m += '}';
+    {
+      Text m(c.begin_message(step_, seq, t, t));
+      put_step_head(m, r);
+      put_step_fields(m, r);
     }
-    m += "]}";
+    c.end_message();
+    {
+      Text m(c.begin_message(io_, seq, t, t));
+      put_step_head(m, r);
+      m.lit(",\"io\":[");
+      for (std::size_t k = 0; k < r.io.size(); ++k) {
+        if (k > 0) m.ch(',');
+        m.lit("{\"sent\":").base64(r.io[k].sent).lit(",\"received\":").base64(r.io[k].received);
+        m.lit(",\"t_ns\":");
+        if (r.io[k].t_ns < 0)
+          m.lit("null");
+        else
+          m.i64(r.io[k].t_ns);
+        m.ch('}');
+      }
+      m.lit("]}");
+    }
     c.end_message();
   }
   // {"timestamp":...,"step":N
-  static void put_step_head(std::string& m, const LogRecord& r) {
-    m += '{';
-    put_timestamp(m, log_time(r.time_ns));
-    m += ",\"step\":";
-    put_int(m, r.step);
+  static void put_step_head(Text& m, const LogRecord& r) {
+    m.ch('{').timestamp(log_time(r.time_ns)).lit(",\"step\":").i64(r.step);
   }
   // ,"obs":[...],"cmd":[...],"odo":[...],"state":"..."}
-  static void put_step_fields(std::string& m, const LogRecord& r) {
-    m += ",\"obs\":";
-    put_ints(m, r.obs);
-    m += ",\"cmd\":";
-    put_ints(m, r.cmd);
-    m += ",\"odo\":";
-    put_ints(m, r.odo);
-    m += ",\"state\":";
-    put_hash(m, r.state);
-    m += '}';
+  static void put_step_fields(Text& m, const LogRecord& r) {
+    m.lit(",\"obs\":").ints(r.obs).lit(",\"cmd\":").ints(r.cmd).lit(",\"odo\":").ints(r.odo);
+    m.lit(",\"state\":").hash(r.state).ch('}');
   }
   static constexpr std::size_t kTrailPoses = 1000;
 
@@ -377,7 +503,10 @@ std::string arena_message(const std::vector<kernel::FxSegment>& walls, double me
                   R"("frame_locked":true,"metadata":[],"arrows":[],"cubes":[],"spheres":[],)"
                   R"("cylinders":[],"triangles":[],"texts":[],"models":[],"lines":[{"type":2,)"
                   R"("pose":)";
-  put_pose(m, Pose{});
+  {
+    Text text(m);
+    put_pose(text, Pose{});
+  }
   m += R"(,"thickness":2,"scale_invariant":true,"points":[)";
   const double unit = metres / 65536.0;
   bool first = true;
@@ -405,40 +534,9 @@ std::string header_text(const LogHeader& h) {
 
 } // namespace
 
-namespace {
-
-// `bytes` in base64 (RFC 4648, padded), quoted: base64 needs no JSON escapes.
-void put_base64(std::string& out, std::string_view bytes) {
-  static constexpr char kAlphabet[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  const std::size_t at = out.size();
-  out.resize(at + (bytes.size() + 2) / 3 * 4 + 2);
-  char* o = out.data() + at;
-  *o++ = '"';
-  const auto byte = [&](std::size_t k) {
-    return static_cast<std::uint32_t>(static_cast<std::uint8_t>(bytes[k]));
-  };
-  std::size_t i = 0;
-  for (; i + 3 <= bytes.size(); i += 3) {
-    const std::uint32_t v = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
-    for (int k = 18; k >= 0; k -= 6) *o++ = kAlphabet[(v >> k) & 63U];
-  }
-  if (const std::size_t rest = bytes.size() - i; rest > 0) {
-    std::uint32_t v = byte(i) << 16;
-    if (rest == 2) v |= byte(i + 1) << 8;
-    *o++ = kAlphabet[(v >> 18) & 63U];
-    *o++ = kAlphabet[(v >> 12) & 63U];
-    *o++ = rest == 2 ? kAlphabet[(v >> 6) & 63U] : '=';
-    *o++ = '=';
-  }
-  *o = '"';
-}
-
-} // namespace
-
 std::string base64(std::string_view bytes) {
   std::string quoted;
-  put_base64(quoted, bytes);
+  Text(quoted).base64(bytes);
   return quoted.substr(1, quoted.size() - 2);
 }
 
@@ -639,10 +737,12 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
       const auto seq = static_cast<std::uint32_t>(r.step);
       if (replay != nullptr && r.step < replay->steps) {
         // /antkit/step's text with "identical" after the step number.
-        std::string& m = b.chunk.begin_message(replayed, seq, t, t);
-        RunChannels::put_step_head(m, r);
-        m += ",\"identical\":true";
-        RunChannels::put_step_fields(m, r);
+        {
+          Text m(b.chunk.begin_message(replayed, seq, t, t));
+          RunChannels::put_step_head(m, r);
+          m.lit(",\"identical\":true");
+          RunChannels::put_step_fields(m, r);
+        }
         b.chunk.end_message();
       } else if (in.divergence) {
         add_divergence(b.chunk, t, seq);
@@ -665,7 +765,6 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
   std::string trail_poses; // the poses kept, comma-separated
   PoseText trail_text;
   std::size_t pose_count = 0;
-  std::string last_pose; // the step's pose, when not kept
 
   bool divergence_written = false;
   std::size_t n = 0;        // steps read
@@ -683,13 +782,14 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
     if (prev != nullptr) { // the step before: its trail, now that it is known whether it is last
       prev->trail.clear();
       if (prev->pose && (n % every == 0 || !got)) {
-        run.put_trail_head(prev->trail, log_time(prev->record.time_ns));
-        prev->trail += trail_poses;
+        Text m(prev->trail);
+        run.put_trail_head(m, log_time(prev->record.time_ns));
+        m.lit(trail_poses);
         if ((pose_count - 1) % stride != 0) {
-          if (!trail_poses.empty()) prev->trail += ',';
-          trail_text.put(prev->trail, *prev->pose);
+          if (!trail_poses.empty()) m.ch(',');
+          trail_text.put(m, *prev->pose);
         }
-        prev->trail += "]}";
+        m.lit("]}");
       }
     }
     if (full != nullptr) {
@@ -701,8 +801,9 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
     s.pose = poser.after(r);
     if (s.pose) {
       if (pose_count % stride == 0) {
-        if (!trail_poses.empty()) trail_poses += ',';
-        trail_text.put(trail_poses, *s.pose);
+        Text m(trail_poses);
+        if (pose_count > 0) m.ch(',');
+        trail_text.put(m, *s.pose);
       }
       ++pose_count;
     }

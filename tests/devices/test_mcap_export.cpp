@@ -8,7 +8,9 @@
 
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/mcap_export.hpp>
+#include <antkit/devices/odometry.hpp>
 #include <antkit/devices/replay.hpp>
+#include <antkit/devices/robot.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
@@ -17,6 +19,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 namespace devices = antkit::devices;
@@ -155,6 +158,43 @@ TEST_CASE("export mcap of a run recorded through an emulator", "[devices][mcap]"
     CHECK(std::abs(z * z + w * w - 1) < 1e-3);
   }
   CHECK((poses.back()["pose"]["position"]["x"] != 0 || poses.back()["pose"]["position"]["y"] != 0));
+  // The position is the dead reckoning's, in metres to the nanometre: written as a plain decimal
+  // of at most nine places, within half a nanometre of the Q15.16 diameters it comes from.
+  devices::LogReader lr(log);
+  devices::LogRecord r;
+  const auto& robot = devices::describe(devices::RobotKind::Epuck);
+  std::optional<devices::DeadReckoning> dr;
+  std::size_t k = 0;
+  const auto texts = [&] {
+    std::vector<std::string> found;
+    for (const auto& m : f.messages)
+      if (f.channels.at(m.channel_id).topic == "/pose") found.push_back(m.data);
+    return found;
+  }();
+  while (lr.next(r)) {
+    const devices::WheelTravel w{r.odo[0], r.odo[1]};
+    if (!dr)
+      dr.emplace(robot, w);
+    else
+      dr->update(w);
+    const double unit = robot.diameter_um / 1e6 / 65536.0;
+    INFO("step " << k << ": " << texts.at(k));
+    const auto& at = poses.at(k)["pose"]["position"];
+    CHECK(std::abs(at["x"].get<double>() - dr->position().x.raw() * unit) < 0.6e-9);
+    CHECK(std::abs(at["y"].get<double>() - dr->position().y.raw() * unit) < 0.6e-9);
+    for (const char* axis : {"\"x\":", "\"y\":"}) {
+      const auto from = texts.at(k).find(axis) + 4;
+      const auto number = texts.at(k).substr(from, texts.at(k).find_first_of(",}", from) - from);
+      CHECK(number.find_first_not_of("-0123456789.") == std::string::npos);
+      const auto point = number.find('.');
+      if (point != std::string::npos) {
+        CHECK(number.size() - point - 1 <= 9);
+        CHECK(number.back() != '0');
+      }
+    }
+    ++k;
+  }
+  CHECK(k == poses.size());
 }
 
 TEST_CASE("replay --mcap: recorded and replayed side by side, the divergence as an ERROR",

@@ -6,8 +6,11 @@
 // Topics of `antkit export mcap` (prefix ""), every message at the recorded time of its step
 // (t_ns as log and publish time; in the messages {sec, nsec}), sequence = step:
 //   /pose          foxglove.PoseInFrame    the pose after each step: the serial robots' dead
-//                                          reckoning of the logged odometry (odometry.hpp; metres,
-//                                          frame "odom": the start at the origin, heading +x);
+//                                          reckoning of the logged odometry (odometry.hpp; metres
+//                                          to the nanometre, nearest, as a plain decimal: the
+//                                          reckoning's own step is 1/65536 of a diameter, near a
+//                                          micrometre; frame "odom": the start at the origin,
+//                                          heading +x);
 //                                          stc-floor's believed sub-cell and heading (frame "map",
 //                                          one unit a sub-cell)
 //   /trail         foxglove.PosesInFrame   the trail so far, every 1 % of the steps and at the
