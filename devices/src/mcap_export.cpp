@@ -557,14 +557,17 @@ struct Batch {
   std::exception_ptr error;
 };
 
-// Formats batches on `threads - 1` threads and the caller's, handing them back in the order they
-// were submitted: the file's bytes are the same for any thread count. The caller fills a batch
-// (take), submits it, and writes the ones formatted (drain). The destructor stops and joins the
-// threads (an exception on the caller's side leaves by it).
+// Formats batches on `threads - 1` threads and the caller's, and writes them in the order they
+// were submitted, whichever thread finished the next one (one at a time): the file's bytes are the
+// same for any thread count, and the reading thread does no writing. The caller fills a batch
+// (take), submits it, and at the end waits for all to be written (finish). The first error, in
+// formatting or writing, stops the writing and is rethrown to the caller by take or finish; the
+// destructor stops and joins the threads (an exception on the caller's side leaves by it).
 class BatchPipeline {
 public:
-  BatchPipeline(unsigned threads, std::function<void(Batch&)> format)
-      : format_(std::move(format)), depth_(2 * std::size_t{threads} + 2) {
+  BatchPipeline(unsigned threads, std::function<void(Batch&)> format,
+                std::function<void(Batch&)> write)
+      : format_(std::move(format)), write_(std::move(write)), depth_(2 * std::size_t{threads} + 2) {
     for (unsigned k = 1; k < threads; ++k) workers_.emplace_back([this] { work(); });
   }
   ~BatchPipeline() {
@@ -578,15 +581,15 @@ public:
   BatchPipeline(const BatchPipeline&) = delete;
   BatchPipeline& operator=(const BatchPipeline&) = delete;
 
-  // An empty batch: a new one while fewer than the depth exist, else the oldest submitted once
-  // `write` has taken it.
-  Batch& take(const std::function<void(Batch&)>& write) {
-    if (free_.empty() && all_.size() >= depth_)
-      drain(order_.empty() ? 0 : order_.size() - 1, write);
-    if (free_.empty()) {
+  // An empty batch: a new one while fewer than the depth exist, else one written, formatting
+  // queued batches while it waits.
+  Batch& take() {
+    std::unique_lock lock(m_);
+    if (free_.empty() && all_.size() < depth_) {
       all_.push_back(std::make_unique<Batch>());
       return *all_.back();
     }
+    wait(lock, [&] { return !free_.empty(); });
     Batch* b = free_.back();
     free_.pop_back();
     b->n = 0;
@@ -602,74 +605,93 @@ public:
     }
     cv_.notify_one();
   }
-  // Hands the formatted batches to `write` in submission order until at most `keep` are in
-  // flight, formatting queued ones itself while it waits.
-  void drain(std::size_t keep, const std::function<void(Batch&)>& write) {
-    for (;;) {
-      Batch* b = nullptr;
-      {
-        std::unique_lock lock(m_);
-        if (order_.size() <= keep) return;
-        b = order_.front();
-        while (!b->done) {
-          if (!queue_.empty()) {
-            Batch* mine = queue_.front();
-            queue_.pop_front();
-            lock.unlock();
-            run(*mine);
-            lock.lock();
-            mine->done = true;
-            cv_.notify_all();
-          } else {
-            cv_.wait(lock);
-          }
-        }
-        order_.pop_front();
-      }
-      free_.push_back(b);
-      if (b->error) std::rethrow_exception(b->error);
-      write(*b);
-    }
+  // Returns once every batch submitted is written.
+  void finish() {
+    std::unique_lock lock(m_);
+    wait(lock, [&] { return order_.empty() && !writing_; });
   }
 
 private:
-  void run(Batch& b) noexcept {
-    try {
-      format_(b);
-    } catch (...) {
-      b.error = std::current_exception();
+  // Waits, under `lock`, until `ready` or an error; formats queued batches meanwhile.
+  template <class Ready>
+  void wait(std::unique_lock<std::mutex>& lock, const Ready& ready) {
+    for (;;) {
+      if (error_) std::rethrow_exception(error_);
+      if (ready()) return;
+      if (!queue_.empty())
+        run_one(lock);
+      else
+        cv_.wait(lock);
     }
+  }
+  // Formats the queue's first batch (the lock released meanwhile), then writes what is ready.
+  void run_one(std::unique_lock<std::mutex>& lock) {
+    Batch* b = queue_.front();
+    queue_.pop_front();
+    lock.unlock();
+    try {
+      format_(*b);
+    } catch (...) {
+      b->error = std::current_exception();
+    }
+    lock.lock();
+    b->done = true;
+    write_ready(lock);
+    cv_.notify_all();
+  }
+  // Writes the batches at the front of the order that are formatted, unless another thread is
+  // writing (it will find them).
+  void write_ready(std::unique_lock<std::mutex>& lock) {
+    if (writing_) return;
+    writing_ = true;
+    while (!error_ && !order_.empty() && order_.front()->done) {
+      Batch* b = order_.front();
+      order_.pop_front();
+      if (b->error) {
+        error_ = b->error;
+        break;
+      }
+      lock.unlock();
+      try {
+        write_(*b);
+      } catch (...) {
+        lock.lock();
+        error_ = std::current_exception();
+        break;
+      }
+      lock.lock();
+      free_.push_back(b);
+      cv_.notify_all();
+    }
+    writing_ = false;
   }
   void work() {
     std::unique_lock lock(m_);
     for (;;) {
-      cv_.wait(lock, [&] { return stop_ || !queue_.empty(); });
+      cv_.wait(lock, [&] { return stop_ || (!queue_.empty() && !error_); });
       if (stop_) return;
-      Batch* b = queue_.front();
-      queue_.pop_front();
-      lock.unlock();
-      run(*b);
-      lock.lock();
-      b->done = true;
-      cv_.notify_all();
+      run_one(lock);
     }
   }
 
-  std::function<void(Batch&)> format_;
+  std::function<void(Batch&)> format_, write_;
   std::size_t depth_;
-  std::vector<std::unique_ptr<Batch>> all_;
-  std::vector<Batch*> free_;         // the caller's only
-  std::deque<Batch*> queue_, order_; // to format; submitted and not yet written (both: m_)
+  std::vector<std::unique_ptr<Batch>> all_; // the caller's only
+  // All under m_: free batches; to format; submitted and not yet written, in order.
+  std::vector<Batch*> free_;
+  std::deque<Batch*> queue_, order_;
+  bool writing_ = false, stop_ = false;
+  std::exception_ptr error_;
   std::mutex m_;
   std::condition_variable cv_;
-  bool stop_ = false;
   std::vector<std::thread> workers_;
 };
 
 // The file, streamed to `bytes` as the log is read, a record ahead (a malformed log throws part
 // way; export_mcap writes beside the target and renames, so nothing half-written is left). The
 // calling thread reads the log, follows the pose and keeps the trail; batches of kChunkSteps
-// steps are formatted into chunks on options.threads threads and written in order.
+// steps are formatted into chunks on options.threads threads and written in order by the thread
+// that finishes the next one (BatchPipeline).
 void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_name,
                 const McapOptions& options, const ReplayResult* replay, McapSummary* summary) {
   const LogHeader& header = reader.header();
@@ -752,8 +774,7 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
   };
   const unsigned threads =
       options.threads != 0 ? options.threads : std::max(1U, std::thread::hardware_concurrency());
-  BatchPipeline pipeline(threads, format);
-  const auto write = [&](Batch& b) { w.write_chunk(b.chunk); };
+  BatchPipeline pipeline(threads, format, [&](Batch& b) { w.write_chunk(b.chunk); });
 
   // The trail: every stride-th pose (at most kTrailPoses over the run, the first among them),
   // each formatted once, as a growing list; a /trail message every 1 % of the steps and at the
@@ -769,13 +790,13 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
   bool divergence_written = false;
   std::size_t n = 0;        // steps read
   std::uint64_t last_t = 0; // the last step's time
-  Batch* cur = &pipeline.take(write);
+  Batch* cur = &pipeline.take();
   Batch* full = nullptr; // a full batch, submitted once its last step knows whether it is the last
   StepIn* prev = nullptr;
   for (;;) {
     if (cur->n == kChunkSteps) {
       full = cur;
-      cur = &pipeline.take(write);
+      cur = &pipeline.take();
     }
     StepIn& s = cur->steps[cur->n];
     const bool got = reader.next(s.record);
@@ -819,7 +840,7 @@ void write_mcap(std::ostream& bytes, LogReader& reader, const std::string& log_n
     ++cur->n;
   }
   if (cur->n > 0) pipeline.submit(*cur);
-  pipeline.drain(0, write);
+  pipeline.finish();
 
   const auto& stop = reader.stop();
   const auto last_seq =
