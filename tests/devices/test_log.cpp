@@ -3,6 +3,7 @@
 // column, truncation at any byte of the last line, and the writer's per-record flush.
 #include <algorithm>
 #include <antkit/devices/log.hpp>
+#include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
 #include <fstream>
@@ -320,4 +321,39 @@ TEST_CASE("records_ahead counts the records next() will read", "[devices]") {
   CHECK(ahead(kHeader + "\n" + r0 + "\n" + r1) == 2);   // no newline after a whole last record
   for (std::size_t cut = 1; cut + 1 < r1.size(); ++cut) // the last record cut short
     CHECK(ahead(kHeader + "\n" + r0 + "\n" + r1.substr(0, cut)) == 1);
+}
+
+TEST_CASE("the fast reader's state hash: every byte at every digit, against the definition",
+          "[devices][log][property]") {
+  // A canonical line whose hash digits are each replaced, in turn, by every byte value: accepted
+  // exactly when the byte is a lower-case hex digit, then with the hash the 16 digits spell.
+  const std::string head =
+      R"({"step":0,"t_ns":5,"io":[["N\r","n,1\r\n",3]],"obs":[1],"cmd":[2],"odo":[3,4],"state":")";
+  const std::string digits = "0123456789abcdef";
+  std::string hash = "f0e1d2c3b4a59687";
+  std::size_t accepted = 0;
+  for (std::size_t at = 0; at < 16; ++at)
+    for (int b = 0; b < 256; ++b) {
+      std::string h = hash;
+      h[at] = static_cast<char>(b);
+      const std::string line = head + h + "\"}";
+      devices::LogRecord r;
+      const bool ok = devices::detail::read_canonical_step(line, r);
+      const bool hex = digits.find(static_cast<char>(b)) != std::string::npos;
+      INFO("digit " << at << ", byte " << b);
+      REQUIRE(ok == hex);
+      if (ok) {
+        ++accepted;
+        std::uint64_t want = 0;
+        for (const char c : h) want = want * 16 + digits.find(c);
+        REQUIRE(r.state == want);
+      }
+    }
+  CHECK(accepted == 16 * 16);
+  // Random hashes, round trip through the writer's text.
+  rc::prop("any hash", [&](std::uint64_t v) {
+    devices::LogRecord r;
+    RC_ASSERT(devices::detail::read_canonical_step(head + antkit::kernel::hash_hex(v) + "\"}", r));
+    RC_ASSERT(r.state == v);
+  });
 }
