@@ -1,6 +1,7 @@
 # ctest interop.mcap: antkit's MCAP files held against the official readers under node
 # (check_mcap.mjs: @mcap/core, @foxglove/schemas), from a committed recording (data/logs/):
-#   export mcap            the channels and counts, and the same bytes twice (no clock in them)
+#   export mcap            the channels and counts, and the same bytes twice (no clock in them);
+#                          a 5000-step log on one thread and on three, the same bytes
 #   replay --mcap          an identical replay: exit 0, recorded and replayed side by side
 #   replay --mcap (edited) cmd[1] of step 40 edited: exit 1, one ERROR log at step 40
 #   export mcap (bad log)  exit 2, a located error, no file
@@ -43,6 +44,14 @@ run(0 ${ANTKIT} export mcap ${log} --out ${OUT}/export.mcap)
 run(0 ${ANTKIT} export mcap ${log} --out ${OUT}/export2.mcap)
 run(0 ${CMAKE_COMMAND} -E compare_files ${OUT}/export.mcap ${OUT}/export2.mcap)
 run(0 ${check} ${OUT}/export.mcap /pose=120 /trail=60 /antkit/step=120 /antkit/io=120 /log=2
+    /arena=1)
+# 5000 steps (five chunks of 1024 steps and a part): formatted on one thread and on three, the
+# same bytes, every chunk read by the official reader; the trail every 50th step.
+run(0 ${NODE} ${CMAKE_CURRENT_LIST_DIR}/long_log.mjs ${log} ${OUT}/long.jsonl 5000)
+run(0 ${ANTKIT} export mcap ${OUT}/long.jsonl --out ${OUT}/long1.mcap --threads 1)
+run(0 ${ANTKIT} export mcap ${OUT}/long.jsonl --out ${OUT}/long3.mcap --threads 3)
+run(0 ${CMAKE_COMMAND} -E compare_files ${OUT}/long1.mcap ${OUT}/long3.mcap)
+run(0 ${check} ${OUT}/long3.mcap /pose=5000 /trail=100 /antkit/step=5000 /antkit/io=5000 /log=2
     /arena=1)
 run(0 ${ANTKIT} replay ${log} --mcap ${OUT}/replay.mcap)
 run(0 ${check} ${OUT}/replay.mcap /recorded/pose=120 /recorded/step=120 /recorded/io=120
