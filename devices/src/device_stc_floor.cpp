@@ -557,7 +557,7 @@ ReplayResult replay_log(LogReader& reader, const std::string& path,
   bool last_refused = false;
   return replay_records(
       reader, until,
-      [&](const LogRecord& r, std::vector<std::int64_t>& cmd) {
+      [&](const LogRecord& r, std::size_t line, std::vector<std::int64_t>& cmd) {
         std::optional<Divergence> d;
         if (auto bad = check_floor_io(r)) return bad;
         std::optional<bool> moved;
@@ -573,7 +573,7 @@ ReplayResult replay_log(LogReader& reader, const std::string& path,
         try {
           controller.step(r.obs, cmd);
         } catch (const kernel::InputError& e) {
-          throw kernel::InputError(path, reader.line(), 1, e.what());
+          throw kernel::InputError(path, line, 1, e.what());
         }
         if (compare_fields(r.cmd, cmd, r.step, "cmd", d) && controller.state_hash() != r.state &&
             !d)

@@ -12,6 +12,13 @@
 #include <antkit/devices/robot.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
+#include <array>
+#include <atomic>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <utility>
 
 namespace antkit::devices {
 
@@ -110,18 +117,143 @@ bool compare_fields(std::span<const std::int64_t> expected, std::span<const std:
   return true;
 }
 
+namespace {
+
+// The records of a log in order, each with the line it was read from: read on the calling thread,
+// or (`ahead`) by a second thread into batches while the caller checks the ones before. A record
+// handed out stays valid until the next call. The reader's error is rethrown at the record where
+// it was met, as the reader alone would throw it; the reader's state (stop(), truncated()) is
+// final once next() has returned null or thrown. The destructor stops and joins the thread.
+class RecordSource {
+public:
+  RecordSource(LogReader& reader, bool ahead) : reader_(reader), ahead_(ahead) {
+    if (ahead_) thread_ = std::thread([this] { produce(); });
+  }
+  ~RecordSource() {
+    if (!thread_.joinable()) return;
+    {
+      const std::lock_guard lock(m_);
+      stop_ = true;
+    }
+    cv_.notify_all();
+    thread_.join();
+  }
+  RecordSource(const RecordSource&) = delete;
+  RecordSource& operator=(const RecordSource&) = delete;
+
+  const LogRecord* next(std::size_t& line) {
+    if (done_) return nullptr;
+    if (!ahead_) {
+      if (!reader_.next(own_)) return nullptr;
+      line = reader_.line();
+      return &own_;
+    }
+    for (;;) {
+      Batch& b = ring_[at_];
+      if (!holding_) {
+        std::unique_lock lock(m_);
+        cv_.wait(lock, [&] { return b.full; });
+        holding_ = true;
+        pos_ = 0;
+      }
+      if (pos_ < b.n) {
+        line = b.lines[pos_];
+        return &b.records[pos_++];
+      }
+      if (b.last) {
+        thread_.join(); // the reader's state is the producer's last
+        done_ = true;
+        if (b.error) std::rethrow_exception(std::exchange(b.error, nullptr));
+        return nullptr;
+      }
+      {
+        const std::lock_guard lock(m_);
+        b.full = false;
+      }
+      cv_.notify_all();
+      holding_ = false;
+      at_ = (at_ + 1) % ring_.size();
+    }
+  }
+
+private:
+  static constexpr std::size_t kBatch = 256;
+  struct Batch {
+    std::vector<LogRecord> records = std::vector<LogRecord>(kBatch);
+    std::vector<std::size_t> lines = std::vector<std::size_t>(kBatch);
+    std::size_t n = 0;
+    bool full = false, last = false;
+    std::exception_ptr error;
+  };
+
+  void produce() {
+    for (std::size_t k = 0;; k = (k + 1) % ring_.size()) {
+      Batch& b = ring_[k];
+      {
+        std::unique_lock lock(m_);
+        cv_.wait(lock, [&] { return stop_ || !b.full; });
+        if (stop_) return;
+      }
+      b.n = 0;
+      try {
+        while (b.n < kBatch && !b.last) {
+          if (reader_.next(b.records[b.n]))
+            b.lines[b.n++] = reader_.line();
+          else
+            b.last = true;
+        }
+      } catch (...) {
+        b.error = std::current_exception();
+        b.last = true;
+      }
+      {
+        const std::lock_guard lock(m_);
+        b.full = true;
+      }
+      cv_.notify_all();
+      if (b.last) return;
+    }
+  }
+
+  LogReader& reader_;
+  bool ahead_, done_ = false;
+  LogRecord own_;                // the record read here (no thread)
+  std::array<Batch, 4> ring_;    // filled by the producer in turn, taken in turn
+  std::size_t at_ = 0, pos_ = 0; // the consumer's batch and its next record
+  bool holding_ = false;         // the consumer holds ring_[at_] (it is full)
+  std::mutex m_;                 // guards each batch's `full` and stop_
+  std::condition_variable cv_;
+  bool stop_ = false;
+  std::thread thread_;
+};
+
+std::atomic<detail::ReadAhead> read_ahead{detail::ReadAhead::Auto};
+
+} // namespace
+
+void detail::set_read_ahead(ReadAhead mode) noexcept {
+  read_ahead.store(mode, std::memory_order_relaxed);
+}
+
 ReplayResult replay_records(
     LogReader& reader, std::optional<std::int64_t> until,
-    const std::function<std::optional<Divergence>(const LogRecord& r,
+    const std::function<std::optional<Divergence>(const LogRecord& r, std::size_t line,
                                                   std::vector<std::int64_t>& cmd)>& check,
     const std::function<std::optional<Divergence>(const LogStop& stop)>& check_stop) {
   ReplayResult out;
   out.header = reader.header();
   RunHash run;
-  LogRecord r;
   std::vector<std::int64_t> cmd;
   std::int64_t last_t = 0;
-  while ((!until || out.steps < *until) && reader.next(r)) {
+  // Read ahead only for the whole log: with `until` the reader must stop where the replay does.
+  const auto mode = read_ahead.load(std::memory_order_relaxed);
+  RecordSource source(
+      reader, !until && mode != detail::ReadAhead::Never &&
+                  (mode == detail::ReadAhead::Always || std::thread::hardware_concurrency() > 1));
+  std::size_t line = 0;
+  const LogRecord* next = nullptr;
+  while ((!until || out.steps < *until) && (next = source.next(line)) != nullptr) {
+    const LogRecord& r = *next;
     // Every device's times never decrease (the recording's steady clock): the records' and the
     // exchanges' (those that have one), each exchange no later than its step's end.
     auto d = r.time_ns < last_t ? std::optional<Divergence>(Divergence{
@@ -140,7 +272,7 @@ ReplayResult replay_records(
                        "a time below 2^55 ns (about a year: the longest run reckoned)"};
       last_t = std::max(last_t, t);
     }
-    if (!d) d = check(r, cmd);
+    if (!d) d = check(r, line, cmd);
     last_t = r.time_ns;
     if (d) {
       out.identical = false;
@@ -155,7 +287,7 @@ ReplayResult replay_records(
   // reader refuses after it ends the reading there.
   if (!out.identical && !until) {
     try {
-      while (reader.next(r)) {
+      while (source.next(line) != nullptr) {
       }
     } catch (const kernel::InputError&) {
     }

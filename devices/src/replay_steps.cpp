@@ -31,9 +31,10 @@ ReplayResult replay_controller_run(
   std::vector<Exchange> seen;
   return replay_records(
       reader, until,
-      [&](const LogRecord& r, std::vector<std::int64_t>& cmd) -> std::optional<Divergence> {
+      [&](const LogRecord& r, std::size_t line,
+          std::vector<std::int64_t>& cmd) -> std::optional<Divergence> {
         std::optional<Divergence> d;
-        body.check_record(r, path, reader.line());
+        body.check_record(r, path, line);
         link.load(r.io, r.step, "io");
         seen.clear();
         try {
@@ -47,7 +48,7 @@ ReplayResult replay_controller_run(
           try {
             controller->step(description, r.obs, cmd);
           } catch (const kernel::InputError& e) {
-            throw kernel::InputError(path, reader.line(), 1, e.what());
+            throw kernel::InputError(path, line, 1, e.what());
           }
           if (!compare_fields(r.cmd, cmd, r.step, "cmd", d)) return d;
           if (controller->state_hash() != r.state)

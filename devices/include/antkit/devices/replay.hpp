@@ -41,6 +41,7 @@ struct Divergence {
   std::string field;
   std::string expected; // what the log holds
   std::string actual;   // what the replay derived
+  friend bool operator==(const Divergence&, const Divergence&) = default;
 };
 
 struct ReplayResult {
@@ -52,17 +53,28 @@ struct ReplayResult {
   bool complete = false;       // the log ends with its stop record (nothing cut, nothing missing)
   std::uint64_t hash = 0;      // RunHash over the replayed steps (record()'s hash when identical)
   LogHeader header;
+  friend bool operator==(const ReplayResult&, const ReplayResult&) = default;
 };
 
 // The loop every robot's replay shares: reads the records before `until`, each one's t_ns no less
-// than the one before; check() compares one record with this build (filling cmd with the command it
-// computes) and returns the first difference, which ends the replay; the identical records are
-// folded into the run hash.
+// than the one before; check() compares one record (and the log line it was read from, for its
+// errors) with this build (filling cmd with the command it computes) and returns the first
+// difference, which ends the replay; the identical records are folded into the run hash. When the
+// whole log is asked for and the machine has a second hardware thread, the log is parsed there a
+// batch of records ahead of the checks (the same result, errors at the same record).
 // check_stop() then holds the stop record against the run, when every record replayed identically
 // and the whole log was asked for.
+namespace detail {
+// Whether replay_records() reads ahead on a second thread: Auto (the default) when the whole log is
+// asked for and the machine has two hardware threads or more; Never and Always (the whole log
+// still) for the tests that hold both ways to the same results and for the benchmark.
+enum class ReadAhead { Auto, Never, Always };
+void set_read_ahead(ReadAhead mode) noexcept;
+} // namespace detail
+
 ReplayResult replay_records(
     LogReader& reader, std::optional<std::int64_t> until,
-    const std::function<std::optional<Divergence>(const LogRecord& r,
+    const std::function<std::optional<Divergence>(const LogRecord& r, std::size_t line,
                                                   std::vector<std::int64_t>& cmd)>& check,
     const std::function<std::optional<Divergence>(const LogStop& stop)>& check_stop = {});
 
