@@ -157,20 +157,29 @@ public:
     p_ += v.size();
     return *this;
   }
+  // A literal: its length known here, so the copy is a few moves, not a call.
+  template <std::size_t N>
+  Text& lit(const char (&v)[N]) {
+    need(N - 1);
+    std::memcpy(p_, v, N - 1);
+    p_ += N - 1;
+    return *this;
+  }
   Text& ch(char c) {
     need(1);
     *p_++ = c;
     return *this;
   }
-  // Decimal, as std::to_chars writes it.
+  // Decimal, as std::to_chars writes it: the digits counted, then written from the last.
   Text& u64(std::uint64_t v) {
     need(20);
     if (v < 10) {
       *p_++ = static_cast<char>('0' + v);
       return *this;
     }
-    std::array<char, 20> b{};
-    char* q = b.data() + b.size();
+    std::size_t n = 1;
+    for (std::uint64_t t = 10; n < 20 && v >= t; t *= 10) ++n;
+    char* q = p_ + n;
     while (v >= 100) {
       const auto r = static_cast<std::size_t>(v % 100);
       v /= 100;
@@ -183,8 +192,6 @@ public:
     } else {
       *--q = static_cast<char>('0' + v);
     }
-    const auto n = static_cast<std::size_t>(b.data() + b.size() - q);
-    std::memcpy(p_, q, n);
     p_ += n;
     return *this;
   }

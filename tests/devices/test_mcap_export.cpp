@@ -12,14 +12,18 @@
 #include <antkit/devices/replay.hpp>
 #include <antkit/devices/robot.hpp>
 #include <antkit/geometry/arena_spec.hpp>
+#include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <rapidcheck.h>
+#include <rapidcheck/catch.h>
 #include <sstream>
 
 namespace devices = antkit::devices;
@@ -326,4 +330,58 @@ TEST_CASE("export mcap: the same bytes on any number of threads, the trail growi
     CHECK_THROWS_WITH(devices::export_mcap(log, out, o), Catch::Contains("long.jsonl:3002:"));
     CHECK(!std::filesystem::exists(out));
   }
+}
+
+TEST_CASE("export mcap: any records' numbers and bytes read back from the JSON", "[property]") {
+  // Records of arbitrary integers (64-bit extremes among them), times and exchanged bytes: the
+  // /antkit/step and /antkit/io messages hold exactly what the log holds.
+  rc::prop("round trip", [] {
+    const auto ints = rc::gen::container<std::vector<std::int64_t>>(
+        rc::gen::oneOf(rc::gen::arbitrary<std::int64_t>(),
+                       rc::gen::element(std::numeric_limits<std::int64_t>::min(),
+                                        std::numeric_limits<std::int64_t>::max(), std::int64_t{0},
+                                        std::int64_t{9}, std::int64_t{10}, std::int64_t{-10})));
+    const auto count = *rc::gen::inRange<std::size_t>(1, 40);
+    std::string log = R"({"schema":2,"antkit":"0","robot":"nobody","port":{"path":"p","baud":1,)"
+                      R"("framing":"8N1"},"controller":{"name":"c","params":{}},"seed":1})"
+                      "\n";
+    std::vector<devices::LogRecord> records(count);
+    std::int64_t t = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      auto& r = records[i];
+      r.step = static_cast<std::int64_t>(i);
+      t += *rc::gen::inRange<std::int64_t>(0, std::int64_t{1} << 40);
+      r.time_ns = t;
+      r.obs = *ints;
+      r.cmd = *ints;
+      r.odo = *ints;
+      r.state = *rc::gen::arbitrary<std::uint64_t>();
+      r.io = {{*rc::gen::arbitrary<std::string>(), *rc::gen::arbitrary<std::string>(),
+               *rc::gen::element<std::int64_t>(-1, 0, t)}};
+      log += devices::format_record(r) + "\n";
+    }
+    devices::LogReader reader("prop.jsonl", log);
+    devices::McapOptions o;
+    o.threads = 1;
+    const auto f = reader::read(devices::mcap_of_log(reader, "prop.jsonl", o));
+    const auto steps = messages_on(f, "/antkit/step");
+    const auto io = messages_on(f, "/antkit/io");
+    RC_ASSERT(steps.size() == count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto& r = records[i];
+      RC_ASSERT(steps[i]["obs"].get<std::vector<std::int64_t>>() == r.obs);
+      RC_ASSERT(steps[i]["cmd"].get<std::vector<std::int64_t>>() == r.cmd);
+      RC_ASSERT(steps[i]["odo"].get<std::vector<std::int64_t>>() == r.odo);
+      RC_ASSERT(steps[i]["state"].get<std::string>() == antkit::kernel::hash_hex(r.state));
+      RC_ASSERT(steps[i]["timestamp"]["sec"].get<std::int64_t>() * 1'000'000'000 +
+                    steps[i]["timestamp"]["nsec"].get<std::int64_t>() ==
+                r.time_ns);
+      RC_ASSERT(io[i]["io"][0]["sent"].get<std::string>() == devices::base64(r.io[0].sent));
+      RC_ASSERT(io[i]["io"][0]["received"].get<std::string>() == devices::base64(r.io[0].received));
+      if (r.io[0].t_ns < 0)
+        RC_ASSERT(io[i]["io"][0]["t_ns"].is_null());
+      else
+        RC_ASSERT(io[i]["io"][0]["t_ns"].get<std::int64_t>() == r.io[0].t_ns);
+    }
+  });
 }
