@@ -8,14 +8,19 @@
 namespace antkit::devices {
 
 namespace {
-volatile std::sig_atomic_t g_signal = 0;
+// Set by the handler, read by the run's loop: a lock-free atomic, since the handler may run on
+// any thread that does not block the signal (a volatile sig_atomic_t serves only the thread the
+// handler interrupts; ThreadSanitizer found the race with the signal raised from another thread).
+// Lock-free atomics are safe in a signal handler (C++17 [support.signal]).
+std::atomic<int> g_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 std::atomic<int> g_installs{0};
 constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
 struct sigaction g_old[std::size(kStopSignals)];
 struct sigaction g_old_pipe;
 
 extern "C" void on_stop_signal(int sig) {
-  g_signal = sig;
+  g_signal.store(sig);
 }
 } // namespace
 
@@ -43,15 +48,15 @@ void StopSignals::uninstall() {
 }
 
 bool StopSignals::requested() noexcept {
-  return g_signal != 0;
+  return g_signal.load() != 0;
 }
 
 int StopSignals::signal() noexcept {
-  return g_signal;
+  return g_signal.load();
 }
 
 void StopSignals::reset() noexcept {
-  g_signal = 0;
+  g_signal.store(0);
 }
 
 } // namespace antkit::devices
