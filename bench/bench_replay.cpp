@@ -1,72 +1,30 @@
 // Replay speed: steps per second of `antkit replay` on a Buffon log (issue 13's target: >= 1 M
 // steps/s, so that a day of robot logs replays in seconds; issue 46's: 2 M). The log is made in
-// process, without a tty: the Khepera emulator's firmware answers each command directly
-// (FirmwareEmulator::handle), the Buffon controller decides, and the records are what record()
-// would write (every exchange, the observation, the command, the odometry and the state hash, the
+// process, without a tty (devices::emulated_log: the Khepera emulator's firmware answers each
+// command directly, the Buffon controller decides, and the records are what record() would write:
+// every exchange, the observation, the command, the odometry and the state hash, the
 // identification's, the start's and the safe stop's exchanges).
 #include <antkit/devices/controllers.hpp>
-#include <antkit/devices/emulator.hpp>
+#include <antkit/devices/emulated_log.hpp>
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/mcap_export.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/geometry/arena_spec.hpp>
 #include <benchmark/benchmark.h>
 #include <filesystem>
+#include <fstream>
 #include <unistd.h>
 
 namespace {
 
 namespace devices = antkit::devices;
 
-// A Buffon visit of `steps` steps on an emulated Khepera, logged to `path`.
+// A Buffon visit of `steps` steps on an emulated Khepera, logged to `path` (emulated_log.hpp).
 void make_log(const std::string& path, std::int64_t steps) {
-  const auto robot = devices::RobotKind::Khepera;
-  devices::FirmwareEmulator emu(
-      robot, antkit::geometry::build_arena_spec("circle:d=100").arena.walls_fx());
-  const devices::Codec codec(robot);
   const auto spec = devices::make_spec("buffon", 1, {{"visit", 1}}, "bench");
-  auto controller = devices::make_controller(spec);
-  devices::LogHeader header;
-  header.antkit_version = "bench";
-  header.robot = "khepera";
-  header.port = "(in process)";
-  header.baud = codec.robot().line.baud;
-  header.framing = codec.robot().line.framing();
-  header.controller = spec.name;
-  header.params = spec.params;
-  header.seed = spec.seed;
-  devices::LogWriter log(path, header);
-  const auto exchange = [&](const std::string& command, std::vector<devices::Exchange>& io) {
-    std::string line = command;
-    while (!line.empty() && (line.back() == '\r' || line.back() == '\n')) line.pop_back();
-    io.push_back({command, emu.handle(line).bytes});
-    return io.back().received;
-  };
-  devices::LogRecord rec;
-  for (std::int64_t s = 0; s < steps; ++s) {
-    rec.io.clear();
-    if (s == 0) {
-      exchange(codec.version(), rec.io);          // record()'s identification at connect (schema 2)
-      exchange(codec.set_odometry(0, 0), rec.io); // its start: the counters to zero
-    }
-    const auto readings = *codec.decode_proximity(exchange(codec.read_proximity(), rec.io)).value;
-    controller->observe(codec.robot(), readings, rec.obs);
-    controller->step(codec.robot(), rec.obs, rec.cmd);
-    exchange(codec.set_speed(static_cast<std::int32_t>(rec.cmd[2]),
-                             static_cast<std::int32_t>(rec.cmd[3])),
-             rec.io);
-    const auto odo = *codec.decode_odometry(exchange(codec.read_odometry(), rec.io)).value;
-    rec.step = s;
-    rec.time_ns = s * 100000;
-    rec.odo.assign({odo.left, odo.right});
-    rec.state = controller->state_hash();
-    log.write(rec);
-  }
-  // record()'s safe stop: wheels to zero, LEDs off, the speeds read back.
-  devices::LogStop stop{steps, "done", {}};
-  for (const auto& command : codec.safe_stop()) exchange(command, stop.io);
-  exchange(codec.read_speed(), stop.io);
-  log.finish(stop);
+  std::ofstream(path, std::ios::binary) << devices::emulated_log(
+      devices::RobotKind::Khepera,
+      antkit::geometry::build_arena_spec("circle:d=100").arena.walls_fx(), spec, steps);
 }
 
 // The log, made once per process on first use and removed when the process ends (44 MB: every

@@ -6,7 +6,7 @@
 #include "emulated_robot.hpp"
 
 #include <antkit/devices/controllers.hpp>
-#include <antkit/devices/emulator.hpp>
+#include <antkit/devices/emulated_log.hpp>
 #include <antkit/devices/log.hpp>
 #include <antkit/devices/replay.hpp>
 #include <antkit/geometry/arena_spec.hpp>
@@ -23,59 +23,11 @@ using antkit::test::TempDir;
 
 namespace {
 
-// A Buffon visit of `steps` steps on the Khepera's firmware emulator, answered in process, logged
-// as record() logs it (bench/bench_replay.cpp makes its log the same way).
-std::string make_log(std::int64_t steps) {
-  const auto robot = devices::RobotKind::Khepera;
-  devices::FirmwareEmulator emu(robot,
-                                antkit::geometry::build_arena_spec("circle:d=30").arena.walls_fx());
-  const devices::Codec codec(robot);
-  const auto spec = devices::make_spec("buffon", 3, {{"visit", 1}}, "test");
-  auto controller = devices::make_controller(spec);
-  devices::LogHeader header;
-  header.antkit_version = "test";
-  header.robot = "khepera";
-  header.port = "(in process)";
-  header.baud = codec.robot().line.baud;
-  header.framing = codec.robot().line.framing();
-  header.controller = spec.name;
-  header.params = spec.params;
-  header.seed = spec.seed;
-  std::string text = devices::format_header(header) + "\n";
-  const auto exchange = [&](const std::string& command, std::vector<devices::Exchange>& io) {
-    std::string line = command;
-    while (!line.empty() && (line.back() == '\r' || line.back() == '\n')) line.pop_back();
-    io.push_back({command, emu.handle(line).bytes});
-    return io.back().received;
-  };
-  devices::LogRecord rec;
-  for (std::int64_t s = 0; s < steps; ++s) {
-    rec.io.clear();
-    if (s == 0) {
-      exchange(codec.version(), rec.io);
-      exchange(codec.set_odometry(0, 0), rec.io);
-    }
-    const auto readings = *codec.decode_proximity(exchange(codec.read_proximity(), rec.io)).value;
-    controller->observe(codec.robot(), readings, rec.obs);
-    controller->step(codec.robot(), rec.obs, rec.cmd);
-    exchange(codec.set_speed(static_cast<std::int32_t>(rec.cmd[2]),
-                             static_cast<std::int32_t>(rec.cmd[3])),
-             rec.io);
-    const auto odo = *codec.decode_odometry(exchange(codec.read_odometry(), rec.io)).value;
-    rec.step = s;
-    rec.time_ns = s * 100000;
-    rec.odo.assign({odo.left, odo.right});
-    rec.state = controller->state_hash();
-    text += devices::format_record(rec) + "\n";
-  }
-  devices::LogStop stop{steps, "done", {}};
-  for (const auto& command : codec.safe_stop()) exchange(command, stop.io);
-  exchange(codec.read_speed(), stop.io);
-  return text + devices::format_stop(stop) + "\n";
-}
-
 const std::string& long_log() {
-  static const std::string log = make_log(2000);
+  static const std::string log =
+      devices::emulated_log(devices::RobotKind::Khepera,
+                            antkit::geometry::build_arena_spec("circle:d=30").arena.walls_fx(),
+                            devices::make_spec("buffon", 3, {{"visit", 1}}, "test"), 2000);
   return log;
 }
 
