@@ -48,10 +48,14 @@ std::string channel_content(std::uint16_t id, std::uint16_t schema_id, std::stri
 } // namespace
 
 namespace {
+// The n low bytes of v, little-endian, at `at`.
+void store_le(char* at, std::uint64_t v, std::size_t n) noexcept {
+  for (std::size_t i = 0; i < n; ++i) at[i] = static_cast<char>((v >> (8 * i)) & 0xFFU);
+}
 template <std::size_t N>
 void put_le(std::string& out, std::uint64_t v) {
   std::array<char, N> b{};
-  for (std::size_t i = 0; i < N; ++i) b[i] = static_cast<char>((v >> (8 * i)) & 0xFFU);
+  store_le(b.data(), v, N);
   out.append(b.data(), N);
 }
 } // namespace
@@ -146,13 +150,10 @@ std::string& Chunk::begin_message(std::uint16_t channel_id, std::uint32_t sequen
   message_start_ = records_.size();
   std::array<char, 31> head{};
   head[0] = static_cast<char>(Op::Message);
-  const auto le = [&](std::size_t at, std::uint64_t v, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) head[at + i] = static_cast<char>((v >> (8 * i)) & 0xFFU);
-  };
-  le(9, channel_id, 2);
-  le(11, sequence, 4);
-  le(15, log_time, 8);
-  le(23, publish_time, 8);
+  store_le(head.data() + 9, channel_id, 2);
+  store_le(head.data() + 11, sequence, 4);
+  store_le(head.data() + 15, log_time, 8);
+  store_le(head.data() + 23, publish_time, 8);
   records_.append(head.data(), head.size());
   ++messages_;
   open_ = true;
@@ -162,9 +163,7 @@ std::string& Chunk::begin_message(std::uint16_t channel_id, std::uint32_t sequen
 void Chunk::end_message() {
   if (!open_) throw std::logic_error("mcap: end_message without begin_message");
   open_ = false;
-  const std::uint64_t length = records_.size() - message_start_ - 9;
-  for (std::size_t i = 0; i < 8; ++i)
-    records_[message_start_ + 1 + i] = static_cast<char>((length >> (8 * i)) & 0xFFU);
+  store_le(records_.data() + message_start_ + 1, records_.size() - message_start_ - 9, 8);
 }
 
 void Chunk::add(const Message& m) {
@@ -194,9 +193,11 @@ void Chunk::seal() {
     const std::size_t at = index_records_.size();
     index_records_.resize(at + entries.size() * 16);
     char* o = index_records_.data() + at;
-    for (const auto& [t, offset] : entries)
-      for (const std::uint64_t v : {t, offset})
-        for (std::size_t i = 0; i < 8; ++i) *o++ = static_cast<char>((v >> (8 * i)) & 0xFFU);
+    for (const auto& [t, offset] : entries) {
+      store_le(o, t, 8);
+      store_le(o + 8, offset, 8);
+      o += 16;
+    }
   }
   crc_ = crc32(records_);
   sealed_ = true;
@@ -229,7 +230,7 @@ std::string& Writer::begin_message(std::uint16_t channel_id, std::uint32_t seque
 
 void Writer::end_message() {
   chunk_.end_message();
-  if (chunk_.size() >= options_.chunk_size) close_chunk();
+  if (chunk_.size() >= options_.chunk_size) emit_chunk(chunk_);
 }
 
 void Writer::check_channels(const Chunk& chunk) const {
@@ -243,12 +244,8 @@ void Writer::write_chunk(Chunk& chunk) {
   if (finished_) throw std::logic_error("mcap: write after finish");
   if (chunk_.open_) throw std::logic_error("mcap: write_chunk before end_message");
   check_channels(chunk);
-  close_chunk();
+  emit_chunk(chunk_); // the open chunk first
   emit_chunk(chunk);
-}
-
-void Writer::close_chunk() {
-  emit_chunk(chunk_);
 }
 
 void Writer::emit_chunk(Chunk& c) {
@@ -309,7 +306,7 @@ std::vector<std::pair<std::string, std::uint64_t>> Writer::channel_counts() cons
 void Writer::finish() {
   if (finished_) throw std::logic_error("mcap: finish twice");
   if (chunk_.open_) throw std::logic_error("mcap: finish before end_message");
-  close_chunk();
+  emit_chunk(chunk_);
   std::string end;
   std::string dc;
   put_u32(dc, data_crc_);

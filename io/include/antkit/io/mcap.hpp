@@ -140,7 +140,6 @@ private:
   };
   void emit(std::string_view bytes); // to the file, counted and (before DataEnd) into the data CRC
   void emit(std::string_view bytes, std::uint32_t crc); // the same, its CRC-32 known
-  void close_chunk();
   void emit_chunk(Chunk& chunk); // seals it, writes it and its index, clears it
   void check_channels(const Chunk& chunk) const;
 
