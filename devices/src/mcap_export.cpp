@@ -327,11 +327,6 @@ void put_position(Text& out, const Pose& p) {
   out.lit(",\"y\":");
   put_fixed(out, p.y, p.decimals);
 }
-void put_pose(Text& out, const Pose& p) {
-  put_position(out, p);
-  out.lit(R"(,"z":0},"orientation":{"x":0,"y":0,"z":)").number(p.qz).lit(",\"w\":");
-  out.number(p.qw).lit("}}");
-}
 Pose pose_of(std::int64_t x, std::int64_t y, int decimals, kernel::Angle heading) {
   // The rotation by `heading` about z: (0, 0, sin h/2, cos h/2), by the kernel's sine; h in
   // (-pi, pi], so that w >= 0 (q and -q are the same rotation; this one is the usual spelling).
@@ -387,8 +382,8 @@ private:
   std::optional<DeadReckoning> dr_;
 };
 
-// put_pose, keeping the orientation's text while it repeats (a walk's heading holds between
-// turns): the same bytes, fewer numbers formatted.
+// A pose's JSON ({"position":{x,y,z},"orientation":{x,y,z,w}}), keeping the orientation's text
+// while it repeats (a walk's heading holds between turns): fewer numbers formatted.
 class PoseText {
 public:
   void put(Text& out, const Pose& p) {
@@ -512,7 +507,7 @@ std::string arena_message(const std::vector<kernel::FxSegment>& walls, double me
                   R"("pose":)";
   {
     Text text(m);
-    put_pose(text, Pose{});
+    PoseText().put(text, Pose{});
   }
   m += R"(,"thickness":2,"scale_invariant":true,"points":[)";
   const double unit = metres / 65536.0;
