@@ -37,6 +37,7 @@ using antkit::kernel::InputError;
 struct ReproduceCommand {
   bool quick = false, full = false, decide = false;
   std::string budget;
+  std::vector<std::string> unit_budget; // UNIT=TRIALS
   std::string only;
   std::int64_t threads = 2;
   std::uint64_t seed = 1;
@@ -92,6 +93,14 @@ void run(const ReproduceCommand& c) {
   o.decide = c.decide;
   if (!c.budget.empty() && !c.decide) throw InputError("--budget", "a budget is for --decide");
   parse_budget(c.budget, o);
+  for (const auto& text : c.unit_budget) {
+    const auto eq = text.find('=');
+    const std::string n = eq == std::string::npos ? "" : text.substr(eq + 1);
+    if (eq == 0 || n.empty() || n.size() > 7 || n.find_first_not_of("0123456789") != n.npos)
+      throw InputError("--unit-budget",
+                       "expected UNIT=TRIALS (buffon/figure14=400), not '" + text + "'");
+    o.unit_budget[text.substr(0, eq)] = std::stoll(n);
+  }
   if (!c.only.empty()) o.only = split(c.only);
   o.seed = c.seed;
   o.out = c.out;
@@ -110,8 +119,7 @@ void run(const ReproduceCommand& c) {
   ex::release_drawing_caches();
   if (c.decide)
     std::cerr << "reproduce: " << report.looks << " look(s); the last at " << report.budget_trials
-              << " trials per arena (rerun with --budget " << report.budget_trials
-              << " for the same bytes)\n";
+              << " trials per arena (rerun with " << report.rerun << " for the same bytes)\n";
   std::cerr << "reproduce: done in " << std::fixed << std::setprecision(1) << seconds() << " s ("
             << c.threads << " thread(s) x " << ranks << " rank(s)); report in "
             << (std::filesystem::path(c.out) / "README.md").string() << '\n'
@@ -148,6 +156,9 @@ void register_reproduce(CLI::App& app) {
   sub->add_option("--budget", c->budget,
                   "With --decide: paper 000's trials per arena at the last look (default 8 times "
                   "the first look's), or a duration such as 30m");
+  sub->add_option("--unit-budget", c->unit_budget,
+                  "With --decide, repeatable: UNIT=TRIALS, a unit (buffon/figure14, los, ...) "
+                  "runs no look past TRIALS (as --budget); a time budget's report names them");
   sub->add_option("--only", c->only, "Comma-separated: buffon, los, stc, uniform (default: all)");
   sub->add_option("--threads", c->threads, "Threads (default 2; per MPI rank)");
   sub->add_option("--seed", c->seed, "Seed of the keyed streams (default 1)");

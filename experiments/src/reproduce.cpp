@@ -60,8 +60,6 @@ int look_factor(int look) {
   return 1 << look;
 }
 inline constexpr int kMaxLooks = 20;
-// A claim whose estimate needs more than this many times its look's trials stops asking for them.
-inline constexpr double kFutile = 16;
 
 // How many times a look's trials would settle a claim, if every interval's half-width shrinks as
 // one over the square root of the trials and each undecided part ends on the side its figure is
@@ -103,11 +101,13 @@ double settling_ratio(const std::vector<Part>& parts) {
 class Settling {
 public:
   // Evaluates the claim at this look unless it is settled; returns whether it still asks for
-  // trials (unsettled, and its estimate within kFutile times this look's). When it asks, its
-  // undecided parts are added to `undecided` (what the next look must extend). A claim that
-  // stopped asking is evaluated again only when this look ran everything its undecided parts read
-  // (`fresh`: another claim asked for the same rows), so that its parts stay at one look's count;
-  // otherwise it keeps the look at which it stopped.
+  // trials (unsettled, with an estimate of the trials that would settle it: ratio()). When it
+  // asks, its undecided parts are added to `undecided` (what the next look must extend). A claim
+  // without an estimate (a figure on its threshold) stops asking; it is evaluated again only when
+  // this look ran everything its undecided parts read (`fresh`: another claim asked for the same
+  // rows), so that its parts stay at one look's count; otherwise it keeps the look at which it
+  // stopped. Whether a claim's trials are worth their time is the time budget's question
+  // (reproduce()), not this one's: an estimate from one look's intervals is rough.
   bool look(const ClaimSpec& spec, const ClaimInputs& inputs, std::uint64_t seed, int look,
             std::vector<Part>& undecided,
             const std::function<bool(const std::vector<Part>&)>& fresh) {
@@ -130,29 +130,33 @@ public:
     if (st.settled) return false;
     const double ratio = settling_ratio(parts);
     st.claim.needed = needed_text(ratio, look);
-    st.stopped = ratio > kFutile;
+    st.ratio = ratio;
+    st.stopped = !std::isfinite(ratio);
     if (st.stopped) return false;
     for (const auto& p : parts)
       if (p.verdict == Verdict::Inconclusive) undecided.push_back(p);
     return true;
   }
   [[nodiscard]] Claim claim(const std::string& id) const { return states_.at(id).claim; }
+  // Its last estimate: how many times its last look's trials would settle it.
+  [[nodiscard]] double ratio(const std::string& id) const { return states_.at(id).ratio; }
 
 private:
   static std::string needed_text(double ratio, int look) {
-    if (!std::isfinite(ratio)) return "no estimate: a figure sits on its threshold";
+    if (!std::isfinite(ratio))
+      return "no estimate: a figure sits on its threshold; it stopped asking for trials";
     if (ratio > 1e6) return "more than a million times these trials";
     char buf[128];
     std::snprintf(buf, sizeof buf,
                   "about %.0f times the first look's trials (%.1f times this look's)",
                   std::ceil(ratio * look_factor(look)), ratio);
-    return std::string(buf) +
-           (ratio > kFutile ? "; it stopped asking for trials (over 16 times)" : "");
+    return buf;
   }
 
   struct State {
     std::vector<Part> parts;
     Claim claim;
+    double ratio = 1;
     bool settled = false, stopped = false;
   };
   std::map<std::string, State> states_;
@@ -260,10 +264,14 @@ std::string decide_section(const std::vector<Claim>& claims, int looks, const Tr
        "of the others (rerun at the new count: seconds). After each look every claim still "
        "asking is evaluated again; a part whose interval decides it keeps that look's figure and "
        "verdict, and a claim is settled once its combined verdict is decided (holds, does not "
-       "hold or partly: none can change as more parts decide). A claim that would need more "
-       "than 16 times its look's trials (its estimate below) stops asking for them; it is "
-       "evaluated again only at a look that reran everything it reads for another claim. The "
-       "looks end when nothing asks, or when the next would pass the budget.\n\n"
+       "hold or partly: none can change as more parts decide). A claim with no estimate of the "
+       "trials it needs (a figure on its threshold) stops asking for them; it is evaluated "
+       "again only at a look that reran everything it reads for another claim. Within a budget "
+       "in trials every other claim asks until the budget. Within a time budget a unit (a "
+       "figure of paper 000, or another paper) stops when the trials its likeliest claim still "
+       "needs (its estimate below) would not fit in the time left, and when the next look does "
+       "not fit, its costliest runs stop first; the rerun line above names the units stopped so "
+       "(`--unit-budget`). The looks end when nothing asks, or at the budget.\n\n"
     << "The error across the repeated looks: alpha spending over an open-ended series of looks. "
        "Look k (from 0) evaluates at alpha_k = 0.05 / ((k + 1)(k + 2)) per claim (0.025, "
        "0.0083, 0.0042, 0.0025, ...), a part of a claim of m parts at 1 - alpha_k / m; the "
@@ -355,7 +363,36 @@ void validate(const ReproduceOptions& options) {
     throw InputError("--budget", "expected a duration from 1s to 30 days");
   if (options.budget_trials != 0 && options.budget_seconds != 0)
     throw InputError("--budget", "give a budget in trials or in time, not both");
+  if (!options.unit_budget.empty() && !options.decide)
+    throw InputError("--unit-budget", "a unit's budget is for --decide");
+  std::set<std::string> units; // of the papers that run
+  if (!options.unit_budget.empty())
+    for (const auto& e : papers())
+      if (options.only.empty() ||
+          std::find(options.only.begin(), options.only.end(), e.family) != options.only.end())
+        for (const auto& unit : e.make(options)->units()) units.insert(unit);
+  for (const auto& [unit, n] : options.unit_budget) {
+    if (units.count(unit) == 0) {
+      std::string names;
+      for (const auto& u : units) names += (names.empty() ? "" : ", ") + u;
+      throw InputError("--unit-budget",
+                       "'" + unit + "' is not a unit of the papers run (" + names + ")");
+    }
+    if (n < base || n > 100000)
+      throw InputError("--unit-budget", "expected " + std::to_string(base) +
+                                            " to 100000 trials per arena for '" + unit + "', not " +
+                                            std::to_string(n));
+  }
 }
+
+namespace {
+std::string unit_budget_flags(const ReproduceOptions& o) {
+  std::string s;
+  for (const auto& [unit, n] : o.unit_budget)
+    s += " --unit-budget " + unit + "=" + std::to_string(n);
+  return s;
+}
+} // namespace
 
 std::string reproduce_command(const ReproduceOptions& o, const std::vector<std::string>& only) {
   std::string s =
@@ -367,6 +404,7 @@ std::string reproduce_command(const ReproduceOptions& o, const std::vector<std::
   if (o.decide) {
     s += " --decide";
     if (o.budget_trials > 0) s += " --budget " + std::to_string(o.budget_trials);
+    s += unit_budget_flags(o);
   }
   s += " --seed " + std::to_string(o.seed);
   if (only.empty() || std::find(only.begin(), only.end(), "stc") != only.end())
@@ -424,6 +462,7 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
     for (const auto& p : ran) p.run->inputs(in);
     return in;
   };
+  std::map<std::string, std::int64_t> caps = o.unit_budget; // grows as a time budget stops units
   int last_look = 0;
   for (int look = 0; look < kMaxLooks; ++look) {
     const int factor = look_factor(look);
@@ -450,6 +489,7 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
     std::set<std::string> open;
     std::map<std::string, std::vector<Part>> undecided; // per open unit
     std::map<std::string, double> share;                // the next run's share of its last
+    std::map<std::string, double> need; // per open unit: its asking claims' least estimate
     if (runner.root()) {
       const ClaimInputs inputs = inputs_now();
       for (const auto& p : ran)
@@ -459,43 +499,82 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
             return p.run->fresh(unit, parts);
           };
           if (unit_look[unit] == look &&
-              settling.look(spec, inputs, o.seed, look, undecided[unit], fresh))
+              settling.look(spec, inputs, o.seed, look, undecided[unit], fresh)) {
             open.insert(unit);
+            const double r = settling.ratio(spec.id);
+            need[unit] = need.count(unit) > 0 ? std::min(need[unit], r) : r;
+          }
         }
       for (const auto& p : ran)
         for (const auto& unit : p.run->units())
           if (open.count(unit) > 0) share[unit] = p.run->narrow(unit, undecided[unit]);
     }
-    // The next look's budget: its trials within a trial budget; within a time budget, its time
-    // predicted from each unit's last: twice its time (paper 000's added trials are twice the
-    // last look's, a family's rerun is at twice the counts), times the share of the unit that
-    // the undecided parts still read (PaperRun::narrow), within what is left.
-    const bool next_fits = [&] {
-      if (look + 1 >= kMaxLooks || std::int64_t{base.buffon} * look_factor(look + 1) > 100000)
-        return false;
-      if (o.budget_seconds <= 0)
-        return std::int64_t{base.buffon} * look_factor(look + 1) <=
-               (o.budget_trials > 0 ? o.budget_trials : std::int64_t{8} * base.buffon);
-      const double spent =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - reproduce_started)
-              .count();
-      double next = 0;
-      for (const auto& unit : open) next += unit_cost[unit] * 2 * share[unit];
-      return spent + next <= o.budget_seconds;
-    }();
+    // The next look: the open units within the budget. A trial budget (and --unit-budget) bounds
+    // every unit's count. A time budget predicts each unit's next run from its last: twice its
+    // time (paper 000's added trials are twice the last look's, a family's rerun is at twice the
+    // counts) times the share the undecided parts still read (PaperRun::narrow). A unit stops
+    // when what its likeliest claim still needs (need(), from its intervals: at least its next
+    // run times that estimate less one, the runs doubling) cannot fit in the time left; then the
+    // costliest next runs stop until the look fits. A stopped unit keeps its last look's count,
+    // recorded in `caps` so that a rerun with the budget in trials gives the same bytes.
+    std::set<std::string> go;
+    const std::int64_t now_trials = std::int64_t{base.buffon} * look_factor(look);
+    const std::int64_t next_trials = std::int64_t{base.buffon} * look_factor(look + 1);
+    if (runner.root() && look + 1 < kMaxLooks && next_trials <= 100000) {
+      const std::int64_t budget = o.budget_trials > 0 ? o.budget_trials : 8 * base.buffon;
+      for (const auto& unit : open) {
+        const auto cap = caps.find(unit);
+        if ((o.budget_seconds > 0 || next_trials <= budget) &&
+            (cap == caps.end() || next_trials <= cap->second))
+          go.insert(unit);
+      }
+      if (o.budget_seconds > 0) {
+        const double left =
+            o.budget_seconds -
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - reproduce_started)
+                .count();
+        std::map<std::string, double> cost;
+        double total = 0;
+        for (auto it = go.begin(); it != go.end();) {
+          const double c = unit_cost[*it] * 2 * share[*it];
+          if (c * std::max(0.0, need[*it] - 1) > left) {
+            caps[*it] = now_trials;
+            it = go.erase(it);
+            continue;
+          }
+          cost[*it] = c;
+          total += c;
+          ++it;
+        }
+        while (total > left && !go.empty()) {
+          const auto costliest =
+              std::max_element(go.begin(), go.end(),
+                               [&](const auto& a, const auto& b) { return cost[a] < cost[b]; });
+          total -= cost[*costliest];
+          caps[*costliest] = now_trials;
+          go.erase(costliest);
+        }
+      }
+    }
     std::vector<std::pair<PaperRun*, std::string>> next;
     for (const auto& r : running)
-      if (runner.any(runner.root() && next_fits && open.count(r.second) > 0)) next.push_back(r);
+      if (runner.any(runner.root() && go.count(r.second) > 0)) next.push_back(r);
     running = std::move(next);
     if (running.empty()) break;
   }
   if (!runner.root()) return report;
 
-  // The options that reproduce this report: under --decide, the budget in trials the looks used.
+  // The options that reproduce this report: under --decide, the budget in trials the looks used
+  // and the units stopped before it.
   ReproduceOptions ro = o;
   if (o.decide) {
     ro.budget_trials = std::int64_t{base.buffon} * look_factor(last_look);
     ro.budget_seconds = 0;
+    ro.unit_budget.clear();
+    for (const auto& [unit, n] : caps)
+      if (n < ro.budget_trials) ro.unit_budget[unit] = n;
+    report.unit_budget = ro.unit_budget;
+    report.rerun = "--budget " + std::to_string(ro.budget_trials) + unit_budget_flags(ro);
   }
 
   // Each paper's files and report section (rank 0).
@@ -513,6 +592,10 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
       }
       Claim c = settling.claim(spec.id);
       c.trials = p.run->trials_text(scaled(base, look_factor(c.look)), look_factor(c.look));
+      const auto cap = ro.unit_budget.find(p.run->unit_of(spec));
+      if (c.verdict == Verdict::Inconclusive && cap != ro.unit_budget.end())
+        c.needed += "; the budget stopped " + cap->first + " at the look of " +
+                    std::to_string(cap->second) + " trials per arena";
       report.claims.push_back(std::move(c));
     }
 
@@ -641,6 +724,7 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
         {"looks", last_look + 1},
         {"factors", factors},
         {"budget_trials_per_arena", report.budget_trials},
+        {"unit_budget", report.unit_budget},
         {"alpha_per_look", alphas},
         {"per_part_level", "1 - alpha_k / m at look k for a claim of m parts with intervals"},
         {"method",

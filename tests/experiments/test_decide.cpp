@@ -15,6 +15,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -220,11 +221,74 @@ TEST_CASE("decide: a time budget's report is the report of the budget in trials 
   CHECK(timed.budget_trials % 20 == 0);
   auto again = decide_options(base / "trials");
   again.budget_trials = timed.budget_trials;
+  again.unit_budget = timed.unit_budget; // the units the time stopped before the last look
+  CHECK(timed.rerun.rfind("--budget " + std::to_string(timed.budget_trials), 0) == 0);
   fs::create_directories(again.out);
   const auto counted = ex::reproduce(again, runner);
   CHECK(counted.looks == timed.looks);
   CHECK(tree(base / "time") == tree(base / "trials"));
   fs::remove_all(base);
+}
+
+TEST_CASE("decide: a unit's budget stops it at its count, and the report names it for the rerun",
+          "[slow]") {
+  const fs::path base = scratch("unit");
+  antkit::algorithms::Runner runner;
+  runner.threads = 2;
+  auto o = decide_options(base / "capped");
+  o.only = {"los", "uniform"};
+  o.unit_budget = {{"uniform", 20}}; // the first look's count: paper 004 runs once
+  fs::create_directories(o.out);
+  const auto capped = ex::reproduce(o, runner);
+  const auto j = nlohmann::json::parse(tree(o.out).at("claims.json"));
+  const std::string command = j["command"];
+  std::set<std::string> ids004;
+  for (const auto& spec : ex::claims_004()) ids004.insert(spec.id);
+  REQUIRE(!ids004.empty());
+  bool uniform_open = false;
+  for (const auto& c : capped.claims) {
+    if (ids004.count(c.id) == 0) continue;
+    INFO(c.id);
+    CHECK(c.look == 0); // never past the unit's budget, whatever it asked for
+    if (c.verdict == ex::Verdict::Inconclusive) {
+      uniform_open = true;
+      if (capped.looks > 1)
+        CHECK(c.needed.find("the budget stopped uniform at the look of 20") != std::string::npos);
+    }
+  }
+  if (capped.looks > 1) {
+    // The rerun's options name the cap, and reproduce the bytes.
+    CHECK(capped.unit_budget == std::map<std::string, std::int64_t>{{"uniform", 20}});
+    CHECK(command.find("--unit-budget uniform=20") != std::string::npos);
+    CHECK(capped.rerun ==
+          "--budget " + std::to_string(capped.budget_trials) + " --unit-budget uniform=20");
+    CHECK(j["decide"]["unit_budget"]["uniform"] == 20);
+  }
+  INFO("paper 004 left open: " << uniform_open << ", looks " << capped.looks);
+  // Without the cap paper 004 may look again; the cap's units stay as the first look left them.
+  auto free = decide_options(base / "free");
+  free.only = o.only;
+  fs::create_directories(free.out);
+  const auto uncapped = ex::reproduce(free, runner);
+  for (std::size_t i = 0; i < capped.claims.size(); ++i)
+    if (ids004.count(capped.claims[i].id) > 0 && uncapped.claims[i].look == 0)
+      CHECK(capped.claims[i].verdict == uncapped.claims[i].verdict);
+  fs::remove_all(base);
+}
+
+TEST_CASE("decide: a unit's budget must name a unit the papers run, within the budget's range") {
+  auto o = decide_options("unused");
+  o.unit_budget = {{"buffon/figure14", 20}}; // paper 000 does not run under --only los
+  CHECK_THROWS_WITH(ex::validate(o),
+                    Catch::Contains("'buffon/figure14' is not a unit of the papers run (los)"));
+  o.unit_budget = {{"los", 10}}; // below the first look's 20
+  CHECK_THROWS_AS(ex::validate(o), antkit::kernel::InputError);
+  o.unit_budget = {{"los", 100001}};
+  CHECK_THROWS_AS(ex::validate(o), antkit::kernel::InputError);
+  o.unit_budget = {{"los", 40}};
+  o.decide = false;
+  o.budget_trials = 0;
+  CHECK_THROWS_WITH(ex::validate(o), Catch::Contains("for --decide"));
 }
 
 TEST_CASE("decide: budgets out of range are refused") {

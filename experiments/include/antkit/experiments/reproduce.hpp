@@ -46,6 +46,7 @@
 #include <antkit/experiments/verdict.hpp>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,11 @@ struct ReproduceOptions {
   bool decide = false;
   std::int64_t budget_trials = 0;
   double budget_seconds = 0;
+  // --unit-budget UNIT=N: a unit (PaperRun::units(), e.g. "buffon/figure14") runs no look past N
+  // (paper 000's trials per arena at that look, as the budget), though its claims still ask. A
+  // time budget stops a unit whose next runs it cannot afford; its report lists these caps, and a
+  // rerun with them and the budget in trials gives the same bytes.
+  std::map<std::string, std::int64_t> unit_budget;
 };
 
 // Trials per experiment at a scale.
@@ -129,6 +135,11 @@ struct ReproduceReport {
   // count without.
   int looks = 1;
   std::int64_t budget_trials = 0;
+  // --decide: the units the budget stopped before the last look, with the look's trials at which
+  // each stopped (ReproduceOptions::unit_budget of the rerun that gives the same bytes).
+  std::map<std::string, std::int64_t> unit_budget;
+  // --decide: the options that reproduce this report's bytes ("--budget N [--unit-budget U=N]").
+  std::string rerun;
   std::vector<Claim> claims;
   std::vector<ExperimentRecord> experiments;
   std::vector<std::filesystem::path> files; // written, relative to `out`
