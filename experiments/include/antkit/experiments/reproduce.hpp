@@ -24,8 +24,9 @@
 // --decide (issue 44): looks at 1, 2, 4, ... times those counts, each running only what a claim
 // still asks for, until every claim settles or the budget ends; alpha spent over an open-ended
 // series of looks (0.05 / ((k + 1)(k + 2)) at look k), so a budget (trials, or time converted look
-// by look) only says where the looks stop; the report states the trials of the last look, and a
-// rerun with that budget gives the same bytes. The error is shown by simulation (sequential.hpp).
+// by look) only says where the looks stop; the report states the trials of the last look and the
+// units a time budget stopped before it, and a rerun with those gives the same bytes. The error is
+// shown by simulation (sequential.hpp).
 //
 // The papers are registered entries (papers.hpp): reproduce() loops over them. The claims are
 // data too: one table per paper (experiments/src/claims_000.cpp, claims_001.cpp,
@@ -65,9 +66,10 @@ struct ReproduceOptions {
   // --decide (issue 44): looks at 1, 2, 4, ... times the scale's trial counts, each deciding what
   // it can, until every claim is settled or the budget is spent. The budget is paper 000's trials
   // per arena at the last look (the other families' counts grow by the same factors); 0: eight
-  // times the scale's. Or a time budget: the first look runs at the scale's counts, its time
-  // converts the budget into the looks that fit (the report states the trials, and a rerun with
-  // that trial budget gives the same bytes).
+  // times the scale's. Or a time budget: each look's units' times predict the next look's, and a
+  // unit stops when its claims' estimated need or its next run does not fit in the time left (the
+  // report states the trials and the units stopped, and a rerun with that trial budget and those
+  // unit budgets gives the same bytes).
   bool decide = false;
   std::int64_t budget_trials = 0;
   double budget_seconds = 0;
