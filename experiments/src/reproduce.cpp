@@ -515,8 +515,9 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
     // counts) times the share the undecided parts still read (PaperRun::narrow). A unit stops
     // when what its likeliest claim still needs (need(), from its intervals: at least its next
     // run times that estimate less one, the runs doubling) cannot fit in the time left; then the
-    // costliest next runs stop until the look fits. A stopped unit keeps its last look's count,
-    // recorded in `caps` so that a rerun with the budget in trials gives the same bytes.
+    // costliest next runs stop until the look fits (fit_next_look, sequential.hpp). A stopped unit
+    // keeps its last look's count, recorded in `caps` so that a rerun with the budget in trials
+    // gives the same bytes.
     std::set<std::string> go;
     const std::int64_t now_trials = std::int64_t{base.buffon} * look_factor(look);
     const std::int64_t next_trials = std::int64_t{base.buffon} * look_factor(look + 1);
@@ -533,27 +534,13 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
             o.budget_seconds -
             std::chrono::duration<double>(std::chrono::steady_clock::now() - reproduce_started)
                 .count();
-        std::map<std::string, double> cost;
-        double total = 0;
-        for (auto it = go.begin(); it != go.end();) {
-          const double c = unit_cost[*it] * 2 * share[*it];
-          if (c * std::max(0.0, need[*it] - 1) > left) {
-            caps[*it] = now_trials;
-            it = go.erase(it);
-            continue;
-          }
-          cost[*it] = c;
-          total += c;
-          ++it;
-        }
-        while (total > left && !go.empty()) {
-          const auto costliest =
-              std::max_element(go.begin(), go.end(),
-                               [&](const auto& a, const auto& b) { return cost[a] < cost[b]; });
-          total -= cost[*costliest];
-          caps[*costliest] = now_trials;
-          go.erase(costliest);
-        }
+        std::vector<UnitForecast> forecasts;
+        for (const auto& unit : go)
+          forecasts.push_back({unit, unit_cost[unit] * 2 * share[unit], need[unit]});
+        const auto kept = fit_next_look(std::move(forecasts), left);
+        for (const auto& unit : go)
+          if (std::find(kept.begin(), kept.end(), unit) == kept.end()) caps[unit] = now_trials;
+        go = std::set<std::string>(kept.begin(), kept.end());
       }
     }
     std::vector<std::pair<PaperRun*, std::string>> next;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <antkit/algorithms/units.hpp>
 #include <antkit/experiments/sequential.hpp>
 #include <antkit/kernel/random.hpp>
@@ -54,6 +55,27 @@ SequentialSimulation simulate_sequential(SequentialSimulation s, unsigned thread
           ? clopper_pearson(s.false_verdicts, static_cast<std::uint64_t>(s.replications), 0.95)
           : Interval{0, 1};
   return s;
+}
+
+std::vector<std::string> fit_next_look(std::vector<UnitForecast> open, double left) {
+  std::sort(open.begin(), open.end(),
+            [](const UnitForecast& a, const UnitForecast& b) { return a.unit < b.unit; });
+  std::erase_if(open, [left](const UnitForecast& u) {
+    return u.next_seconds * std::max(0.0, u.need - 1) > left;
+  });
+  double total = 0;
+  for (const auto& u : open) total += u.next_seconds;
+  while (total > left && !open.empty()) {
+    const auto costliest =
+        std::max_element(open.begin(), open.end(), [](const auto& a, const auto& b) {
+          return a.next_seconds < b.next_seconds;
+        });
+    total -= costliest->next_seconds;
+    open.erase(costliest);
+  }
+  std::vector<std::string> kept;
+  for (const auto& u : open) kept.push_back(u.unit);
+  return kept;
 }
 
 } // namespace antkit::experiments

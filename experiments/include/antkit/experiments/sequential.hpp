@@ -13,6 +13,8 @@
 // from kernel::Stream(seed, kSequentialExperiment, r), so the figures are the same on every run.
 #include <antkit/experiments/verdict.hpp>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace antkit::experiments {
 
@@ -21,6 +23,21 @@ inline constexpr std::uint64_t kSequentialExperiment = 44000;
 // --decide's alpha spending: look k (from 0) is spent alpha / ((k + 1)(k + 2)), a series that sums
 // to alpha over any number of looks (1/2, 1/6, 1/12, ... of it), so that no look count is planned.
 [[nodiscard]] double look_alpha(double alpha, int look);
+
+// --decide's time budget (reproduce.cpp): a unit (a figure of paper 000, or another paper) still
+// asked for after a look, with its next run's predicted time and its likeliest claim's estimate
+// (the times this look's trials that would settle it, >= 1).
+struct UnitForecast {
+  std::string unit;
+  double next_seconds = 0;
+  double need = 1;
+};
+
+// The units that run the next look within `left` seconds, in name order: a unit whose need cannot
+// fit (next_seconds x (need - 1) > left: the runs double, so settling costs at least that) stops;
+// then, while the others' next runs together exceed `left`, the costliest stops (of equal costs,
+// the first by name). The rest are kept.
+[[nodiscard]] std::vector<std::string> fit_next_look(std::vector<UnitForecast> open, double left);
 
 struct SequentialSimulation {
   double margin = 0;     // the truth's distance from the threshold, relative (see above)
