@@ -336,6 +336,19 @@ std::string decide_section(const std::vector<Claim>& claims, int looks, const Tr
   s << '\n';
   return s.str();
 }
+
+// Whether the options run paper `e` (--only, or every paper).
+bool runs(const ReproduceOptions& o, const PaperEntry& e) {
+  return o.only.empty() || std::find(o.only.begin(), o.only.end(), e.family) != o.only.end();
+}
+
+// The --unit-budget flags of the options, in unit order.
+std::string unit_budget_flags(const ReproduceOptions& o) {
+  std::string s;
+  for (const auto& [unit, n] : o.unit_budget)
+    s += " --unit-budget " + unit + "=" + std::to_string(n);
+  return s;
+}
 } // namespace
 
 Trials trials_of(Scale scale) {
@@ -368,8 +381,7 @@ void validate(const ReproduceOptions& options) {
   std::set<std::string> units; // of the papers that run
   if (!options.unit_budget.empty())
     for (const auto& e : papers())
-      if (options.only.empty() ||
-          std::find(options.only.begin(), options.only.end(), e.family) != options.only.end())
+      if (runs(options, e))
         for (const auto& unit : e.make(options)->units()) units.insert(unit);
   for (const auto& [unit, n] : options.unit_budget) {
     if (units.count(unit) == 0) {
@@ -384,15 +396,6 @@ void validate(const ReproduceOptions& options) {
                                             std::to_string(n));
   }
 }
-
-namespace {
-std::string unit_budget_flags(const ReproduceOptions& o) {
-  std::string s;
-  for (const auto& [unit, n] : o.unit_budget)
-    s += " --unit-budget " + unit + "=" + std::to_string(n);
-  return s;
-}
-} // namespace
 
 std::string reproduce_command(const ReproduceOptions& o, const std::vector<std::string>& only) {
   std::string s =
@@ -445,8 +448,7 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
   };
   std::vector<Paper> ran;
   for (const auto& e : papers())
-    if (o.only.empty() || std::find(o.only.begin(), o.only.end(), e.family) != o.only.end())
-      ran.push_back({&e, e.make(o)});
+    if (runs(o, e)) ran.push_back({&e, e.make(o)});
 
   // The looks (one without --decide): look k runs what still has a claim asking for trials, at
   // 2^k times the scale's counts (paper 000 figure by figure and within a figure only the arenas
@@ -523,11 +525,10 @@ ReproduceReport reproduce(const ReproduceOptions& o, const algorithms::Runner& r
     const std::int64_t next_trials = std::int64_t{base.buffon} * look_factor(look + 1);
     if (runner.root() && look + 1 < kMaxLooks && next_trials <= 100000) {
       const std::int64_t budget = o.budget_trials > 0 ? o.budget_trials : 8 * base.buffon;
+      const bool within_trials = o.budget_seconds > 0 || next_trials <= budget;
       for (const auto& unit : open) {
         const auto cap = caps.find(unit);
-        if ((o.budget_seconds > 0 || next_trials <= budget) &&
-            (cap == caps.end() || next_trials <= cap->second))
-          go.insert(unit);
+        if (within_trials && (cap == caps.end() || next_trials <= cap->second)) go.insert(unit);
       }
       if (o.budget_seconds > 0) {
         const double left =
