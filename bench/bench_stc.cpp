@@ -5,7 +5,9 @@
 #include <antkit/kernel/random.hpp>
 #include <antkit/stc/offline.hpp>
 #include <antkit/stc/world.hpp>
+#include <array>
 #include <benchmark/benchmark.h>
+#include <cstddef>
 #include <cstdint>
 #include <sys/resource.h>
 #include <vector>
@@ -239,6 +241,8 @@ void BM_StcOfflineTreeOnly(benchmark::State& state) {
     benchmark::DoNotOptimize(tree.cells());
   }
   state.SetItemsProcessed(subcells);
+  // The search's events: a descent into every cell but the root, and a return from it.
+  state.counters["events"] = static_cast<double>(2 * (subcells / 4 / state.iterations() - 1));
 }
 BENCHMARK(BM_StcOfflineTreeOnly)
     ->Arg(0)
@@ -246,6 +250,41 @@ BENCHMARK(BM_StcOfflineTreeOnly)
     ->ArgName("empty16384")
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
+
+// What bounds the search (issue 46): each of its events (a descent to a new cell or a return to
+// the parent; two per cell of the tree) waits for the one before it through a chain of dependent
+// operations: load the cell's byte, look the next direction up in a table with it, add that
+// direction's step to the cell's index, load the next cell's byte. No reordering overlaps two
+// links of such a chain. This is that chain alone, over one 4 KiB tile (so every load hits the
+// first-level cache) with no other work: items = links. Its time per link against
+// BM_StcOfflineTreeOnly's time per event (events = 2 x (cells - 1), its counter) is how close the
+// search runs to the chain's floor, measured in one run.
+void BM_StcSearchChainFloor(benchmark::State& state) {
+  constexpr std::size_t kTile = 4096;
+  std::vector<std::uint8_t> bytes(kTile);
+  std::vector<std::int16_t> table(256 * 4);
+  antkit::kernel::Stream stream(2026, 46, 0, 0, 0x636861696E); // "chain"
+  for (auto& b : bytes) b = static_cast<std::uint8_t>(stream.next_u32());
+  // Entries as the search's tables store them: 4 * step + direction, steps of one cell.
+  for (auto& e : table) {
+    const std::uint32_t d = stream.next_u32() & 3u;
+    constexpr std::array<int, 4> kStep{1, -64, -1, 64};
+    e = static_cast<std::int16_t>(4 * kStep[d] + static_cast<int>(d));
+  }
+  constexpr std::int64_t kLinks = std::int64_t{1} << 20;
+  std::size_t at = 0;
+  unsigned q = 0;
+  for (auto _ : state) {
+    for (std::int64_t k = 0; k < kLinks; ++k) {
+      const int e = table[static_cast<std::size_t>(bytes[at]) * 4 + q];
+      at = (at + static_cast<std::size_t>(static_cast<std::ptrdiff_t>(e >> 2))) & (kTile - 1);
+      q = static_cast<unsigned>(e) & 3u;
+    }
+    benchmark::DoNotOptimize(at);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * kLinks);
+}
+BENCHMARK(BM_StcSearchChainFloor);
 
 void BM_StcOfflineWalkOnly(benchmark::State& state) {
   const OccupancyGrid& map = state.range(0) == 0 ? map_4096() : map_16384();
