@@ -25,14 +25,22 @@ const Exchange& LoggedLink::expect(const std::string& sent, bool resend) {
 }
 
 void LoggedLink::resync(std::vector<Exchange>&) {
-  const std::string bytes = framing_.resync();
-  if (!bytes.empty()) (void)expect(bytes, false);
+  if (!resync_.empty()) (void)expect(resync_, false);
 }
 
-std::string LoggedLink::transact(const std::string& request, std::vector<Exchange>& io) {
-  const bool resyncs = !framing_.resync().empty();
+std::string LoggedLink::transact(const std::string& request, std::vector<Exchange>&) {
+  return std::string(reply_of(request));
+}
+
+std::string_view LoggedLink::transact_view(const std::string& request, std::vector<Exchange>&,
+                                           std::string&) {
+  return reply_of(request);
+}
+
+std::string_view LoggedLink::reply_of(const std::string& request) {
+  const bool resyncs = !resync_.empty();
   for (std::uint32_t attempt = 0;; ++attempt) {
-    if (attempt > 0 && resyncs) resync(io);
+    if (attempt > 0 && resyncs) (void)expect(resync_, false);
     // A resend follows its own failed attempt directly only where nothing resynchronises.
     const Exchange& e = expect(request, attempt > 0 && !resyncs);
     const std::size_t at = k_ - 1;
@@ -41,7 +49,7 @@ std::string LoggedLink::transact(const std::string& request, std::vector<Exchang
     if (framing_.reading_for(request) == Reading::Bytes) {
       // The reply's size exactly (fewer: the live link timed out; more: bytes after the reply).
       if (e.received.size() == framing_.reply_size(request) &&
-          framing_.classify(request, e.received).kind == ReplyKind::Reply)
+          kind_of(request, e.received) == ReplyKind::Reply)
         return e.received;
       continue;
     }
@@ -52,13 +60,13 @@ std::string LoggedLink::transact(const std::string& request, std::vector<Exchang
       if (nl == std::string_view::npos) break; // a partial line: the attempt timed out
       const std::string_view line = rest.substr(0, nl + 1);
       rest.remove_prefix(nl + 1);
-      const ReplyKind kind = framing_.classify(request, line).kind;
+      const ReplyKind kind = kind_of(request, line);
       if (kind == ReplyKind::Stale) continue;
       if (!rest.empty())
         throw Diverged{{step_, field_ + "[" + std::to_string(at) + "].received",
                         "'" + printable(e.received) + "'",
                         "nothing read after the line '" + printable(line) + "'"}};
-      if (kind == ReplyKind::Reply) return std::string(line);
+      if (kind == ReplyKind::Reply) return line;
       break; // a bad line: the live link resent
     }
   }

@@ -11,6 +11,7 @@
 #include <antkit/devices/replay.hpp>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace antkit::devices::detail {
@@ -23,7 +24,8 @@ struct Diverged {
 class LoggedLink final : public CommandLink {
 public:
   LoggedLink(const Framing& framing, LinkOptions options)
-      : framing_(framing), options_(std::move(options)) {}
+      : framing_(framing), line_framing_(dynamic_cast<const LineFraming*>(&framing)),
+        resync_(framing.resync()), options_(std::move(options)) {}
   void load(const std::vector<Exchange>& io, std::int64_t step, std::string field) {
     io_ = &io;
     k_ = 0;
@@ -45,12 +47,25 @@ public:
 
   // The exchanges are the log's: nothing is appended to `io`.
   std::string transact(const std::string& request, std::vector<Exchange>& io) override;
+  // The reply as a view of the log's own bytes (valid while the loaded exchanges are): no copy.
+  std::string_view transact_view(const std::string& request, std::vector<Exchange>& io,
+                                 std::string& reply) override;
   void resync(std::vector<Exchange>& io) override;
 
 private:
   // The next exchange that sent something (drained bytes skipped): it must have sent `sent`.
   const Exchange& expect(const std::string& sent, bool resend);
+  // transact(): the reply, in the loaded exchanges.
+  std::string_view reply_of(const std::string& request);
+  // framing_.classify(request, unit).kind; for the text robots classify_reply() itself, without
+  // the Verdict (its reason for a bad line is not used here).
+  [[nodiscard]] ReplyKind kind_of(const std::string& request, std::string_view unit) const {
+    if (line_framing_ != nullptr) return classify_reply(line_framing_->codec(), request, unit);
+    return framing_.classify(request, unit).kind;
+  }
   const Framing& framing_;
+  const LineFraming* line_framing_; // framing_, when it is the text robots' (else null)
+  std::string resync_;              // framing_.resync(): the same bytes every time
   LinkOptions options_;
   const std::vector<Exchange>* io_ = nullptr;
   std::size_t k_ = 0;

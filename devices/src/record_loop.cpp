@@ -84,7 +84,8 @@ Proximity Body::read_sensors(std::vector<Exchange>& io) {
     std::this_thread::sleep_until(next_read_);
     next_read_ = Clock::now() + period_;
   }
-  const std::string reply = link_.transact(codec_.read_proximity(), io);
+  std::string bytes; // a replay's link reads the reply in place (transact_view)
+  const std::string_view reply = link_.transact_view(codec_.read_proximity(), io, bytes);
   // The robot senses where the wheels took it by the time the read was sent.
   if (!robot_.has_odometry) reckon_until(link_.last_send_ns());
   return *codec_.decode_proximity(reply).value;
@@ -111,7 +112,8 @@ WheelTravel Body::odometry(std::vector<Exchange>& io) {
     return {static_cast<std::int64_t>(weighted_.left * um_per_s / den),
             static_cast<std::int64_t>(weighted_.right * um_per_s / den)};
   }
-  const std::string reply = link_.transact(codec_.read_odometry(), io);
+  std::string bytes;
+  const std::string_view reply = link_.transact_view(codec_.read_odometry(), io, bytes);
   const WheelPair w = *codec_.decode_odometry(reply).value;
   return {w.left - baseline_.left, w.right - baseline_.right};
 }

@@ -125,6 +125,13 @@ public:
   // Throws LinkError (Timeout after the last try; Disconnected; Interrupted). Every attempt is
   // appended to `io`, also when it throws.
   virtual std::string transact(const std::string& request, std::vector<Exchange>& io) = 0;
+  // transact(), its reply as a view: of `reply` (by default, where transact()'s string is moved),
+  // or of bytes the link holds until its next call (a replay's link: the log's own, not copied).
+  virtual std::string_view transact_view(const std::string& request, std::vector<Exchange>& io,
+                                         std::string& reply) {
+    reply = transact(request, io);
+    return reply;
+  }
   // The framing's resynchronisation on its own (see above; nothing when the framing has none):
   // the start's and the safe stop's first exchange where the robot's state is unknown.
   virtual void resync(std::vector<Exchange>& io) = 0;
