@@ -135,7 +135,7 @@ public:
       const std::lock_guard lock(m_);
       stop_ = true;
     }
-    cv_.notify_all();
+    producer_cv_.notify_all();
     thread_.join();
   }
   RecordSource(const RecordSource&) = delete;
@@ -152,7 +152,11 @@ public:
       Batch& b = ring_[at_];
       if (!holding_) {
         std::unique_lock lock(m_);
-        cv_.wait(lock, [&] { return b.full; });
+        if (!b.full) {
+          consumer_waiting_ = true;
+          consumer_cv_.wait(lock, [&] { return b.full; });
+          consumer_waiting_ = false;
+        }
         holding_ = true;
         pos_ = 0;
       }
@@ -166,11 +170,14 @@ public:
         if (b.error) std::rethrow_exception(std::exchange(b.error, nullptr));
         return nullptr;
       }
+      bool wake = false;
       {
         const std::lock_guard lock(m_);
         b.full = false;
+        ++free_;
+        wake = producer_waiting_ && free_ >= kRefill;
       }
-      cv_.notify_all();
+      if (wake) producer_cv_.notify_one();
       holding_ = false;
       at_ = (at_ + 1) % ring_.size();
     }
@@ -178,6 +185,10 @@ public:
 
 private:
   static constexpr std::size_t kBatch = 256;
+  static constexpr std::size_t kRing = 4;
+  // A producer that found the ring full sleeps until this many batches are free again: one wake
+  // for several batches (a wake is a system call on each side, and it was one per batch).
+  static constexpr std::size_t kRefill = kRing / 2;
   struct Batch {
     std::vector<LogRecord> records = std::vector<LogRecord>(kBatch);
     std::vector<std::size_t> lines = std::vector<std::size_t>(kBatch);
@@ -191,8 +202,13 @@ private:
       Batch& b = ring_[k];
       {
         std::unique_lock lock(m_);
-        cv_.wait(lock, [&] { return stop_ || !b.full; });
+        if (!stop_ && free_ == 0) {
+          producer_waiting_ = true;
+          producer_cv_.wait(lock, [&] { return stop_ || free_ >= kRefill; });
+          producer_waiting_ = false;
+        }
         if (stop_) return;
+        --free_; // batches are freed in the order they are filled: this one is free
       }
       b.n = 0;
       try {
@@ -206,23 +222,28 @@ private:
         b.error = std::current_exception();
         b.last = true;
       }
+      bool wake = false;
       {
         const std::lock_guard lock(m_);
         b.full = true;
+        wake = consumer_waiting_;
       }
-      cv_.notify_all();
+      if (wake) consumer_cv_.notify_one();
       if (b.last) return;
     }
   }
 
   LogReader& reader_;
   bool ahead_, done_ = false;
-  LogRecord own_;                // the record read here (no thread)
-  std::array<Batch, 4> ring_;    // filled by the producer in turn, taken in turn
-  std::size_t at_ = 0, pos_ = 0; // the consumer's batch and its next record
-  bool holding_ = false;         // the consumer holds ring_[at_] (it is full)
-  std::mutex m_;                 // guards each batch's `full` and stop_
-  std::condition_variable cv_;
+  LogRecord own_;                 // the record read here (no thread)
+  std::array<Batch, kRing> ring_; // filled by the producer in turn, taken in turn
+  std::size_t at_ = 0, pos_ = 0;  // the consumer's batch and its next record
+  bool holding_ = false;          // the consumer holds ring_[at_] (it is full)
+  std::mutex m_;                  // guards each batch's `full`, free_, the waiting flags, stop_
+  std::size_t free_ = kRing;      // batches neither full nor being filled
+  bool producer_waiting_ = false; // the producer sleeps on producer_cv_ (the ring was full)
+  bool consumer_waiting_ = false; // the consumer sleeps on consumer_cv_ (its batch not full)
+  std::condition_variable producer_cv_, consumer_cv_;
   bool stop_ = false;
   std::thread thread_;
 };
