@@ -374,15 +374,17 @@ class Canonical {
 public:
   Canonical(const char* begin, const char* end) noexcept : p_(begin), e_(end) {}
 
-  bool record(LogRecord& out, std::int64_t& step) {
+  bool record(LogRecord& out, std::int64_t& step) { return record_prefix(out, step) == e_; }
+  // The record at the start of the bytes: where it ends (the caller checks what follows), or null.
+  const char* record_prefix(LogRecord& out, std::int64_t& step) {
     std::int64_t time_ns = 0;
     if (!lit("{\"step\":") || !integer(step) || !lit(",\"t_ns\":") || !integer(time_ns) ||
         !lit(",\"io\":[") || !io(out.io) || !lit(",\"obs\":") || !ints(out.obs) ||
         !lit(",\"cmd\":") || !ints(out.cmd) || !lit(",\"odo\":") || !ints(out.odo) ||
-        !lit(",\"state\":\"") || !hex16(out.state) || !lit("\"}") || p_ != e_)
-      return false;
+        !lit(",\"state\":\"") || !hex16(out.state) || !lit("\"}"))
+      return nullptr;
     out.time_ns = time_ns;
-    return true;
+    return p_;
   }
 
 private:
@@ -430,30 +432,40 @@ private:
     }
   }
 
+  // Decoded byte by byte into a buffer on the stack, copied out once (a step record's strings are
+  // a few dozen bytes, an escape every few: appending run by run and escape by escape was a fifth
+  // of this reader's time). On false `out` holds a part, as before: the general reader rereads.
   bool string(std::string& out) {
     if (!lit("\"")) return false;
     out.clear();
+    char buf[128];
+    std::size_t n = 0;
     for (;;) {
-      const char* q = p_;
-      while (q < e_) {
-        const auto c = static_cast<unsigned char>(*q);
-        if (c < 0x20 || c >= 0x80 || c == '"' || c == '\\') break;
-        ++q;
+      if (n == sizeof buf) {
+        out.append(buf, n);
+        n = 0;
       }
-      out.append(p_, static_cast<std::size_t>(q - p_));
-      p_ = q;
       if (p_ == e_) return false;
-      if (*p_ == '"') return ++p_, true;
-      if (*p_ != '\\' || e_ - p_ < 2) return false;
-      if (const int c = simple_escape(p_[1]); c >= 0) {
-        out += static_cast<char>(c);
+      const auto c = static_cast<unsigned char>(*p_);
+      if (c >= 0x20 && c < 0x80 && c != '"' && c != '\\') {
+        buf[n++] = static_cast<char>(c);
+        ++p_;
+        continue;
+      }
+      if (c == '"') {
+        out.append(buf, n);
+        return ++p_, true;
+      }
+      if (c != '\\' || e_ - p_ < 2) return false;
+      if (const int x = simple_escape(p_[1]); x >= 0) {
+        buf[n++] = static_cast<char>(x);
         p_ += 2;
         continue;
       }
       if (p_[1] != 'u' || e_ - p_ < 6 || p_[2] != '0' || p_[3] != '0') return false;
       const int hi = hex_digit(p_[4]), lo = hex_digit(p_[5]);
       if (hi < 0 || lo < 0) return false;
-      out += static_cast<char>(hi * 16 + lo);
+      buf[n++] = static_cast<char>(hi * 16 + lo);
       p_ += 6;
     }
   }
@@ -818,6 +830,23 @@ std::size_t LogReader::records_ahead() const noexcept {
 }
 
 bool LogReader::next(LogRecord& out) {
+  // The fast path first, over the rest of the log: a record it reads whole ends at a newline or
+  // at the log's end, and holds no newline before (it accepts none, raw, anywhere), so that is its
+  // line; the scan for the newline (an eighth of this reader's time) is spared.
+  if (pos_ < data_.size() && !stop_) {
+    const char* const first = data_.data() + pos_;
+    const char* const last = data_.data() + data_.size();
+    std::int64_t step = 0;
+    Canonical c(first, last);
+    if (const char* end = c.record_prefix(out, step);
+        end != nullptr && (end == last || *end == '\n') && step == next_step_) {
+      pos_ = end == last ? data_.size() : static_cast<std::size_t>(end - data_.data()) + 1;
+      ++line_;
+      out.step = step;
+      ++next_step_;
+      return true;
+    }
+  }
   while (pos_ < data_.size()) {
     const auto nl = data_.find('\n', pos_);
     const bool last_cut = nl == std::string::npos;

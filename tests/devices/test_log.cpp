@@ -357,3 +357,66 @@ TEST_CASE("the fast reader's state hash: every byte at every digit, against the 
     RC_ASSERT(r.state == v);
   });
 }
+
+// The reader's fast path reads a record from where the last one ended, over the rest of the log,
+// and takes the line it read to end at the first newline after it (it accepts none inside a
+// record): held here on logs of several lines with bytes replaced, inserted or deleted, newlines
+// and carriage returns among them (lines split, joined, cut). Every record the reader hands out
+// must be what nlohmann-json reads from the line the reader says it read (reader.line()), and
+// those lines must come in order.
+TEST_CASE("the reader's records are its lines, whatever bytes the lines hold",
+          "[devices][property]") {
+  std::size_t records = 0, edited_logs_read = 0;
+  rc::prop("each record read is its line's, to nlohmann-json", [&] {
+    std::string text = kHeader + "\n";
+    for (std::int64_t step = 0; step < 4; ++step) {
+      devices::LogRecord r = record(step);
+      r.io[0].received = *rc::gen::element<std::string>("n,0,0,0,0,0,0,0,0\r\n", "", "\n", "\r\n");
+      text += devices::format_record(r) + "\n";
+    }
+    static const std::string kAlphabet = "\n\n\n\r 0123456789-\"\\{}[],:";
+    const auto edits = *rc::gen::inRange(0, 5);
+    for (int k = 0; k < edits; ++k) {
+      // Anywhere, or (the edits that tell) at a line's end: just before or after a newline.
+      auto at = *rc::gen::inRange<std::size_t>(kHeader.size() + 1, text.size() + 1);
+      if (const auto nl = text.find('\n', at); *rc::gen::inRange(0, 4) != 0 && nl != text.npos)
+        at = nl + 1 - *rc::gen::inRange<std::size_t>(0, 3);
+      const char c = kAlphabet[*rc::gen::inRange<std::size_t>(0, kAlphabet.size())];
+      switch (*rc::gen::inRange(0, 3)) {
+      case 0:
+        if (at < text.size()) text[at] = c;
+        break;
+      case 1:
+        text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), c);
+        break;
+      default:
+        if (at < text.size()) text.erase(at, 1);
+      }
+    }
+    std::vector<std::string> lines = {""}; // lines[1] is the header
+    for (std::size_t at = 0; at <= text.size();) {
+      const auto nl = std::min(text.find('\n', at), text.size());
+      lines.push_back(text.substr(at, nl - at));
+      at = nl + 1;
+    }
+    std::size_t last_line = 1;
+    bool any = false;
+    try {
+      devices::LogReader reader("m.jsonl", text);
+      for (devices::LogRecord r; reader.next(r);) {
+        RC_ASSERT(reader.line() > last_line);
+        last_line = reader.line();
+        RC_ASSERT(last_line < lines.size());
+        const auto theirs = antkit::test::record_by_json_library(lines[last_line]);
+        RC_ASSERT(theirs.has_value());
+        RC_ASSERT(*theirs == r);
+        ++records;
+        any = true;
+      }
+    } catch (const InputError&) {
+    }
+    if (any && edits > 0) ++edited_logs_read;
+  });
+  CHECK(records > 0);
+  CHECK(edited_logs_read > 0);
+}
