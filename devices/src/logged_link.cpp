@@ -37,6 +37,34 @@ std::string_view LoggedLink::transact_view(const std::string& request, std::vect
   return reply_of(request);
 }
 
+Attempt LoggedLink::read_attempt(const Exchange& e) const {
+  const std::string& request = e.sent;
+  const std::string_view bytes = e.received;
+  if (framing_.reading_for(request) == Reading::Bytes) {
+    // The reply's size exactly (fewer: the live link timed out; more: bytes after the reply).
+    if (bytes.size() == framing_.reply_size(request) &&
+        kind_of(request, bytes) == ReplyKind::Reply) {
+      return {Attempt::Kind::Reply, 0, bytes.size()};
+    }
+    return {};
+  }
+  // The attempt's bytes, line by line, as the live link read them.
+  std::size_t from = 0;
+  while (from < bytes.size()) {
+    const auto nl = bytes.find('\n', from);
+    if (nl == std::string_view::npos) break; // a partial line: the attempt timed out
+    const std::string_view line = bytes.substr(from, nl + 1 - from);
+    const std::size_t b = from;
+    from = nl + 1;
+    const ReplyKind kind = kind_of(request, line);
+    if (kind == ReplyKind::Stale) continue;
+    if (from < bytes.size()) return {Attempt::Kind::After, b, from};
+    if (kind == ReplyKind::Reply) return {Attempt::Kind::Reply, b, from};
+    break; // a bad line: the live link resent
+  }
+  return {};
+}
+
 std::string_view LoggedLink::reply_of(const std::string& request) {
   const bool resyncs = !resync_.empty();
   for (std::uint32_t attempt = 0;; ++attempt) {
@@ -46,29 +74,14 @@ std::string_view LoggedLink::reply_of(const std::string& request) {
     const std::size_t at = k_ - 1;
     ++sends_;
     last_send_ns_ = e.t_ns;
-    if (framing_.reading_for(request) == Reading::Bytes) {
-      // The reply's size exactly (fewer: the live link timed out; more: bytes after the reply).
-      if (e.received.size() == framing_.reply_size(request) &&
-          kind_of(request, e.received) == ReplyKind::Reply)
-        return e.received;
-      continue;
-    }
-    // The attempt's bytes, line by line, as the live link read them.
-    std::string_view rest = e.received;
-    while (!rest.empty()) {
-      const auto nl = rest.find('\n');
-      if (nl == std::string_view::npos) break; // a partial line: the attempt timed out
-      const std::string_view line = rest.substr(0, nl + 1);
-      rest.remove_prefix(nl + 1);
-      const ReplyKind kind = kind_of(request, line);
-      if (kind == ReplyKind::Stale) continue;
-      if (!rest.empty())
-        throw Diverged{{step_, field_ + "[" + std::to_string(at) + "].received",
-                        "'" + printable(e.received) + "'",
-                        "nothing read after the line '" + printable(line) + "'"}};
-      if (kind == ReplyKind::Reply) return line;
-      break; // a bad line: the live link resent
-    }
+    // e.sent is `request` (expect): its reading, ahead or now.
+    const Attempt a = at < attempts_.size() ? attempts_[at] : read_attempt(e);
+    const std::string_view unit = std::string_view(e.received).substr(a.begin, a.end - a.begin);
+    if (a.kind == Attempt::Kind::Reply) return unit;
+    if (a.kind == Attempt::Kind::After)
+      throw Diverged{{step_, field_ + "[" + std::to_string(at) + "].received",
+                      "'" + printable(e.received) + "'",
+                      "nothing read after the line '" + printable(unit) + "'"}};
   }
 }
 

@@ -10,6 +10,7 @@
 #include <antkit/devices/link.hpp>
 #include <antkit/devices/replay.hpp>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,17 +22,35 @@ struct Diverged {
   Divergence d;
 };
 
+// What one attempt's received bytes are to the live link (link.hpp) that sent the exchange's
+// `sent`: its reply (the unit [begin, end) of `received`), a fault (the live link sent again),
+// or bytes read after a reply line (a divergence; [begin, end) is that line). It follows from the
+// exchange alone, so a replay that reads ahead works it out on its reading thread.
+struct Attempt {
+  enum class Kind : std::uint8_t { Reply, Fault, After };
+  Kind kind = Kind::Fault;
+  std::size_t begin = 0, end = 0;
+  friend bool operator==(const Attempt&, const Attempt&) = default;
+};
+
 class LoggedLink final : public CommandLink {
 public:
   LoggedLink(const Framing& framing, LinkOptions options)
       : framing_(framing), line_framing_(dynamic_cast<const LineFraming*>(&framing)),
         resync_(framing.resync()), options_(std::move(options)) {}
-  void load(const std::vector<Exchange>& io, std::int64_t step, std::string field) {
+  // `attempts`: read_attempt() of each of io's exchanges, worked out ahead (a replay's reading
+  // thread), or empty (each is read here when it is reached).
+  void load(const std::vector<Exchange>& io, std::int64_t step, std::string field,
+            std::span<const Attempt> attempts = {}) {
     io_ = &io;
+    attempts_ = attempts.size() == io.size() ? attempts : std::span<const Attempt>();
     k_ = 0;
     step_ = step;
     field_ = std::move(field);
   }
+  // What `e` is as the attempt that sent e.sent (Attempt): the framing's reading of its bytes.
+  // Depends on the framing and `e` only, so it may run on another thread than the replay's.
+  [[nodiscard]] Attempt read_attempt(const Exchange& e) const;
   [[nodiscard]] std::size_t position() const noexcept { return k_; }
   [[nodiscard]] bool at_end() const noexcept { return k_ >= io_->size(); }
   // In the stop record the log may end in the middle of a request (the run ended there): that is
@@ -59,7 +78,7 @@ private:
   std::string_view reply_of(const std::string& request);
   // framing_.classify(request, unit).kind; for the text robots classify_reply() itself, without
   // the Verdict (its reason for a bad line is not used here).
-  [[nodiscard]] ReplyKind kind_of(const std::string& request, std::string_view unit) const {
+  [[nodiscard]] ReplyKind kind_of(std::string_view request, std::string_view unit) const {
     if (line_framing_ != nullptr) return classify_reply(line_framing_->codec(), request, unit);
     return framing_.classify(request, unit).kind;
   }
@@ -68,6 +87,7 @@ private:
   std::string resync_;              // framing_.resync(): the same bytes every time
   LinkOptions options_;
   const std::vector<Exchange>* io_ = nullptr;
+  std::span<const Attempt> attempts_; // io_'s, read ahead (empty: read here)
   std::size_t k_ = 0;
   std::int64_t step_ = 0;
   std::string field_;

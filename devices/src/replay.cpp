@@ -24,6 +24,7 @@ namespace antkit::devices {
 
 namespace {
 
+using detail::Attempt;
 using detail::LoggedLink;
 
 // The stop record against the run: its reason in the words stop_reason() writes, and its safe
@@ -126,7 +127,10 @@ namespace {
 // final once next() has returned null or thrown. The destructor stops and joins the thread.
 class RecordSource {
 public:
-  RecordSource(LogReader& reader, bool ahead) : reader_(reader), ahead_(ahead) {
+  // `link`: when reading ahead, each record's exchanges are also read as its attempts there
+  // (LoggedLink::read_attempt), for next() to hand out with the record.
+  RecordSource(LogReader& reader, bool ahead, const LoggedLink* link)
+      : reader_(reader), ahead_(ahead), link_(link) {
     if (ahead_) thread_ = std::thread([this] { produce(); });
   }
   ~RecordSource() {
@@ -141,7 +145,9 @@ public:
   RecordSource(const RecordSource&) = delete;
   RecordSource& operator=(const RecordSource&) = delete;
 
-  const LogRecord* next(std::size_t& line) {
+  // `attempts`: the record's attempts when read ahead (one per exchange), else empty.
+  const LogRecord* next(std::size_t& line, std::span<const Attempt>& attempts) {
+    attempts = {};
     if (done_) return nullptr;
     if (!ahead_) {
       if (!reader_.next(own_)) return nullptr;
@@ -154,7 +160,7 @@ public:
         std::unique_lock lock(m_);
         if (!b.full) {
           consumer_waiting_ = true;
-          consumer_cv_.wait(lock, [&] { return b.full; });
+          consumer_cv_.wait(lock, [&] { return b.full && (full_ >= kRefill || finished_); });
           consumer_waiting_ = false;
         }
         holding_ = true;
@@ -162,6 +168,8 @@ public:
       }
       if (pos_ < b.n) {
         line = b.lines[pos_];
+        attempts = std::span<const Attempt>(b.attempts)
+                       .subspan(b.attempts_at[pos_], b.attempts_at[pos_ + 1] - b.attempts_at[pos_]);
         return &b.records[pos_++];
       }
       if (b.last) {
@@ -174,6 +182,7 @@ public:
       {
         const std::lock_guard lock(m_);
         b.full = false;
+        --full_;
         ++free_;
         wake = producer_waiting_ && free_ >= kRefill;
       }
@@ -185,13 +194,18 @@ public:
 
 private:
   static constexpr std::size_t kBatch = 256;
-  static constexpr std::size_t kRing = 4;
-  // A producer that found the ring full sleeps until this many batches are free again: one wake
-  // for several batches (a wake is a system call on each side, and it was one per batch).
+  static constexpr std::size_t kRing = 8;
+  // A producer that found the ring full sleeps until this many batches are free again, and a
+  // consumer that found its batch not full until this many are full (or the last one is): a
+  // sleep for several batches, not one per batch (a wake costs a system call, and the woken
+  // thread, on a virtual machine, tens of microseconds before it runs).
   static constexpr std::size_t kRefill = kRing / 2;
   struct Batch {
     std::vector<LogRecord> records = std::vector<LogRecord>(kBatch);
     std::vector<std::size_t> lines = std::vector<std::size_t>(kBatch);
+    // Record i's attempts: attempts[attempts_at[i], attempts_at[i + 1]) (none without a link).
+    std::vector<Attempt> attempts;
+    std::vector<std::size_t> attempts_at = std::vector<std::size_t>(kBatch + 1);
     std::size_t n = 0;
     bool full = false, last = false;
     std::exception_ptr error;
@@ -211,11 +225,14 @@ private:
         --free_; // batches are freed in the order they are filled: this one is free
       }
       b.n = 0;
+      b.attempts.clear();
       try {
         while (b.n < kBatch && !b.last) {
-          if (reader_.next(b.records[b.n]))
-            b.lines[b.n++] = reader_.line();
-          else
+          if (reader_.next(b.records[b.n])) {
+            read_attempts(b.records[b.n], b.attempts);
+            b.lines[b.n] = reader_.line();
+            b.attempts_at[++b.n] = b.attempts.size();
+          } else
             b.last = true;
         }
       } catch (...) {
@@ -226,21 +243,39 @@ private:
       {
         const std::lock_guard lock(m_);
         b.full = true;
-        wake = consumer_waiting_;
+        ++full_;
+        finished_ = b.last;
+        wake = consumer_waiting_ && (full_ >= kRefill || finished_);
       }
       if (wake) consumer_cv_.notify_one();
       if (b.last) return;
     }
   }
 
+  // The record's attempts appended to `out` (none when there is no link, or when reading them
+  // failed: the check then reads them itself, and fails there as the reading alone would).
+  void read_attempts(const LogRecord& r, std::vector<Attempt>& out) const noexcept {
+    if (link_ == nullptr) return;
+    const std::size_t first = out.size();
+    try {
+      for (const Exchange& e : r.io)
+        out.push_back(e.sent.empty() ? Attempt{} : link_->read_attempt(e));
+    } catch (...) {
+      out.resize(first);
+    }
+  }
+
   LogReader& reader_;
   bool ahead_, done_ = false;
+  const LoggedLink* link_;
   LogRecord own_;                 // the record read here (no thread)
   std::array<Batch, kRing> ring_; // filled by the producer in turn, taken in turn
   std::size_t at_ = 0, pos_ = 0;  // the consumer's batch and its next record
   bool holding_ = false;          // the consumer holds ring_[at_] (it is full)
-  std::mutex m_;                  // guards each batch's `full`, free_, the waiting flags, stop_
+  std::mutex m_;                  // guards each batch's `full`, the counts, the flags, stop_
   std::size_t free_ = kRing;      // batches neither full nor being filled
+  std::size_t full_ = 0;          // batches full (filled, not yet released)
+  bool finished_ = false;         // the producer has filled its last batch
   bool producer_waiting_ = false; // the producer sleeps on producer_cv_ (the ring was full)
   bool consumer_waiting_ = false; // the consumer sleeps on consumer_cv_ (its batch not full)
   std::condition_variable producer_cv_, consumer_cv_;
@@ -261,6 +296,17 @@ ReplayResult replay_records(
     const std::function<std::optional<Divergence>(const LogRecord& r, std::size_t line,
                                                   std::vector<std::int64_t>& cmd)>& check,
     const std::function<std::optional<Divergence>(const LogStop& stop)>& check_stop) {
+  return detail::replay_records_with_attempts(
+      reader, until, nullptr,
+      [&](const LogRecord& r, std::size_t line, std::span<const Attempt>,
+          std::vector<std::int64_t>& cmd) { return check(r, line, cmd); },
+      check_stop);
+}
+
+ReplayResult detail::replay_records_with_attempts(
+    LogReader& reader, std::optional<std::int64_t> until, const LoggedLink* link,
+    const CheckRecord& check,
+    const std::function<std::optional<Divergence>(const LogStop& stop)>& check_stop) {
   ReplayResult out;
   out.header = reader.header();
   RunHash run;
@@ -269,11 +315,14 @@ ReplayResult replay_records(
   // Read ahead only for the whole log: with `until` the reader must stop where the replay does.
   const auto mode = read_ahead.load(std::memory_order_relaxed);
   RecordSource source(
-      reader, !until && mode != detail::ReadAhead::Never &&
-                  (mode == detail::ReadAhead::Always || std::thread::hardware_concurrency() > 1));
+      reader,
+      !until && mode != detail::ReadAhead::Never &&
+          (mode == detail::ReadAhead::Always || std::thread::hardware_concurrency() > 1),
+      link);
   std::size_t line = 0;
+  std::span<const Attempt> attempts;
   const LogRecord* next = nullptr;
-  while ((!until || out.steps < *until) && (next = source.next(line)) != nullptr) {
+  while ((!until || out.steps < *until) && (next = source.next(line, attempts)) != nullptr) {
     const LogRecord& r = *next;
     // Every device's times never decrease (the recording's steady clock): the records' and the
     // exchanges' (those that have one), each exchange no later than its step's end.
@@ -293,7 +342,7 @@ ReplayResult replay_records(
                        "a time below 2^55 ns (about a year: the longest run reckoned)"};
       last_t = std::max(last_t, t);
     }
-    if (!d) d = check(r, line, cmd);
+    if (!d) d = check(r, line, attempts, cmd);
     last_t = r.time_ns;
     if (d) {
       out.identical = false;
@@ -308,7 +357,7 @@ ReplayResult replay_records(
   // reader refuses after it ends the reading there.
   if (!out.identical && !until) {
     try {
-      while (source.next(line) != nullptr) {
+      while (source.next(line, attempts) != nullptr) {
       }
     } catch (const kernel::InputError&) {
     }

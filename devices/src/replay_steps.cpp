@@ -29,13 +29,13 @@ ReplayResult replay_controller_run(
   ReplayedBody& body = robot.body;
   std::vector<std::int64_t> obs;
   std::vector<Exchange> seen;
-  return replay_records(
-      reader, until,
-      [&](const LogRecord& r, std::size_t line,
+  return replay_records_with_attempts(
+      reader, until, &link,
+      [&](const LogRecord& r, std::size_t line, std::span<const Attempt> attempts,
           std::vector<std::int64_t>& cmd) -> std::optional<Divergence> {
         std::optional<Divergence> d;
         body.check_record(r, path, line);
-        link.load(r.io, r.step, "io");
+        link.load(r.io, r.step, "io", attempts);
         seen.clear();
         try {
           if (r.step == 0) {

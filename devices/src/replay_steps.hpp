@@ -48,6 +48,21 @@ struct ReplayedRobot {
   std::string wrong_robot_expected;
 };
 
+// A record's check (replay_records(), replay.hpp), with the record's attempts (LoggedLink::
+// read_attempt of each exchange) when they were read ahead, else empty.
+using CheckRecord = std::function<std::optional<Divergence>(const LogRecord& r, std::size_t line,
+                                                            std::span<const Attempt> attempts,
+                                                            std::vector<std::int64_t>& cmd)>;
+
+// replay_records() (replay.hpp), whose reading thread, when it reads ahead, also reads each
+// record's exchanges as `link` would (its read_attempt: a pure function of an exchange and the
+// framing) for check() to load them with: the same replay, its reply-side reading moved off the
+// checking thread. `link` null: none read ahead.
+ReplayResult replay_records_with_attempts(
+    LogReader& reader, std::optional<std::int64_t> until, const LoggedLink* link,
+    const CheckRecord& check,
+    const std::function<std::optional<Divergence>(const LogStop& stop)>& check_stop);
+
 // The log's controller rebuilt from its header (kernel::InputError(path, 1, 1, ...) when it cannot
 // be), then every record through replay_records(): at step 0 the identification (schema 2 and
 // later, log_schema.hpp) and the start; then the sensor read, the observation, the command, the

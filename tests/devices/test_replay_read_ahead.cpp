@@ -110,3 +110,75 @@ TEST_CASE("replay reads ahead to the same result: damaged logs", "[devices][repl
     RC_ASSERT(ahead == here);
   });
 }
+
+// Reading ahead also reads each record's exchanges as the replay's link does (LoggedLink::
+// read_attempt, on the reading thread): the attempts worked out there must be the ones the checking
+// thread works out itself, for exchanges damaged as a faulty line damages them: a reply replaced by
+// stale lines, junk, a cut or a bad line, bytes after the reply, a failed attempt and its resend, a
+// drain. Each damaged log replays to the same result (divergence and words) either way, and the
+// damage must reach both outcomes: replays that stay identical (a fault then its resend, stale
+// lines before the reply) and replays that diverge.
+TEST_CASE("replay reads ahead to the same result: damaged exchanges",
+          "[devices][replay][property]") {
+  TempDir dir;
+  const auto path = dir.file("exchanges.jsonl");
+  const std::string& log = long_log();
+  std::vector<std::size_t> starts; // each line's first byte
+  for (std::size_t at = 0; at < log.size(); at = log.find('\n', at) + 1) starts.push_back(at);
+  static const std::vector<std::string> kPieces = {"n,1,2,3,4,5,6,7,8\r\n",
+                                                   "d\r\n",
+                                                   "h,10,-20\r\n",
+                                                   "e,0,0\r\n",
+                                                   "z,Protocol error\r\n",
+                                                   "n,1,2\r\n",
+                                                   "h,1\r\n",
+                                                   "junk",
+                                                   "\r\n",
+                                                   "\n",
+                                                   "n,1,2,",
+                                                   "d\r",
+                                                   "h,99999999999,0\r\n",
+                                                   "\xff\n"};
+  std::size_t identical = 0, diverged = 0;
+  rc::prop("the same outcome read ahead and not", [&] {
+    std::string text = log;
+    // A step record after the first (the first holds the identification and the start).
+    const auto line = *rc::gen::inRange<std::size_t>(2, starts.size() - 2);
+    const std::size_t begin = starts[line], end = starts[line + 1] - 1;
+    devices::LogRecord r;
+    RC_ASSERT(devices::detail::read_canonical_step(text.substr(begin, end - begin), r));
+    RC_PRE(!r.io.empty());
+    const auto k = *rc::gen::inRange<std::size_t>(0, r.io.size());
+    std::string bytes = *rc::gen::element(std::string(), r.io[k].received);
+    const auto pieces = *rc::gen::inRange(0, 4);
+    for (int i = 0; i < pieces; ++i) {
+      const auto& piece = *rc::gen::elementOf(kPieces);
+      if (*rc::gen::arbitrary<bool>())
+        bytes = piece + bytes;
+      else
+        bytes += piece;
+    }
+    switch (*rc::gen::inRange(0, 3)) {
+    case 0: // the attempt's bytes damaged
+      r.io[k].received = bytes;
+      break;
+    case 1: // a failed attempt before it, with those bytes: then the resend
+      r.io.insert(r.io.begin() + static_cast<std::ptrdiff_t>(k),
+                  devices::Exchange{r.io[k].sent, bytes, r.io[k].t_ns});
+      break;
+    default: // a drain before it
+      r.io.insert(r.io.begin() + static_cast<std::ptrdiff_t>(k),
+                  devices::Exchange{"", bytes, r.io[k].t_ns});
+    }
+    text.replace(begin, end - begin, devices::format_record(r));
+    write(path, text);
+    const auto ahead = replay_with(path, devices::detail::ReadAhead::Always);
+    const auto here = replay_with(path, devices::detail::ReadAhead::Never);
+    RC_LOG() << describe(ahead) << " / " << describe(here) << "\n";
+    RC_ASSERT(ahead == here);
+    if (const auto* result = std::get_if<devices::ReplayResult>(&here))
+      ++(result->identical ? identical : diverged);
+  });
+  CHECK(identical > 0);
+  CHECK(diverged > 0);
+}
