@@ -65,19 +65,16 @@ char lower(char c) {
   return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
 }
 
-// The letter, each value after a comma, the terminator: written in place (a replay builds three
-// commands a step, and their temporaries were a tenth of its reply-side time).
+// The letter, each value after a comma, the terminator: each value by to_chars, with no string
+// of its own (a replay builds three commands a step; their temporaries were a tenth of its
+// reply-side time), whatever the count of values.
 std::string command(const RobotDescription& r, char letter, std::initializer_list<std::int32_t> v) {
-  char buf[64];
-  char* p = buf;
-  *p++ = letter;
+  std::string s(1, letter);
   for (const auto x : v) {
-    *p++ = ',';
-    p = std::to_chars(p, buf + sizeof buf, x).ptr; // 12 bytes at most: never short
+    char digits[12]; // "-2147483648": 11
+    s += ',';
+    s.append(digits, std::to_chars(digits, digits + sizeof digits, x).ptr);
   }
-  std::string s;
-  s.reserve(static_cast<std::size_t>(p - buf) + r.terminator.size());
-  s.append(buf, p);
   s += r.terminator;
   return s;
 }
