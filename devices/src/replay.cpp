@@ -127,10 +127,12 @@ namespace {
 // final once next() has returned null or thrown. The destructor stops and joins the thread.
 class RecordSource {
 public:
-  // `link`: when reading ahead, each record's exchanges are also read as its attempts there
-  // (LoggedLink::read_attempt), for next() to hand out with the record.
-  RecordSource(LogReader& reader, bool ahead, const LoggedLink* link)
-      : reader_(reader), ahead_(ahead), link_(link) {
+  // `link`: when reading ahead, the records' exchanges are also read as their attempts there
+  // (LoggedLink::read_attempt), for next() to hand out with each record: every record's when
+  // `every_attempt`, else those of the batches read while the ring is at least half full (the
+  // reading thread is ahead: the checks, not the reading, are what the replay waits for).
+  RecordSource(LogReader& reader, bool ahead, const LoggedLink* link, bool every_attempt)
+      : reader_(reader), ahead_(ahead), every_attempt_(every_attempt), link_(link) {
     if (ahead_) thread_ = std::thread([this] { produce(); });
   }
   ~RecordSource() {
@@ -214,6 +216,7 @@ private:
   void produce() {
     for (std::size_t k = 0;; k = (k + 1) % ring_.size()) {
       Batch& b = ring_[k];
+      bool attempts = false; // this batch's attempts are read here
       {
         std::unique_lock lock(m_);
         if (!stop_ && free_ == 0) {
@@ -223,13 +226,14 @@ private:
         }
         if (stop_) return;
         --free_; // batches are freed in the order they are filled: this one is free
+        attempts = link_ != nullptr && (every_attempt_ || full_ >= kRefill);
       }
       b.n = 0;
       b.attempts.clear();
       try {
         while (b.n < kBatch && !b.last) {
           if (reader_.next(b.records[b.n])) {
-            read_attempts(b.records[b.n], b.attempts);
+            if (attempts) read_attempts(b.records[b.n], b.attempts);
             b.lines[b.n] = reader_.line();
             b.attempts_at[++b.n] = b.attempts.size();
           } else
@@ -252,10 +256,9 @@ private:
     }
   }
 
-  // The record's attempts appended to `out` (none when there is no link, or when reading them
-  // failed: the check then reads them itself, and fails there as the reading alone would).
+  // The record's attempts appended to `out` (none when reading them failed: the check then reads
+  // them itself, and fails there as the reading alone would).
   void read_attempts(const LogRecord& r, std::vector<Attempt>& out) const noexcept {
-    if (link_ == nullptr) return;
     const std::size_t first = out.size();
     try {
       for (const Exchange& e : r.io)
@@ -266,7 +269,7 @@ private:
   }
 
   LogReader& reader_;
-  bool ahead_, done_ = false;
+  bool ahead_, every_attempt_, done_ = false;
   const LoggedLink* link_;
   LogRecord own_;                 // the record read here (no thread)
   std::array<Batch, kRing> ring_; // filled by the producer in turn, taken in turn
@@ -317,8 +320,8 @@ ReplayResult detail::replay_records_with_attempts(
   RecordSource source(
       reader,
       !until && mode != detail::ReadAhead::Never &&
-          (mode == detail::ReadAhead::Always || std::thread::hardware_concurrency() > 1),
-      link);
+          (mode != detail::ReadAhead::Auto || std::thread::hardware_concurrency() > 1),
+      link, mode == detail::ReadAhead::AlwaysAttempts);
   std::size_t line = 0;
   std::span<const Attempt> attempts;
   const LogRecord* next = nullptr;

@@ -111,13 +111,14 @@ TEST_CASE("replay reads ahead to the same result: damaged logs", "[devices][repl
   });
 }
 
-// Reading ahead also reads each record's exchanges as the replay's link does (LoggedLink::
-// read_attempt, on the reading thread): the attempts worked out there must be the ones the checking
-// thread works out itself, for exchanges damaged as a faulty line damages them: a reply replaced by
-// stale lines, junk, a cut or a bad line, bytes after the reply, a failed attempt and its resend, a
-// drain. Each damaged log replays to the same result (divergence and words) either way, and the
-// damage must reach both outcomes: replays that stay identical (a fault then its resend, stale
-// lines before the reply) and replays that diverge.
+// Reading ahead also reads records' exchanges as the replay's link does (LoggedLink::read_attempt,
+// on the reading thread; every record's with AlwaysAttempts, else while that thread is ahead): the
+// attempts worked out there must be the ones the checking thread works out itself, for exchanges
+// damaged as a faulty line damages them: a reply replaced by stale lines, junk, a cut or a bad
+// line, bytes after the reply, a failed attempt and its resend, a drain. Each damaged log replays
+// to the same result (divergence and words) either way, and the damage must reach both outcomes:
+// replays that stay identical (a fault then its resend, stale lines before the reply) and replays
+// that diverge.
 TEST_CASE("replay reads ahead to the same result: damaged exchanges",
           "[devices][replay][property]") {
   TempDir dir;
@@ -172,9 +173,12 @@ TEST_CASE("replay reads ahead to the same result: damaged exchanges",
     }
     text.replace(begin, end - begin, devices::format_record(r));
     write(path, text);
+    // Every record's attempts read ahead; those the reading thread had time for; none.
+    const auto every = replay_with(path, devices::detail::ReadAhead::AlwaysAttempts);
     const auto ahead = replay_with(path, devices::detail::ReadAhead::Always);
     const auto here = replay_with(path, devices::detail::ReadAhead::Never);
-    RC_LOG() << describe(ahead) << " / " << describe(here) << "\n";
+    RC_LOG() << describe(every) << " / " << describe(ahead) << " / " << describe(here) << "\n";
+    RC_ASSERT(every == here);
     RC_ASSERT(ahead == here);
     if (const auto* result = std::get_if<devices::ReplayResult>(&here))
       ++(result->identical ? identical : diverged);

@@ -68,7 +68,10 @@ namespace detail {
 // Whether replay_records() reads ahead on a second thread: Auto (the default) when the whole log is
 // asked for and the machine has two hardware threads or more; Never and Always (the whole log
 // still) for the tests that hold both ways to the same results and for the benchmark.
-enum class ReadAhead { Auto, Never, Always };
+// AlwaysAttempts: Always, and the reading thread reads every record's attempts too (the replay's
+// link's reading of its exchanges); otherwise it reads them only while it is ahead of the checks,
+// so that the work splits as the two threads' speeds do (the result does not depend on it).
+enum class ReadAhead { Auto, Never, Always, AlwaysAttempts };
 void set_read_ahead(ReadAhead mode) noexcept;
 } // namespace detail
 
