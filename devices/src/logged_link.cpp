@@ -43,7 +43,7 @@ Attempt LoggedLink::read_attempt(const Exchange& e) const {
   if (framing_.reading_for(request) == Reading::Bytes) {
     // The reply's size exactly (fewer: the live link timed out; more: bytes after the reply).
     if (bytes.size() == framing_.reply_size(request) &&
-        kind_of(request, bytes) == ReplyKind::Reply) {
+        framing_.kind(request, bytes) == ReplyKind::Reply) {
       return {Attempt::Kind::Reply, 0, bytes.size()};
     }
     return {};
@@ -56,7 +56,7 @@ Attempt LoggedLink::read_attempt(const Exchange& e) const {
     const std::string_view line = bytes.substr(from, nl + 1 - from);
     const std::size_t b = from;
     from = nl + 1;
-    const ReplyKind kind = kind_of(request, line);
+    const ReplyKind kind = framing_.kind(request, line);
     if (kind == ReplyKind::Stale) continue;
     if (from < bytes.size()) return {Attempt::Kind::After, b, from};
     if (kind == ReplyKind::Reply) return {Attempt::Kind::Reply, b, from};

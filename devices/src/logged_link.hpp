@@ -36,8 +36,7 @@ struct Attempt {
 class LoggedLink final : public CommandLink {
 public:
   LoggedLink(const Framing& framing, LinkOptions options)
-      : framing_(framing), line_framing_(dynamic_cast<const LineFraming*>(&framing)),
-        resync_(framing.resync()), options_(std::move(options)) {}
+      : framing_(framing), resync_(framing.resync()), options_(std::move(options)) {}
   // `attempts`: read_attempt() of each of io's exchanges, worked out ahead (a replay's reading
   // thread), or empty (each is read here when it is reached).
   void load(const std::vector<Exchange>& io, std::int64_t step, std::string field,
@@ -76,15 +75,8 @@ private:
   const Exchange& expect(const std::string& sent, bool resend);
   // transact(): the reply, in the loaded exchanges.
   std::string_view reply_of(const std::string& request);
-  // framing_.classify(request, unit).kind; for the text robots classify_reply() itself, without
-  // the Verdict (its reason for a bad line is not used here).
-  [[nodiscard]] ReplyKind kind_of(std::string_view request, std::string_view unit) const {
-    if (line_framing_ != nullptr) return classify_reply(line_framing_->codec(), request, unit);
-    return framing_.classify(request, unit).kind;
-  }
   const Framing& framing_;
-  const LineFraming* line_framing_; // framing_, when it is the text robots' (else null)
-  std::string resync_;              // framing_.resync(): the same bytes every time
+  std::string resync_; // framing_.resync(): the same bytes every time
   LinkOptions options_;
   const std::vector<Exchange>* io_ = nullptr;
   std::span<const Attempt> attempts_; // io_'s, read ahead (empty: read here)

@@ -160,9 +160,11 @@ public:
       Batch& b = ring_[at_];
       if (!holding_) {
         std::unique_lock lock(m_);
-        if (!b.full) {
+        // Batches are filled and released in the same order: the consumer's batch, the oldest not
+        // released, is full exactly when some batch is.
+        if (full_ == 0) {
           consumer_waiting_ = true;
-          consumer_cv_.wait(lock, [&] { return b.full && (full_ >= kRefill || finished_); });
+          consumer_cv_.wait(lock, [&] { return full_ >= kRefill || (full_ > 0 && finished_); });
           consumer_waiting_ = false;
         }
         holding_ = true;
@@ -183,7 +185,6 @@ public:
       bool wake = false;
       {
         const std::lock_guard lock(m_);
-        b.full = false;
         --full_;
         ++free_;
         wake = producer_waiting_ && free_ >= kRefill;
@@ -209,7 +210,7 @@ private:
     std::vector<Attempt> attempts;
     std::vector<std::size_t> attempts_at = std::vector<std::size_t>(kBatch + 1);
     std::size_t n = 0;
-    bool full = false, last = false;
+    bool last = false;
     std::exception_ptr error;
   };
 
@@ -246,7 +247,6 @@ private:
       bool wake = false;
       {
         const std::lock_guard lock(m_);
-        b.full = true;
         ++full_;
         finished_ = b.last;
         wake = consumer_waiting_ && (full_ >= kRefill || finished_);
@@ -275,7 +275,7 @@ private:
   std::array<Batch, kRing> ring_; // filled by the producer in turn, taken in turn
   std::size_t at_ = 0, pos_ = 0;  // the consumer's batch and its next record
   bool holding_ = false;          // the consumer holds ring_[at_] (it is full)
-  std::mutex m_;                  // guards each batch's `full`, the counts, the flags, stop_
+  std::mutex m_;                  // guards the counts, the flags and stop_
   std::size_t free_ = kRing;      // batches neither full nor being filled
   std::size_t full_ = 0;          // batches full (filled, not yet released)
   bool finished_ = false;         // the producer has filled its last batch

@@ -58,6 +58,17 @@ std::pair<std::size_t, std::size_t> error_of(const std::string& text) {
   return {0, 0};
 }
 
+// One edit of `text` at byte `at` (0 to its size): kind 0 replaces that byte with c, 1 inserts c
+// before it, 2 erases it (a replace or an erase at the end changes nothing).
+void edit_byte(std::string& text, std::size_t at, char c, int kind) {
+  if (kind == 1)
+    text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), c);
+  else if (at < text.size() && kind == 0)
+    text[at] = c;
+  else if (at < text.size())
+    text.erase(at, 1);
+}
+
 } // namespace
 
 TEST_CASE("the writer's lines are the documented canonical form", "[devices]") {
@@ -129,21 +140,12 @@ TEST_CASE("every record line the reader accepts is JSON to nlohmann-json, with t
       for (int k = 0; k < edits; ++k) {
         const auto at = *rc::gen::inRange<std::size_t>(0, line.size() + 1);
         const char c = kAlphabet[*rc::gen::inRange<std::size_t>(0, kAlphabet.size())];
-        switch (*rc::gen::inRange(0, 4)) {
-        case 0:
-          if (at < line.size()) line[at] = c;
-          break;
-        case 1:
-          line.insert(line.begin() + static_cast<std::ptrdiff_t>(at), c);
-          break;
-        case 2:
-          if (at < line.size()) line.erase(at, 1);
-          break;
-        default: // a whole escape (read only inside a string)
+        if (const int kind = *rc::gen::inRange(0, 4); kind < 3)
+          edit_byte(line, at, c, kind);
+        else // a whole escape (read only inside a string)
           line.insert(at, *rc::gen::element<std::string>("\\\"", "\\\\", "\\/", "\\b", "\\f", "\\n",
                                                          "\\r", "\\t", "\\u0041", "\\u00e9",
                                                          "\\u00FF", "\\u0100"));
-        }
       }
       // The fast path (detail::read_canonical_step) accepts a subset of what the reader does, to
       // the same record: whatever it accepts, nlohmann-json reads the same.
@@ -382,16 +384,7 @@ TEST_CASE("the reader's records are its lines, whatever bytes the lines hold",
       if (const auto nl = text.find('\n', at); *rc::gen::inRange(0, 4) != 0 && nl != text.npos)
         at = nl + 1 - *rc::gen::inRange<std::size_t>(0, 3);
       const char c = kAlphabet[*rc::gen::inRange<std::size_t>(0, kAlphabet.size())];
-      switch (*rc::gen::inRange(0, 3)) {
-      case 0:
-        if (at < text.size()) text[at] = c;
-        break;
-      case 1:
-        text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), c);
-        break;
-      default:
-        if (at < text.size()) text.erase(at, 1);
-      }
+      edit_byte(text, at, c, *rc::gen::inRange(0, 3));
     }
     std::vector<std::string> lines = {""}; // lines[1] is the header
     for (std::size_t at = 0; at <= text.size();) {

@@ -78,6 +78,11 @@ public:
   [[nodiscard]] virtual std::size_t reply_size(std::string_view request) const = 0;
   // One unit read after sending `request`: a whole line (Reading::Lines), or reply_size() bytes.
   [[nodiscard]] virtual Verdict classify(std::string_view request, std::string_view unit) const = 0;
+  // classify()'s kind alone: a framing whose classify() builds a reason it can skip overrides it
+  // (a replay classifies every reply and never reads the reason of one that is not bad).
+  [[nodiscard]] virtual ReplyKind kind(std::string_view request, std::string_view unit) const {
+    return classify(request, unit).kind;
+  }
   // Sent after a failed attempt, before the resend ("": nothing).
   [[nodiscard]] virtual std::string resync() const = 0;
   [[nodiscard]] virtual StopPlan stop_plan() const = 0;
@@ -105,6 +110,9 @@ public:
   [[nodiscard]] Reading reading() const noexcept override { return Reading::Lines; }
   [[nodiscard]] std::size_t reply_size(std::string_view) const override { return 0; }
   [[nodiscard]] Verdict classify(std::string_view request, std::string_view unit) const override;
+  [[nodiscard]] ReplyKind kind(std::string_view request, std::string_view unit) const override {
+    return classify_reply(codec_, request, unit);
+  }
   [[nodiscard]] std::string resync() const override { return {}; }
   [[nodiscard]] StopPlan stop_plan() const override;
   [[nodiscard]] Decoded<WheelPair> decode_speeds(std::string_view reply) const override {
