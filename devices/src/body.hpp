@@ -49,6 +49,9 @@ private:
   // A robot without encoders: the wheels turned at the speeds in force from the last send to this
   // one (link.last_send_ns(): the recording's clock, or the logged time in a replay).
   void reckon_until(std::int64_t t_ns);
+  // A validated reply to read_proximity() or read_odometry(), decoded (or the link's values).
+  Proximity proximity_of(std::string_view reply) const;
+  WheelPair odometry_of(std::string_view reply) const;
   CommandLink& link_;
   const Codec& codec_;
   const RobotDescription& robot_;

@@ -57,10 +57,16 @@ std::string printable(std::string_view bytes) {
   return out;
 }
 
-ReplyKind classify_reply(const Codec& codec, std::string_view command, std::string_view line) {
+ReplyKind classify_reply(const Codec& codec, std::string_view command, std::string_view line,
+                         Fields* fields) {
+  if (fields != nullptr) *fields = {};
   if (command.empty()) return ReplyKind::Bad;
-  if (!line.empty() && line[0] == lower(command[0]))
-    return codec.decode_reply(command, line) ? ReplyKind::Reply : ReplyKind::Bad;
+  if (!line.empty() && line[0] == lower(command[0])) {
+    const auto decoded = codec.decode_reply(command, line);
+    if (!decoded) return ReplyKind::Bad;
+    if (fields != nullptr) *fields = *decoded.value;
+    return ReplyKind::Reply;
+  }
   return reply_shaped(line) ? ReplyKind::Stale : ReplyKind::Bad;
 }
 

@@ -42,9 +42,12 @@ Attempt LoggedLink::read_attempt(const Exchange& e) const {
   const std::string_view bytes = e.received;
   if (framing_.reading_for(request) == Reading::Bytes) {
     // The reply's size exactly (fewer: the live link timed out; more: bytes after the reply).
+    Attempt a;
     if (bytes.size() == framing_.reply_size(request) &&
-        framing_.kind(request, bytes) == ReplyKind::Reply) {
-      return {Attempt::Kind::Reply, 0, bytes.size()};
+        framing_.kind_with_fields(request, bytes, a.fields) == ReplyKind::Reply) {
+      a.kind = Attempt::Kind::Reply;
+      a.end = bytes.size();
+      return a;
     }
     return {};
   }
@@ -56,16 +59,27 @@ Attempt LoggedLink::read_attempt(const Exchange& e) const {
     const std::string_view line = bytes.substr(from, nl + 1 - from);
     const std::size_t b = from;
     from = nl + 1;
-    const ReplyKind kind = framing_.kind(request, line);
+    Attempt a;
+    const ReplyKind kind = framing_.kind_with_fields(request, line, a.fields);
     if (kind == ReplyKind::Stale) continue;
-    if (from < bytes.size()) return {Attempt::Kind::After, b, from};
-    if (kind == ReplyKind::Reply) return {Attempt::Kind::Reply, b, from};
+    a.begin = b;
+    a.end = from;
+    if (from < bytes.size()) {
+      a.kind = Attempt::Kind::After;
+      a.fields = {};
+      return a;
+    }
+    if (kind == ReplyKind::Reply) {
+      a.kind = Attempt::Kind::Reply;
+      return a;
+    }
     break; // a bad line: the live link resent
   }
   return {};
 }
 
 std::string_view LoggedLink::reply_of(const std::string& request) {
+  fields_ = {};
   const bool resyncs = !resync_.empty();
   for (std::uint32_t attempt = 0;; ++attempt) {
     if (attempt > 0 && resyncs) (void)expect(resync_, false);
@@ -77,7 +91,10 @@ std::string_view LoggedLink::reply_of(const std::string& request) {
     // e.sent is `request` (expect): its reading, ahead or now.
     const Attempt a = at < attempts_.size() ? attempts_[at] : read_attempt(e);
     const std::string_view unit = std::string_view(e.received).substr(a.begin, a.end - a.begin);
-    if (a.kind == Attempt::Kind::Reply) return unit;
+    if (a.kind == Attempt::Kind::Reply) {
+      fields_ = a.fields;
+      return unit;
+    }
     if (a.kind == Attempt::Kind::After)
       throw Diverged{{step_, field_ + "[" + std::to_string(at) + "].received",
                       "'" + printable(e.received) + "'",

@@ -30,6 +30,9 @@ struct Attempt {
   enum class Kind : std::uint8_t { Reply, Fault, After };
   Kind kind = Kind::Fault;
   std::size_t begin = 0, end = 0;
+  // A Reply's values as the framing decoded them in judging it (Framing::kind_with_fields;
+  // letter 0: the framing keeps none), handed to the body with the reply (reply_fields()).
+  Fields fields;
   friend bool operator==(const Attempt&, const Attempt&) = default;
 };
 
@@ -60,6 +63,9 @@ public:
   [[nodiscard]] const LinkOptions& options() const noexcept override { return options_; }
   void pause(std::chrono::milliseconds) override {}
   void rearm() noexcept override {}
+  [[nodiscard]] const Fields* reply_fields() const noexcept override {
+    return fields_.letter != 0 ? &fields_ : nullptr;
+  }
   [[nodiscard]] std::uint64_t sends() const noexcept override { return sends_; }
   [[nodiscard]] std::int64_t last_send_ns() const noexcept override { return last_send_ns_; }
 
@@ -86,6 +92,7 @@ private:
   bool end_is_failure_ = false;
   std::uint64_t sends_ = 0;
   std::int64_t last_send_ns_ = -1;
+  Fields fields_; // the last reply's (reply_fields())
 };
 
 } // namespace antkit::devices::detail

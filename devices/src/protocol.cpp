@@ -124,7 +124,9 @@ Decoded<Fields> scan_command(std::string_view line, bool lower_ok) {
   return d;
 }
 
-Codec::Codec(RobotKind robot) : robot_(&describe(robot)) {}
+Codec::Codec(RobotKind robot)
+    : robot_(&describe(robot)), read_proximity_(command(*robot_, 'N', {})),
+      read_odometry_(robot_->has_odometry ? command(*robot_, robot_->odometry_read, {}) : "") {}
 
 std::string Codec::set_speed(std::int32_t left, std::int32_t right) const {
   check_speed(*robot_, left);
@@ -135,11 +137,11 @@ std::string Codec::read_speed() const {
   return command(*robot_, 'E', {});
 }
 std::string Codec::read_proximity() const {
-  return command(*robot_, 'N', {});
+  return read_proximity_;
 }
 std::string Codec::read_odometry() const {
   if (!robot_->has_odometry) throw std::logic_error("this robot has no wheel counters");
-  return command(*robot_, robot_->odometry_read, {});
+  return read_odometry_;
 }
 std::string Codec::set_odometry(std::int32_t left, std::int32_t right) const {
   if (!robot_->has_odometry) throw std::logic_error("this robot has no wheel counters");

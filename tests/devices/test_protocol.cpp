@@ -1,6 +1,7 @@
 // The robots' protocols (devices/protocol.hpp, robot.hpp): byte-exact commands, replies as the
 // robots send them accepted, near-misses refused at the right column, round trips as properties,
 // and the fixed-point normalisation.
+#include <antkit/devices/framing.hpp>
 #include <antkit/devices/protocol.hpp>
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -129,6 +130,65 @@ TEST_CASE("every reply the firmware side encodes decodes to its values", "[devic
       RC_ASSERT(o);
       RC_ASSERT(o.value->left == a);
       RC_ASSERT(o.value->right == b);
+    }
+  });
+}
+
+// A replay's body takes a reply's values from the framing's judgement of it (classify_reply:
+// Codec::decode_reply of the request sent) instead of decoding the line again (Body::proximity_of,
+// odometry_of, body.hpp): that judgement must accept exactly the lines the body's own decoder
+// accepts, with the same values, and leave the letter and count the body checks before it trusts
+// them. Replies the firmware side writes, then up to three bytes edited, inserted or removed.
+TEST_CASE("a reply's values as its framing judged it are the body's decoder's",
+          "[devices][property]") {
+  rc::prop("classify_reply fields == decode_proximity / decode_odometry, every serial robot", [] {
+    const auto robots = devices::serial_robots();
+    const auto robot = *rc::gen::elementOf(std::vector<RobotKind>(robots.begin(), robots.end()));
+    const Codec c(robot);
+    const auto& d = c.robot();
+    const bool odometry = d.has_odometry && *rc::gen::arbitrary<bool>();
+    const std::string request = odometry ? c.read_odometry() : c.read_proximity();
+    std::vector<std::int32_t> values(
+        odometry ? 2 : 8 + (*rc::gen::arbitrary<bool>() ? d.proximity_extra : 0));
+    for (auto& v : values)
+      v = odometry ? *rc::gen::arbitrary<std::int32_t>()
+                   : *rc::gen::inRange(d.proximity_min, d.proximity_max + 1);
+    std::string line = c.reply(request[0], values);
+    const auto edits = *rc::gen::inRange(0, 4);
+    for (int k = 0; k < edits && !line.empty(); ++k) {
+      const auto at = *rc::gen::inRange<std::size_t>(0, line.size());
+      const char b =
+          *rc::gen::element(',', '-', '0', '7', '9', 'n', 'N', 'h', 'q', '\r', '\n', ' ');
+      switch (*rc::gen::inRange(0, 3)) {
+      case 0:
+        line[at] = b;
+        break;
+      case 1:
+        line.insert(at, 1, b);
+        break;
+      default:
+        line.erase(at, 1);
+        break;
+      }
+    }
+    devices::Fields f;
+    const bool reply = devices::classify_reply(c, request, line, &f) == devices::ReplyKind::Reply;
+    RC_TAG(reply ? "a reply" : "not a reply");
+    if (odometry) {
+      const auto o = c.decode_odometry(line);
+      RC_ASSERT(reply == static_cast<bool>(o));
+      if (!reply) RC_SUCCEED("refused by both");
+      RC_ASSERT(f.letter == (d.odometry_read | 0x20));
+      RC_ASSERT(f.count == 2);
+      RC_ASSERT(f.values[0] == o.value->left);
+      RC_ASSERT(f.values[1] == o.value->right);
+    } else {
+      const auto p = c.decode_proximity(line);
+      RC_ASSERT(reply == static_cast<bool>(p));
+      if (!reply) RC_SUCCEED("refused by both");
+      RC_ASSERT(f.letter == 'n');
+      RC_ASSERT(f.count >= 8);
+      RC_ASSERT(std::equal(p.value->raw.begin(), p.value->raw.end(), f.values.begin()));
     }
   });
 }

@@ -83,6 +83,15 @@ public:
   [[nodiscard]] virtual ReplyKind kind(std::string_view request, std::string_view unit) const {
     return classify(request, unit).kind;
   }
+  // kind(), with the values the framing's judgement decoded when the unit is the reply (the text
+  // robots' codec validates a reply by decoding it: Codec::decode_reply), else `fields` cleared
+  // (letter 0). A replay keeps them with the reply, so that its body does not decode the same
+  // line a second time (CommandLink::reply_fields).
+  [[nodiscard]] virtual ReplyKind kind_with_fields(std::string_view request, std::string_view unit,
+                                                   Fields& fields) const {
+    fields = {};
+    return kind(request, unit);
+  }
   // Sent after a failed attempt, before the resend ("": nothing).
   [[nodiscard]] virtual std::string resync() const = 0;
   [[nodiscard]] virtual StopPlan stop_plan() const = 0;
@@ -96,9 +105,11 @@ public:
 std::string printable(std::string_view bytes);
 
 // What a line read after sending `command` is, for the text robots (LineFraming::classify): its
-// reply when its letter is the command's in lower case and the codec validates it; a late reply
-// when it is a well-formed reply line of another letter; else bad.
-ReplyKind classify_reply(const Codec& codec, std::string_view command, std::string_view line);
+// reply when its letter is the command's in lower case and the codec validates it
+// (Codec::decode_reply; its values are left in `*fields` when it is given, else it is cleared);
+// a late reply when it is a well-formed reply line of another letter; else bad.
+ReplyKind classify_reply(const Codec& codec, std::string_view command, std::string_view line,
+                         Fields* fields = nullptr);
 
 // The text robots' framing (protocol.hpp's Codec): reply lines classified by classify_reply; no
 // resynchronisation beyond draining; the safe stop: the robot's safe_stop commands until
@@ -112,6 +123,10 @@ public:
   [[nodiscard]] Verdict classify(std::string_view request, std::string_view unit) const override;
   [[nodiscard]] ReplyKind kind(std::string_view request, std::string_view unit) const override {
     return classify_reply(codec_, request, unit);
+  }
+  [[nodiscard]] ReplyKind kind_with_fields(std::string_view request, std::string_view unit,
+                                           Fields& fields) const override {
+    return classify_reply(codec_, request, unit, &fields);
   }
   [[nodiscard]] std::string resync() const override { return {}; }
   [[nodiscard]] StopPlan stop_plan() const override;

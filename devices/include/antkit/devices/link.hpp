@@ -132,6 +132,11 @@ public:
     reply = transact(request, io);
     return reply;
   }
+  // The values of the reply the last transact() or transact_view() returned, as the framing
+  // decoded them when it judged that reply valid (Framing::kind_with_fields), or null when this
+  // link does not keep them (the live links: their body decodes the reply itself). A replay's
+  // link keeps them, so that the body (body.hpp) does not decode one line twice.
+  [[nodiscard]] virtual const Fields* reply_fields() const noexcept { return nullptr; }
   // The framing's resynchronisation on its own (see above; nothing when the framing has none):
   // the start's and the safe stop's first exchange where the robot's state is unknown.
   virtual void resync(std::vector<Exchange>& io) = 0;

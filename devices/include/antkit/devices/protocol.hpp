@@ -39,6 +39,7 @@ struct Fields {
   char letter = 0;
   std::array<std::int32_t, 12> values{};
   std::uint8_t count = 0;
+  friend bool operator==(const Fields&, const Fields&) = default;
 };
 
 struct DecodeError {
@@ -96,6 +97,8 @@ public:
 
 private:
   const RobotDescription* robot_;
+  // The requests without values, encoded once (a replay asks for two of them every step).
+  std::string read_proximity_, read_odometry_;
 };
 
 // The serial robots whose identification rule a reply line to `version_command` ("B\r", "V\r")
