@@ -8,6 +8,7 @@
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/uniform/controllers.hpp>
 #include <cstdlib>
+#include <optional>
 
 namespace antkit::devices {
 
@@ -37,6 +38,20 @@ void check_obs(std::span<const std::int64_t> obs, std::size_t n) {
                                 std::to_string(obs.size()));
 }
 
+// normalise_reading() by table (ReadingNormaliser), built for the robot observe() is given and
+// rebuilt only when it is given another. A controller is stepped on one thread (its step() is not
+// const), so observe()'s cache needs no lock.
+class CachedNormaliser {
+public:
+  const ReadingNormaliser& operator()(const RobotDescription& robot) const {
+    if (!table_ || &table_->robot() != &robot) table_.emplace(robot);
+    return *table_;
+  }
+
+private:
+  mutable std::optional<ReadingNormaliser> table_;
+};
+
 class BuffonController final : public LoggedController {
 public:
   BuffonController(std::uint64_t seed, std::uint64_t trial, std::uint64_t visit)
@@ -44,9 +59,9 @@ public:
 
   void observe(const RobotDescription& robot, const Proximity& readings,
                std::vector<std::int64_t>& obs) const override {
+    const ReadingNormaliser& normalise = normaliser_(robot);
     obs.resize(6);
-    for (std::size_t i = 0; i < 6; ++i)
-      obs[i] = normalise_reading(robot, readings.raw[robot.front_six[i]]).raw();
+    for (std::size_t i = 0; i < 6; ++i) obs[i] = normalise(readings.raw[robot.front_six[i]]).raw();
   }
   void step(const RobotDescription& robot, std::span<const std::int64_t> obs,
             std::vector<std::int64_t>& cmd) override {
@@ -75,6 +90,7 @@ public:
 private:
   buffon::ExplorationBehaviour behaviour_;
   std::uint64_t steps_ = 0;
+  CachedNormaliser normaliser_;
 };
 
 // Normalised reading at or above which a front sensor says the cell ahead is taken (1/4).
@@ -88,10 +104,11 @@ public:
 
   void observe(const RobotDescription& robot, const Proximity& readings,
                std::vector<std::int64_t>& obs) const override {
+    const ReadingNormaliser& normalise = normaliser_(robot);
     bool free = true;
     for (std::size_t i = 0; i < robot.proximity_count && i < readings.raw.size(); ++i) {
       if (robot.ground[i] || std::abs(robot.proximity_angle_deg[i]) > kWanderFrontDegrees) continue;
-      if (normalise_reading(robot, readings.raw[i]) >= kWanderObstacle) free = false;
+      if (normalise(readings.raw[i]) >= kWanderObstacle) free = false;
     }
     obs.assign({free ? 1 : 0});
   }
@@ -111,6 +128,7 @@ public:
 private:
   uniform::StepTurnWanderer wanderer_;
   uniform::Command last_{};
+  CachedNormaliser normaliser_;
 };
 
 } // namespace

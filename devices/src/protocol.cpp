@@ -262,6 +262,12 @@ Fx normalise_reading(const RobotDescription& robot, std::int32_t raw) {
   return Fx::from_ratio(v, robot.proximity_scale);
 }
 
+ReadingNormaliser::ReadingNormaliser(const RobotDescription& robot)
+    : robot_(&robot), raw_(static_cast<std::size_t>(std::max(robot.proximity_scale, 0)) + 1) {
+  for (std::size_t v = 0; v < raw_.size(); ++v)
+    raw_[v] = normalise_reading(robot, static_cast<std::int32_t>(v)).raw();
+}
+
 std::int32_t reading_to_raw(const RobotDescription& robot, Fx reading) {
   const std::int64_t v = (std::int64_t{reading.raw()} * robot.proximity_scale + 32768) >> 16;
   return static_cast<std::int32_t>(std::clamp<std::int64_t>(v, 0, robot.proximity_max));

@@ -193,6 +193,29 @@ TEST_CASE("a reply's values as its framing judged it are the body's decoder's",
   });
 }
 
+// The controllers normalise by table (ReadingNormaliser): every reading a reply can carry, and
+// the ends of the 32-bit range, must give normalise_reading()'s value, for every serial robot.
+TEST_CASE("the normalising table is normalise_reading on every reading", "[devices][proof]") {
+  for (const RobotKind kind : devices::serial_robots()) {
+    const Codec c(kind);
+    const auto& d = c.robot();
+    INFO(d.name);
+    const devices::ReadingNormaliser table(d);
+    REQUIRE(&table.robot() == &d);
+    std::int64_t checked = 0, differ = 0;
+    const auto check = [&](std::int32_t raw) {
+      ++checked;
+      if (table(raw) != devices::normalise_reading(d, raw)) ++differ;
+    };
+    for (std::int32_t raw = std::min(d.proximity_min, 0) - 2;
+         raw <= std::max(d.proximity_max, d.proximity_scale) + 2; ++raw)
+      check(raw);
+    for (const std::int32_t raw : {INT32_MIN, INT32_MIN + 1, INT32_MAX - 1, INT32_MAX}) check(raw);
+    CHECK(checked > d.proximity_max - d.proximity_min);
+    CHECK(differ == 0);
+  }
+}
+
 TEST_CASE("normalisation: readings to [0, 1] and back, speeds to wheel commands and back",
           "[devices][property]") {
   rc::prop("reading_to_raw(normalise_reading(raw)) == raw on the scale", [] {
