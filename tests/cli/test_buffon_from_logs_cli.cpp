@@ -20,7 +20,7 @@ using antkit::test::run_antkit;
 
 namespace {
 
-std::filesystem::path scratch_dir(const std::string& name) {
+antkit::test::ScratchDir scratch_dir(const std::string& name) {
   return antkit::test::scratch_dir("bfl-cli", name);
 }
 
@@ -200,5 +200,4 @@ TEST_CASE("antkit buffon-from-logs: refusals exit 2 with the file and why, a mea
                              "relative_error", "circle:d=8"})
       CHECK(t.out.find(word) != std::string::npos);
   }
-  std::filesystem::remove_all(dir);
 }

@@ -22,7 +22,7 @@ using antkit::test::slurp;
 
 namespace {
 
-std::filesystem::path scratch_dir(const std::string& name) {
+antkit::test::ScratchDir scratch_dir(const std::string& name) {
   return antkit::test::scratch_dir("devices-cli", name);
 }
 

@@ -65,6 +65,5 @@ TEST_CASE("antkit: the library's words for its inputs are shown as each command'
     CHECK(r.out.empty());
     CHECK(r.err == "antkit: error: " + c.err + "\n");
   }
-  CHECK(std::filesystem::is_empty(dir));
-  std::filesystem::remove_all(dir);
+  CHECK(std::filesystem::is_empty(dir.path()));
 }

@@ -20,7 +20,7 @@ using Child = antkit::test::AntkitChild;
 
 namespace {
 
-std::filesystem::path scratch_dir(const std::string& name) {
+antkit::test::ScratchDir scratch_dir(const std::string& name) {
   return antkit::test::scratch_dir("tcp-cli", name);
 }
 

@@ -2,6 +2,7 @@
 // The real `antkit` executable in a child process, its standard output read through a pipe: the
 // emulators (`antkit emulate` prints its port on the first line and serves until a signal) and
 // recorders that the CLI tests run beside one another. And a scratch directory per test.
+#include "scratch_dir.hpp"
 #include "test_paths.hpp"
 
 #include <catch2/catch.hpp>
@@ -19,13 +20,10 @@
 
 namespace antkit::test {
 
-// A fresh directory under the system's temporary directory, named by the test and the process.
-inline std::filesystem::path scratch_dir(const std::string& prefix, const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("antkit-" + prefix + "-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+// A fresh directory under the system's temporary directory, named by the test and the process,
+// removed with everything in it when the test ends (scratch_dir.hpp).
+inline ScratchDir scratch_dir(const std::string& prefix, const std::string& name) {
+  return ScratchDir(prefix + "-" + name);
 }
 
 // A file's bytes, and its number of lines (a log being written: how far a run has got).
