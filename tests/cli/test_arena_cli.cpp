@@ -1,5 +1,6 @@
 // `antkit arena`: the real executable's report, its files, and its refusals of bad input.
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 
 #include <algorithm>
 #include <antkit/geometry/arena_raster.hpp>
@@ -20,19 +21,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh scratch directory per test case, removed at the end.
+// A fresh scratch directory per test case, removed when the test case ends (scratch_dir.hpp).
 struct Scratch {
-  fs::path dir;
-  Scratch() {
-    static int n = 0;
-    dir = fs::temp_directory_path() /
-          ("antkit-arena-cli-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
-    fs::create_directories(dir);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
+  antkit::test::ScratchDir scratch{"arena-cli"};
+  fs::path dir = scratch.path();
   std::string path(const std::string& name) const { return (dir / name).string(); }
   // Nothing but the files a test put there itself (no output, no temporary left behind).
   std::size_t files() const {

@@ -5,6 +5,7 @@
 // argument), and must leave no output file behind: the scratch directory holds exactly the input
 // files before and after every case, although most cases also ask for an output file there.
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -65,10 +66,8 @@ std::set<std::string> listing(const fs::path& dir) {
 
 TEST_CASE("antkit: every malformed input of the table exits 2, located, with no output file",
           "[cli][errors]") {
-  const fs::path dir =
-      fs::temp_directory_path() / ("antkit-bad-input-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const antkit::test::ScratchDir scratch("bad-input");
+  const fs::path& dir = scratch.path();
   const fs::path d = dir;
   // MovingAI maps
   write(d / "junk.map", junk(300, 1));
@@ -438,5 +437,4 @@ TEST_CASE("antkit: every malformed input of the table exits 2, located, with no 
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') <= 2);
     CHECK(listing(dir) == inputs);
   }
-  fs::remove_all(dir);
 }

@@ -1,5 +1,6 @@
 // `antkit buffon`: JSON shape, thread-count independence, bad input.
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -52,8 +53,8 @@ TEST_CASE("antkit buffon rejects bad arenas and parameters with exit 2") {
 }
 
 TEST_CASE("antkit buffon-experiment writes the figure's CSV, SVG and PNG") {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("antkit-buffon-exp-" + std::to_string(::getpid()));
+  const antkit::test::ScratchDir scratch("buffon-exp");
+  const auto dir = scratch / "out";
   const auto r =
       run_antkit("buffon-experiment --figure 8 --trials 2 --steps 1500 --out " + dir.string());
   REQUIRE(r.status == 0);

@@ -3,6 +3,7 @@
 // online first visit (issue 17) end the run when P is met or the budget is spent, and say which;
 // bad P or --max-steps2 exits 2.
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -158,13 +159,12 @@ TEST_CASE("antkit buffon --precision 0.1 on a trapezoid with two pillars gets 0.
   // The issue's new user: a 6368-unit^2 trapezoid with two 4 x 4 pillars, 10 trials, P = 0.1, no
   // other option. Before issue 17 no trial reached P (the 50 000-step first visit was too short)
   // and the estimates ranged over 0.65 to 1.6 times the area.
-  const auto wkt = std::filesystem::temp_directory_path() /
-                   ("antkit-trapezoid-" + std::to_string(::getpid()) + ".wkt");
+  const antkit::test::ScratchDir scratch("trapezoid");
+  const auto wkt = scratch / "trapezoid.wkt";
   std::ofstream(wkt) << "POLYGON((0 0, 100 0, 80 80, 20 80, 0 0), (30 30, 30 34, 34 34, 34 30, "
                         "30 30), (60 40, 60 44, 64 44, 64 40, 60 40))\n";
   const auto r = run_antkit("buffon --arena " + wkt.string() +
                             " --trials 10 --threads 2 --precision 0.1 --format json");
-  std::filesystem::remove(wkt);
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);
   const double area = j["arena"]["area"].get<double>();
@@ -181,8 +181,8 @@ TEST_CASE("antkit buffon --precision 0.1 on a trapezoid with two pillars gets 0.
 }
 
 TEST_CASE("antkit buffon-cost --quick writes the table, the fits and the figure as SVG and PNG") {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("antkit-buffon-cost-" + std::to_string(::getpid()));
+  const antkit::test::ScratchDir scratch("buffon-cost");
+  const auto dir = scratch / "out";
   const auto r = run_antkit("buffon-cost --quick --trials 1 --threads 2 --out " + dir.string());
   INFO(r.err);
   REQUIRE(r.status == 0);
@@ -204,5 +204,4 @@ TEST_CASE("antkit buffon-cost --quick writes the table, the fits and the figure 
   std::getline(svg, line);
   CHECK(line.find("<?xml") == 0);
   CHECK(r.out.find("markers") != std::string::npos);
-  std::filesystem::remove_all(dir);
 }

@@ -2,6 +2,7 @@
 // only (not on threads or time), timings go to standard output, a time limit says how many cases
 // ran.
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -16,13 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const auto dir =
-      fs::temp_directory_path() / ("antkit-campaign-cli-" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  return dir;
-}
-
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::ostringstream s;
@@ -34,9 +28,11 @@ std::string slurp(const fs::path& p) {
 
 TEST_CASE("antkit campaign: the same summary for any thread count, timings on stdout only",
           "[cli][campaign]") {
+  const antkit::test::ScratchDir scratch("campaign-cli");
   for (const char* family : {"stc", "los", "uniform"}) {
     INFO(family);
-    const auto a = scratch(std::string(family) + "-1"), b = scratch(std::string(family) + "-2");
+    const auto a = scratch / (std::string(family) + "-1"),
+               b = scratch / (std::string(family) + "-2");
     const std::string common =
         std::string("campaign ") + family + " --cases 80 --max-size 8x8 --seed 7 --format json";
     const auto r1 = run_antkit(common + " --threads 1 --out " + a.string());
@@ -59,7 +55,8 @@ TEST_CASE("antkit campaign: the same summary for any thread count, timings on st
 
 TEST_CASE("antkit campaign: a time limit stops at a case boundary and says how many ran",
           "[cli][campaign]") {
-  const auto dir = scratch("timed");
+  const antkit::test::ScratchDir scratch("campaign-cli");
+  const auto dir = scratch / "timed";
   const auto r = run_antkit("campaign uniform --cases 100000000 --time 0.2 --format json --out " +
                             dir.string());
   REQUIRE(r.status == 0);

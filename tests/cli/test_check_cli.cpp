@@ -2,6 +2,7 @@
 // planner's path converted from row/column pairs passes, and a damaged tour exits 1 with every
 // violation counted in the report.
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -16,10 +17,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch() {
-  const auto dir = fs::temp_directory_path() / ("antkit-check-cli-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
+// One directory for the test process (ctest runs each test case in its own), removed when it ends.
+const fs::path& scratch() {
+  static const antkit::test::ScratchDir dir("check-cli");
+  return dir.path();
 }
 
 fs::path write(const std::string& name, const std::string& text) {

@@ -1,5 +1,6 @@
 // `antkit cover` and `antkit cover-experiment`, run as the real executable.
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -14,12 +15,8 @@ using antkit::test::run_antkit;
 using antkit::test::shared_map;
 
 namespace {
-std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("antkit-cover-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+antkit::test::ScratchDir scratch_dir(const std::string& name) {
+  return antkit::test::ScratchDir("cover-" + name);
 }
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p);
@@ -72,7 +69,6 @@ TEST_CASE("antkit cover runs on a map file and draws an SVG", "[cli][uniform]") 
   CHECK(j["viewed"] == j["viewable"]);
   CHECK(j["width"] == 32);
   CHECK(slurp(svg).find("<svg") != std::string::npos);
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("antkit cover prints a table by default", "[cli][uniform]") {
@@ -109,7 +105,6 @@ TEST_CASE("antkit cover: bad input exits 2 with one clear message and no output"
     CHECK(r.out.empty());
   }
   CHECK_FALSE(std::filesystem::exists(svg));
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("antkit cover --algo frontier views everything reproducibly and refuses sensor 0",
@@ -173,5 +168,4 @@ TEST_CASE("antkit cover-experiment (smoke): writes the tables beside the paper's
   CHECK(nlohmann::json::parse(one.out)["hash"] == j["hash"]);
   CHECK(run_antkit("cover-experiment --runs 0 --out " + dir.string()).status == 2);
   CHECK(run_antkit("cover-experiment --out /no/such/dir").status == 2);
-  std::filesystem::remove_all(dir);
 }

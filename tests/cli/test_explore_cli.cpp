@@ -1,6 +1,7 @@
 // `antkit explore` through the real executable: the JSON it promises, determinism, the SVG, and
 // bad input (exit 2, one clear message, no output file).
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -53,8 +54,7 @@ TEST_CASE("explore: the frontier baseline with and without line-of-sight sweepin
 }
 
 TEST_CASE("explore: --start and a map file with a start cell", "[cli]") {
-  const auto dir = std::filesystem::temp_directory_path() / "antkit-explore-cli";
-  std::filesystem::create_directories(dir);
+  const antkit::test::ScratchDir dir("explore-cli");
   const auto map = dir / "room.txt";
   std::ofstream(map) << "......\n.#..#.\n......\n..S...\n";
   const auto r =
@@ -68,9 +68,9 @@ TEST_CASE("explore: --start and a map file with a start cell", "[cli]") {
 }
 
 TEST_CASE("explore: --svg and --png write a picture", "[cli]") {
-  const auto path = std::filesystem::temp_directory_path() / "antkit-explore-cli.svg";
-  const auto png = std::filesystem::temp_directory_path() / "antkit-explore-cli.png";
-  std::filesystem::remove(path);
+  const antkit::test::ScratchDir dir("explore-cli");
+  const auto path = dir / "antkit-explore-cli.svg";
+  const auto png = dir / "antkit-explore-cli.png";
   const auto r = run_antkit("explore --size 12x9 --obstacles 4 --algo fast-wall-follow --svg " +
                             path.string() + " --png " + png.string());
   REQUIRE(r.status == 0);
@@ -80,13 +80,11 @@ TEST_CASE("explore: --svg and --png write a picture", "[cli]") {
   CHECK(text.find("rgb(0%,89.803922%,100%)") != std::string::npos);               // A, #00e5ff
   CHECK(text.find("rgb(55.294118%,33.333333%,14.117647%)") != std::string::npos); // S, #8d5524
   CHECK(std::filesystem::file_size(png) > 1000);
-  std::filesystem::remove(path);
-  std::filesystem::remove(png);
 }
 
 TEST_CASE("explore: bad input exits 2 with one clear message and no output file", "[cli]") {
-  const auto svg = std::filesystem::temp_directory_path() / "antkit-explore-bad.svg";
-  std::filesystem::remove(svg);
+  const antkit::test::ScratchDir dir("explore-bad");
+  const auto svg = dir / "antkit-explore-bad.svg";
   for (const std::string args : {
            "explore --size 25x25 --algo fast-wall-follow --los off",
            "explore --size 25 --algo frontier",
@@ -112,8 +110,8 @@ TEST_CASE("explore: bad input exits 2 with one clear message and no output file"
 
 TEST_CASE("explore-tables: Tables 2 and 3 as CSV and Markdown with ours beside the paper's",
           "[cli]") {
-  const auto dir = std::filesystem::temp_directory_path() / "antkit-explore-tables";
-  std::filesystem::remove_all(dir);
+  const antkit::test::ScratchDir scratch("explore-tables");
+  const auto dir = scratch / "out";
   const auto r = run_antkit("explore-tables --format json --out " + dir.string());
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);

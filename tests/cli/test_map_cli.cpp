@@ -2,6 +2,7 @@
 // shared maps, conversions that round-trip, and bad input -> exit 2, one
 // `antkit: error: FILE:LINE:COL: ...` line, nothing on stdout and no output file left behind.
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -20,18 +21,10 @@ std::string slurp(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// A fresh scratch directory per test case, removed when the test case ends (scratch_dir.hpp).
 struct TempDir {
-  std::filesystem::path path;
-  TempDir() {
-    static int n = 0;
-    path = std::filesystem::temp_directory_path() /
-           ("antkit-map-cli-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
+  antkit::test::ScratchDir scratch{"map-cli"};
+  std::filesystem::path path = scratch.path();
   std::string write(const std::string& name, const std::string& content) const {
     std::ofstream(path / name, std::ios::binary) << content;
     return (path / name).string();

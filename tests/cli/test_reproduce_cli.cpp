@@ -1,6 +1,7 @@
 // `antkit reproduce` as a user runs it: the claims table on stdout, the files listed, progress on
 // stderr, random maps only when the shared maps are missing.
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 
 #include <antkit/experiments/claims.hpp>
 #include <catch2/catch.hpp>
@@ -14,9 +15,8 @@ using antkit::test::run_antkit;
 namespace fs = std::filesystem;
 
 TEST_CASE("antkit reproduce prints the claims table and writes the report") {
-  const fs::path dir =
-      fs::temp_directory_path() / ("antkit-reproduce-cli-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const antkit::test::ScratchDir scratch("reproduce-cli");
+  const fs::path dir = scratch / "out";
   const auto table = run_antkit("reproduce --only los --out " + dir.string());
   REQUIRE(table.status == 0);
   CHECK(table.out.rfind("| claim | paper | where | the paper says | verdict |", 0) == 0);
@@ -36,13 +36,11 @@ TEST_CASE("antkit reproduce prints the claims table and writes the report") {
   text << readme.rdbuf();
   CHECK(text.str().find("antkit reproduce --quick --only los --seed 1 --out DIR") !=
         std::string::npos);
-  fs::remove_all(dir);
 }
 
 TEST_CASE("antkit reproduce runs paper 002 on random maps when the shared maps are missing") {
-  const fs::path dir =
-      fs::temp_directory_path() / ("antkit-reproduce-nomaps-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const antkit::test::ScratchDir scratch("reproduce-nomaps");
+  const fs::path dir = scratch / "out";
   const auto r = run_antkit("reproduce --only stc --maps " + (dir / "absent").string() +
                             " --format json --out " + dir.string());
   REQUIRE(r.status == 0);
@@ -61,13 +59,11 @@ TEST_CASE("antkit reproduce runs paper 002 on random maps when the shared maps a
       CHECK(c["verdict"] == "holds");
   }
   CHECK(j["claims"].size() == antkit::experiments::claims_002().size());
-  fs::remove_all(dir);
 }
 
 TEST_CASE("antkit reproduce --decide looks until the claims settle or the budget ends") {
-  const fs::path dir =
-      fs::temp_directory_path() / ("antkit-reproduce-decide-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const antkit::test::ScratchDir scratch("reproduce-decide");
+  const fs::path dir = scratch / "out";
   const auto r = run_antkit(
       "reproduce --decide --quick --budget 40 --only los --format json --out " + dir.string());
   REQUIRE(r.status == 0);
@@ -82,5 +78,4 @@ TEST_CASE("antkit reproduce --decide looks until the claims settle or the budget
   CHECK(text.str().find("antkit reproduce --quick --only los --decide --budget ") !=
         std::string::npos);
   CHECK(fs::exists(dir / "claims_forest.png"));
-  fs::remove_all(dir);
 }

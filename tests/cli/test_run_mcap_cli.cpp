@@ -5,6 +5,7 @@
 #include "antkit_child.hpp"
 #include "mcap_reader.hpp"
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 #include "test_paths.hpp"
 
 #include <catch2/catch.hpp>
@@ -24,9 +25,7 @@ using Catch::Matchers::Contains;
 
 TEST_CASE("antkit stc --mcap: a pose a step, the tree, and the first repeat at its step",
           "[cli][mcap]") {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("antkit-stc-mcap-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const antkit::test::ScratchDir dir("stc-mcap");
   const std::string map = antkit::test::source_path("data/maps/movingai/empty-32-32.map");
   // Marker noise makes the ant variant repeat sub-cells: the JSON path says where first.
   const std::string out = (dir / "noisy.mcap").string();
@@ -86,15 +85,12 @@ TEST_CASE("antkit stc --mcap: a pose a step, the tree, and the first repeat at i
   CHECK_THAT(big.err, Contains("--mcap"));
   CHECK(big.out.empty());
   CHECK_FALSE(std::filesystem::exists(dir / "big.mcap"));
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("antkit cover --mcap and check cover --mcap: every robot each tick, the broken rule at "
           "its tick",
           "[cli][mcap]") {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("antkit-cover-mcap-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const antkit::test::ScratchDir dir("cover-mcap");
   const std::string map = antkit::test::source_path("data/maps/movingai/empty-32-32.map");
   const std::string trace = (dir / "run.trace").string(), mcap = (dir / "run.mcap").string();
   const auto r = run_antkit("cover --map " + map +
@@ -154,5 +150,4 @@ TEST_CASE("antkit cover --mcap and check cover --mcap: every robot each tick, th
                                   (dir / "no.mcap").string());
   CHECK(refused.status == 2);
   CHECK_THAT(refused.err, Contains("bag export"));
-  std::filesystem::remove_all(dir);
 }

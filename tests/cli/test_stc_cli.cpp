@@ -1,5 +1,6 @@
 // `antkit stc` and `antkit stc-noise`, run as the real executable (issue 3).
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 
 #include <antkit/maps/map_io.hpp>
 #include <antkit/testing/stc.hpp>
@@ -15,11 +16,14 @@ using antkit::test::shared_map;
 
 namespace {
 
+// One directory for the test process (ctest runs each test case in its own), removed when it ends.
+const std::filesystem::path& scratch() {
+  static const antkit::test::ScratchDir dir("stc-cli");
+  return dir.path();
+}
+
 std::filesystem::path temp_file(const std::string& name, const std::string& text) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("antkit-stc-cli-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = dir / name;
+  const auto path = scratch() / name;
   std::ofstream(path) << text;
   return path;
 }
@@ -112,7 +116,7 @@ TEST_CASE("antkit stc: bad input exits 2 with one clear message and no output", 
   const auto ok = temp_file("ok.txt", "....#\n....#\n##..#\n##..#\n");
   const auto partial = temp_file("partial.txt", ".#.#\n#.#.\n.#.#\n#.#.\n");
   const auto malformed = temp_file("bad.map", "type octile\nheight 2\nwidth 3\nmap\n...\n..\n");
-  const auto svg = std::filesystem::temp_directory_path() / "antkit-stc-cli-never.svg";
+  const auto svg = scratch() / "never.svg";
   std::filesystem::remove(svg);
   struct Case {
     std::string args;
@@ -149,10 +153,8 @@ TEST_CASE("antkit stc: bad input exits 2 with one clear message and no output", 
 
 TEST_CASE("antkit stc --svg and --png draw obstacles - tree and tour", "[cli][stc]") {
   const auto map = temp_file("svg.txt", "........\n........\n..##....\n..##....\n");
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("antkit-stc-cli-" + std::to_string(::getpid()));
+  const antkit::test::ScratchDir dir("stc-cli-svg");
   const auto svg = dir / "tour.svg", png = dir / "tour.png";
-  std::filesystem::create_directories(dir);
   const auto r = run_antkit("stc --map " + map.string() + " --variant ant --svg " + svg.string() +
                             " --png " + png.string());
   REQUIRE(r.status == 0);
@@ -168,15 +170,12 @@ TEST_CASE("antkit stc --svg and --png draw obstacles - tree and tour", "[cli][st
   std::string head(8, '\0');
   p.read(head.data(), 8);
   CHECK(head.substr(1, 3) == "PNG");
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("antkit stc streams the path - --path-out csv and bin read back by check stc",
           "[cli][stc]") {
   const std::string map = shared_map("movingai/den312d.map");
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("antkit-stc-path-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const antkit::test::ScratchDir dir("stc-path");
   for (const char* variant : {"offline", "ant-edge", "full"}) {
     INFO(variant);
     const auto json = run_antkit("stc --map " + map + " --variant " + variant +
@@ -212,7 +211,6 @@ TEST_CASE("antkit stc streams the path - --path-out csv and bin read back by che
   const auto wall = run_antkit("stc --map " + map + " --variant offline --format json --start 0,0");
   CHECK(wall.status == 2);
   CHECK(wall.out.empty());
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("antkit stc --noise is reproducible by seed - stc-noise reports a curve", "[cli][stc]") {

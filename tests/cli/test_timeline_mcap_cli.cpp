@@ -5,6 +5,7 @@
 #include "antkit_child.hpp"
 #include "mcap_reader.hpp"
 #include "run_antkit.hpp"
+#include "scratch_dir.hpp"
 #include "test_paths.hpp"
 
 #include <catch2/catch.hpp>
@@ -38,14 +39,11 @@ Read read_mcap(const std::string& path) {
   return r;
 }
 
+// A fresh scratch directory, removed when the test case ends (scratch_dir.hpp).
 struct TempDir {
-  std::filesystem::path path;
-  explicit TempDir(const std::string& name)
-      : path(std::filesystem::temp_directory_path() /
-             ("antkit-" + name + "-" + std::to_string(::getpid()))) {
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
+  antkit::test::ScratchDir scratch;
+  std::filesystem::path path = scratch.path();
+  explicit TempDir(const std::string& name) : scratch(name) {}
   [[nodiscard]] std::string operator/(const std::string& name) const {
     return (path / name).string();
   }
