@@ -1,6 +1,8 @@
 #pragma once
 // A firmware emulator serving a real pseudo-terminal from a thread of the test, and a temporary
 // directory for logs: the end-to-end tests run the real record loop against it over the tty.
+#include "scratch_dir.hpp"
+
 #include <antkit/devices/emulator.hpp>
 #include <antkit/devices/record_loop.hpp>
 #include <antkit/devices/serial.hpp>
@@ -83,23 +85,14 @@ inline void write_lines(const std::string& path, const std::vector<std::string>&
   for (const auto& l : lines) out << l << '\n';
 }
 
-// A fresh directory under the system's temporary directory, removed with everything in it.
+// A fresh directory under the system's temporary directory, removed with everything in it
+// (scratch_dir.hpp).
 class TempDir {
 public:
-  TempDir() {
-    static int counter = 0;
-    path_ = std::filesystem::temp_directory_path() /
-            ("antkit-devices-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  [[nodiscard]] std::string file(const std::string& name) const { return (path_ / name).string(); }
+  [[nodiscard]] std::string file(const std::string& name) const { return (dir_ / name).string(); }
 
 private:
-  std::filesystem::path path_;
+  ScratchDir dir_{"devices"};
 };
 
 } // namespace antkit::test

@@ -1,6 +1,8 @@
 // Hardware logs (devices/log.hpp): the canonical lines, round trips of arbitrary bytes and
 // integers, any valid JSON of the shapes accepted, everything else refused at its line and
 // column, truncation at any byte of the last line, and the writer's per-record flush.
+#include "scratch_dir.hpp"
+
 #include <algorithm>
 #include <antkit/devices/log.hpp>
 #include <antkit/kernel/hash.hpp>
@@ -277,7 +279,8 @@ TEST_CASE("a last line cut at any byte is reported and every record before it is
 }
 
 TEST_CASE("the writer flushes each record as it is written", "[devices]") {
-  const std::string path = "/tmp/antkit-log-flush-" + std::to_string(::getpid()) + ".jsonl";
+  const antkit::test::ScratchDir dir("log-flush");
+  const std::string path = (dir / "flush.jsonl").string();
   {
     devices::LogWriter w(path, header());
     for (std::int64_t s = 0; s < 3; ++s) {
@@ -300,7 +303,6 @@ TEST_CASE("the writer flushes each record as it is written", "[devices]") {
   }
   REQUIRE(r.stop().has_value());
   CHECK(r.stop()->step == 3);
-  ::unlink(path.c_str());
   CHECK_THROWS_AS(devices::LogWriter("/nonexistent/dir/x.jsonl", header()), InputError);
 }
 

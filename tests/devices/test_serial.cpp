@@ -1,5 +1,7 @@
 // The serial link over real pseudo-terminals (devices/serial.hpp): termios set-up, line framing,
 // timeouts with partial bytes, the bounded buffer, hang-ups and stop signals.
+#include "scratch_dir.hpp"
+
 #include <antkit/devices/serial.hpp>
 #include <antkit/devices/stop_signals.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -67,10 +69,10 @@ TEST_CASE("open() refuses a missing path and a file that is not a terminal", "[d
     CHECK(e.where() == "port");
     CHECK(std::string(e.what()).find("/nonexistent/ttyX") != std::string::npos);
   }
-  const std::string file = "/tmp/antkit-not-a-tty-" + std::to_string(::getpid());
+  const antkit::test::ScratchDir dir("not-a-tty");
+  const std::string file = (dir / "not-a-tty").string();
   std::ofstream(file) << "x";
   CHECK_THROWS_AS(devices::SerialPort::open(file, line(9600, 1)), antkit::kernel::InputError);
-  ::unlink(file.c_str());
 }
 
 TEST_CASE("read_line assembles lines across writes and splits several in one write", "[devices]") {

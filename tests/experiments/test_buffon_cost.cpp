@@ -1,5 +1,7 @@
 // The cost of precision's sweep and files (experiments/buffon_cost.hpp): its arenas, its tables
 // and figure on a quick run, the same bytes for any number of threads, and its refusals.
+#include "scratch_dir.hpp"
+
 #include <algorithm>
 #include <antkit/experiments/buffon_cost.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -88,9 +90,8 @@ TEST_CASE("run_buffon_cost --quick: every arena, P and method, its fits, its fig
   CHECK(ex::buffon_cost_csv(one) == ex::buffon_cost_csv(three));
   CHECK(ex::buffon_cost_fits_csv(one) == ex::buffon_cost_fits_csv(three));
 
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("antkit-test-buffon-cost-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const antkit::test::ScratchDir scratch("test-buffon-cost");
+  const auto& dir = scratch.path();
   const auto files = ex::write_buffon_cost(cost, dir);
   CHECK(files[0] == dir / "precision_cost.csv");
   CHECK(files[3] == dir / "precision_cost.png");
@@ -100,7 +101,6 @@ TEST_CASE("run_buffon_cost --quick: every arena, P and method, its fits, its fig
   CHECK(written.str() == csv);
   for (const auto& f : files) CHECK(std::filesystem::file_size(f) > 0);
   ex::release_drawing_caches();
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("run_buffon_cost refuses trials and budgets out of range, in its own words",

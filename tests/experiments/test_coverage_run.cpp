@@ -2,6 +2,8 @@
 // writes: the traced run is the plain run (same hash), its trace reads back through
 // testing::read_cover_trace with the run's poses, sensor and claims, and a trace that cannot be
 // written is refused by its name with no file left.
+#include "scratch_dir.hpp"
+
 #include <antkit/experiments/coverage_run.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/testing/run_audit.hpp>
@@ -33,9 +35,8 @@ std::string slurp(const fs::path& p) {
 } // namespace
 
 TEST_CASE("run_coverage_traced: the plain run, with a trace check cover reads", "[uniform]") {
-  const fs::path dir =
-      fs::temp_directory_path() / ("antkit-cover-run-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const antkit::test::ScratchDir scratch("cover-run");
+  const fs::path& dir = scratch.path();
   for (const auto algorithm : {uniform::Algorithm::PrimaryMovement, uniform::Algorithm::Frontier}) {
     auto plain_world = world(3);
     const auto plain = uniform::run_coverage(plain_world, algorithm, 3, 0, 2000);
@@ -66,5 +67,4 @@ TEST_CASE("run_coverage_traced: the plain run, with a trace check cover reads", 
     }
     CHECK_FALSE(fs::exists(dir / "absent"));
   }
-  fs::remove_all(dir);
 }

@@ -3,6 +3,7 @@
 // seed and the budget in trials alone (not the threads), and a time budget's report is reproduced
 // by the budget in trials it states. The two whole runs are [slow] (20 s each here): the sanitizer
 // pass runs the decide path through tests/cli's `reproduce --decide` instead.
+#include "scratch_dir.hpp"
 #include "test_paths.hpp"
 
 #include <algorithm>
@@ -34,14 +35,6 @@ std::map<std::string, std::string> tree(const fs::path& dir) {
       files[fs::relative(e.path(), dir).string()] = s.str();
     }
   return files;
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path p =
-      fs::temp_directory_path() / ("antkit-decide-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
 }
 
 ex::ReproduceOptions decide_options(const fs::path& out) {
@@ -149,7 +142,8 @@ TEST_CASE("decide: a look extends only the arenas asked for, each as its own run
 
 TEST_CASE("decide: the looks settle claims, say when, and the bytes do not depend on the threads",
           "[slow]") {
-  const fs::path base = scratch("threads");
+  const antkit::test::ScratchDir scratch("decide-threads");
+  const fs::path& base = scratch.path();
   std::map<std::string, std::string> first;
   for (const unsigned threads : {1u, 3u}) {
     const fs::path dir = base / std::to_string(threads);
@@ -204,12 +198,12 @@ TEST_CASE("decide: the looks settle claims, say when, and the bytes do not depen
   CHECK(first.count("claims_forest.png") == 1);
   CHECK(first.count("claims_forest.svg") == 1);
   INFO(open << " claims still open");
-  fs::remove_all(base);
 }
 
 TEST_CASE("decide: a time budget's report is the report of the budget in trials it states",
           "[slow]") {
-  const fs::path base = scratch("time");
+  const antkit::test::ScratchDir scratch("decide-time");
+  const fs::path& base = scratch.path();
   antkit::algorithms::Runner runner;
   runner.threads = 2;
   auto o = decide_options(base / "time");
@@ -227,12 +221,12 @@ TEST_CASE("decide: a time budget's report is the report of the budget in trials 
   const auto counted = ex::reproduce(again, runner);
   CHECK(counted.looks == timed.looks);
   CHECK(tree(base / "time") == tree(base / "trials"));
-  fs::remove_all(base);
 }
 
 TEST_CASE("decide: a unit's budget stops it at its count, and the report names it for the rerun",
           "[slow]") {
-  const fs::path base = scratch("unit");
+  const antkit::test::ScratchDir scratch("decide-unit");
+  const fs::path& base = scratch.path();
   antkit::algorithms::Runner runner;
   runner.threads = 2;
   auto o = decide_options(base / "capped");
@@ -273,7 +267,6 @@ TEST_CASE("decide: a unit's budget stops it at its count, and the report names i
   for (std::size_t i = 0; i < capped.claims.size(); ++i)
     if (ids004.count(capped.claims[i].id) > 0 && uncapped.claims[i].look == 0)
       CHECK(capped.claims[i].verdict == uncapped.claims[i].verdict);
-  fs::remove_all(base);
 }
 
 TEST_CASE("decide: a unit's budget must name a unit the papers run, within the budget's range") {

@@ -1,6 +1,8 @@
 // save_exploration_figure (experiments/explore_tables.hpp), the picture of `antkit explore`: the
 // same exploration drawn twice gives the same bytes, and a file that cannot be written is refused
 // by its name with nothing left.
+#include "scratch_dir.hpp"
+
 #include <antkit/experiments/explore_tables.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/los/explore.hpp>
@@ -30,9 +32,8 @@ TEST_CASE("save_exploration_figure: the same exploration, the same picture", "[l
   const auto pair = los::start_pair(grid, los::default_start(grid));
   const auto r = los::explore(grid, pair[0], pair[1], los::ExploreOptions{});
   REQUIRE(r.completed);
-  const fs::path dir =
-      fs::temp_directory_path() / ("antkit-explore-figure-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const antkit::test::ScratchDir scratch("explore-figure");
+  const fs::path& dir = scratch.path();
   antkit::experiments::save_exploration_figure("frontier", r, dir / "a.svg", "");
   antkit::experiments::save_exploration_figure("frontier", r, dir / "b.svg", "");
   const std::string a = slurp(dir / "a.svg");
@@ -42,5 +43,4 @@ TEST_CASE("save_exploration_figure: the same exploration, the same picture", "[l
       antkit::experiments::save_exploration_figure("frontier", r, dir / "absent" / "c.svg", ""),
       antkit::kernel::InputError);
   CHECK_FALSE(fs::exists(dir / "absent"));
-  fs::remove_all(dir);
 }

@@ -1,6 +1,8 @@
 // The figures' layout (experiments/plot.hpp): a picture as tall as its contents (no empty band
 // above the caption), panels in rows, one legend per figure, a panel's own y axis, labelled
 // reference lines and points, and the same bytes for the same figure.
+#include "scratch_dir.hpp"
+
 #include <algorithm>
 #include <antkit/experiments/plot.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -16,11 +18,10 @@ namespace ex = antkit::experiments;
 
 namespace {
 
-std::filesystem::path scratch() {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("antkit-plot-test-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return dir;
+// One directory for the test process (ctest runs each test case in its own), removed when it ends.
+const std::filesystem::path& scratch() {
+  static const antkit::test::ScratchDir dir("plot-test");
+  return dir.path();
 }
 
 std::string slurp(const std::filesystem::path& p) {
@@ -78,7 +79,6 @@ TEST_CASE("save_figure: the picture ends under its caption - no empty band", "[p
   CHECK(h3 - h1 == 32);
   CHECK(h1 < 480);
   CHECK(h1 > 300 + 64);
-  std::filesystem::remove_all(scratch());
 }
 
 TEST_CASE("save_figure: panels in rows and one legend for the figure", "[plot]") {
@@ -95,7 +95,6 @@ TEST_CASE("save_figure: panels in rows and one legend for the figure", "[plot]")
   const auto [w_one, h_one] = size_of(f, "one_legend");
   CHECK(w_one == w_grid);
   CHECK(h_one < h_grid);
-  std::filesystem::remove_all(scratch());
 }
 
 TEST_CASE("save_figure: log axes, a panel's own y axis, labelled marks and points - the same "
@@ -122,7 +121,6 @@ TEST_CASE("save_figure: log axes, a panel's own y axis, labelled marks and point
   CHECK(slurp(dir / "a.svg") == slurp(dir / "b.svg"));
   CHECK(slurp(dir / "a.png") == slurp(dir / "b.png"));
   CHECK(slurp(dir / "a.png").substr(1, 3) == "PNG");
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("save_figure: nothing to draw on a log axis is refused, no file left", "[plot]") {
@@ -135,7 +133,6 @@ TEST_CASE("save_figure: nothing to draw on a log axis is refused, no file left",
                   antkit::kernel::InputError);
   CHECK_FALSE(std::filesystem::exists(dir / "none.svg"));
   CHECK_FALSE(std::filesystem::exists(dir / "none.png"));
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("save_figure: written whole or not at all - a PNG that cannot be written leaves no SVG "
@@ -159,5 +156,4 @@ TEST_CASE("save_figure: written whole or not at all - a PNG that cannot be writt
     names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
   CHECK(names == std::vector<std::string>{"fig.png", "fig.svg", "only.png"});
-  std::filesystem::remove_all(dir);
 }

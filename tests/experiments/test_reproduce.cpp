@@ -1,5 +1,6 @@
 // antkit::experiments::reproduce, called as a library: the files, the claims, their agreement
 // with the tables they are decided from, and byte-identical output for any number of threads.
+#include "scratch_dir.hpp"
 #include "test_paths.hpp"
 
 #include <antkit/experiments/claims.hpp>
@@ -46,10 +47,8 @@ ex::ReproduceOptions options(const fs::path& out) {
 } // namespace
 
 TEST_CASE("reproduce writes the report, the tables and the figures, and decides the claims") {
-  const fs::path dir =
-      fs::temp_directory_path() / ("antkit-reproduce-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const antkit::test::ScratchDir scratch("reproduce");
+  const fs::path& dir = scratch.path();
   antkit::algorithms::Runner runner;
   runner.threads = 2;
   const auto report = ex::reproduce(options(dir), runner);
@@ -115,13 +114,11 @@ TEST_CASE("reproduce writes the report, the tables and the figures, and decides 
     CHECK(readme.find(antkit::kernel::hash_hex(e.hash)) != std::string::npos);
   }
   CHECK(readme.find("## Trace hashes") != std::string::npos);
-  fs::remove_all(dir);
 }
 
 TEST_CASE("reproduce writes the same bytes for any number of threads", "[property]") {
-  const fs::path base =
-      fs::temp_directory_path() / ("antkit-reproduce-t-" + std::to_string(::getpid()));
-  fs::remove_all(base);
+  const antkit::test::ScratchDir scratch("reproduce-t");
+  const fs::path& base = scratch.path();
   std::map<std::string, std::string> first;
   for (const unsigned threads : {1u, 3u}) {
     const fs::path dir = base / std::to_string(threads);
@@ -138,7 +135,6 @@ TEST_CASE("reproduce writes the same bytes for any number of threads", "[propert
         CHECK(bytes == first[name]);
       }
   }
-  fs::remove_all(base);
 }
 
 TEST_CASE("reproduce refuses an unknown family") {

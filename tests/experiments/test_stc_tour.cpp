@@ -2,6 +2,8 @@
 // path and counts are run_stc's (and its tour keeps its invariants, stc::keeps_invariants), the
 // path files (CSV and binary) hold the same positions, and a start run_stc refuses is named as the
 // caller asks, with no byte of JSON and no path file.
+#include "scratch_dir.hpp"
+
 #include <antkit/experiments/stc_tour.hpp>
 #include <antkit/kernel/hash.hpp>
 #include <antkit/kernel/input_error.hpp>
@@ -39,9 +41,8 @@ std::string slurp(const fs::path& p) {
 
 TEST_CASE("write_stc_tour: the streamed JSON and path files are run_stc's tour", "[stc]") {
   const auto map = room();
-  const fs::path dir =
-      fs::temp_directory_path() / ("antkit-stc-tour-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const antkit::test::ScratchDir scratch("stc-tour");
+  const fs::path& dir = scratch.path();
   for (const auto variant : {stc::Variant::Offline, stc::Variant::Ant, stc::Variant::Full}) {
     const Cell start{0, 0};
     const auto expected = stc::run_stc(map, start, variant);
@@ -122,5 +123,4 @@ TEST_CASE("write_stc_tour: the streamed JSON and path files are run_stc's tour",
     for (const auto& entry : fs::directory_iterator(dir))
       CHECK(entry.path().filename().string().find("refused") == std::string::npos);
   }
-  fs::remove_all(dir);
 }

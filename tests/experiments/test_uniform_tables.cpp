@@ -2,6 +2,8 @@
 // writes and prints: the two files are tables_csv's and tables_markdown's bytes, the summary's
 // numbers are the rows' means rounded as the Markdown prints them, its hash the rows' in order, and
 // a file that cannot be written is refused by its name with nothing left behind.
+#include "scratch_dir.hpp"
+
 #include <antkit/experiments/uniform_tables.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
@@ -32,9 +34,8 @@ TEST_CASE("write_tables: the files and the summary of cover-experiment", "[unifo
   c.sensor = 3;
   const auto rows = ex::run_tables(c, antkit::algorithms::Runner{});
   REQUIRE(rows.size() == ex::kPaperTables.size());
-  const fs::path dir =
-      fs::temp_directory_path() / ("antkit-uniform-tables-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const antkit::test::ScratchDir scratch("uniform-tables");
+  const fs::path& dir = scratch.path();
   const auto s = ex::write_tables(rows, c, dir);
   CHECK(s.csv == dir / "uniform_tables.csv");
   CHECK(s.markdown == dir / "uniform_tables.md");
@@ -73,5 +74,4 @@ TEST_CASE("write_tables: the files and the summary of cover-experiment", "[unifo
     }
     CHECK_FALSE(fs::exists(dir / "absent"));
   }
-  fs::remove_all(dir);
 }

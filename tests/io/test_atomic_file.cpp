@@ -1,6 +1,8 @@
 // write_file_atomic and write_file_atomic_at (io/atomic_file.hpp): an output file appears
 // whole or not at all (DESIGN.md, Errors). A writer that throws, a file that cannot be opened or a
 // directory that does not exist leave the target as it was and no temporary file beside it.
+#include "scratch_dir.hpp"
+
 #include <antkit/io/atomic_file.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <catch2/catch.hpp>
@@ -31,8 +33,8 @@ std::size_t entries(const fs::path& dir) {
 } // namespace
 
 TEST_CASE("write_file_atomic: whole or not at all", "[io]") {
-  const fs::path dir = fs::temp_directory_path() / ("antkit-atomic-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const antkit::test::ScratchDir scratch("atomic");
+  const fs::path& dir = scratch.path();
   const fs::path target = dir / "out.txt";
 
   io::write_file_atomic(target, "first\n");
@@ -89,5 +91,4 @@ TEST_CASE("write_file_atomic: whole or not at all", "[io]") {
     }
     CHECK(entries(dir) == 1);
   }
-  fs::remove_all(dir);
 }

@@ -4,6 +4,7 @@
 // own MCAP writer (the reader reads back whatever it writes), and on broken bags: each refused with
 // an InputError that says where.
 #include "ros_bags.hpp"
+#include "scratch_dir.hpp"
 
 #include <antkit/io/bag.hpp>
 #include <antkit/io/mcap.hpp>
@@ -43,18 +44,10 @@ std::string slurp(const std::string& path) {
 }
 
 std::string spill(const std::string& name, const std::string& bytes) {
-  const auto path =
-      fs::temp_directory_path() / ("antkit_bag_case_" + std::to_string(::getpid()) + "_" + name);
-  std::ofstream(path, std::ios::binary) << bytes;
   // Removed when the test process ends.
-  static struct Spilled {
-    std::vector<fs::path> paths;
-    ~Spilled() {
-      std::error_code ec;
-      for (const auto& p : paths) fs::remove(p, ec);
-    }
-  } spilled;
-  spilled.paths.push_back(path);
+  static const antkit::test::ScratchDir dir("bag-case");
+  const auto path = dir / name;
+  std::ofstream(path, std::ios::binary) << bytes;
   return path.string();
 }
 

@@ -1,6 +1,7 @@
 // ROS map_server maps: the yaml subset, PGM P5 and P2, the trinary thresholds (strict, in double,
 // 205 against free_thresh 0.196), negate, and the image path relative to the yaml.
 #include "map_test_support.hpp"
+#include "scratch_dir.hpp"
 
 #include <antkit/maps/map_io.hpp>
 #include <catch2/catch.hpp>
@@ -29,19 +30,11 @@ RosMapYaml thresholds(double occupied, double free, bool negate = false) {
   return y;
 }
 
-// A fresh directory under the system temporary directory, removed at the end of the scope.
+// A fresh directory under the system temporary directory, removed at the end of the scope
+// (scratch_dir.hpp).
 struct TempDir {
-  std::filesystem::path path;
-  TempDir() {
-    static int n = 0;
-    path = std::filesystem::temp_directory_path() /
-           ("antkit-maps-test-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
+  antkit::test::ScratchDir scratch{"maps-test"};
+  std::filesystem::path path = scratch.path();
   void write(const std::string& name, const std::string& content) const {
     std::ofstream(path / name, std::ios::binary) << content;
   }

@@ -3,6 +3,7 @@
 // it writes and what the walks are). ros_bags_dir() writes them once per test process into a fresh
 // folder and returns it; "" when node is absent (the caller says it skipped, and why). Node
 // present but its packages missing (`npm ci` not run) is a failure, not a skip.
+#include "scratch_dir.hpp"
 #include "test_paths.hpp"
 
 #include <cstdlib>
@@ -20,9 +21,9 @@ inline bool have_node() {
 inline std::string ros_bags_dir() {
   static const std::string dir = [] {
     if (!have_node()) return std::string();
-    const auto d =
-        std::filesystem::temp_directory_path() / ("antkit_ros_bags_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(d);
+    // The folder goes when the test process ends (also when writing it fails).
+    static const ScratchDir scratch("ros-bags");
+    const auto d = scratch / "bags";
     const std::string cmd = "node '" + source_path("tests/support/write_bags.mjs") + "' '" +
                             d.string() + "' >/dev/null";
     if (std::system(cmd.c_str()) != 0)
@@ -30,14 +31,6 @@ inline std::string ros_bags_dir() {
                                "scripts/bootstrap.sh --node-packages)");
     return d.string();
   }();
-  // The folder goes when the test process ends.
-  static const struct Cleanup {
-    std::string dir;
-    ~Cleanup() {
-      std::error_code ec;
-      if (!dir.empty()) std::filesystem::remove_all(dir, ec);
-    }
-  } cleanup{dir};
   return dir;
 }
 

@@ -1,6 +1,8 @@
 // antkit campaign's engine (testing/campaign): case i is case i whatever runs it, the outputs
 // depend on the options only, a failing case shrinks to a minimal map with a command that
 // reproduces it, and a time limit stops at a case boundary.
+#include "scratch_dir.hpp"
+
 #include <antkit/campaign/campaign.hpp>
 #include <antkit/kernel/input_error.hpp>
 #include <antkit/maps/map_io.hpp>
@@ -91,9 +93,8 @@ TEST_CASE("campaign: a failing rule shrinks to the smallest map that breaks it",
     if (i > 0) CHECK(r.failures[i - 1].case_index < r.failures[i].case_index);
   }
   // The outputs: a MovingAI map per failure that reads back as the shrunk map, and its command.
-  const fs::path dir =
-      fs::temp_directory_path() / ("antkit-campaign-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const antkit::test::ScratchDir scratch("campaign");
+  const fs::path dir = scratch / "out";
   const std::string summary = campaign::write_outputs(o, r, dir);
   CHECK(slurp(dir / "summary.json") == summary);
   const auto& f = r.failures.front();
@@ -101,7 +102,6 @@ TEST_CASE("campaign: a failing rule shrinks to the smallest map that breaks it",
   CHECK(maps::load_map(dir / name).cells.cells() == f.map.cells());
   CHECK(summary.find("\"command\": \"antkit explore --map " + name + " --algo fast-wall-follow") !=
         std::string::npos);
-  fs::remove_all(dir);
 }
 
 TEST_CASE("campaign: STC cases shrink too, and their command names the variant and the start",
@@ -216,12 +216,10 @@ TEST_CASE("campaign: a Buffon failure is written as its WKT arena with its comma
   f.arena_wkt = "POLYGON ((0 0, 30 0, 30 30, 0 30, 0 0))";
   f.command = "antkit buffon --arena {MAP} --trials 1 --seed 9 --width 0.100 --steps 40";
   r.failures.push_back(campaign::deserialize(campaign::serialize(f)));
-  const fs::path dir =
-      fs::temp_directory_path() / ("antkit-campaign-b-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const antkit::test::ScratchDir scratch("campaign-b");
+  const fs::path dir = scratch / "out";
   const std::string summary = campaign::write_outputs(o, r, dir);
   CHECK(slurp(dir / "case-3.wkt") == f.arena_wkt + "\n");
   CHECK(summary.find("\"command\": \"antkit buffon --arena case-3.wkt --trials 1 --seed 9") !=
         std::string::npos);
-  fs::remove_all(dir);
 }
