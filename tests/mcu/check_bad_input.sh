@@ -8,11 +8,13 @@ here=$(cd "$(dirname "$0")/../.." && pwd)
 maps=$1
 run=$here/scripts/run-on-mcu.sh
 failed=0
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
 expect() { # expect NAME PATTERN COMMAND...: exit 2, stderr matching PATTERN, nothing on stdout
   local name=$1 pattern=$2
   shift 2
   local out err status
-  err=$(mktemp)
+  err=$work/expect.err
   out=$("$@" 2>"$err")
   status=$?
   if [ $status -eq 2 ] && [ -z "$out" ] && grep -Eq "$pattern" "$err"; then
@@ -45,8 +47,6 @@ expect wanderer-bad-density "error: .*density" "$run" wanderer --size 20x20 --de
 expect wanderer-no-map "error: .*give either --map" "$run" wanderer --seed 3
 
 # The chip's own refusals: a file that is not an input, and one cut short.
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 chip() { # chip FILE: the image on FILE, its exit status and output
   timeout 60 qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none \
     -semihosting-config "enable=on,target=native,arg=antkit_mcu,arg=$1" -kernel "$ANTKIT_MCU_IMAGE"
