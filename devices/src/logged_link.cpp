@@ -38,17 +38,20 @@ std::string_view LoggedLink::transact_view(const std::string& request, std::vect
 }
 
 Attempt LoggedLink::read_attempt(const Exchange& e) const {
+  Fields unused;
+  return read_attempt(e, unused);
+}
+
+Attempt LoggedLink::read_attempt(const Exchange& e, Fields& fields) const {
   const std::string& request = e.sent;
   const std::string_view bytes = e.received;
   if (framing_.reading_for(request) == Reading::Bytes) {
     // The reply's size exactly (fewer: the live link timed out; more: bytes after the reply).
-    Attempt a;
     if (bytes.size() == framing_.reply_size(request) &&
-        framing_.kind_with_fields(request, bytes, a.fields) == ReplyKind::Reply) {
-      a.kind = Attempt::Kind::Reply;
-      a.end = bytes.size();
-      return a;
+        framing_.kind_with_fields(request, bytes, fields) == ReplyKind::Reply) {
+      return {Attempt::Kind::Reply, 0, bytes.size()};
     }
+    fields = {};
     return {};
   }
   // The attempt's bytes, line by line, as the live link read them.
@@ -59,22 +62,16 @@ Attempt LoggedLink::read_attempt(const Exchange& e) const {
     const std::string_view line = bytes.substr(from, nl + 1 - from);
     const std::size_t b = from;
     from = nl + 1;
-    Attempt a;
-    const ReplyKind kind = framing_.kind_with_fields(request, line, a.fields);
+    const ReplyKind kind = framing_.kind_with_fields(request, line, fields);
     if (kind == ReplyKind::Stale) continue;
-    a.begin = b;
-    a.end = from;
     if (from < bytes.size()) {
-      a.kind = Attempt::Kind::After;
-      a.fields = {};
-      return a;
+      fields = {};
+      return {Attempt::Kind::After, b, from};
     }
-    if (kind == ReplyKind::Reply) {
-      a.kind = Attempt::Kind::Reply;
-      return a;
-    }
+    if (kind == ReplyKind::Reply) return {Attempt::Kind::Reply, b, from};
     break; // a bad line: the live link resent
   }
+  fields = {};
   return {};
 }
 
@@ -89,12 +86,12 @@ std::string_view LoggedLink::reply_of(const std::string& request) {
     ++sends_;
     last_send_ns_ = e.t_ns;
     // e.sent is `request` (expect): its reading, ahead or now.
-    const Attempt a = at < attempts_.size() ? attempts_[at] : read_attempt(e);
+    // Read here, the reply's values are kept for the body; read ahead, they stayed on the reading
+    // thread (carrying them across costs the checking thread more than decoding them again).
+    const Attempt a = at < attempts_.size() ? attempts_[at] : read_attempt(e, fields_);
     const std::string_view unit = std::string_view(e.received).substr(a.begin, a.end - a.begin);
-    if (a.kind == Attempt::Kind::Reply) {
-      fields_ = a.fields;
-      return unit;
-    }
+    if (a.kind == Attempt::Kind::Reply) return unit;
+    fields_ = {};
     if (a.kind == Attempt::Kind::After)
       throw Diverged{{step_, field_ + "[" + std::to_string(at) + "].received",
                       "'" + printable(e.received) + "'",

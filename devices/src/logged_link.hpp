@@ -30,9 +30,6 @@ struct Attempt {
   enum class Kind : std::uint8_t { Reply, Fault, After };
   Kind kind = Kind::Fault;
   std::size_t begin = 0, end = 0;
-  // A Reply's values as the framing decoded them in judging it (Framing::kind_with_fields;
-  // letter 0: the framing keeps none), handed to the body with the reply (reply_fields()).
-  Fields fields;
   friend bool operator==(const Attempt&, const Attempt&) = default;
 };
 
@@ -53,6 +50,9 @@ public:
   // What `e` is as the attempt that sent e.sent (Attempt): the framing's reading of its bytes.
   // Depends on the framing and `e` only, so it may run on another thread than the replay's.
   [[nodiscard]] Attempt read_attempt(const Exchange& e) const;
+  // read_attempt(), and a Reply's values as the framing decoded them in judging it
+  // (Framing::kind_with_fields; cleared for any other attempt, or where the framing keeps none).
+  [[nodiscard]] Attempt read_attempt(const Exchange& e, Fields& fields) const;
   [[nodiscard]] std::size_t position() const noexcept { return k_; }
   [[nodiscard]] bool at_end() const noexcept { return k_ >= io_->size(); }
   // In the stop record the log may end in the middle of a request (the run ended there): that is

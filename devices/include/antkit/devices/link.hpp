@@ -135,7 +135,8 @@ public:
   // The values of the reply the last transact() or transact_view() returned, as the framing
   // decoded them when it judged that reply valid (Framing::kind_with_fields), or null when this
   // link does not keep them (the live links: their body decodes the reply itself). A replay's
-  // link keeps them, so that the body (body.hpp) does not decode one line twice.
+  // link keeps those of a reply it judged itself, so that the body (body.hpp) does not decode one
+  // line twice (not those its reading thread judged ahead: see LoggedLink::reply_of).
   [[nodiscard]] virtual const Fields* reply_fields() const noexcept { return nullptr; }
   // The framing's resynchronisation on its own (see above; nothing when the framing has none):
   // the start's and the safe stop's first exchange where the robot's state is unknown.
