@@ -188,6 +188,46 @@ TEST_CASE("every record line the reader accepts is JSON to nlohmann-json, with t
   CHECK(fast_edited > 0);
 }
 
+// The fast path copies a string's plain bytes as they are (log.cpp, Canonical::string): every
+// byte value, raw, at every place of a 24-byte plain run, must be read as nlohmann-json reads the
+// line: accepted exactly when JSON takes the byte raw in a string (0x20 to 0x7F but '"' and
+// '\\'; the reader refuses bytes above 0x7F, which JSON takes only as UTF-8), to the same record.
+// (It held a word-at-a-time scan of the run, tried and not kept, to the same: each of its four
+// byte tests removed failed it.)
+TEST_CASE("the fast path's strings: every byte at every place of a run, against nlohmann-json",
+          "[devices][proof]") {
+  devices::LogRecord r = record(0);
+  const std::string run = "ABCDEFGHIJKLMNOPQRSTUVWX";
+  r.io = {{run, "z\r\n"}};
+  const std::string canonical = devices::format_record(r);
+  const auto at = canonical.find(run);
+  REQUIRE(at != std::string::npos);
+  std::size_t accepted = 0, wrong = 0;
+  for (std::size_t k = 0; k < run.size(); ++k)
+    for (int b = 0; b < 256; ++b) {
+      std::string line = canonical;
+      line[at + k] = static_cast<char>(b);
+      const bool plain = b >= 0x20 && b < 0x80 && b != '"' && b != '\\';
+      devices::LogRecord fast;
+      const bool read = devices::detail::read_canonical_step(line, fast);
+      const auto theirs = antkit::test::record_by_json_library(line);
+      bool right = read == plain && theirs.has_value() == plain;
+      if (read && right) {
+        devices::LogRecord expected = r;
+        expected.io[0].sent[k] = static_cast<char>(b);
+        right = fast == expected && *theirs == expected;
+      }
+      if (!right) {
+        UNSCOPED_INFO("byte " << b << " at " << k << ": fast " << read << ", json "
+                              << theirs.has_value());
+        ++wrong;
+      }
+      accepted += read ? 1 : 0;
+    }
+  CHECK(wrong == 0);
+  CHECK(accepted == run.size() * (0x80 - 0x20 - 2));
+}
+
 TEST_CASE("any key order, whitespace and escapes are read", "[devices]") {
   const std::string text =
       kHeader + "\n" +
