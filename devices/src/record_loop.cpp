@@ -82,7 +82,8 @@ void Body::start(std::vector<Exchange>& io) {
 // The link returns only a reply its framing validated: the text robots' by decode_reply() of the
 // request, whose values for the proximity and odometry requests are decode_proximity()'s and
 // decode_odometry()'s (held equal by test_protocol's property, for every serial robot). A replay's
-// link keeps those values (reply_fields()): they are used, not decoded again.
+// link keeps the values of the replies it judged itself (reply_fields()): those are used, not
+// decoded again.
 Proximity Body::proximity_of(std::string_view reply) const {
   if (const Fields* f = link_.reply_fields(); f != nullptr && f->letter == 'n' && f->count >= 8) {
     Proximity p;

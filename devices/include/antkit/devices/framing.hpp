@@ -85,8 +85,8 @@ public:
   }
   // kind(), with the values the framing's judgement decoded when the unit is the reply (the text
   // robots' codec validates a reply by decoding it: Codec::decode_reply), else `fields` cleared
-  // (letter 0). A replay keeps them with the reply, so that its body does not decode the same
-  // line a second time (CommandLink::reply_fields).
+  // (letter 0). A replay's link hands them to the body with the reply, so that it does not
+  // decode the same line a second time (CommandLink::reply_fields).
   [[nodiscard]] virtual ReplyKind kind_with_fields(std::string_view request, std::string_view unit,
                                                    Fields& fields) const {
     fields = {};
