@@ -43,15 +43,15 @@ Attempt LoggedLink::read_attempt(const Exchange& e) const {
 }
 
 Attempt LoggedLink::read_attempt(const Exchange& e, Fields& fields) const {
+  fields = {}; // the framing leaves values only for a reply
   const std::string& request = e.sent;
   const std::string_view bytes = e.received;
   if (framing_.reading_for(request) == Reading::Bytes) {
     // The reply's size exactly (fewer: the live link timed out; more: bytes after the reply).
     if (bytes.size() == framing_.reply_size(request) &&
-        framing_.kind_with_fields(request, bytes, fields) == ReplyKind::Reply) {
+        framing_.kind(request, bytes, fields) == ReplyKind::Reply) {
       return {Attempt::Kind::Reply, 0, bytes.size()};
     }
-    fields = {};
     return {};
   }
   // The attempt's bytes, line by line, as the live link read them.
@@ -62,16 +62,15 @@ Attempt LoggedLink::read_attempt(const Exchange& e, Fields& fields) const {
     const std::string_view line = bytes.substr(from, nl + 1 - from);
     const std::size_t b = from;
     from = nl + 1;
-    const ReplyKind kind = framing_.kind_with_fields(request, line, fields);
+    const ReplyKind kind = framing_.kind(request, line, fields);
     if (kind == ReplyKind::Stale) continue;
     if (from < bytes.size()) {
-      fields = {};
+      fields = {}; // the line may have been a reply: what follows it makes this no reply
       return {Attempt::Kind::After, b, from};
     }
     if (kind == ReplyKind::Reply) return {Attempt::Kind::Reply, b, from};
     break; // a bad line: the live link resent
   }
-  fields = {};
   return {};
 }
 
@@ -91,7 +90,6 @@ std::string_view LoggedLink::reply_of(const std::string& request) {
     const Attempt a = at < attempts_.size() ? attempts_[at] : read_attempt(e, fields_);
     const std::string_view unit = std::string_view(e.received).substr(a.begin, a.end - a.begin);
     if (a.kind == Attempt::Kind::Reply) return unit;
-    fields_ = {};
     if (a.kind == Attempt::Kind::After)
       throw Diverged{{step_, field_ + "[" + std::to_string(at) + "].received",
                       "'" + printable(e.received) + "'",

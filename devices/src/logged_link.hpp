@@ -51,7 +51,7 @@ public:
   // Depends on the framing and `e` only, so it may run on another thread than the replay's.
   [[nodiscard]] Attempt read_attempt(const Exchange& e) const;
   // read_attempt(), and a Reply's values as the framing decoded them in judging it
-  // (Framing::kind_with_fields; cleared for any other attempt, or where the framing keeps none).
+  // (Framing::kind; cleared for any other attempt, or where the framing keeps none).
   [[nodiscard]] Attempt read_attempt(const Exchange& e, Fields& fields) const;
   [[nodiscard]] std::size_t position() const noexcept { return k_; }
   [[nodiscard]] bool at_end() const noexcept { return k_ >= io_->size(); }

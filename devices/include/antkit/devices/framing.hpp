@@ -78,19 +78,16 @@ public:
   [[nodiscard]] virtual std::size_t reply_size(std::string_view request) const = 0;
   // One unit read after sending `request`: a whole line (Reading::Lines), or reply_size() bytes.
   [[nodiscard]] virtual Verdict classify(std::string_view request, std::string_view unit) const = 0;
-  // classify()'s kind alone: a framing whose classify() builds a reason it can skip overrides it
-  // (a replay classifies every reply and never reads the reason of one that is not bad).
-  [[nodiscard]] virtual ReplyKind kind(std::string_view request, std::string_view unit) const {
-    return classify(request, unit).kind;
-  }
-  // kind(), with the values the framing's judgement decoded when the unit is the reply (the text
-  // robots' codec validates a reply by decoding it: Codec::decode_reply), else `fields` cleared
-  // (letter 0). A replay's link hands them to the body with the reply, so that it does not
-  // decode the same line a second time (CommandLink::reply_fields).
-  [[nodiscard]] virtual ReplyKind kind_with_fields(std::string_view request, std::string_view unit,
-                                                   Fields& fields) const {
+  // classify()'s kind alone, and the values the framing's judgement decoded when the unit is the
+  // reply (the text robots' codec validates a reply by decoding it: Codec::decode_reply), else
+  // `fields` cleared (letter 0). A framing whose classify() builds a reason it can skip overrides
+  // it (a replay judges every reply and never reads the reason of one that is not bad), and a
+  // replay's link hands the values to the body with the reply, so that it does not decode the
+  // same line a second time (CommandLink::reply_fields).
+  [[nodiscard]] virtual ReplyKind kind(std::string_view request, std::string_view unit,
+                                       Fields& fields) const {
     fields = {};
-    return kind(request, unit);
+    return classify(request, unit).kind;
   }
   // Sent after a failed attempt, before the resend ("": nothing).
   [[nodiscard]] virtual std::string resync() const = 0;
@@ -121,11 +118,8 @@ public:
   [[nodiscard]] Reading reading() const noexcept override { return Reading::Lines; }
   [[nodiscard]] std::size_t reply_size(std::string_view) const override { return 0; }
   [[nodiscard]] Verdict classify(std::string_view request, std::string_view unit) const override;
-  [[nodiscard]] ReplyKind kind(std::string_view request, std::string_view unit) const override {
-    return classify_reply(codec_, request, unit);
-  }
-  [[nodiscard]] ReplyKind kind_with_fields(std::string_view request, std::string_view unit,
-                                           Fields& fields) const override {
+  [[nodiscard]] ReplyKind kind(std::string_view request, std::string_view unit,
+                               Fields& fields) const override {
     return classify_reply(codec_, request, unit, &fields);
   }
   [[nodiscard]] std::string resync() const override { return {}; }

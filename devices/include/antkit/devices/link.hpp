@@ -133,7 +133,7 @@ public:
     return reply;
   }
   // The values of the reply the last transact() or transact_view() returned, as the framing
-  // decoded them when it judged that reply valid (Framing::kind_with_fields), or null when this
+  // decoded them when it judged that reply valid (Framing::kind), or null when this
   // link does not keep them (the live links: their body decodes the reply itself). A replay's
   // link keeps those of a reply it judged itself, so that the body (body.hpp) does not decode one
   // line twice (not those its reading thread judged ahead: see LoggedLink::reply_of).
