@@ -14,12 +14,37 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <string>
+#include <system_error>
+#include <unistd.h>
 
 bool consumer_property(); // property.cpp: rapidcheck over antkit::testing
 // c_api.c: ant-like STC on a 6 x 4 room through the C API alone.
 extern "C" std::uint64_t consumer_c_tour_hash(std::int64_t* covered);
 
+namespace {
+// The files this test writes go in a directory of the process's own, removed when main returns,
+// pass or fail, so that nothing is left in /tmp and two checkouts running the test at once do not
+// write the same files. (The project's tests use tests/support/scratch_dir.hpp; this one builds
+// against the installed package alone.)
+struct ScratchDir {
+  std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("antkit-consumer-" + std::to_string(::getpid()));
+  ScratchDir() {
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directory(path);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  ~ScratchDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+} // namespace
+
 int main() {
+  const ScratchDir scratch;
   antkit::kernel::Grid<std::uint8_t> grid(4, 3, 0);
   grid[{1, 2}] = 7;
   antkit::kernel::Stream stream(1, 2, 3, 4, 5);
@@ -64,14 +89,12 @@ int main() {
          false,
          {{0, empty_room, std::nullopt, std::nullopt}, {1, 50, std::nullopt, std::nullopt}}}},
        {}});
-  const auto dir = std::filesystem::temp_directory_path();
+  const auto& dir = scratch.path;
   antkit::experiments::save_figure(figure, dir / "antkit-consumer.svg",
                                    dir / "antkit-consumer.png");
   antkit::experiments::release_drawing_caches();
   const bool experiments_ok = empty_room > 30 && empty_room < 70 && tables.hash != 0 &&
                               std::filesystem::file_size(dir / "antkit-consumer.png") > 1000;
-  std::filesystem::remove(dir / "antkit-consumer.svg");
-  std::filesystem::remove(dir / "antkit-consumer.png");
   std::printf("consumer: antkit::experiments, empty room %.1f steps: %s\n", empty_room,
               experiments_ok ? "ok" : "FAILED");
   // The maps layer (no CGAL) and the file writer under it (antkit::io): an ASCII map saved whole
@@ -80,7 +103,6 @@ int main() {
   antkit::maps::save_map(dir / "antkit-consumer.txt", map);
   const bool maps_ok =
       antkit::maps::load_map(dir / "antkit-consumer.txt") == map && map.cells.size() == 6;
-  std::filesystem::remove(dir / "antkit-consumer.txt");
   std::printf("consumer: antkit::maps, a map saved and read back: %s\n", maps_ok ? "ok" : "FAILED");
   const bool property_ok = consumer_property() && experiments_ok;
   std::printf("consumer: antkit::testing property: %s\n", property_ok ? "ok" : "FAILED");
