@@ -13,10 +13,6 @@ using Clock = std::chrono::steady_clock;
 // milliseconds; a host under load, or an emulator between two polls, a little later).
 constexpr std::chrono::milliseconds kSettleMin{20};
 
-char lower(char c) noexcept {
-  return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
-}
-
 std::chrono::milliseconds backoff_for(const LinkOptions& o, std::uint32_t attempt) noexcept {
   // attempt >= 1: backoff x 2^(attempt - 1), at most backoff_max.
   auto d = o.backoff;
@@ -61,7 +57,7 @@ ReplyKind classify_reply(const Codec& codec, std::string_view command, std::stri
                          Fields* fields) {
   if (fields != nullptr) *fields = {};
   if (command.empty()) return ReplyKind::Bad;
-  if (!line.empty() && line[0] == lower(command[0])) {
+  if (!line.empty() && line[0] == reply_letter(command[0])) {
     const auto decoded = codec.decode_reply(command, line);
     if (!decoded) return ReplyKind::Bad;
     if (fields != nullptr) *fields = *decoded.value;

@@ -59,12 +59,6 @@ Decoded<Fields> scan_text(std::string_view line, char letter) {
   return d;
 }
 
-// ASCII only: what std::tolower does in the C locale, the only one antkit runs in (it never calls
-// setlocale), without its call per letter.
-char lower(char c) {
-  return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
-}
-
 // The letter, each value after a comma, the terminator: each value by to_chars, with no string
 // of its own (a replay builds three commands a step; their temporaries were a tenth of its
 // reply-side time), whatever the count of values.
@@ -158,7 +152,7 @@ std::string Codec::version() const {
 }
 bool Codec::identifies(std::string_view version_reply) const {
   if (robot_->identifies == nullptr) return false;
-  if (!scan_text(version_reply, lower(robot_->version_letter))) return false;
+  if (!scan_text(version_reply, reply_letter(robot_->version_letter))) return false;
   std::string_view text = version_reply.substr(1, version_reply.size() - 3); // letter .. CR LF
   if (!text.empty()) text.remove_prefix(1);                                  // the comma
   return robot_->identifies(text);
@@ -182,7 +176,7 @@ std::vector<std::string> Codec::safe_stop() const {
 }
 
 Decoded<bool> Codec::decode_ack(std::string_view line, char command_letter) const {
-  const auto f = scan_reply(line, lower(command_letter), 0, 0, 0, 0);
+  const auto f = scan_reply(line, reply_letter(command_letter), 0, 0, 0, 0);
   if (!f) return error_at<bool>(f.error.column, f.error.message);
   Decoded<bool> d;
   d.value = true;
@@ -203,7 +197,7 @@ Decoded<Proximity> Codec::decode_proximity(std::string_view line) const {
 
 Decoded<WheelPair> Codec::decode_odometry(std::string_view line) const {
   if (!robot_->has_odometry) return error_at<WheelPair>(1, "this robot has no wheel counters");
-  const auto f = scan_reply(line, lower(robot_->odometry_read), 2, 2, INT32_MIN, INT32_MAX);
+  const auto f = scan_reply(line, reply_letter(robot_->odometry_read), 2, 2, INT32_MIN, INT32_MAX);
   if (!f) return error_at<WheelPair>(f.error.column, f.error.message);
   Decoded<WheelPair> d;
   d.value = WheelPair{f.value->values[0], f.value->values[1]};
@@ -220,7 +214,7 @@ Decoded<WheelPair> Codec::decode_speed(std::string_view line) const {
 
 Decoded<Fields> Codec::decode_reply(std::string_view sent_command, std::string_view line) const {
   if (sent_command.empty()) return error_at<Fields>(1, "no command was sent");
-  const char c = lower(sent_command[0]);
+  const char c = reply_letter(sent_command[0]);
   const auto& r = *robot_;
   if (c == 'n' || c == 'o') {
     const std::size_t extra = r.proximity_extra;
@@ -230,7 +224,7 @@ Decoded<Fields> Codec::decode_reply(std::string_view sent_command, std::string_v
     return f;
   }
   if (c == 'e') return scan_reply(line, 'e', 2, 2, r.speed_min, r.speed_max);
-  if (r.has_odometry && c == lower(r.odometry_read))
+  if (r.has_odometry && c == reply_letter(r.odometry_read))
     return scan_reply(line, c, 2, 2, INT32_MIN, INT32_MAX);
   if (c == 'b' || c == 'v') return scan_text(line, c);
   return scan_reply(line, c, 0, 0, 0, 0);
@@ -241,7 +235,7 @@ Decoded<Fields> Codec::parse_command(std::string_view line) const {
 }
 
 std::string Codec::reply(char command_letter, std::span<const std::int32_t> values) const {
-  const char c = lower(command_letter);
+  const char c = reply_letter(command_letter);
   std::string s(1, c);
   // HemiOS pads sensor readings to three digits (see protocol.hpp).
   const std::size_t pad = c == 'n' || c == 'o' ? robot_->reading_digits : 0;

@@ -85,7 +85,8 @@ void Body::start(std::vector<Exchange>& io) {
 // link keeps the values of the replies it judged itself (reply_fields()): those are used, not
 // decoded again.
 Proximity Body::proximity_of(std::string_view reply) const {
-  if (const Fields* f = link_.reply_fields(); f != nullptr && f->letter == 'n' && f->count >= 8) {
+  if (const Fields* f = link_.reply_fields();
+      f != nullptr && f->letter == reply_letter('N') && f->count >= 8) {
     Proximity p;
     std::copy_n(f->values.begin(), 8, p.raw.begin());
     return p;
@@ -95,7 +96,7 @@ Proximity Body::proximity_of(std::string_view reply) const {
 
 WheelPair Body::odometry_of(std::string_view reply) const {
   if (const Fields* f = link_.reply_fields();
-      f != nullptr && f->letter == (robot_.odometry_read | 0x20) && f->count == 2) // 'H' -> 'h'
+      f != nullptr && f->letter == reply_letter(robot_.odometry_read) && f->count == 2)
     return {f->values[0], f->values[1]};
   return *codec_.decode_odometry(reply).value;
 }

@@ -14,37 +14,16 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <string>
-#include <system_error>
-#include <unistd.h>
+// The test suite's scratch directory (standard C++ only, no antkit): the files below go in a
+// directory of this process's own, removed when main returns, pass or fail.
+#include "scratch_dir.hpp"
 
 bool consumer_property(); // property.cpp: rapidcheck over antkit::testing
 // c_api.c: ant-like STC on a 6 x 4 room through the C API alone.
 extern "C" std::uint64_t consumer_c_tour_hash(std::int64_t* covered);
 
-namespace {
-// The files this test writes go in a directory of the process's own, removed when main returns,
-// pass or fail, so that nothing is left in /tmp and two checkouts running the test at once do not
-// write the same files. (The project's tests use tests/support/scratch_dir.hpp; this one builds
-// against the installed package alone.)
-struct ScratchDir {
-  std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("antkit-consumer-" + std::to_string(::getpid()));
-  ScratchDir() {
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directory(path);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  ~ScratchDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path, ignored);
-  }
-};
-} // namespace
-
 int main() {
-  const ScratchDir scratch;
+  const antkit::test::ScratchDir scratch("consumer");
   antkit::kernel::Grid<std::uint8_t> grid(4, 3, 0);
   grid[{1, 2}] = 7;
   antkit::kernel::Stream stream(1, 2, 3, 4, 5);
@@ -89,7 +68,7 @@ int main() {
          false,
          {{0, empty_room, std::nullopt, std::nullopt}, {1, 50, std::nullopt, std::nullopt}}}},
        {}});
-  const auto& dir = scratch.path;
+  const auto& dir = scratch.path();
   antkit::experiments::save_figure(figure, dir / "antkit-consumer.svg",
                                    dir / "antkit-consumer.png");
   antkit::experiments::release_drawing_caches();

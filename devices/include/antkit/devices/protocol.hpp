@@ -100,6 +100,12 @@ private:
   std::string read_proximity_, read_odometry_;
 };
 
+// The letter of a reply to a command of letter `c`: c in lower case (ASCII only: what std::tolower
+// does in the C locale, the only one antkit runs in; it never calls setlocale).
+constexpr char reply_letter(char c) noexcept {
+  return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+}
+
 // The serial robots whose identification rule a reply line to `version_command` ("B\r", "V\r")
 // satisfies, by name ("khepera-webots"; "" when none): for the message refusing another robot.
 std::string identified_as(std::string_view version_command, std::string_view reply);
